@@ -1,0 +1,255 @@
+// fieldcodec — byte order: load/store of integers of 1..8 bytes in either byte order, and
+// bounded reader/writer cursors.
+//
+// Everything works on values, never on the host's memory layout, so results are the same on
+// little- and big-endian hosts. Widths 3, 5, 6 and 7 (CANopen INTEGER24/40/48/56) are supported.
+#pragma once
+
+#include <fieldcodec/core/result.hpp>
+
+#include <array>
+#include <bit>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <type_traits>
+
+namespace fieldcodec {
+
+using byte_order = std::endian; // std::endian::little or std::endian::big
+
+namespace detail {
+[[nodiscard]] constexpr std::uint64_t width_mask(std::size_t width) noexcept {
+  return width >= 8U ? ~std::uint64_t{0} : (std::uint64_t{1} << (8U * width)) - 1U;
+}
+} // namespace detail
+
+/// Smallest and largest signed value of a `width`-byte two's complement field (1..8).
+[[nodiscard]] constexpr std::int64_t signed_min(std::size_t width) noexcept {
+  return width >= 8U ? std::numeric_limits<std::int64_t>::min()
+                     : -static_cast<std::int64_t>(std::uint64_t{1} << (8U * width - 1U));
+}
+[[nodiscard]] constexpr std::int64_t signed_max(std::size_t width) noexcept {
+  return width >= 8U ? std::numeric_limits<std::int64_t>::max()
+                     : static_cast<std::int64_t>((std::uint64_t{1} << (8U * width - 1U)) - 1U);
+}
+/// Largest unsigned value of a `width`-byte field (1..8).
+[[nodiscard]] constexpr std::uint64_t unsigned_max(std::size_t width) noexcept {
+  return detail::width_mask(width);
+}
+
+/// Read an unsigned integer of `width` bytes (1..8) from the front of `in`.
+/// Errors: bad_length (width not 1..8), truncated (fewer than `width` bytes).
+[[nodiscard]] constexpr result<std::uint64_t>
+load_unsigned(std::span<const std::uint8_t> in, std::size_t width, byte_order order) noexcept {
+  if (width < 1U || width > 8U) return errc::bad_length;
+  if (in.size() < width) return errc::truncated;
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < width; ++i) {
+    const std::size_t k = order == byte_order::big ? i : width - 1U - i;
+    v = (v << 8U) | in[k];
+  }
+  return v;
+}
+
+/// Read a two's complement signed integer of `width` bytes (1..8), sign-extended.
+[[nodiscard]] constexpr result<std::int64_t>
+load_signed(std::span<const std::uint8_t> in, std::size_t width, byte_order order) noexcept {
+  auto u = load_unsigned(in, width, order);
+  if (!u) return u.error();
+  std::uint64_t v = u.value();
+  if (width < 8U && (v >> (8U * width - 1U)) != 0U) v |= ~detail::width_mask(width);
+  return static_cast<std::int64_t>(v); // modular conversion, well defined since C++20
+}
+
+/// Write the low `width` bytes (1..8) of `value` to the front of `out`.
+/// Errors: bad_length, buffer_too_small, overflow (value needs more than `width` bytes).
+[[nodiscard]] constexpr status store_unsigned(std::span<std::uint8_t> out, std::size_t width,
+                                              std::uint64_t value, byte_order order) noexcept {
+  if (width < 1U || width > 8U) return errc::bad_length;
+  if (value > unsigned_max(width)) return errc::overflow;
+  if (out.size() < width) return errc::buffer_too_small;
+  for (std::size_t i = 0; i < width; ++i) {
+    const std::size_t k = order == byte_order::little ? i : width - 1U - i;
+    out[k] = static_cast<std::uint8_t>(value >> (8U * i));
+  }
+  return {};
+}
+
+/// Write `value` as a `width`-byte two's complement integer.
+/// Errors: bad_length, buffer_too_small, overflow (outside signed_min..signed_max of width).
+[[nodiscard]] constexpr status store_signed(std::span<std::uint8_t> out, std::size_t width,
+                                            std::int64_t value, byte_order order) noexcept {
+  if (width < 1U || width > 8U) return errc::bad_length;
+  if (value < signed_min(width) || value > signed_max(width)) return errc::overflow;
+  return store_unsigned(out, width, static_cast<std::uint64_t>(value) & detail::width_mask(width),
+                        order);
+}
+
+/// Integer types of 1..8 bytes (not bool).
+template <class T>
+concept wire_integer =
+    std::integral<T> && !std::same_as<std::remove_cv_t<T>, bool> && sizeof(T) <= 8U;
+
+/// Read a T from the front of `in`. Errors: truncated.
+template <wire_integer T>
+[[nodiscard]] constexpr result<T> load(std::span<const std::uint8_t> in,
+                                       byte_order order) noexcept {
+  if constexpr (std::is_signed_v<T>) {
+    auto v = load_signed(in, sizeof(T), order);
+    if (!v) return v.error();
+    return static_cast<T>(v.value());
+  } else {
+    auto v = load_unsigned(in, sizeof(T), order);
+    if (!v) return v.error();
+    return static_cast<T>(v.value());
+  }
+}
+
+/// Write a T to the front of `out`. Errors: buffer_too_small.
+template <wire_integer T>
+[[nodiscard]] constexpr status store(std::span<std::uint8_t> out, T value,
+                                     byte_order order) noexcept {
+  if constexpr (std::is_signed_v<T>) {
+    return store_signed(out, sizeof(T), static_cast<std::int64_t>(value), order);
+  } else {
+    return store_unsigned(out, sizeof(T), static_cast<std::uint64_t>(value), order);
+  }
+}
+
+/// The bytes of a T in the given order (cannot fail).
+template <wire_integer T>
+[[nodiscard]] constexpr std::array<std::uint8_t, sizeof(T)> to_bytes(T value,
+                                                                     byte_order order) noexcept {
+  std::array<std::uint8_t, sizeof(T)> out{};
+  using U = std::make_unsigned_t<T>;
+  const auto u = static_cast<U>(value);
+  for (std::size_t i = 0; i < sizeof(T); ++i) {
+    const std::size_t k = order == byte_order::little ? i : sizeof(T) - 1U - i;
+    out[k] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(u) >> (8U * i));
+  }
+  return out;
+}
+
+/// A T from exactly sizeof(T) bytes (cannot fail).
+template <wire_integer T>
+[[nodiscard]] constexpr T from_bytes(const std::array<std::uint8_t, sizeof(T)> &in,
+                                     byte_order order) noexcept {
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i) {
+    const std::size_t k = order == byte_order::big ? i : sizeof(T) - 1U - i;
+    v = (v << 8U) | in[k];
+  }
+  return static_cast<T>(static_cast<std::make_unsigned_t<T>>(v));
+}
+
+/// A cursor over input bytes that reports `truncated` instead of reading past the end.
+/// A failed read does not move the cursor.
+class byte_reader {
+public:
+  constexpr explicit byte_reader(std::span<const std::uint8_t> in) noexcept : in_(in) {}
+
+  [[nodiscard]] constexpr std::size_t position() const noexcept { return pos_; }
+  [[nodiscard]] constexpr std::size_t remaining() const noexcept { return in_.size() - pos_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return pos_ == in_.size(); }
+  /// The bytes not read yet.
+  [[nodiscard]] constexpr std::span<const std::uint8_t> rest() const noexcept {
+    return in_.subspan(pos_);
+  }
+
+  [[nodiscard]] constexpr result<std::uint8_t> read_u8() noexcept {
+    if (remaining() < 1U) return errc::truncated;
+    return in_[pos_++];
+  }
+  template <wire_integer T>
+  [[nodiscard]] constexpr result<T> read(byte_order order) noexcept {
+    auto v = load<T>(rest(), order);
+    if (v) pos_ += sizeof(T);
+    return v;
+  }
+  [[nodiscard]] constexpr result<std::uint64_t> read_unsigned(std::size_t width,
+                                                              byte_order order) noexcept {
+    auto v = load_unsigned(rest(), width, order);
+    if (v) pos_ += width;
+    return v;
+  }
+  [[nodiscard]] constexpr result<std::int64_t> read_signed(std::size_t width,
+                                                           byte_order order) noexcept {
+    auto v = load_signed(rest(), width, order);
+    if (v) pos_ += width;
+    return v;
+  }
+  /// The next `n` bytes as a view into the input.
+  [[nodiscard]] constexpr result<std::span<const std::uint8_t>> read_bytes(std::size_t n) noexcept {
+    if (remaining() < n) return errc::truncated;
+    auto s = in_.subspan(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  [[nodiscard]] constexpr status skip(std::size_t n) noexcept {
+    if (remaining() < n) return errc::truncated;
+    pos_ += n;
+    return {};
+  }
+
+private:
+  std::span<const std::uint8_t> in_;
+  std::size_t pos_ = 0;
+};
+
+/// A cursor over an output buffer that reports `buffer_too_small` instead of writing past the
+/// end. A failed write does not move the cursor.
+class byte_writer {
+public:
+  constexpr explicit byte_writer(std::span<std::uint8_t> out) noexcept : out_(out) {}
+
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return pos_; }
+  [[nodiscard]] constexpr std::size_t remaining() const noexcept { return out_.size() - pos_; }
+  /// The bytes written so far.
+  [[nodiscard]] constexpr std::span<std::uint8_t> written() const noexcept {
+    return out_.first(pos_);
+  }
+
+  [[nodiscard]] constexpr status write_u8(std::uint8_t b) noexcept {
+    if (remaining() < 1U) return errc::buffer_too_small;
+    out_[pos_++] = b;
+    return {};
+  }
+  template <wire_integer T>
+  [[nodiscard]] constexpr status write(T value, byte_order order) noexcept {
+    auto s = store<T>(out_.subspan(pos_), value, order);
+    if (s) pos_ += sizeof(T);
+    return s;
+  }
+  [[nodiscard]] constexpr status write_unsigned(std::size_t width, std::uint64_t value,
+                                                byte_order order) noexcept {
+    auto s = store_unsigned(out_.subspan(pos_), width, value, order);
+    if (s) pos_ += width;
+    return s;
+  }
+  [[nodiscard]] constexpr status write_signed(std::size_t width, std::int64_t value,
+                                              byte_order order) noexcept {
+    auto s = store_signed(out_.subspan(pos_), width, value, order);
+    if (s) pos_ += width;
+    return s;
+  }
+  [[nodiscard]] constexpr status write_bytes(std::span<const std::uint8_t> bytes) noexcept {
+    if (remaining() < bytes.size()) return errc::buffer_too_small;
+    for (auto b : bytes) out_[pos_++] = b;
+    return {};
+  }
+  /// Write `n` copies of `fill`.
+  [[nodiscard]] constexpr status pad(std::size_t n, std::uint8_t fill = 0) noexcept {
+    if (remaining() < n) return errc::buffer_too_small;
+    for (std::size_t i = 0; i < n; ++i) out_[pos_++] = fill;
+    return {};
+  }
+
+private:
+  std::span<std::uint8_t> out_;
+  std::size_t pos_ = 0;
+};
+
+} // namespace fieldcodec

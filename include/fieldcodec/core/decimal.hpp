@@ -1,0 +1,346 @@
+// fieldcodec — exact decimals and decimal fixed point.
+//
+// `decimal` is mantissa × 10^-places: 327.67 is {32767, 2}, never a binary double. Fixed point
+// is an integer count of 10^-n units (positions in 0.001 mm are n = 3). Text conversion is
+// strict: an optional '-', digits, optionally '.' and digits; nothing else.
+#pragma once
+
+#include <fieldcodec/core/ascii.hpp>
+#include <fieldcodec/core/result.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string_view>
+
+namespace fieldcodec {
+
+/// An exact decimal number: mantissa × 10^-places (places 0..18).
+struct decimal {
+  std::int64_t mantissa = 0;
+  std::uint8_t places = 0;
+};
+
+inline constexpr std::uint8_t decimal_max_places = 18;
+
+namespace detail {
+
+/// Unsigned 128-bit magnitude as four 32-bit limbs, least significant first. Portable (no
+/// __int128, works on 32-bit targets) and constexpr.
+struct u128 {
+  std::array<std::uint32_t, 4> limb{};
+
+  static constexpr u128 from(std::uint64_t v) noexcept {
+    u128 r;
+    r.limb[0] = static_cast<std::uint32_t>(v);
+    r.limb[1] = static_cast<std::uint32_t>(v >> 32U);
+    return r;
+  }
+  [[nodiscard]] constexpr bool fits_u64() const noexcept { return limb[2] == 0U && limb[3] == 0U; }
+  [[nodiscard]] constexpr std::uint64_t low64() const noexcept {
+    return (std::uint64_t{limb[1]} << 32U) | limb[0];
+  }
+  [[nodiscard]] constexpr bool is_zero() const noexcept {
+    return (limb[0] | limb[1] | limb[2] | limb[3]) == 0U;
+  }
+};
+
+/// a × b; false when the product needs more than 128 bits.
+constexpr bool mul(u128 &a, std::uint64_t b) noexcept {
+  const std::uint32_t bl[2] = {static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(b >> 32U)};
+  std::uint32_t out[6]{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::uint64_t carry = 0;
+    for (std::size_t j = 0; j < 2; ++j) {
+      const std::uint64_t t = std::uint64_t{a.limb[i]} * bl[j] + out[i + j] + carry;
+      out[i + j] = static_cast<std::uint32_t>(t);
+      carry = t >> 32U;
+    }
+    out[i + 2] = static_cast<std::uint32_t>(carry);
+  }
+  for (std::size_t i = 0; i < 4; ++i) a.limb[i] = out[i];
+  return out[4] == 0U && out[5] == 0U;
+}
+
+/// a / d, returns the remainder.
+constexpr std::uint32_t divmod(u128 &a, std::uint32_t d) noexcept {
+  std::uint64_t rem = 0;
+  for (std::size_t i = 4; i-- > 0;) {
+    const std::uint64_t cur = (rem << 32U) | a.limb[i];
+    a.limb[i] = static_cast<std::uint32_t>(cur / d);
+    rem = cur % d;
+  }
+  return static_cast<std::uint32_t>(rem);
+}
+
+/// a + b; false on carry out.
+constexpr bool add(u128 &a, const u128 &b) noexcept {
+  std::uint64_t carry = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::uint64_t t = std::uint64_t{a.limb[i]} + b.limb[i] + carry;
+    a.limb[i] = static_cast<std::uint32_t>(t);
+    carry = t >> 32U;
+  }
+  return carry == 0U;
+}
+
+/// a - b, requires a >= b.
+constexpr void sub(u128 &a, const u128 &b) noexcept {
+  std::int64_t borrow = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::int64_t t = static_cast<std::int64_t>(a.limb[i]) - b.limb[i] - borrow;
+    borrow = t < 0 ? 1 : 0;
+    if (t < 0) t += std::int64_t{1} << 32U;
+    a.limb[i] = static_cast<std::uint32_t>(t);
+  }
+}
+
+constexpr int compare(const u128 &a, const u128 &b) noexcept {
+  for (std::size_t i = 4; i-- > 0;) {
+    if (a.limb[i] != b.limb[i]) return a.limb[i] < b.limb[i] ? -1 : 1;
+  }
+  return 0;
+}
+
+/// a / d for any non-zero 64-bit divisor (bitwise long division), returns the remainder.
+constexpr std::uint64_t divmod64(u128 &a, std::uint64_t d) noexcept {
+  u128 q;
+  std::uint64_t rem = 0;
+  for (std::size_t i = 128; i-- > 0;) {
+    const std::uint64_t carry = rem >> 63U;
+    rem = (rem << 1U) | ((a.limb[i / 32U] >> (i % 32U)) & 1U);
+    if (carry != 0U || rem >= d) {
+      rem -= d;
+      q.limb[i / 32U] |= std::uint32_t{1} << (i % 32U);
+    }
+  }
+  a = q;
+  return rem;
+}
+
+/// A signed wide value: sign and 128-bit magnitude.
+struct wide {
+  bool negative = false;
+  u128 mag;
+};
+
+constexpr std::uint64_t magnitude(std::int64_t v) noexcept {
+  return v < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+}
+
+/// d.mantissa × 10^(places − d.places) as a wide value (places >= d.places, places <= 36).
+constexpr bool widen(decimal d, unsigned places, wide &out) noexcept {
+  out.negative = d.mantissa < 0;
+  out.mag = u128::from(magnitude(d.mantissa));
+  for (unsigned i = d.places; i < places; ++i) {
+    if (!mul(out.mag, 10U)) return false;
+  }
+  return true;
+}
+
+constexpr bool add(wide &a, const wide &b) noexcept {
+  if (a.negative == b.negative) return add(a.mag, b.mag);
+  if (compare(a.mag, b.mag) >= 0) {
+    sub(a.mag, b.mag);
+  } else {
+    u128 t = b.mag;
+    sub(t, a.mag);
+    a.mag = t;
+    a.negative = b.negative;
+  }
+  if (a.mag.is_zero()) a.negative = false;
+  return true;
+}
+
+constexpr int compare(const wide &a, const wide &b) noexcept {
+  const bool an = a.negative && !a.mag.is_zero();
+  const bool bn = b.negative && !b.mag.is_zero();
+  if (an != bn) return an ? -1 : 1;
+  const int c = compare(a.mag, b.mag);
+  return an ? -c : c;
+}
+
+/// round(a / 10^n), half away from zero, as int64. Errors: overflow.
+constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
+  unsigned digit = 0;
+  for (unsigned i = 0; i < n; ++i) digit = divmod(a.mag, 10U);
+  // Half away from zero: only the first discarded digit decides (>= 5 rounds the magnitude up).
+  if (n > 0U && digit >= 5U) {
+    if (!add(a.mag, u128::from(1))) return errc::overflow;
+  }
+  if (!a.mag.fits_u64()) return errc::overflow;
+  const std::uint64_t m = a.mag.low64();
+  const std::uint64_t limit = a.negative ? std::uint64_t{1} << 63U : (std::uint64_t{1} << 63U) - 1U;
+  if (m > limit) return errc::overflow;
+  return a.negative ? static_cast<std::int64_t>(std::uint64_t{0} - m)
+                    : static_cast<std::int64_t>(m);
+}
+
+} // namespace detail
+
+/// Exact comparison: negative, zero or positive.
+[[nodiscard]] constexpr int compare(decimal a, decimal b) noexcept {
+  const unsigned p = a.places > b.places ? a.places : b.places;
+  detail::wide wa;
+  detail::wide wb;
+  detail::widen(a, p, wa); // at most 63 + 60 bits: cannot fail
+  detail::widen(b, p, wb);
+  return detail::compare(wa, wb);
+}
+
+/// Numeric equality (1.50 == 1.5).
+[[nodiscard]] constexpr bool equal(decimal a, decimal b) noexcept { return compare(a, b) == 0; }
+
+/// The same value with trailing fractional zeros removed (1.500 → 1.5, canonical form).
+[[nodiscard]] constexpr decimal normalize(decimal d) noexcept {
+  while (d.places > 0 && d.mantissa % 10 == 0) {
+    d.mantissa /= 10;
+    --d.places;
+  }
+  return d;
+}
+
+/// The value in units of 10^-places, exactly. Errors: not_representable (non-zero digits
+/// beyond `places`), overflow (outside int64), invalid_argument (places > 18).
+[[nodiscard]] constexpr result<std::int64_t> to_fixed(decimal d, unsigned places) noexcept {
+  if (places > decimal_max_places || d.places > decimal_max_places) return errc::invalid_argument;
+  d = normalize(d);
+  if (d.places > places) return errc::not_representable;
+  detail::wide w;
+  if (!detail::widen(d, places, w)) return errc::overflow;
+  return detail::round_div_pow10(w, 0);
+}
+
+/// The value in units of 10^-places, rounded half away from zero.
+/// Errors: overflow, invalid_argument (places > 18).
+[[nodiscard]] constexpr result<std::int64_t> round_to_fixed(decimal d, unsigned places) noexcept {
+  if (places > decimal_max_places || d.places > decimal_max_places) return errc::invalid_argument;
+  if (d.places <= places) return to_fixed(d, places);
+  detail::wide w;
+  detail::widen(d, d.places, w);
+  return detail::round_div_pow10(w, d.places - places);
+}
+
+/// Parse strict decimal text: `-?[0-9]+(\.[0-9]+)?`. Trailing fractional zeros are kept in
+/// `places` ("5552.0" is {55520, 1}). Errors: bad_syntax (empty, lone '-', '.' without digits
+/// on both sides), bad_digit (any other character), overflow (more than 18 significant digits
+/// or more than 18 places).
+[[nodiscard]] constexpr result<decimal> parse_decimal(std::string_view s) noexcept {
+  const bool neg = !s.empty() && s.front() == '-';
+  if (neg) s.remove_prefix(1);
+  const auto dot = s.find('.');
+  const std::string_view ip = s.substr(0, dot);
+  const std::string_view fp =
+      dot == std::string_view::npos ? std::string_view{} : s.substr(dot + 1);
+  if (ip.empty() || (dot != std::string_view::npos && fp.empty())) {
+    for (char c : s) {
+      if (!ascii::is_digit(c) && c != '.') return errc::bad_digit;
+    }
+    return errc::bad_syntax;
+  }
+  if (fp.size() > decimal_max_places) return errc::overflow;
+  std::uint64_t m = 0;
+  const std::uint64_t limit = neg ? std::uint64_t{1} << 63U : (std::uint64_t{1} << 63U) - 1U;
+  for (std::string_view part : {ip, fp}) {
+    for (const char c : part) {
+      if (!ascii::is_digit(c)) return errc::bad_digit;
+      const auto d = static_cast<std::uint64_t>(c - '0');
+      if (m > (limit - d) / 10U) return errc::overflow;
+      m = m * 10U + d;
+    }
+  }
+  const auto sm =
+      neg ? static_cast<std::int64_t>(std::uint64_t{0} - m) : static_cast<std::int64_t>(m);
+  return decimal{sm, static_cast<std::uint8_t>(fp.size())};
+}
+
+/// Write `d` with exactly d.places fractional digits ("-1055.88"; "0.05"; "-0.5").
+/// Returns the number of characters. Errors: buffer_too_small, invalid_argument (places > 18).
+[[nodiscard]] constexpr result<std::size_t> format_decimal(decimal d,
+                                                           std::span<char> out) noexcept {
+  if (d.places > decimal_max_places) return errc::invalid_argument;
+  char digits[20]{};
+  auto n = ascii::format_unsigned(detail::magnitude(d.mantissa), digits);
+  if (!n) return n.error();
+  const std::size_t nd = n.value();
+  const std::size_t places = d.places;
+  const std::size_t padded = nd > places ? nd : places + 1U; // at least one digit before '.'
+  const std::size_t len = (d.mantissa < 0 ? 1U : 0U) + padded + (places > 0U ? 1U : 0U);
+  if (out.size() < len) return errc::buffer_too_small;
+  std::size_t k = 0;
+  if (d.mantissa < 0) out[k++] = '-';
+  for (std::size_t i = 0; i < padded; ++i) {
+    if (places > 0U && i == padded - places) out[k++] = '.';
+    out[k++] = i < padded - nd ? '0' : digits[i - (padded - nd)];
+  }
+  return len;
+}
+
+/// Parse decimal text into units of 10^-places ("-1055.88" at 2 → −105588). More fractional
+/// digits than `places` are accepted only if they are zeros. Errors: those of parse_decimal,
+/// not_representable (non-zero digits beyond `places`), overflow.
+[[nodiscard]] constexpr result<std::int64_t> parse_fixed(std::string_view s,
+                                                         unsigned places) noexcept {
+  auto d = parse_decimal(s);
+  if (!d) return d.error();
+  return to_fixed(d.value(), places);
+}
+
+/// Write `units` × 10^-places with exactly `places` fractional digits.
+[[nodiscard]] constexpr result<std::size_t> format_fixed(std::int64_t units, unsigned places,
+                                                         std::span<char> out) noexcept {
+  if (places > decimal_max_places) return errc::invalid_argument;
+  return format_decimal(decimal{units, static_cast<std::uint8_t>(places)}, out);
+}
+
+namespace detail {
+/// 10^k as a double, exact for k = 0..22.
+constexpr double pow10_double(unsigned k) noexcept {
+  double v = 1.0;
+  for (unsigned i = 0; i < k; ++i) v *= 10.0;
+  return v;
+}
+} // namespace detail
+
+/// The decimal a binary double stands for, to `significant` digits (1..17, default 15).
+/// Every decimal of up to 15 significant digits survives the trip through a double, so the
+/// default recovers the number a user typed (1.001, not 1.000999999999999889...). Digits
+/// beyond 18 decimal places are rounded away (|v| < 5e-19 becomes 0).
+/// Errors: invalid_argument (significant not 1..17), not_representable (NaN, infinity,
+/// |v| >= 9e18).
+[[nodiscard]] constexpr result<decimal> decimal_from_double(double v,
+                                                            unsigned significant = 15) noexcept {
+  if (significant < 1U || significant > 17U) return errc::invalid_argument;
+  if (v != v) return errc::not_representable;
+  const bool neg = v < 0;
+  const double a = neg ? -v : v;
+  if (a == 0.0) return decimal{0, 0};
+  if (a >= 9.0e18) return errc::not_representable; // also catches infinity
+  // magnitude: a < 10^int_digits (exact comparisons against exact powers of ten)
+  int int_digits = 0;
+  while (int_digits < 19 && a >= detail::pow10_double(static_cast<unsigned>(int_digits))) {
+    ++int_digits;
+  }
+  int places = static_cast<int>(significant) - int_digits;
+  if (int_digits == 0) {
+    // leading zeros after the point do not count as significant
+    int zeros = 0;
+    while (zeros < decimal_max_places &&
+           a * detail::pow10_double(static_cast<unsigned>(zeros + 1)) < 1.0) {
+      ++zeros;
+    }
+    places += zeros;
+  }
+  if (places < 0) places = 0;
+  if (places > decimal_max_places) places = decimal_max_places;
+  // One multiplication by an exact power of ten: a single rounding step.
+  const double scaled = a * detail::pow10_double(static_cast<unsigned>(places));
+  if (scaled >= 9.0e18) return errc::not_representable;
+  auto m = static_cast<std::int64_t>(scaled);
+  if (scaled - static_cast<double>(m) >= 0.5) ++m; // half away from zero on the magnitude
+  return normalize(decimal{neg ? -m : m, static_cast<std::uint8_t>(places)});
+}
+
+} // namespace fieldcodec

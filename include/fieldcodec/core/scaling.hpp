@@ -1,0 +1,163 @@
+// fieldcodec — linear engineering-unit scaling with exact decimals.
+//
+//   raw = round((eu − offset) × scale)      rounding half away from zero
+//   eu  = raw / scale + offset
+//
+// Scale and offset are exact decimals (327.67 is 32767 × 10^-2). The arithmetic is exact
+// (128-bit intermediates), so the only rounding is the one the formula asks for. A value is
+// checked against the allowed range (errc::out_of_range) before it is converted and against
+// the field's width and signedness (errc::overflow) after, so it can never wrap.
+//
+// Binary floating-point inputs: a double is first turned into the decimal it stands for with
+// 15 significant digits (decimal_from_double), then converted exactly. So 1.001 × 500 is
+// 500.5 and rounds to 501, as a person computing by hand expects, although the nearest
+// double to 1.001 is slightly smaller than 1.001.
+#pragma once
+
+#include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/result.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace fieldcodec::scaling {
+
+/// The integer field a raw value travels in: 1..8 bytes, signed or unsigned.
+struct field {
+  std::uint8_t bytes = 4;
+  bool is_signed = false;
+
+  /// Smallest raw value the field holds.
+  [[nodiscard]] constexpr std::int64_t min() const noexcept {
+    return is_signed ? signed_min(bytes) : 0;
+  }
+  /// Largest raw value the field holds, limited to INT64_MAX (raw values are int64).
+  [[nodiscard]] constexpr std::int64_t max() const noexcept {
+    if (is_signed) return signed_max(bytes);
+    return bytes >= 8U ? signed_max(8) : static_cast<std::int64_t>(unsigned_max(bytes));
+  }
+};
+
+/// Scale and offset. The default is the identity.
+struct linear {
+  decimal scale{1, 0};
+  decimal offset{0, 0};
+};
+
+/// Allowed engineering-unit range, both ends inclusive.
+struct range {
+  decimal low;
+  decimal high;
+};
+
+/// Errors: overflow when `raw` does not fit `f`; invalid_argument for a field of 0 or > 8 bytes.
+[[nodiscard]] constexpr status check_field(std::int64_t raw, field f) noexcept {
+  if (f.bytes < 1U || f.bytes > 8U) return errc::invalid_argument;
+  if (raw < f.min() || raw > f.max()) return errc::overflow;
+  return {};
+}
+
+/// Errors: out_of_range when `eu` lies outside [r.low, r.high].
+[[nodiscard]] constexpr status check_range(decimal eu, range r) noexcept {
+  if (compare(eu, r.low) < 0 || compare(eu, r.high) > 0) return errc::out_of_range;
+  return {};
+}
+
+/// round((eu − offset) × scale), half away from zero, exactly.
+/// Errors: invalid_argument (zero scale or places > 18), overflow (result outside int64).
+[[nodiscard]] constexpr result<std::int64_t> scale_to_raw(decimal eu, linear s) noexcept {
+  if (s.scale.mantissa == 0 || eu.places > decimal_max_places ||
+      s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
+    return errc::invalid_argument;
+  }
+  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
+  detail::wide diff;
+  detail::wide off;
+  detail::widen(eu, p, diff); // ≤ 63 + 60 bits, cannot fail
+  detail::widen(decimal{-s.offset.mantissa, s.offset.places}, p, off);
+  if (!detail::add(diff, off)) return errc::overflow;
+  if (!detail::mul(diff.mag, detail::magnitude(s.scale.mantissa))) return errc::overflow;
+  if (s.scale.mantissa < 0) diff.negative = !diff.negative;
+  return detail::round_div_pow10(diff, p + s.scale.places);
+}
+
+/// PLC → device: range check, conversion, field check.
+/// Errors: out_of_range, overflow, invalid_argument.
+[[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu, linear s, field f,
+                                                    range r) noexcept {
+  if (auto c = check_range(eu, r); !c) return c.error();
+  auto raw = scale_to_raw(eu, s);
+  if (!raw) return raw.error();
+  if (auto c = check_field(raw.value(), f); !c) return c.error();
+  return raw;
+}
+
+/// PLC → device without an engineering range (only the field limits apply).
+[[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu, linear s, field f) noexcept {
+  auto raw = scale_to_raw(eu, s);
+  if (!raw) return raw.error();
+  if (auto c = check_field(raw.value(), f); !c) return c.error();
+  return raw;
+}
+
+/// The same from a double (see the header comment). Errors: also not_representable (NaN, ∞).
+[[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f,
+                                                    range r) noexcept {
+  auto d = decimal_from_double(eu);
+  if (!d) return d.error();
+  return to_raw(d.value(), s, f, r);
+}
+[[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f) noexcept {
+  auto d = decimal_from_double(eu);
+  if (!d) return d.error();
+  return to_raw(d.value(), s, f);
+}
+
+/// Device → PLC as a double: raw / scale + offset (one division, one addition in binary).
+[[nodiscard]] constexpr double to_eu(std::int64_t raw, linear s) noexcept {
+  double scale = static_cast<double>(s.scale.mantissa);
+  for (unsigned i = 0; i < s.scale.places; ++i) scale /= 10.0;
+  double offset = static_cast<double>(s.offset.mantissa);
+  for (unsigned i = 0; i < s.offset.places; ++i) offset /= 10.0;
+  return static_cast<double>(raw) / scale + offset;
+}
+
+/// Device → PLC exactly, rounded half away from zero to `places` decimal places:
+/// eu = (raw·10^(sp+op) + o·m) · 10^places / (m · 10^op) with scale = m·10^-sp and
+/// offset = o·10^-op — one division, one rounding.
+/// Errors: invalid_argument (zero scale, places > 18), overflow (intermediate beyond 128 bits,
+/// m · 10^op beyond 64 bits, or result beyond int64).
+[[nodiscard]] constexpr result<decimal> to_eu_decimal(std::int64_t raw, linear s,
+                                                      unsigned places) noexcept {
+  if (s.scale.mantissa == 0 || places > decimal_max_places ||
+      s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
+    return errc::invalid_argument;
+  }
+  detail::wide n;
+  if (!detail::widen(decimal{raw, 0}, s.scale.places + s.offset.places, n)) return errc::overflow;
+  detail::wide om;
+  om.negative = (s.offset.mantissa < 0) != (s.scale.mantissa < 0);
+  om.mag = detail::u128::from(detail::magnitude(s.offset.mantissa));
+  if (!detail::mul(om.mag, detail::magnitude(s.scale.mantissa))) return errc::overflow;
+  if (!detail::add(n, om)) return errc::overflow;
+  for (unsigned i = 0; i < places; ++i) {
+    if (!detail::mul(n.mag, 10U)) return errc::overflow;
+  }
+  detail::u128 den = detail::u128::from(detail::magnitude(s.scale.mantissa));
+  for (unsigned i = 0; i < s.offset.places; ++i) {
+    if (!detail::mul(den, 10U)) return errc::overflow;
+  }
+  if (!den.fits_u64()) return errc::overflow;
+  const std::uint64_t d = den.low64();
+  const std::uint64_t rem = detail::divmod64(n.mag, d);
+  if (rem >= d - rem) { // remainder at least half: away from zero
+    if (!detail::add(n.mag, detail::u128::from(1))) return errc::overflow;
+  }
+  if (s.scale.mantissa < 0) n.negative = !n.negative;
+  auto m = detail::round_div_pow10(n, 0);
+  if (!m) return m.error();
+  return decimal{m.value(), static_cast<std::uint8_t>(places)};
+}
+
+} // namespace fieldcodec::scaling

@@ -1,0 +1,126 @@
+#include <fieldcodec/core/decimal.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <limits>
+#include <string_view>
+
+namespace fc = fieldcodec;
+using fc::decimal;
+using fc::errc;
+
+namespace {
+constexpr bool same(fc::result<decimal> r, std::int64_t m, unsigned p) {
+  return r.has_value() && r.value().mantissa == m && r.value().places == p;
+}
+} // namespace
+
+// Strict parsing.
+static_assert(same(fc::parse_decimal("327.67"), 32767, 2));
+static_assert(same(fc::parse_decimal("-1055.88"), -105588, 2));
+static_assert(same(fc::parse_decimal("5552.0"), 55520, 1));
+static_assert(same(fc::parse_decimal("0"), 0, 0));
+static_assert(same(fc::parse_decimal("-0.001"), -1, 3));
+static_assert(fc::parse_decimal("").error() == errc::bad_syntax);
+static_assert(fc::parse_decimal("-").error() == errc::bad_syntax);
+static_assert(fc::parse_decimal(".5").error() == errc::bad_syntax);
+static_assert(fc::parse_decimal("5.").error() == errc::bad_syntax);
+static_assert(fc::parse_decimal("1.2.3").error() == errc::bad_digit);
+static_assert(fc::parse_decimal("327,67").error() == errc::bad_digit);
+static_assert(fc::parse_decimal("1e3").error() == errc::bad_digit);
+static_assert(fc::parse_decimal("+1").error() == errc::bad_digit);
+static_assert(fc::parse_decimal(" 1").error() == errc::bad_digit);
+static_assert(fc::parse_decimal("9223372036854775807").has_value());
+static_assert(fc::parse_decimal("9223372036854775808").error() == errc::overflow);
+static_assert(fc::parse_decimal("-9223372036854775808").value().mantissa == INT64_MIN);
+static_assert(fc::parse_decimal("-9223372036854775809").error() == errc::overflow);
+static_assert(fc::parse_decimal("0.1234567890123456789").error() == errc::overflow);
+
+// Fixed point: ×1000 positions are places = 3.
+static_assert(fc::parse_fixed("-1055.88", 2).value() == -105588);
+static_assert(fc::parse_fixed("1516.950", 3).value() == 1516950);
+static_assert(fc::parse_fixed("5552.0", 3).value() == 5552000);
+static_assert(fc::parse_fixed("1.2340", 3).value() == 1234); // trailing zero is fine
+static_assert(fc::parse_fixed("1.2345", 3).error() == errc::not_representable);
+static_assert(fc::parse_fixed("9300000000000000", 3).error() == errc::overflow);
+static_assert(fc::round_to_fixed({12345, 4}, 3).value() == 1235);   // 1.2345 → 1.235
+static_assert(fc::round_to_fixed({-12345, 4}, 3).value() == -1235); // half away from zero
+static_assert(fc::round_to_fixed({12344, 4}, 3).value() == 1234);
+static_assert(fc::round_to_fixed({-12, 1}, 0).value() == -1);
+static_assert(fc::round_to_fixed({-15, 1}, 0).value() == -2);
+static_assert(fc::round_to_fixed({15, 1}, 0).value() == 2);
+static_assert(fc::round_to_fixed({1, 0}, 19).error() == errc::invalid_argument);
+
+// Comparison and normal form.
+static_assert(fc::compare({150, 2}, {15, 1}) == 0);
+static_assert(fc::compare({-1, 0}, {0, 3}) < 0);
+static_assert(fc::compare({INT64_MAX, 0}, {INT64_MAX, 18}) > 0);
+static_assert(fc::compare({-5000, 0}, {-49999, 1}) < 0);
+static_assert(fc::normalize({1500, 3}).mantissa == 15 && fc::normalize({1500, 3}).places == 1);
+static_assert(fc::equal({0, 5}, {0, 0}));
+
+// A double turned into the decimal it stands for.
+static_assert(same(fc::decimal_from_double(1.001), 1001, 3));
+static_assert(same(fc::decimal_from_double(4.0), 4, 0));
+static_assert(same(fc::decimal_from_double(-0.1), -1, 1));
+static_assert(same(fc::decimal_from_double(327.67), 32767, 2));
+static_assert(same(fc::decimal_from_double(1516.95), 151695, 2));
+static_assert(same(fc::decimal_from_double(1e-10), 1, 10));
+static_assert(same(fc::decimal_from_double(0.0), 0, 0));
+static_assert(fc::decimal_from_double(1e19).error() == errc::not_representable);
+static_assert(fc::decimal_from_double(std::numeric_limits<double>::infinity()).error() ==
+              errc::not_representable);
+static_assert(fc::decimal_from_double(-std::numeric_limits<double>::infinity()).error() ==
+              errc::not_representable);
+static_assert(fc::decimal_from_double(std::numeric_limits<double>::quiet_NaN()).error() ==
+              errc::not_representable);
+static_assert(fc::decimal_from_double(1.0, 18).error() == errc::invalid_argument);
+
+namespace {
+std::string_view fmt(std::array<char, 48> &buf, decimal d) {
+  auto n = fc::format_decimal(d, buf);
+  REQUIRE(n);
+  return {buf.data(), n.value()};
+}
+} // namespace
+
+TEST_CASE("exact decimal formatting") {
+  std::array<char, 48> b{};
+  CHECK(fmt(b, {-105588, 2}) == "-1055.88");
+  CHECK(fmt(b, {5, 2}) == "0.05");
+  CHECK(fmt(b, {-5, 1}) == "-0.5");
+  CHECK(fmt(b, {0, 3}) == "0.000");
+  CHECK(fmt(b, {42, 0}) == "42");
+  CHECK(fmt(b, {1516950, 3}) == "1516.950");
+  CHECK(fmt(b, {INT64_MIN, 18}) == "-9.223372036854775808");
+  CHECK(fmt(b, {1, 18}) == "0.000000000000000001");
+  std::array<char, 4> small{};
+  CHECK(fc::format_decimal({12345, 1}, small).error() == errc::buffer_too_small);
+  CHECK(fc::format_decimal({1, 19}, b).error() == errc::invalid_argument);
+  std::array<char, 48> f{};
+  auto n = fc::format_fixed(-105588, 2, f);
+  CHECK(std::string_view(f.data(), n.value()) == "-1055.88");
+  CHECK(fc::format_fixed(1, 19, f).error() == errc::invalid_argument);
+}
+
+TEST_CASE("text round trip of fixed point values") {
+  std::array<char, 48> b{};
+  for (std::int64_t v :
+       {std::int64_t{0}, std::int64_t{1}, std::int64_t{-1}, std::int64_t{999}, std::int64_t{-1000},
+        std::int64_t{4'000'000'000'000}, std::int64_t{-2'147'483'648}, INT64_MAX, INT64_MIN}) {
+    for (unsigned p : {0U, 1U, 3U, 6U, 18U}) {
+      auto n = fc::format_fixed(v, p, b);
+      REQUIRE(n);
+      CHECK(fc::parse_fixed({b.data(), n.value()}, p).value() == v);
+    }
+  }
+}
+
+TEST_CASE("fixed point limits") {
+  CHECK(fc::parse_fixed("9223372036854775.807", 3).value() == INT64_MAX);
+  CHECK(fc::parse_fixed("-9223372036854775.808", 3).value() == INT64_MIN);
+  CHECK(fc::parse_fixed("9223372036854775.808", 3).error() == errc::overflow);
+  CHECK(fc::parse_fixed("1", 19).error() == errc::invalid_argument);
+  CHECK(fc::to_fixed({1, 19}, 3).error() == errc::invalid_argument);
+}
