@@ -1,0 +1,343 @@
+// fieldcodec — typed encode/decode of an entry's value to and from bytes.
+//
+// CANopen values are little-endian; every function takes the byte order as a last argument
+// (default little) because some buses (COMPAX Interbus-S) send the same objects big-endian.
+// Numeric values are checked against the entry's raw limits (for a `scaled` entry the limits
+// are engineering units and are converted to raw first) and against the field's width.
+//
+//   od::encode(e, od::num::i(-5), out)    → bytes written         (number form)
+//   od::encode(e, std::int16_t{-5}, out)  → bytes written         (typed form)
+//   od::decode(e, in)                     → od::number
+//   od::decode<std::int16_t>(e, in)       → std::int16_t
+//   od::encode_bytes / od::decode_bytes     strings and domains
+#pragma once
+
+#include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/ieee754.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/core/scaling.hpp>
+#include <fieldcodec/od/data_type.hpp>
+#include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/number.hpp>
+
+#include <bit>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+namespace fieldcodec::od {
+
+/// Whether decode checks a received value against the entry's limits.
+enum class limits : std::uint8_t { check, ignore };
+
+/// TIME_OF_DAY / TIME_DIFFERENCE: milliseconds after midnight (28 bits) and days since
+/// 1984-01-01 (TIME_OF_DAY) or a day count (TIME_DIFFERENCE).
+struct time_value {
+  std::uint32_t ms = 0;
+  std::uint16_t days = 0;
+  friend constexpr bool operator==(const time_value &, const time_value &) noexcept = default;
+};
+inline constexpr std::uint32_t time_ms_max = (std::uint32_t{1} << 28U) - 1U;
+
+/// The time as the 48-bit number encode/decode use (ms in bits 0..27, days in bits 32..47).
+[[nodiscard]] constexpr number to_number(time_value t) noexcept {
+  return num::u(std::uint64_t{t.ms} | (std::uint64_t{t.days} << 32U));
+}
+/// Errors: out_of_range (ms beyond 28 bits or reserved bits set), type_mismatch.
+[[nodiscard]] constexpr result<time_value> to_time(number n) noexcept {
+  auto u = n.to_uint64();
+  if (!u) return errc::type_mismatch;
+  const std::uint64_t v = u.value();
+  if ((v & 0xFFFF'0000'0000'0000U) != 0U || (v & 0xFFFF'FFFFU) > time_ms_max) {
+    return errc::out_of_range;
+  }
+  return time_value{static_cast<std::uint32_t>(v & 0xFFFF'FFFFU),
+                    static_cast<std::uint16_t>(v >> 32U)};
+}
+
+namespace detail {
+
+/// A signed 65-bit integer as sign + magnitude, for comparisons across int64 and uint64.
+struct wide_int {
+  bool negative = false;
+  std::uint64_t mag = 0;
+};
+[[nodiscard]] constexpr int compare(wide_int a, wide_int b) noexcept {
+  if (a.negative != b.negative) return a.negative ? -1 : 1;
+  if (a.mag == b.mag) return 0;
+  const bool less = a.mag < b.mag;
+  return (less != a.negative) ? -1 : 1;
+}
+[[nodiscard]] constexpr wide_int from_int64(std::int64_t v) noexcept {
+  return v < 0 ? wide_int{true, std::uint64_t{0} - static_cast<std::uint64_t>(v)}
+               : wide_int{false, static_cast<std::uint64_t>(v)};
+}
+/// A raw integer limit. For a scaled entry the limit is in engineering units: raw = round(...).
+/// Errors: anything; the caller then does not check that end.
+[[nodiscard]] constexpr result<wide_int> raw_limit(const entry &e, number lim) noexcept {
+  if (!lim) return errc::unknown_object;
+  if (e.scaled) {
+    auto d = lim.to_decimal();
+    if (!d) return d.error();
+    auto r = scaling::scale_to_raw(d.value(), e.scale);
+    if (!r) return r.error();
+    return from_int64(r.value());
+  }
+  if (lim.kind == number_kind::unsigned_) return wide_int{false, lim.bits};
+  if (lim.kind == number_kind::signed_) return from_int64(static_cast<std::int64_t>(lim.bits));
+  auto d = lim.to_decimal();
+  if (!d) return d.error();
+  auto r = round_to_fixed(d.value(), 0);
+  if (!r) return r.error();
+  return from_int64(r.value());
+}
+
+/// Errors: out_of_range when v lies outside the entry's limits.
+[[nodiscard]] constexpr status check_int_limits(const entry &e, wide_int v) noexcept {
+  auto lo = raw_limit(e, e.low);
+  auto hi = raw_limit(e, e.high);
+  if (e.scaled && e.scale.scale.mantissa < 0 && lo && hi) { // negative scale swaps the ends
+    if (compare(v, hi.value()) < 0 || compare(v, lo.value()) > 0) return errc::out_of_range;
+    return {};
+  }
+  if (lo && compare(v, lo.value()) < 0) return errc::out_of_range;
+  if (hi && compare(v, hi.value()) > 0) return errc::out_of_range;
+  return {};
+}
+
+[[nodiscard]] constexpr status check_real_limits(const entry &e, double v) noexcept {
+  if (e.low && v < e.low.to_double()) return errc::out_of_range;
+  if (e.high && v > e.high.to_double()) return errc::out_of_range;
+  return {};
+}
+
+/// The number as a wide_int. Errors: type_mismatch (none), not_representable (fractional).
+[[nodiscard]] constexpr result<wide_int> to_wide(number v) noexcept {
+  switch (v.kind) {
+  case number_kind::none: return errc::type_mismatch;
+  case number_kind::unsigned_: return wide_int{false, v.bits};
+  case number_kind::signed_: return from_int64(static_cast<std::int64_t>(v.bits));
+  case number_kind::real:
+  case number_kind::decimal_: {
+    auto i = v.to_int64();
+    if (!i) return i.error();
+    return from_int64(i.value());
+  }
+  }
+  return errc::type_mismatch;
+}
+
+} // namespace detail
+
+/// Write the value `v` of entry `e` to the front of `out`; returns the number of bytes.
+/// Integers, BOOLEAN (0/1), REAL32/REAL64 and TIME_* (see to_number(time_value)).
+/// Errors: type_mismatch (byte-string type, or no value), not_representable (fraction for an
+/// integer type, NaN/infinity), out_of_range (outside the entry's limits, BOOLEAN not 0/1,
+/// time fields), overflow (does not fit the field), buffer_too_small.
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, number v,
+                                                   std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (w == 0U || !v) return errc::type_mismatch;
+  if (out.size() < w) return errc::buffer_too_small;
+  if (is_real(e.type)) {
+    const double d = v.to_double();
+    if (d != d) return errc::not_representable;
+    FIELDCODEC_TRY_STATUS(detail::check_real_limits(e, d));
+    if (e.type == data_type::real32) {
+      if (d > static_cast<double>(std::numeric_limits<float>::max()) ||
+          d < -static_cast<double>(std::numeric_limits<float>::max())) {
+        return errc::overflow;
+      }
+      auto b = ieee754::encode_float32(static_cast<float>(d), order);
+      if (!b) return b.error();
+      for (std::size_t i = 0; i < 4U; ++i) out[i] = b.value()[i];
+      return std::size_t{4};
+    }
+    auto b = ieee754::encode_float64(d, order);
+    if (!b) return b.error();
+    for (std::size_t i = 0; i < 8U; ++i) out[i] = b.value()[i];
+    return std::size_t{8};
+  }
+  if (is_time(e.type)) {
+    auto t = to_time(v);
+    if (!t) return t.error();
+    FIELDCODEC_TRY_STATUS(store_unsigned(out, 4, t.value().ms, order));
+    FIELDCODEC_TRY_STATUS(store_unsigned(out.subspan(4), 2, t.value().days, order));
+    return std::size_t{6};
+  }
+  auto wv = detail::to_wide(v);
+  if (!wv) return wv.error();
+  const detail::wide_int x = wv.value();
+  if (e.type == data_type::boolean) {
+    if (x.negative || x.mag > 1U) return errc::out_of_range;
+    out[0] = static_cast<std::uint8_t>(x.mag);
+    return std::size_t{1};
+  }
+  FIELDCODEC_TRY_STATUS(detail::check_int_limits(e, x));
+  if (is_signed_integer(e.type)) {
+    if (!x.negative && x.mag > static_cast<std::uint64_t>(signed_max(w))) return errc::overflow;
+    if (x.negative && x.mag > std::uint64_t{0} - static_cast<std::uint64_t>(signed_min(w))) {
+      return errc::overflow;
+    }
+    const std::uint64_t bits = x.negative ? std::uint64_t{0} - x.mag : x.mag;
+    FIELDCODEC_TRY_STATUS(store_signed(out, w, static_cast<std::int64_t>(bits), order));
+    return w;
+  }
+  if (x.negative) return errc::overflow;
+  FIELDCODEC_TRY_STATUS(store_unsigned(out, w, x.mag, order));
+  return w;
+}
+
+/// Read the value of entry `e` from `in`, which must hold exactly width() bytes.
+/// Errors: type_mismatch (byte-string type), truncated (too few bytes), bad_length (too many),
+/// out_of_range (outside the limits with limits::check, BOOLEAN other than 0/1, time reserved
+/// bits), not_representable (NaN/infinity).
+[[nodiscard]] constexpr result<number> decode(const entry &e, std::span<const std::uint8_t> in,
+                                              byte_order order = byte_order::little,
+                                              limits lim = limits::check) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (w == 0U) return errc::type_mismatch;
+  if (in.size() < w) return errc::truncated;
+  if (in.size() > w) return errc::bad_length;
+  if (e.type == data_type::real32 || e.type == data_type::real64) {
+    double d = 0;
+    if (e.type == data_type::real32) {
+      auto f = ieee754::decode_float32(in, order);
+      if (!f) return f.error();
+      d = static_cast<double>(f.value());
+    } else {
+      auto f = ieee754::decode_float64(in, order);
+      if (!f) return f.error();
+      d = f.value();
+    }
+    if (lim == limits::check) FIELDCODEC_TRY_STATUS(detail::check_real_limits(e, d));
+    return num::f(d);
+  }
+  if (is_time(e.type)) {
+    auto ms = load_unsigned(in, 4, order);
+    auto days = load_unsigned(in.subspan(4), 2, order);
+    if (!ms || !days) return errc::truncated;
+    if (ms.value() > time_ms_max) return errc::out_of_range;
+    return to_number(time_value{static_cast<std::uint32_t>(ms.value()),
+                                static_cast<std::uint16_t>(days.value())});
+  }
+  if (e.type == data_type::boolean) {
+    if (in[0] > 1U) return errc::out_of_range;
+    return num::u(in[0]);
+  }
+  number n;
+  detail::wide_int x;
+  if (is_signed_integer(e.type)) {
+    auto v = load_signed(in, w, order);
+    if (!v) return v.error();
+    n = num::i(v.value());
+    x = detail::from_int64(v.value());
+  } else {
+    auto v = load_unsigned(in, w, order);
+    if (!v) return v.error();
+    n = num::u(v.value());
+    x = {false, v.value()};
+  }
+  if (lim == limits::check) FIELDCODEC_TRY_STATUS(detail::check_int_limits(e, x));
+  return n;
+}
+
+/// Arithmetic types the typed forms accept.
+template <class T>
+concept value_type = std::integral<T> || std::floating_point<T>;
+
+/// Typed form of encode (bool, any integer, float, double).
+template <value_type T>
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, T v, std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little) noexcept {
+  if constexpr (std::floating_point<T>) {
+    if (is_integer(e.type) || e.type == data_type::boolean) {
+      auto d = decimal_from_double(static_cast<double>(v));
+      if (!d) return d.error();
+      return encode(e, num::d(d.value()), out, order);
+    }
+    return encode(e, num::f(static_cast<double>(v)), out, order);
+  } else if constexpr (std::is_signed_v<T>) {
+    return encode(e, num::i(static_cast<std::int64_t>(v)), out, order);
+  } else {
+    return encode(e, num::u(static_cast<std::uint64_t>(v)), out, order);
+  }
+}
+
+/// Typed form of decode. Errors: those of decode, overflow when the value does not fit T,
+/// not_representable when a real value is asked for as an integer.
+template <value_type T>
+[[nodiscard]] constexpr result<T> decode(const entry &e, std::span<const std::uint8_t> in,
+                                         byte_order order = byte_order::little,
+                                         limits lim = limits::check) noexcept {
+  auto n = decode(e, in, order, lim);
+  if (!n) return n.error();
+  const number v = n.value();
+  if constexpr (std::floating_point<T>) {
+    return static_cast<T>(v.to_double());
+  } else {
+    if (v.kind == number_kind::real) return errc::not_representable;
+    if (v.kind == number_kind::unsigned_) {
+      if (v.bits > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) {
+        return errc::overflow;
+      }
+      return static_cast<T>(v.bits);
+    }
+    const auto i = static_cast<std::int64_t>(v.bits);
+    if constexpr (std::is_signed_v<T>) {
+      if (i < static_cast<std::int64_t>(std::numeric_limits<T>::min()) ||
+          i > static_cast<std::int64_t>(std::numeric_limits<T>::max())) {
+        return errc::overflow;
+      }
+    } else {
+      if (i < 0 || static_cast<std::uint64_t>(i) > std::numeric_limits<T>::max()) {
+        return errc::overflow;
+      }
+    }
+    return static_cast<T>(i);
+  }
+}
+
+/// Copy a byte-string value (VISIBLE_STRING, OCTET_STRING, UNICODE_STRING, DOMAIN) to `out`.
+/// VISIBLE_STRING allows the characters 0x20..0x7E; UNICODE_STRING needs an even length.
+/// Errors: type_mismatch, too_long (longer than the entry's declared size), bad_character,
+/// bad_length, buffer_too_small.
+[[nodiscard]] constexpr result<std::size_t> encode_bytes(const entry &e,
+                                                         std::span<const std::uint8_t> value,
+                                                         std::span<std::uint8_t> out) noexcept {
+  if (!is_byte_string(e.type)) return errc::type_mismatch;
+  if (e.size != 0U && value.size() > e.size) return errc::too_long;
+  if (e.type == data_type::unicode_string && value.size() % 2U != 0U) return errc::bad_length;
+  if (e.type == data_type::visible_string) {
+    for (const std::uint8_t c : value) {
+      if (c < 0x20U || c > 0x7EU) return errc::bad_character;
+    }
+  }
+  if (out.size() < value.size()) return errc::buffer_too_small;
+  for (std::size_t i = 0; i < value.size(); ++i) out[i] = value[i];
+  return value.size();
+}
+
+/// A byte-string value received for `e`: the same bytes, validated. A VISIBLE_STRING may be
+/// padded with trailing NULs, which are cut off.
+/// Errors: type_mismatch, too_long, bad_character, bad_length.
+[[nodiscard]] constexpr result<std::span<const std::uint8_t>>
+decode_bytes(const entry &e, std::span<const std::uint8_t> in) noexcept {
+  if (!is_byte_string(e.type)) return errc::type_mismatch;
+  if (e.size != 0U && in.size() > e.size) return errc::too_long;
+  if (e.type == data_type::unicode_string && in.size() % 2U != 0U) return errc::bad_length;
+  if (e.type == data_type::visible_string) {
+    std::size_t n = in.size();
+    while (n > 0U && in[n - 1U] == 0U) --n;
+    in = in.first(n);
+    for (const std::uint8_t c : in) {
+      if (c < 0x20U || c > 0x7EU) return errc::bad_character;
+    }
+  }
+  return in;
+}
+
+} // namespace fieldcodec::od
