@@ -124,3 +124,15 @@ TEST_CASE("fixed point limits") {
   CHECK(fc::parse_fixed("1", 19).error() == errc::invalid_argument);
   CHECK(fc::to_fixed({1, 19}, 3).error() == errc::invalid_argument);
 }
+
+TEST_CASE("leading zeros parse and format canonically (fuzz regression)") {
+  // fuzz_core found that "-05" formats back as "-5": leading zeros are accepted on input and
+  // dropped on output; the value and the number of places are kept exactly.
+  auto d = fc::parse_decimal("-05");
+  REQUIRE(d);
+  CHECK(d.value().mantissa == -5);
+  CHECK(d.value().places == 0);
+  std::array<char, 48> b{};
+  CHECK(fmt(b, d.value()) == "-5");
+  CHECK(fmt(b, fc::parse_decimal("007.50").value()) == "7.50");
+}
