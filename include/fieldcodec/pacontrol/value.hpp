@@ -125,8 +125,8 @@ struct value {
     return value{data_type::real, d};
   }
   /// A real date from a float. Errors: not_representable (NaN, infinity), overflow.
-  [[nodiscard]] static constexpr result<value> of_float(float v,
-                                                        float_style style = float_style::master) {
+  [[nodiscard]] static constexpr result<value>
+  of_float(float v, float_style style = float_style::master) noexcept {
     auto d = float_to_decimal(v, style);
     if (!d) return d.error();
     return value{data_type::real, d.value()};
