@@ -246,7 +246,7 @@ expedited(direction d, std::uint8_t base, std::uint8_t node, std::uint16_t index
   if (bytes.empty()) return errc::bad_length;
   if (bytes.size() > 4U) return errc::too_long;
   if (!size_indicated && bytes.size() != 4U) return errc::bad_length;
-  const auto n = static_cast<std::uint8_t>(4U - bytes.size());
+  const auto n = static_cast<unsigned>(4U - bytes.size());
   const auto cmd = static_cast<std::uint8_t>(base | (size_indicated ? (n << 2U) | 0x03U : 0x02U));
   auto f = frame8(id.value(), cmd, index, sub);
   for (std::size_t i = 0; i < bytes.size(); ++i) f.data[4U + i] = bytes[i];
@@ -259,7 +259,7 @@ expedited(direction d, std::uint8_t base, std::uint8_t node, std::uint16_t index
   if (!id) return id.error();
   if (bytes.size() > 7U) return errc::too_long;
   if (!last && bytes.size() != 7U) return errc::bad_length;
-  const auto n = static_cast<std::uint8_t>(7U - bytes.size());
+  const auto n = static_cast<unsigned>(7U - bytes.size());
   const auto cmd =
       static_cast<std::uint8_t>((toggle ? toggle_bit : 0U) | (n << 1U) | (last ? 1U : 0U));
   auto f = frame8(id.value(), cmd, 0, 0);

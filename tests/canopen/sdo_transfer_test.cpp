@@ -1,0 +1,410 @@
+// SDO client and server machines against each other over an in-memory bus, and against
+// hand-made bad frames.
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace od = fieldcodec::od;
+using fieldcodec::errc;
+using od::data_type;
+
+namespace {
+constexpr co::can_frame F(std::uint16_t id, std::initializer_list<std::uint8_t> b) {
+  return co::make_frame(id, b).value();
+}
+
+constexpr od::entry test_entries[] = {
+    {.index = 0x1000,
+     .type = data_type::unsigned32,
+     .access_type = od::access::ro,
+     .default_value = od::num::u(0x00020192)},
+    {.index = 0x1008,
+     .type = data_type::visible_string,
+     .access_type = od::access::constant,
+     .size = 16,
+     .default_text = "XENAX Xvi 75V8S"},
+    {.index = 0x2001, .type = data_type::boolean},
+    {.index = 0x2002, .type = data_type::integer8},
+    {.index = 0x2003, .type = data_type::integer16},
+    {.index = 0x2004, .type = data_type::integer32},
+    {.index = 0x2005, .type = data_type::unsigned8},
+    {.index = 0x2006, .type = data_type::unsigned16},
+    {.index = 0x2007, .type = data_type::unsigned32},
+    {.index = 0x2008, .type = data_type::real32},
+    {.index = 0x2009, .type = data_type::visible_string, .size = 400},
+    {.index = 0x200A, .type = data_type::octet_string, .size = 600},
+    {.index = 0x200B, .type = data_type::unicode_string, .size = 64},
+    {.index = 0x200C, .type = data_type::time_of_day},
+    {.index = 0x200D, .type = data_type::time_difference},
+    {.index = 0x200F, .type = data_type::domain, .size = 1000},
+    {.index = 0x2010, .type = data_type::integer24},
+    {.index = 0x2011, .type = data_type::real64},
+    {.index = 0x2012, .type = data_type::integer40},
+    {.index = 0x2013, .type = data_type::integer48},
+    {.index = 0x2014, .type = data_type::integer56},
+    {.index = 0x2015, .type = data_type::integer64},
+    {.index = 0x2016, .type = data_type::unsigned24},
+    {.index = 0x2018, .type = data_type::unsigned40},
+    {.index = 0x2019, .type = data_type::unsigned48},
+    {.index = 0x201A, .type = data_type::unsigned56},
+    {.index = 0x201B, .type = data_type::unsigned64},
+    {.index = 0x3000,
+     .subindex = 0,
+     .object = od::object_code::record,
+     .type = data_type::unsigned8,
+     .access_type = od::access::ro,
+     .default_value = od::num::u(2)},
+    {.index = 0x3000,
+     .subindex = 1,
+     .object = od::object_code::record,
+     .type = data_type::unsigned16,
+     .access_type = od::access::wo},
+    {.index = 0x3000,
+     .subindex = 2,
+     .object = od::object_code::record,
+     .type = data_type::integer16,
+     .low = od::num::i(-20),
+     .high = od::num::i(20)},
+    {.index = 0x3001, .type = data_type::domain}, // no size: not storable
+};
+constexpr od::dictionary test_dict{test_entries};
+static_assert(test_dict.is_valid());
+
+struct bus {
+  static constexpr std::uint8_t node = 5;
+  std::vector<std::uint8_t> storage =
+      std::vector<std::uint8_t>(sdo::dictionary_store::storage_size(test_dict));
+  sdo::dictionary_store store{test_dict, storage};
+  std::array<std::uint8_t, 1024> server_buffer{};
+  sdo::server<sdo::dictionary_store> server{node, store, server_buffer};
+  sdo::client client{node};
+  std::uint32_t now = 0;
+  std::size_t frames = 0;
+
+  bus() { REQUIRE(store.init_defaults(node).has_value()); }
+
+  // Deliver `first` and every following frame until nobody has anything to send.
+  void run(co::can_frame first) {
+    std::optional<co::can_frame> to_server = first;
+    while (to_server) {
+      ++frames;
+      auto reply = server.on_frame(*to_server, now);
+      to_server.reset();
+      if (!reply) break;
+      ++frames;
+      auto out = client.on_frame(*reply, now);
+      to_server = out.send;
+      REQUIRE(frames < 1000);
+    }
+  }
+  sdo::transfer_state write(std::uint16_t index, std::uint8_t sub,
+                            std::span<const std::uint8_t> data) {
+    run(client.download(index, sub, data, now).value());
+    return client.state();
+  }
+  sdo::transfer_state read(std::uint16_t index, std::uint8_t sub, std::span<std::uint8_t> buf) {
+    run(client.upload(index, sub, buf, now).value());
+    return client.state();
+  }
+};
+
+std::vector<std::uint8_t> pattern(std::size_t n, std::uint8_t seed) {
+  std::vector<std::uint8_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<std::uint8_t>(0x21U + (seed + i) % 90U);
+  return v;
+}
+} // namespace
+
+TEST_CASE("client and server transfer every fixed-size type") {
+  bus b;
+  std::size_t checked = 0;
+  for (const auto &e : test_dict) {
+    if (od::is_byte_string(e.type) || !od::writable(e.access_type)) continue;
+    const auto w = e.width();
+    // a value that is valid for every type: all 0x01 bytes (BOOLEAN: one byte 1), and a second
+    // pattern with high bytes set where the type allows it
+    std::vector<std::uint8_t> v(w, 0x01);
+    if (e.type == data_type::real32) v = {0x00, 0x00, 0xC0, 0x3F}; // 1.5f
+    if (e.type == data_type::real64) v = {0, 0, 0, 0, 0, 0, 0xF8, 0x3F};
+    if (e.type == data_type::time_of_day || e.type == data_type::time_difference) {
+      v = {0x10, 0x20, 0x30, 0x04, 0x50, 0x60};
+    }
+    if (e.index == 0x3000) v = {0xF6, 0xFF}; // -10 within -20..20
+    CAPTURE(e.index);
+    CHECK(b.write(e.index, e.subindex, v) == sdo::transfer_state::done);
+    if (!od::readable(e.access_type)) continue;
+    std::array<std::uint8_t, 16> buf{};
+    CHECK(b.read(e.index, e.subindex, buf) == sdo::transfer_state::done);
+    REQUIRE(b.client.received().size() == w);
+    CHECK(std::equal(v.begin(), v.end(), b.client.received().begin()));
+    ++checked;
+  }
+  CHECK(checked == 22); // 21 fixed-size types + the limited INTEGER16
+  // expedited transfers are two frames each way: 4 frames per write + read.
+}
+
+TEST_CASE("client and server transfer byte strings of 0 to several hundred bytes") {
+  const std::size_t sizes[] = {0,  1,  2,  3,  4,  5,  6,   7,   8,   9,   13, 14,
+                               15, 20, 21, 22, 63, 64, 100, 255, 256, 399, 400};
+  for (std::uint16_t index :
+       {std::uint16_t{0x2009}, std::uint16_t{0x200A}, std::uint16_t{0x200F}}) {
+    for (auto n : sizes) {
+      CAPTURE(index);
+      CAPTURE(n);
+      bus b;
+      const auto v = pattern(n, static_cast<std::uint8_t>(n));
+      REQUIRE(b.write(index, 0, v) == sdo::transfer_state::done);
+      // frames: initiate + response, then one segment + response per 7 bytes (at least one)
+      // for the segmented case; 2 frames for 1..4 bytes.
+      const std::size_t segments = n == 0 ? 1 : (n + 6) / 7;
+      CHECK(b.frames == (n >= 1 && n <= 4 ? 2 : 2 + 2 * segments));
+      std::array<std::uint8_t, 1024> buf{};
+      REQUIRE(b.read(index, 0, buf) == sdo::transfer_state::done);
+      auto got = b.client.received();
+      if (index == 0x2009) {
+        REQUIRE(got.size() == n); // trailing NULs cut
+      } else {
+        REQUIRE(got.size() == test_dict.find(index, 0)->size); // whole slot, zero tail
+      }
+      CHECK(std::equal(v.begin(), v.end(), got.begin()));
+      for (std::size_t i = n; i < got.size(); ++i) CHECK(got[i] == 0);
+    }
+  }
+  // unicode string: even lengths only
+  bus b;
+  const auto v = pattern(10, 3);
+  CHECK(b.write(0x200B, 0, v) == sdo::transfer_state::done);
+  CHECK(b.write(0x200B, 0, pattern(9, 3)) == sdo::transfer_state::failed);
+  CHECK(b.client.abort_code_value() == 0x06090030U);
+}
+
+TEST_CASE("server answers bad accesses with the precise abort code") {
+  bus b;
+  std::array<std::uint8_t, 64> buf{};
+  const std::array<std::uint8_t, 2> two{1, 0};
+  const std::array<std::uint8_t, 3> three{1, 0, 0};
+  const std::array<std::uint8_t, 1> one{1};
+  struct row {
+    bool write;
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::span<const std::uint8_t> data;
+    std::uint32_t code;
+  };
+  const std::array<std::uint8_t, 2> too_high{21, 0};
+  const std::array<std::uint8_t, 2> too_low{0xEB, 0xFF}; // -21
+  const row rows[] = {
+      {false, 0x4000, 0, {}, 0x06020000U},                           // no object
+      {false, 0x2001, 1, {}, 0x06090011U},                           // no sub-index
+      {true, 0x1000, 0, std::span(two).first(2), 0x06010002U},       // read-only
+      {true, 0x1008, 0, std::span(two).first(2), 0x06010002U},       // const
+      {false, 0x3000, 1, {}, 0x06010001U},                           // write-only
+      {true, 0x2006, 0, one, 0x06070013U},                           // too short
+      {true, 0x2006, 0, three, 0x06070012U},                         // too long
+      {true, 0x3000, 2, too_high, 0x06090031U},                      // above 20
+      {true, 0x3000, 2, too_low, 0x06090032U},                       // below -20
+      {true, 0x2001, 0, std::span(three).first(1).subspan(0, 1), 0}, // BOOLEAN 1: fine
+      {false, 0x3001, 0, {}, 0x06010000U},                           // domain without size
+  };
+  for (const auto &r : rows) {
+    CAPTURE(r.index);
+    CAPTURE(static_cast<int>(r.sub));
+    auto st = r.write ? b.write(r.index, r.sub, r.data) : b.read(r.index, r.sub, buf);
+    if (r.code == 0) {
+      CHECK(st == sdo::transfer_state::done);
+      continue;
+    }
+    CHECK(st == sdo::transfer_state::failed);
+    CHECK(b.client.error() == errc::aborted);
+    CHECK(b.client.abort_code_value() == r.code);
+  }
+  const std::array<std::uint8_t, 1> bool2{2};
+  CHECK(b.write(0x2001, 0, bool2) == sdo::transfer_state::failed);
+  CHECK(b.client.abort_code_value() == 0x06090030U);
+  // the visible string default and the device type default are served
+  CHECK(b.read(0x1008, 0, buf) == sdo::transfer_state::done);
+  CHECK(std::string_view(reinterpret_cast<const char *>(b.client.received().data()),
+                         b.client.received().size()) == "XENAX Xvi 75V8S");
+  CHECK(b.read(0x1000, 0, buf) == sdo::transfer_state::done);
+  CHECK(b.client.received().size() == 4);
+  CHECK(b.client.received()[0] == 0x92);
+  CHECK(b.client.received()[2] == 0x02);
+}
+
+TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreements") {
+  std::array<std::uint8_t, 16> buf{};
+  SUBCASE("toggle error in an upload") {
+    sdo::client c(5);
+    CHECK(c.upload(0x1008, 0, buf, 0).value() == F(0x605, {0x40, 0x08, 0x10, 0, 0, 0, 0, 0}));
+    auto o = c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 10, 0, 0, 0}), 1);
+    CHECK(*o.send == F(0x605, {0x60, 0, 0, 0, 0, 0, 0, 0}));
+    o = c.on_frame(F(0x585, {0x00, 1, 2, 3, 4, 5, 6, 7}), 2);
+    CHECK(*o.send == F(0x605, {0x70, 0, 0, 0, 0, 0, 0, 0}));
+    o = c.on_frame(F(0x585, {0x00 | 0x05, 8, 9, 10, 0, 0, 0, 0}), 3); // toggle 0 again
+    CHECK(o.state == sdo::transfer_state::failed);
+    CHECK(c.error() == errc::bad_toggle);
+    CHECK(*o.send == F(0x605, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x03, 0x05}));
+  }
+  SUBCASE("segments disagree with the announced size") {
+    sdo::client c(5);
+    (void)c.upload(0x1008, 0, buf, 0);
+    (void)c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 10, 0, 0, 0}), 1);
+    (void)c.on_frame(F(0x585, {0x00, 1, 2, 3, 4, 5, 6, 7}), 2);
+    // t=1, n=5 (2 bytes), c=1: 7 + 2 = 9 bytes, 10 announced
+    auto o = c.on_frame(F(0x585, {0x1B, 8, 9, 0, 0, 0, 0, 0}), 3);
+    CHECK(o.state == sdo::transfer_state::failed);
+    CHECK(c.error() == errc::bad_length);
+    CHECK(c.abort_code_value() == 0x06070013U);
+  }
+  SUBCASE("more data than announced") {
+    sdo::client c(5);
+    (void)c.upload(0x1008, 0, buf, 0);
+    (void)c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 5, 0, 0, 0}), 1);
+    auto o = c.on_frame(F(0x585, {0x01, 1, 2, 3, 4, 5, 6, 7}), 2);
+    CHECK(c.error() == errc::bad_length);
+    CHECK(c.abort_code_value() == 0x06070012U);
+    CHECK(o.send.has_value());
+  }
+  SUBCASE("upload larger than the buffer") {
+    sdo::client c(5);
+    (void)c.upload(0x1008, 0, std::span(buf).first(4), 0);
+    auto o = c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 10, 0, 0, 0}), 1);
+    CHECK(c.error() == errc::buffer_too_small);
+    CHECK(*o.send == F(0x605, {0x80, 0x08, 0x10, 0x00, 0x05, 0x00, 0x04, 0x05}));
+    sdo::client d(5);
+    (void)d.upload(0x1008, 0, std::span(buf).first(1), 0);
+    (void)d.on_frame(F(0x585, {0x4B, 0x08, 0x10, 0x00, 1, 2, 0, 0}), 1);
+    CHECK(d.error() == errc::buffer_too_small);
+  }
+  SUBCASE("unexpected frames") {
+    sdo::client c(5);
+    const std::array<std::uint8_t, 2> v{1, 2};
+    (void)c.download(0x6040, 0, v, 0);
+    // other COB-IDs and remote frames are ignored
+    CHECK(!c.on_frame(F(0x586, {0x60, 0x40, 0x60, 0, 0, 0, 0, 0}), 1).send);
+    CHECK(c.busy());
+    // a response for another object
+    auto o = c.on_frame(F(0x585, {0x60, 0x41, 0x60, 0, 0, 0, 0, 0}), 1);
+    CHECK(c.error() == errc::unexpected_frame);
+    CHECK(o.send.has_value());
+    // an upload response to a download
+    sdo::client d(5);
+    (void)d.download(0x6040, 0, v, 0);
+    o = d.on_frame(F(0x585, {0x4B, 0x40, 0x60, 0, 1, 2, 0, 0}), 1);
+    CHECK(d.error() == errc::unexpected_frame);
+    CHECK(d.abort_code_value() == 0x05040001U);
+    // an unknown command specifier
+    sdo::client e(5);
+    (void)e.download(0x6040, 0, v, 0);
+    o = e.on_frame(F(0x585, {0xE0, 0x40, 0x60, 0, 0, 0, 0, 0}), 1);
+    CHECK(e.error() == errc::unknown_command);
+    // a short frame
+    sdo::client g(5);
+    (void)g.download(0x6040, 0, v, 0);
+    o = g.on_frame(F(0x585, {0x60, 0x40, 0x60}), 1);
+    CHECK(g.error() == errc::bad_length);
+    // frames when idle are ignored
+    sdo::client h(5);
+    CHECK(h.on_frame(F(0x585, {0x60, 0x40, 0x60, 0, 0, 0, 0, 0}), 1).state ==
+          sdo::transfer_state::idle);
+  }
+  SUBCASE("toggle error in a download and the server's abort") {
+    sdo::client c(5);
+    const auto v = pattern(20, 0);
+    (void)c.download(0x2009, 0, v, 0);
+    auto o = c.on_frame(F(0x585, {0x60, 0x09, 0x20, 0, 0, 0, 0, 0}), 1);
+    CHECK(o.send->data[0] == 0x00);                           // first segment, toggle 0, 7 bytes
+    o = c.on_frame(F(0x585, {0x30, 0, 0, 0, 0, 0, 0, 0}), 2); // toggle 1: wrong
+    CHECK(c.error() == errc::bad_toggle);
+    sdo::client d(5);
+    (void)d.download(0x2009, 0, v, 0);
+    o = d.on_frame(F(0x585, {0x80, 0x09, 0x20, 0, 0x00, 0x00, 0x04, 0x05}), 1);
+    CHECK(!o.send);
+    CHECK(d.error() == errc::aborted);
+    CHECK(d.abort_code_value() == 0x05040000U);
+  }
+  SUBCASE("timeout and cancel, busy") {
+    sdo::client c(5, 100);
+    (void)c.upload(0x1000, 0, buf, 0xFFFF'FFF0U); // wraps around
+    CHECK(c.upload(0x1000, 0, buf, 0) == errc::bad_state);
+    CHECK(!c.poll(0x0000'0050U).send); // 96 ms
+    auto o = c.poll(0x0000'0054U);     // 100 ms
+    CHECK(c.error() == errc::timeout);
+    CHECK(*o.send == F(0x605, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05}));
+    (void)c.upload(0x1000, 0, buf, 0);
+    o = c.cancel();
+    CHECK(c.error() == errc::aborted);
+    CHECK(o.send->data[0] == 0x80);
+    sdo::client bad(0);
+    CHECK(bad.upload(0x1000, 0, buf, 0) == errc::invalid_argument);
+  }
+}
+
+TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, sizes") {
+  bus b;
+  auto &s = b.server;
+  SUBCASE("stray segment and upload-segment requests") {
+    auto r = s.on_frame(F(0x605, {0x00, 1, 2, 3, 4, 5, 6, 7}), 0);
+    CHECK(r->data[0] == 0x80);
+    CHECK(sdo::decode_response(*r).value().code == 0x05040001U);
+    r = s.on_frame(F(0x605, {0x60, 0, 0, 0, 0, 0, 0, 0}), 0);
+    CHECK(sdo::decode_response(*r).value().code == 0x05040001U);
+  }
+  SUBCASE("block transfer is refused cleanly") {
+    auto r = s.on_frame(F(0x605, {0xC6, 0x09, 0x20, 0x00, 20, 0, 0, 0}), 0);
+    CHECK(*r == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
+    r = s.on_frame(F(0x605, {0xA4, 0x09, 0x20, 0x00, 0x7F, 0, 0, 0}), 0);
+    CHECK(sdo::decode_response(*r).value().code == 0x05040001U);
+    r = s.on_frame(F(0x605, {0xE0, 0x09, 0x20, 0x00, 0, 0, 0, 0}), 0);
+    CHECK(sdo::decode_response(*r).value().code == 0x05040001U);
+  }
+  SUBCASE("segment toggle error") {
+    CHECK(s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 14, 0, 0, 0}), 0)->data[0] == 0x60);
+    CHECK(s.on_frame(F(0x605, {0x00, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0)->data[0] == 0x20);
+    auto r = s.on_frame(F(0x605, {0x01, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0);
+    CHECK(*r == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x00, 0x00, 0x03, 0x05}));
+    CHECK(s.last_error() == errc::bad_toggle);
+  }
+  SUBCASE("segments disagree with the announced size") {
+    (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
+    (void)s.on_frame(F(0x605, {0x00, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0);
+    auto r = s.on_frame(F(0x605, {0x10, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0);
+    CHECK(sdo::decode_response(*r).value().code == 0x06070012U);
+    (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
+    auto r2 = s.on_frame(F(0x605, {0x0B, 'a', 'b', 0, 0, 0, 0, 0}), 0); // last, 2 bytes
+    CHECK(sdo::decode_response(*r2).value().code == 0x06070013U);
+    auto r3 = s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 0x00, 0x10, 0, 0}), 0); // 4096
+    CHECK(sdo::decode_response(*r3).value().code == 0x05040005U);
+  }
+  SUBCASE("timeout of a segmented transfer") {
+    (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
+    CHECK(!s.poll(999));
+    auto r = s.poll(1000);
+    CHECK(*r == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x00, 0x00, 0x04, 0x05}));
+    CHECK(s.state() == sdo::transfer_state::failed);
+    CHECK(!s.poll(5000));
+  }
+  SUBCASE("frames it does not answer") {
+    CHECK(!s.on_frame(F(0x606, {0x40, 0, 0x10, 0, 0, 0, 0, 0}), 0)); // other node
+    CHECK(!s.on_frame(F(0x605, {0x40, 0, 0x10}), 0));                // short
+    CHECK(s.last_error() == errc::bad_length);
+    CHECK(!s.on_frame(F(0x605, {0x80, 0, 0x10, 0, 0, 0, 0, 0}), 0)); // abort from client
+  }
+  SUBCASE("client abort ends a segmented transfer") {
+    (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
+    CHECK(!s.on_frame(F(0x605, {0x80, 0x09, 0x20, 0x00, 0, 0, 0, 8}), 0));
+    CHECK(s.state() == sdo::transfer_state::failed);
+    CHECK(s.last_error() == errc::aborted);
+  }
+}
