@@ -3,10 +3,12 @@
 //
 // The card sends an 8-byte EMCY on 0x080 + node: bytes 0–1 error code (LSB first), byte 2
 // error register (object 0x1001), bytes 3–7 manufacturer-specific (unused by the DPQ). Once
-// every error is gone it sends code 0000 ("no error"). The frame itself is decoded by the
-// generic CANopen layer; this header only gives the DPQ's codes and texts. The texts are
-// fieldcodec's own short wording of the manual's table.
+// every error is gone it sends code 0000 ("no error"). The frame, the register bits and the
+// code classes are canopen/emcy.hpp; this header only adds the DPQ's codes and texts (in
+// fieldcodec's own short wording of the manual's table).
 #pragma once
+
+#include <fieldcodec/canopen/emcy.hpp>
 
 #include <array>
 #include <cstddef>
@@ -98,14 +100,14 @@ inline constexpr std::array<emcy_code, 18> emcy_codes{
 /// Bits of the error register (object 0x1001, EMCY byte 2). The DPQ ORs the register of all
 /// present errors. Bit 6 is reserved.
 namespace error_register {
-inline constexpr std::uint8_t generic = 0x01;
-inline constexpr std::uint8_t current = 0x02;
-inline constexpr std::uint8_t voltage = 0x04;
-inline constexpr std::uint8_t temperature = 0x08;
-inline constexpr std::uint8_t communication = 0x10;
-inline constexpr std::uint8_t device_profile = 0x20;
-inline constexpr std::uint8_t reserved = 0x40;
-inline constexpr std::uint8_t manufacturer = 0x80;
+inline constexpr std::uint8_t generic = canopen::emcy::reg::generic;
+inline constexpr std::uint8_t current = canopen::emcy::reg::current;
+inline constexpr std::uint8_t voltage = canopen::emcy::reg::voltage;
+inline constexpr std::uint8_t temperature = canopen::emcy::reg::temperature;
+inline constexpr std::uint8_t communication = canopen::emcy::reg::communication;
+inline constexpr std::uint8_t device_profile = canopen::emcy::reg::device_profile;
+inline constexpr std::uint8_t reserved = canopen::emcy::reg::reserved;
+inline constexpr std::uint8_t manufacturer = canopen::emcy::reg::manufacturer;
 
 /// Text of bit `bit` (0..7); empty for a bit number above 7.
 [[nodiscard]] constexpr std::string_view describe_bit(unsigned bit) noexcept {
@@ -138,21 +140,20 @@ inline constexpr std::uint8_t manufacturer = 0x80;
 }
 } // namespace error_register
 
-/// The error register bit a CiA 301 error code class implies (0x2xxx current, 0x3xxx voltage,
-/// 0x4xxx temperature, 0x81xx/0x82xx communication, 0xFFxx manufacturer); 0 for no_error.
-/// The generic bit (bit 0) is set by the device for every error and is not included here.
+/// The error register bit a CiA 301 error code class implies (canopen::emcy::classify):
+/// current → current, voltage → voltage, temperature → temperature, 0x81xx/0x82xx →
+/// communication, 0xFFxx → manufacturer; 0 otherwise. The generic bit (bit 0) is set by the
+/// device for every error and is not included here.
 [[nodiscard]] constexpr std::uint8_t implied_register_bit(std::uint16_t code) noexcept {
-  if (code == 0U) return 0;
-  switch (code >> 12U) {
-  case 0x2: return error_register::current;
-  case 0x3: return error_register::voltage;
-  case 0x4: return error_register::temperature;
-  case 0x8:
+  using canopen::emcy::error_class;
+  switch (canopen::emcy::classify(code)) {
+  case error_class::current: return error_register::current;
+  case error_class::voltage: return error_register::voltage;
+  case error_class::temperature: return error_register::temperature;
+  case error_class::monitoring:
     if ((code >> 8U) == 0x81U || (code >> 8U) == 0x82U) return error_register::communication;
     return 0;
-  case 0xF:
-    if ((code >> 8U) == 0xFFU) return error_register::manufacturer;
-    return 0;
+  case error_class::device_specific: return error_register::manufacturer;
   default: return 0;
   }
 }

@@ -1,0 +1,119 @@
+// fieldcodec — reading and writing a DPQ parameter by its descriptor with expedited SDO
+// (manual RE 30146-02-Z, 3.3 "SDO - general description" and 3.4 "Starting the PDO
+// transmission").
+//
+//   dpq::write_request(5, p::inj_p_limit_1, 4.0)   → 0x605: 23 23 20 00 1F 05 00 00
+//   dpq::read_request(5, p::inj_p_limit_1)         → 0x605: 40 23 20 00 00 00 00 00
+//   dpq::read_response(5, p::inj_p_limit_1, f)     ← 0x585: 43 23 20 00 1F 05 00 00 → 4.001
+//
+// Every DPQ parameter has 2 or 4 bytes, so expedited transfer always suffices. Writes are sent
+// with size indication (0x2B for 2 bytes, 0x23 for 4), reads with 0x40. The frames come from
+// canopen/sdo.hpp, the values from dpq/parameter.hpp; this header only joins them and checks
+// that a response belongs to the request (node, command, index, sub-index, size).
+#pragma once
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/od/entry.hpp>
+
+#include <cstdint>
+
+namespace fieldcodec::dpq {
+
+/// Expedited download of a raw value. Errors: access_denied (read-only), those of raw_to_bytes,
+/// invalid_argument (node not 1..127).
+[[nodiscard]] constexpr result<canopen::can_frame>
+write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexcept {
+  if (!od::writable(e.access_type)) return errc::access_denied;
+  auto p = raw_to_bytes(e, raw);
+  if (!p) return p.error();
+  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+}
+
+/// Expedited download of an engineering value. Errors: access_denied, out_of_range, overflow,
+/// not_representable, type_mismatch, invalid_argument (node).
+[[nodiscard]] constexpr result<canopen::can_frame>
+write_request(std::uint8_t node, const od::entry &e, decimal eu) noexcept {
+  auto p = write_bytes(e, eu);
+  if (!p) return p.error();
+  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+}
+[[nodiscard]] constexpr result<canopen::can_frame>
+write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
+  auto p = write_bytes(e, eu);
+  if (!p) return p.error();
+  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+}
+
+/// Upload request (command 0x40; the manual's example prints 0x42, see errata DPQ-F1).
+/// Errors: access_denied (write-only), invalid_argument (node).
+[[nodiscard]] constexpr result<canopen::can_frame> read_request(std::uint8_t node,
+                                                                const od::entry &e) noexcept {
+  if (!od::readable(e.access_type)) return errc::access_denied;
+  return canopen::sdo::initiate_upload(node, e.index, e.subindex);
+}
+
+namespace detail {
+/// The response of `node` to a request about `e`, decoded. Errors: unexpected_frame (other
+/// COB-ID, other index or sub-index), aborted (the card sent an abort; decode the frame with
+/// canopen::sdo::decode_response for the code, dpq::describe_sdo_abort names it), bad_length,
+/// unknown_command.
+[[nodiscard]] constexpr result<canopen::sdo::message>
+response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
+  auto id = canopen::cob_id::sdo_tx(node);
+  if (!id) return id.error();
+  if (f.id != id.value() || f.rtr) return errc::unexpected_frame;
+  auto m = canopen::sdo::decode_response(f);
+  if (!m) return m.error();
+  if (m.value().index != e.index || m.value().sub != e.subindex) return errc::unexpected_frame;
+  if (m.value().k == canopen::sdo::kind::abort) return errc::aborted;
+  return m;
+}
+} // namespace detail
+
+/// Check the card's answer to a write: a download response (0x60) for the same object.
+/// The data bytes of the response are ignored, as the manual says.
+/// Errors: those of detail::response_for, unexpected_frame (another kind of response).
+[[nodiscard]] constexpr status write_response(std::uint8_t node, const od::entry &e,
+                                              const canopen::can_frame &f) noexcept {
+  auto m = detail::response_for(node, e, f);
+  if (!m) return m.error();
+  if (m.value().k != canopen::sdo::kind::initiate_download_response) {
+    return errc::unexpected_frame;
+  }
+  return {};
+}
+
+/// The raw value in the card's answer to a read: an expedited upload response for the same
+/// object. With size indication the size must be the entry's width (bad_length otherwise);
+/// without (0x42) the first width bytes of the four are the value.
+/// Errors: those of detail::response_for, unexpected_frame (segmented or another kind),
+/// bad_length, type_mismatch.
+[[nodiscard]] constexpr result<std::int64_t>
+read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
+  auto m = detail::response_for(node, e, f);
+  if (!m) return m.error();
+  const canopen::sdo::message &msg = m.value();
+  if (msg.k != canopen::sdo::kind::initiate_upload_response || !msg.expedited) {
+    return errc::unexpected_frame;
+  }
+  const std::uint32_t w = e.width();
+  if (w == 0U || w > 4U) return errc::type_mismatch;
+  if (msg.size_indicated && msg.data_size != w) return errc::bad_length;
+  return raw_from_bytes(e, msg.bytes().first(w));
+}
+
+/// The engineering value in the card's answer to a read (exact, round-trip places).
+/// Errors: those of read_raw_response and to_eu.
+[[nodiscard]] constexpr result<decimal> read_response(std::uint8_t node, const od::entry &e,
+                                                      const canopen::can_frame &f) noexcept {
+  auto raw = read_raw_response(node, e, f);
+  if (!raw) return raw.error();
+  return to_eu(e, raw.value());
+}
+
+} // namespace fieldcodec::dpq
