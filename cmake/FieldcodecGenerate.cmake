@@ -1,0 +1,64 @@
+# fieldcodec_generate_dictionary(<target> INPUT <file>
+#                                [NAME <namespace>] [OUTPUT_DIR <dir>] [STRICT])
+#
+# Generates <OUTPUT_DIR>/fieldcodec/dictionaries/<NAME>.hpp from an EDS, DCF or CSV file at
+# build time (re-generated when the file or the generator changes) and makes <target> depend
+# on it and see it: `#include <fieldcodec/dictionaries/<NAME>.hpp>`, namespace
+# fieldcodec::dictionaries::<NAME>.
+#
+#   NAME        default: the file name without extension, lower case, every character other
+#               than a letter or digit replaced by '_' (runs collapsed), "n_" before a digit
+#   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/fieldcodec_generated
+#   STRICT      warnings about the input are errors
+#
+# The generator is the fieldcodec-gen target when it exists (fieldcodec built as a
+# subproject), else the program named by FIELDCODEC_GEN_EXECUTABLE or found on the PATH.
+function(fieldcodec_generate_dictionary target)
+  cmake_parse_arguments(ARG "STRICT" "INPUT;NAME;OUTPUT_DIR" "" ${ARGN})
+  if(NOT ARG_INPUT)
+    message(FATAL_ERROR "fieldcodec_generate_dictionary: INPUT is required")
+  endif()
+  get_filename_component(input "${ARG_INPUT}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(NOT ARG_NAME)
+    get_filename_component(stem "${input}" NAME_WE)
+    string(TOLOWER "${stem}" stem)
+    string(REGEX REPLACE "[^a-z0-9]+" "_" stem "${stem}")
+    string(REGEX REPLACE "^_+|_+$" "" stem "${stem}")
+    if(stem MATCHES "^[0-9]")
+      set(stem "n_${stem}")
+    endif()
+    set(ARG_NAME "${stem}")
+  endif()
+  if(NOT ARG_OUTPUT_DIR)
+    set(ARG_OUTPUT_DIR "${CMAKE_CURRENT_BINARY_DIR}/fieldcodec_generated")
+  endif()
+  if(TARGET fieldcodec-gen)
+    set(gen "$<TARGET_FILE:fieldcodec-gen>")
+    set(gen_dep fieldcodec-gen)
+  else()
+    if(NOT FIELDCODEC_GEN_EXECUTABLE)
+      find_program(FIELDCODEC_GEN_EXECUTABLE fieldcodec-gen REQUIRED)
+    endif()
+    set(gen "${FIELDCODEC_GEN_EXECUTABLE}")
+    set(gen_dep "${FIELDCODEC_GEN_EXECUTABLE}")
+  endif()
+  set(strict)
+  if(ARG_STRICT)
+    set(strict --strict)
+  endif()
+  set(out "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries/${ARG_NAME}.hpp")
+  add_custom_command(
+    OUTPUT "${out}"
+    COMMAND ${CMAKE_COMMAND} -E make_directory "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries"
+    COMMAND ${gen} ${strict} --quiet --name ${ARG_NAME} -o "${out}" "${input}"
+    DEPENDS "${input}" ${gen_dep}
+    COMMENT "fieldcodec-gen: ${ARG_NAME}.hpp from ${ARG_INPUT}"
+    VERBATIM)
+  target_sources(${target} PRIVATE "${out}")
+  get_target_property(type ${target} TYPE)
+  if(type STREQUAL "INTERFACE_LIBRARY")
+    target_include_directories(${target} INTERFACE "${ARG_OUTPUT_DIR}")
+  else()
+    target_include_directories(${target} PUBLIC "${ARG_OUTPUT_DIR}")
+  endif()
+endfunction()

@@ -1,0 +1,61 @@
+#!/bin/sh
+# Regenerate include/fieldcodec/dictionaries/<name>.hpp from every dictionaries/*.eds, *.dcf
+# and *.csv. With --check nothing is written: the script fails (exit 1) when a checked-in
+# header differs from what the generator writes, is missing, or has no source any more.
+#
+# usage: codegen/regenerate.sh [--check] [--gen PATH/TO/fieldcodec-gen]
+#
+# Without --gen (or $FIELDCODEC_GEN) the generator is built in build-regenerate/ first.
+# Output depends only on the input files: same inputs, same bytes.
+set -eu
+cd "$(dirname "$0")/.."
+check=
+gen=${FIELDCODEC_GEN:-}
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --check) check=--check ;;
+    --gen) gen=$2; shift ;;
+    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
+    *) echo "regenerate.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+  shift
+done
+if [ -z "$gen" ]; then
+  cmake -S . -B build-regenerate -DFIELDCODEC_BUILD_TESTS=OFF -DFIELDCODEC_BUILD_EXAMPLES=OFF \
+    -DFIELDCODEC_BUILD_FUZZERS=OFF -DFIELDCODEC_INSTALL=OFF >/dev/null
+  cmake --build build-regenerate --target fieldcodec-gen >/dev/null
+  gen=build-regenerate/codegen/fieldcodec-gen
+fi
+out=include/fieldcodec/dictionaries
+mkdir -p "$out"
+status=0
+expected=
+for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
+  [ -e "$src" ] || continue
+  # a CSV without an index or code column is not a dictionary table (e.g. a helper table)
+  case "$src" in
+    *.csv)
+      header=$(grep -v '^#' "$src" | grep -v '^[[:space:]]*$' | head -n 1)
+      case ",$header," in
+        *,index,*|*,code,*) ;;
+        *) echo "regenerate.sh: warning: $src has no 'index' or 'code' column; skipped" >&2
+           continue ;;
+      esac ;;
+  esac
+  base=$(basename "$src")
+  stem=$(echo "${base%.*}" | tr 'A-Z' 'a-z' | sed -e 's/[^a-z0-9][^a-z0-9]*/_/g' -e 's/^_//' -e 's/_$//')
+  expected="$expected $stem.hpp"
+  if ! "$gen" $check --quiet --name "$stem" -o "$out/$stem.hpp" "$src"; then
+    status=1
+  fi
+done
+if [ -n "$check" ]; then
+  for h in "$out"/*.hpp; do
+    [ -e "$h" ] || continue
+    case " $expected " in
+      *" $(basename "$h") "*) ;;
+      *) echo "$h: error: no source in dictionaries/ (stale generated header)" >&2; status=1 ;;
+    esac
+  done
+fi
+exit $status

@@ -1,0 +1,147 @@
+// fieldcodec-gen — turns EDS/DCF files and CSV tables into constexpr C++ headers, and writes
+// EDS. Exit status: 0 success, 1 input errors (or --check found a difference), 2 usage errors.
+#include "readers.hpp"
+#include "text.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+constexpr const char *usage_text =
+    R"(usage: fieldcodec-gen [options] INPUT
+
+Reads INPUT (.eds or .dcf: CiA 306; .csv: object or command table, see
+docs/dictionary-formats.md) and writes a constexpr C++ header and/or an EDS.
+
+options:
+  -o, --output FILE   write the C++ header to FILE ("-" for standard output)
+      --eds FILE      write the dictionary as a CiA 306 EDS/DCF to FILE ("-" for
+                      standard output); for CSV object tables and EDS/DCF input
+      --name NAME     namespace name below fieldcodec::dictionaries (default: from
+                      the input's file name, e.g. dpq_parameters)
+      --check         do not write; exit 1 when an output file differs from what
+                      would be written (drift check)
+      --strict        treat warnings as errors
+  -q, --quiet         do not print warnings
+  -h, --help          show this text
+      --version       show the version
+
+Without -o or --eds the input is only checked. Diagnostics are printed as
+file:line:column: error|warning: message. Exit status: 0 success, 1 errors in
+the input (or a difference under --check), 2 usage errors.
+)";
+
+int usage_error(const std::string &msg) {
+  std::cerr << "fieldcodec-gen: error: " << msg << "\n"
+            << "usage: fieldcodec-gen [options] INPUT (try --help)\n";
+  return 2;
+}
+
+bool read_all(const std::string &path, std::string &out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return true;
+}
+
+// 0 ok, 1 failure (reported)
+int output(const std::string &path, const std::string &content, bool check) {
+  if (path == "-") {
+    if (!check) std::cout << content;
+    return 0;
+  }
+  std::string old;
+  const bool exists = read_all(path, old);
+  if (check) {
+    if (!exists || old != content) {
+      std::cerr << path << ": error: " << (exists ? "differs from" : "missing, expected")
+                << " the generated output\n";
+      return 1;
+    }
+    return 0;
+  }
+  if (exists && old == content) return 0; // unchanged: keep the time stamp
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out || !(out << content) || !out.flush()) {
+    std::cerr << path << ": error: cannot write file\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  std::string input;
+  std::string header_out;
+  std::string eds_out;
+  std::string name;
+  bool check = false;
+  bool strict = false;
+  bool quiet = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](std::string &dst) -> bool {
+      if (i + 1 >= argc) return false;
+      dst = argv[++i];
+      return true;
+    };
+    if (a == "-h" || a == "--help") {
+      std::cout << usage_text;
+      return 0;
+    }
+    if (a == "--version") {
+      std::cout << "fieldcodec-gen 0.1.0\n";
+      return 0;
+    }
+    if (a == "-o" || a == "--output") {
+      if (!value(header_out)) return usage_error("option " + a + " needs a file name");
+    } else if (a == "--eds") {
+      if (!value(eds_out)) return usage_error("option --eds needs a file name");
+    } else if (a == "--name") {
+      if (!value(name)) return usage_error("option --name needs a name");
+      if (!fieldcodec::gen::is_identifier(name)) {
+        return usage_error("--name '" + name + "' is not a C++ identifier");
+      }
+    } else if (a == "--check") {
+      check = true;
+    } else if (a == "--strict") {
+      strict = true;
+    } else if (a == "-q" || a == "--quiet") {
+      quiet = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      return usage_error("unknown option '" + a + "'");
+    } else if (input.empty()) {
+      input = a;
+    } else {
+      return usage_error("more than one input file ('" + input + "', '" + a + "')");
+    }
+  }
+  if (input.empty()) return usage_error("no input file");
+
+  fieldcodec::gen::diagnostics diag;
+  diag.strict = strict;
+  auto dict = fieldcodec::gen::read_file(input, diag);
+  for (const auto &d : diag.all()) {
+    if (quiet && d.sev == fieldcodec::gen::severity::warning) continue;
+    std::cerr << fieldcodec::gen::diagnostics::format(d) << '\n';
+  }
+  if (diag.too_many()) std::cerr << input << ": error: too many errors, stopped\n";
+  if (!dict || diag.has_errors()) return 1;
+  if (!name.empty()) dict->stem = name;
+  int rc = 0;
+  if (!header_out.empty()) rc |= output(header_out, fieldcodec::gen::emit_header(*dict), check);
+  if (!eds_out.empty()) {
+    if (dict->is_command_table) {
+      std::cerr << input << ": error: a command table cannot be written as EDS\n";
+      return 1;
+    }
+    rc |= output(eds_out, fieldcodec::gen::write_eds(*dict), check);
+  }
+  return rc;
+}

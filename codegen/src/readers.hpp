@@ -1,0 +1,34 @@
+// fieldcodec-gen — readers (EDS/DCF, CSV) and writers (EDS, C++ header).
+#pragma once
+
+#include "diag.hpp"
+#include "model.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace fieldcodec::gen {
+
+/// Read a CiA 306 EDS or DCF from `text` (the file's bytes); `file` names it in diagnostics.
+/// Returns nothing when an error was reported.
+[[nodiscard]] std::optional<dictionary> read_eds(std::string_view text, const std::string &file,
+                                                 diagnostics &diag);
+
+/// Read a CSV object or command table (docs/dictionary-formats.md).
+[[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
+                                                 diagnostics &diag);
+
+/// Write a dictionary (object table) as a CiA 306 EDS (or DCF when it has DCF values).
+[[nodiscard]] std::string write_eds(const dictionary &d);
+
+/// Emit the C++ header.
+[[nodiscard]] std::string emit_header(const dictionary &d);
+
+/// The namespace name for a file stem ("XENAX-CANopen" → "xenax_canopen").
+[[nodiscard]] std::string stem_identifier(std::string_view stem);
+
+/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv). Reports unreadable files.
+[[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
+
+} // namespace fieldcodec::gen

@@ -1,0 +1,343 @@
+#include "text.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <limits>
+
+namespace fieldcodec::gen {
+
+std::string_view trim(std::string_view s) noexcept {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+std::string to_upper(std::string_view s) {
+  std::string r(s);
+  for (char &c : r) {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  }
+  return r;
+}
+
+std::string to_lower(std::string_view s) {
+  std::string r(s);
+  for (char &c : r) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return r;
+}
+
+bool iequals(std::string_view a, std::string_view b) noexcept {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    char x = a[i];
+    char y = b[i];
+    if (x >= 'a' && x <= 'z') x = static_cast<char>(x - 'a' + 'A');
+    if (y >= 'a' && y <= 'z') y = static_cast<char>(y - 'a' + 'A');
+    if (x != y) return false;
+  }
+  return true;
+}
+
+namespace {
+
+bool valid_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    std::uint32_t cp = 0;
+    if (c < 0x80U) {
+      ++i;
+      continue;
+    }
+    if ((c & 0xE0U) == 0xC0U) {
+      n = 1;
+      cp = c & 0x1FU;
+    } else if ((c & 0xF0U) == 0xE0U) {
+      n = 2;
+      cp = c & 0x0FU;
+    } else if ((c & 0xF8U) == 0xF0U) {
+      n = 3;
+      cp = c & 0x07U;
+    } else {
+      return false;
+    }
+    if (i + n >= s.size()) return false;
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto d = static_cast<unsigned char>(s[i + k]);
+      if ((d & 0xC0U) != 0x80U) return false;
+      cp = (cp << 6U) | (d & 0x3FU);
+    }
+    if ((n == 1 && cp < 0x80U) || (n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) ||
+        cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) {
+      return false;
+    }
+    i += n + 1U;
+  }
+  return true;
+}
+
+void append_utf8(std::string &out, std::uint32_t cp) {
+  if (cp < 0x80U) {
+    out += static_cast<char>(cp);
+  } else if (cp < 0x800U) {
+    out += static_cast<char>(0xC0U | (cp >> 6U));
+    out += static_cast<char>(0x80U | (cp & 0x3FU));
+  } else {
+    out += static_cast<char>(0xE0U | (cp >> 12U));
+    out += static_cast<char>(0x80U | ((cp >> 6U) & 0x3FU));
+    out += static_cast<char>(0x80U | (cp & 0x3FU));
+  }
+}
+
+// Windows-1252 0x80..0x9F (0 = unassigned, kept as the Latin-1 control code point)
+constexpr std::array<std::uint16_t, 32> cp1252{
+    0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+    0x2039, 0x0152, 0,      0x017D, 0,      0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+    0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
+
+} // namespace
+
+std::string to_utf8(std::string_view bytes, bool &converted) {
+  converted = false;
+  if (bytes.size() >= 3 && bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  if (valid_utf8(bytes)) return std::string(bytes);
+  converted = true;
+  std::string out;
+  out.reserve(bytes.size() + bytes.size() / 8U);
+  for (const char ch : bytes) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x80U) {
+      out += ch;
+    } else if (c < 0xA0U && cp1252[c - 0x80U] != 0U) {
+      append_utf8(out, cp1252[c - 0x80U]);
+    } else {
+      append_utf8(out, c);
+    }
+  }
+  return out;
+}
+
+int_parse parse_int(std::string_view s) {
+  int_parse r;
+  s = trim(s);
+  if (s.empty()) {
+    r.error = "expected a number, got nothing";
+    return r;
+  }
+  const std::size_t start = 0;
+  std::size_t i = start;
+  bool neg = false;
+  if (s[i] == '-' || s[i] == '+') {
+    neg = s[i] == '-';
+    ++i;
+  }
+  // C integer suffixes (0x1234LL): accepted with a note
+  std::size_t end = s.size();
+  while (end > i + 1U) {
+    const char c = s[end - 1U];
+    if (c == 'L' || c == 'l' || c == 'U' || c == 'u') {
+      --end;
+      r.suffix = true;
+    } else {
+      break;
+    }
+  }
+  unsigned base = 10;
+  if (end - i >= 2U && s[i] == '0' && (s[i + 1U] == 'x' || s[i + 1U] == 'X')) {
+    base = 16;
+    i += 2;
+  } else if (end - i >= 2U && s[i] == '0') {
+    base = 8;
+    ++i;
+  }
+  if (i >= end) {
+    r.error = "expected digits after '" + std::string(s.substr(0, i)) + "'";
+    r.error_pos = i;
+    return r;
+  }
+  std::uint64_t v = 0;
+  for (std::size_t k = i; k < end; ++k) {
+    const char c = s[k];
+    unsigned d = 99;
+    if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
+    if (c >= 'a' && c <= 'f') d = static_cast<unsigned>(c - 'a' + 10);
+    if (c >= 'A' && c <= 'F') d = static_cast<unsigned>(c - 'A' + 10);
+    if (d >= base) {
+      const char *what = base == 16  ? "a hexadecimal digit"
+                         : base == 8 ? "an octal digit"
+                                     : "a digit";
+      r.error = std::string("expected ") + what + ", got '" + std::string(1, c) + "' in '" +
+                std::string(s) + "'";
+      r.error_pos = k;
+      r.suffix = false;
+      return r;
+    }
+    if (v > (std::numeric_limits<std::uint64_t>::max() - d) / base) {
+      r.error = "number '" + std::string(s) + "' does not fit 64 bits";
+      r.error_pos = start;
+      return r;
+    }
+    v = v * base + d;
+  }
+  if (neg) {
+    if (v > std::uint64_t{1} << 63U) {
+      r.error = "number '" + std::string(s) + "' does not fit 64 bits";
+      return r;
+    }
+    r.value = od::num::i(static_cast<std::int64_t>(std::uint64_t{0} - v));
+  } else if (base == 10 &&
+             v <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+    r.value = od::num::i(static_cast<std::int64_t>(v));
+  } else {
+    r.value = od::num::u(v);
+  }
+  r.ok = true;
+  return r;
+}
+
+std::optional<double> parse_real(std::string_view s) {
+  s = trim(s);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (s.empty()) return std::nullopt;
+  double d = 0;
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
+  if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+  if (d != d || d > std::numeric_limits<double>::max() || d < -std::numeric_limits<double>::max()) {
+    return std::nullopt;
+  }
+  return d;
+}
+
+bool is_cpp_keyword(std::string_view s) noexcept {
+  static constexpr std::array<std::string_view, 97> kw{
+      "alignas",       "alignof",     "and",
+      "and_eq",        "asm",         "auto",
+      "bitand",        "bitor",       "bool",
+      "break",         "case",        "catch",
+      "char",          "char8_t",     "char16_t",
+      "char32_t",      "class",       "compl",
+      "concept",       "const",       "consteval",
+      "constexpr",     "constinit",   "const_cast",
+      "continue",      "co_await",    "co_return",
+      "co_yield",      "decltype",    "default",
+      "delete",        "do",          "double",
+      "dynamic_cast",  "else",        "enum",
+      "explicit",      "export",      "extern",
+      "false",         "float",       "for",
+      "friend",        "goto",        "if",
+      "inline",        "int",         "long",
+      "mutable",       "namespace",   "new",
+      "noexcept",      "not",         "not_eq",
+      "nullptr",       "operator",    "or",
+      "or_eq",         "private",     "protected",
+      "public",        "register",    "reinterpret_cast",
+      "requires",      "return",      "short",
+      "signed",        "sizeof",      "static",
+      "static_assert", "static_cast", "struct",
+      "switch",        "template",    "this",
+      "thread_local",  "throw",       "true",
+      "try",           "typedef",     "typeid",
+      "typename",      "union",       "unsigned",
+      "using",         "virtual",     "void",
+      "volatile",      "wchar_t",     "while",
+      "xor",           "xor_eq",      "final",
+      "override",      "import",      "module",
+      "assert"};
+  return std::find(kw.begin(), kw.end(), s) != kw.end();
+}
+
+bool is_identifier(std::string_view s) noexcept {
+  if (s.empty()) return false;
+  if (s.front() >= '0' && s.front() <= '9') return false;
+  for (const char c : s) {
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (!ok) return false;
+  }
+  if (s.find("__") != std::string_view::npos) return false;
+  if (s.front() == '_') return false;
+  return !is_cpp_keyword(s);
+}
+
+std::string make_identifier(std::string_view name) {
+  std::string out;
+  bool pending_sep = false;
+  auto put = [&](std::string_view t) {
+    if (pending_sep && !out.empty()) out += '_';
+    pending_sep = false;
+    out += t;
+  };
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c >= 'A' && c <= 'Z') {
+      put(std::string(1, static_cast<char>(c - 'A' + 'a')));
+    } else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) {
+      put(std::string(1, static_cast<char>(c)));
+    } else if (c == 0xC3U && i + 1U < name.size()) { // UTF-8 Latin-1 supplement
+      const auto d = static_cast<unsigned char>(name[i + 1U]);
+      ++i;
+      switch (d) {
+      case 0xA4:
+      case 0x84: put("ae"); break; // ä Ä
+      case 0xB6:
+      case 0x96: put("oe"); break; // ö Ö
+      case 0xBC:
+      case 0x9C: put("ue"); break; // ü Ü
+      case 0x9F: put("ss"); break; // ß
+      default: pending_sep = true; break;
+      }
+    } else if (c >= 0x80U) {
+      // other non-ASCII: skip the whole UTF-8 sequence
+      while (i + 1U < name.size() && (static_cast<unsigned char>(name[i + 1U]) & 0xC0U) == 0x80U) {
+        ++i;
+      }
+      pending_sep = true;
+    } else {
+      pending_sep = true;
+    }
+  }
+  if (out.empty()) return out;
+  if (out.front() >= '0' && out.front() <= '9') out = "n_" + out;
+  if (is_cpp_keyword(out)) out += '_';
+  return out;
+}
+
+std::string cpp_string(std::string_view s) {
+  std::string out = "\"";
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c == '?' && i + 1U < s.size() && s[i + 1U] == '?') {
+      out += "?\\"; // never a trigraph
+    } else if (c < 0x20U || c == 0x7FU) {
+      constexpr char digits[] = "01234567";
+      out += '\\';
+      out += digits[(c >> 6U) & 7U];
+      out += digits[(c >> 3U) & 7U];
+      out += digits[c & 7U];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  out += '"';
+  return out;
+}
+
+std::string hex(std::uint64_t v, int digits) {
+  static constexpr char h[] = "0123456789ABCDEF";
+  std::string s;
+  while (v != 0U || digits > 0) {
+    s.insert(s.begin(), h[v & 0xFU]);
+    v >>= 4U;
+    --digits;
+  }
+  return s.empty() ? "0" : s;
+}
+
+} // namespace fieldcodec::gen

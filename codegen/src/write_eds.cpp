@@ -1,0 +1,174 @@
+// fieldcodec-gen — CiA 306 EDS/DCF writer (normalised form: hex indices, explicit sub-object
+// sections instead of CompactSubObj, LF line endings, objects in index order).
+#include "readers.hpp"
+#include "text.hpp"
+
+#include <array>
+#include <charconv>
+#include <fieldcodec/core/scaling.hpp>
+
+namespace fieldcodec::gen {
+
+namespace {
+
+std::string eds_number(const od::number &n, bool nodeid) {
+  std::string s;
+  switch (n.kind) {
+  case od::number_kind::none: return nodeid ? "$NODEID" : "";
+  case od::number_kind::signed_: s = std::to_string(static_cast<std::int64_t>(n.bits)); break;
+  case od::number_kind::unsigned_: s = "0x" + hex(n.bits, 1); break;
+  case od::number_kind::real: {
+    std::array<char, 64> buf{};
+    auto [p, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), n.to_double());
+    s.assign(buf.data(), p);
+    break;
+  }
+  case od::number_kind::decimal_: {
+    std::array<char, 48> buf{};
+    auto r = format_decimal(decimal{static_cast<std::int64_t>(n.bits), n.places}, buf);
+    s.assign(buf.data(), r ? r.value() : 0U);
+    break;
+  }
+  }
+  return nodeid ? "$NODEID+" + s : s;
+}
+
+// A limit as a raw value: CSV limits of scaled entries are engineering units.
+std::string eds_limit(const entry &e, const od::number &n) {
+  if (!n) return "";
+  if (e.scaled && od::is_integer(e.type)) {
+    auto d = n.to_decimal();
+    if (d) {
+      auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
+      if (raw) {
+        const std::int64_t v = raw.value();
+        return v < 0 ? std::to_string(v)
+                     : eds_number(od::num::u(static_cast<std::uint64_t>(v)), false);
+      }
+    }
+  }
+  return eds_number(n, false);
+}
+
+void var_keys(std::string &o, const entry &e, bool dcf) {
+  o += "ParameterName=" + e.name + "\n";
+  o += "ObjectType=0x" +
+       hex(static_cast<std::uint8_t>(e.subindex == 0 && (e.object == od::object_code::var ||
+                                                         e.object == od::object_code::domain ||
+                                                         e.object == od::object_code::deftype)
+                                         ? e.object
+                                         : od::object_code::var),
+           1) +
+       "\n";
+  const std::uint16_t type = e.type_code != 0U ? e.type_code : static_cast<std::uint16_t>(e.type);
+  o += "DataType=0x" + hex(type, 4) + "\n";
+  o += "AccessType=" + std::string(od::name(e.access)) + "\n";
+  if (od::is_byte_string(e.type)) {
+    if (!e.def_text.empty()) o += "DefaultValue=" + e.def_text + "\n";
+  } else if (e.def || e.def_nodeid) {
+    o += "DefaultValue=" + eds_number(e.def, e.def_nodeid) + "\n";
+  }
+  if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
+  if (e.high) o += "HighLimit=" + eds_limit(e, e.high) + "\n";
+  o += std::string("PDOMapping=") + (e.pdo == od::pdo_mapping::no ? "0" : "1") + "\n";
+  if (e.has_obj_flags) o += "ObjFlags=0x" + hex(e.obj_flags, 1) + "\n";
+  if (dcf) {
+    if (od::is_byte_string(e.type)) {
+      if (!e.param_text.empty()) o += "ParameterValue=" + e.param_text + "\n";
+    } else if (e.param || e.param_nodeid) {
+      o += "ParameterValue=" + eds_number(e.param, e.param_nodeid) + "\n";
+    }
+    if (!e.denotation.empty()) o += "Denotation=" + e.denotation + "\n";
+  }
+}
+
+} // namespace
+
+std::string write_eds(const dictionary &d) {
+  std::string o;
+  o.reserve(d.entries.size() * 120U + 2048U);
+  auto copy_or = [&](const std::vector<std::pair<std::string, std::string>> &kv,
+                     const std::vector<std::pair<std::string, std::string>> &fallback) {
+    for (const auto &[k, v] : kv.empty() ? fallback : kv) o += k + "=" + v + "\n";
+  };
+  o += "[FileInfo]\n";
+  copy_or(d.file_info, {{"FileName", d.stem + (d.is_dcf ? ".dcf" : ".eds")},
+                        {"FileVersion", "1"},
+                        {"FileRevision", "0"},
+                        {"EDSVersion", "4.0"},
+                        {"Description", "Written by fieldcodec-gen from " + d.source_name},
+                        {"CreatedBy", "fieldcodec-gen"}});
+  o += "\n[DeviceInfo]\n";
+  copy_or(d.device_info, {{"VendorName", ""},
+                          {"ProductName", d.stem},
+                          {"BaudRate_10", "0"},
+                          {"BaudRate_20", "0"},
+                          {"BaudRate_50", "0"},
+                          {"BaudRate_125", "1"},
+                          {"BaudRate_250", "1"},
+                          {"BaudRate_500", "1"},
+                          {"BaudRate_800", "0"},
+                          {"BaudRate_1000", "1"},
+                          {"SimpleBootUpMaster", "0"},
+                          {"SimpleBootUpSlave", "1"},
+                          {"Granularity", "8"},
+                          {"DynamicChannelsSupported", "0"},
+                          {"GroupMessaging", "0"},
+                          {"NrOfRXPDO", "0"},
+                          {"NrOfTXPDO", "0"},
+                          {"LSS_Supported", "0"}});
+  if (!d.dummy_usage.empty()) {
+    o += "\n[DummyUsage]\n";
+    copy_or(d.dummy_usage, {});
+  }
+  if (!d.comments.empty()) {
+    o += "\n[Comments]\nLines=" + std::to_string(d.comments.size()) + "\n";
+    for (std::size_t i = 0; i < d.comments.size(); ++i) {
+      o += "Line" + std::to_string(i + 1U) + "=" + d.comments[i] + "\n";
+    }
+  }
+  if (d.is_dcf && d.node_id > 0) {
+    o += "\n[DeviceComissioning]\nNodeID=" + std::to_string(d.node_id) + "\n";
+    if (!d.node_name.empty()) o += "NodeName=" + d.node_name + "\n";
+  }
+  const char *list_names[] = {"MandatoryObjects", "OptionalObjects", "ManufacturerObjects"};
+  for (int l = 0; l < 3; ++l) {
+    std::vector<std::uint16_t> idx;
+    for (const auto &[index, info] : d.objects) {
+      if (index >= 0x1000U && info.list == l) idx.push_back(index);
+    }
+    o += std::string("\n[") + list_names[l] + "]\nSupportedObjects=" + std::to_string(idx.size()) +
+         "\n";
+    for (std::size_t i = 0; i < idx.size(); ++i) {
+      o += std::to_string(i + 1U) + "=0x" + hex(idx[i], 4) + "\n";
+    }
+  }
+  std::size_t i = 0;
+  for (const auto &[index, info] : d.objects) {
+    while (i < d.entries.size() && d.entries[i].index < index) ++i;
+    std::size_t n = 0;
+    while (i + n < d.entries.size() && d.entries[i + n].index == index) ++n;
+    const bool single =
+        (info.code == od::object_code::var || info.code == od::object_code::domain ||
+         info.code == od::object_code::deftype) &&
+        n == 1U && d.entries[i].subindex == 0U;
+    o += "\n[" + hex(index, 4) + "]\n";
+    if (single) {
+      var_keys(o, d.entries[i], d.is_dcf);
+    } else {
+      o += "ParameterName=" + info.name + "\n";
+      const auto code = info.code == od::object_code::var ? od::object_code::record : info.code;
+      o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
+      if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
+      o += "SubNumber=" + std::to_string(n) + "\n";
+      for (std::size_t k = i; k < i + n; ++k) {
+        o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].subindex, 1) + "]\n";
+        var_keys(o, d.entries[k], d.is_dcf);
+      }
+    }
+    i += n;
+  }
+  return o;
+}
+
+} // namespace fieldcodec::gen

@@ -1,0 +1,548 @@
+// Generated from xenax_powerlink.eds by fieldcodec-gen — do not edit.
+// Regenerate with codegen/regenerate.sh (or the fieldcodec_generate_dictionary CMake function).
+// clang-format off
+#pragma once
+
+#include <fieldcodec/od/data_type.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/number.hpp>
+#include <fieldcodec/od/object.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace fieldcodec::dictionaries::xenax_powerlink {
+
+inline constexpr const char *source_file = "xenax_powerlink.eds";
+
+inline constexpr std::array<od::entry, 364> entries{{
+    {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Device Type", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(131474U)},
+    {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Error Register", .low = od::num::u(0U), .high = od::num::u(255U), .default_value = od::num::u(0U)},
+    {.index = 0x1006, .type = od::data_type::unsigned32, .name = "NMT_CycleLen_U32", .low = od::num::u(100U), .high = od::num::u(100000U), .default_value = od::num::u(1000U)},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Device Name", .default_text = "Servocontroller XENAX Xvi xxVx"},
+    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Hardware Version", .default_text = "BUS Module HW Vxxx.xxx"},
+    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Software Version", .default_text = "BUS Protocol SW Vxxx.xxx"},
+    {.index = 0x1018, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .low = od::num::u(1U), .high = od::num::u(4U), .default_value = od::num::u(4U)},
+    {.index = 0x1018, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Vendor Id", .low = od::num::u(0U), .high = od::num::u(4294967295U)},
+    {.index = 0x1018, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Product Code", .low = od::num::u(0U), .high = od::num::u(4294967295U)},
+    {.index = 0x1018, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Revision Number", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(65536U)},
+    {.index = 0x1018, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Serial Number", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(1U)},
+    {.index = 0x1020, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(4U)},
+    {.index = 0x1020, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "ConfDate_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1020, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "ConfTime_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1020, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "ConfID_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1020, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "VerifyConfInvalid_U32", .default_value = od::num::u(1U)},
+    {.index = 0x1030, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(9U)},
+    {.index = 0x1030, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "InterfaceIndex_U16", .default_value = od::num::u(1U)},
+    {.index = 0x1030, .subindex = 2, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "InterfaceDescription_VSTR"},
+    {.index = 0x1030, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "InterfaceType_U8", .default_value = od::num::u(6U)},
+    {.index = 0x1030, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "InterfaceMtu_U32", .default_value = od::num::u(646U)},
+    {.index = 0x1030, .subindex = 5, .object = od::object_code::record, .type = od::data_type::octet_string, .access_type = od::access::ro, .name = "InterfacePhysAddress_OSTR"},
+    {.index = 0x1030, .subindex = 6, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "InterfaceName_VSTR"},
+    {.index = 0x1030, .subindex = 7, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "InterfaceOperStatus_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1030, .subindex = 8, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "InterfaceAdminState_U8", .default_value = od::num::u(1U)},
+    {.index = 0x1030, .subindex = 9, .object = od::object_code::record, .type = od::data_type::boolean, .access_type = od::access::ro, .name = "Valid_BOOL", .default_value = od::num::u(0U)},
+    {.index = 0x1300, .type = od::data_type::unsigned32, .name = "SDO_SequLayerTimeout_U32", .default_value = od::num::u(2000U)},
+    {.index = 0x1301, .type = od::data_type::unsigned32, .name = "SDO_CmdLayerTimeout_U32", .default_value = od::num::u(1000U)},
+    {.index = 0x1400, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
+    {.index = 0x1400, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "NodeID_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1400, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "MappingVersion_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .subindex = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
+    {.index = 0x1800, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
+    {.index = 0x1800, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "NodeID_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1800, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "MappingVersion_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .subindex = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
+    {.index = 0x1C0B, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(3U)},
+    {.index = 0x1C0B, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "CumulativeCnt_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1C0B, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "ThresholdCnt_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1C0B, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Threshold_U32", .default_value = od::num::u(15U)},
+    {.index = 0x1C0F, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(3U)},
+    {.index = 0x1C0F, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "CumulativeCnt_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1C0F, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "ThresholdCnt_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1C0F, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Threshold_U32", .default_value = od::num::u(15U)},
+    {.index = 0x1C14, .type = od::data_type::unsigned32, .name = "DLL_CNLossOfSocTolerance_U32", .default_value = od::num::u(100000000U)},
+    {.index = 0x1E40, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(5U)},
+    {.index = 0x1E40, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "IfIndex_U16", .default_value = od::num::u(1U)},
+    {.index = 0x1E40, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Addr_IPAD", .default_value = od::num::u(0U)},
+    {.index = 0x1E40, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Netmask_IPAD", .default_value = od::num::u(4294967040U)},
+    {.index = 0x1E40, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "ReasmMaxSize_U16", .default_value = od::num::u(286U)},
+    {.index = 0x1E40, .subindex = 5, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "DefaultGateway_IPAD", .default_value = od::num::u(3232261374U)},
+    {.index = 0x1E4A, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(3U)},
+    {.index = 0x1E4A, .subindex = 1, .object = od::object_code::record, .type = od::data_type::boolean, .name = "Forwarding_BOOL", .default_value = od::num::u(0U)},
+    {.index = 0x1E4A, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned16, .name = "DefaultTTL_U16", .default_value = od::num::u(64U)},
+    {.index = 0x1E4A, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "ForwardDatagrams_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1F82, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "NMT_FeatureFlags_U32", .default_value = od::num::u(583U)},
+    {.index = 0x1F83, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NMT_EPLVersion_U8", .default_value = od::num::u(32U)},
+    {.index = 0x1F8C, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NMT_CurrNMTState_U8", .default_value = od::num::u(28U)},
+    {.index = 0x1F93, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(2U)},
+    {.index = 0x1F93, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NodeID_U8", .default_value = od::num::u(1U)},
+    {.index = 0x1F93, .subindex = 2, .object = od::object_code::record, .type = od::data_type::boolean, .access_type = od::access::ro, .name = "NodeIDByHW_BOOL", .default_value = od::num::u(0U)},
+    {.index = 0x1F98, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(9U)},
+    {.index = 0x1F98, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "IsochrTxMaxPayload_U16", .default_value = od::num::u(36U)},
+    {.index = 0x1F98, .subindex = 2, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "IsochrRxMaxPayload_U16", .default_value = od::num::u(36U)},
+    {.index = 0x1F98, .subindex = 3, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "PResMaxLatency_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1F98, .subindex = 4, .object = od::object_code::record, .type = od::data_type::unsigned16, .name = "PReqActPayloadLimit_U16", .default_value = od::num::u(36U)},
+    {.index = 0x1F98, .subindex = 5, .object = od::object_code::record, .type = od::data_type::unsigned16, .name = "PResActPayloadLimit_U16", .default_value = od::num::u(36U)},
+    {.index = 0x1F98, .subindex = 6, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "ASndMaxLatency_U32", .default_value = od::num::u(0U)},
+    {.index = 0x1F98, .subindex = 7, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "MultiplCycleCnt_U8", .default_value = od::num::u(0U)},
+    {.index = 0x1F98, .subindex = 8, .object = od::object_code::record, .type = od::data_type::unsigned16, .name = "AsyncMTUSize_U16", .default_value = od::num::u(300U)},
+    {.index = 0x1F98, .subindex = 9, .object = od::object_code::record, .type = od::data_type::unsigned16, .name = "Prescaler_U16", .default_value = od::num::u(2U)},
+    {.index = 0x1F99, .type = od::data_type::unsigned32, .name = "NMT_CNBasicEthernetTimeout_U32", .default_value = od::num::u(5000000U)},
+    {.index = 0x1F9A, .type = od::data_type::visible_string, .name = "NMT_HostName_VSTR"},
+    {.index = 0x1F9E, .type = od::data_type::unsigned8, .name = "NMT_ResetCmd_U8", .default_value = od::num::u(255U)},
+    {.index = 0x2000, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "S-Curve Profile", .low = od::num::u(1U), .high = od::num::u(100U), .default_value = od::num::u(20U)},
+    {.index = 0x2001, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Reserved 2001", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x2002, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Reserved 2002", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x2003, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Reserved 2003", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x2004, .type = od::data_type::integer8, .access_type = od::access::ro, .name = "XENAX Error Number", .low = od::num::i(0), .high = od::num::i(127), .default_value = od::num::i(0)},
+    {.index = 0x2005, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "I_Force Actual", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x2006, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Process Status Register", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x2007, .type = od::data_type::unsigned16, .name = "PDO Cycle Time", .low = od::num::u(100U), .high = od::num::u(10000U), .default_value = od::num::u(1000U)},
+    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Motor Type"},
+    {.index = 0x2009, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .name = "Limit Force", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x200A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Force Actual Value", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5000, .type = od::data_type::unsigned32, .name = "Direct Commands", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x5001, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(45U)},
+    {.index = 0x5001, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TS Tell Status", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TE Tell Error Number", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TP Tell Position", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TT Tell Temperature", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TOX Tell Output Hex", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TIX Tell Input Hex", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TMC Tell Motor Current", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TMT Tell Motion Time", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 1", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 2", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 3", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 4", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 13, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 5", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 14, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 6", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 15, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 7", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 16, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCP Tell Captured Position 8", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 17, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TH Tell Reference State", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 18, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "VER Version of Firmware", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 19, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "ACV Acceleration Variation (Jerk, scaled to 1000)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 20, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "I2TM Limit Value (scaled to 10)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 21, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "I2T Calculated Value (scaled to 10)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 22, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "IFPK I_Force Peak (FTM = 0) FPK Force Peak (FTM = 1,2)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 23, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TESM Tell SMU Error", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 24, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "DGMSO Detected Gantry Master Slave Offset", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 25, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SIFF Sector I_Force Curve Failed (FTM = 0) SFF Sector Force Curve Failed (FTM = 1,2) (binary notation, LSB = sector 1)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 26, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "IFPKn I_Force Peak Sector (FTM = 0) FPKn Force Peak Sector (FTM = 1,2) (select sector over Object 0x5003/050)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 27, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "FCV Force Calibration Valid", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 28, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TV Tell Velocity", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 29, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TPT Tell Process Time", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 30, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "VERL Version of Bootloader", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 31, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 1", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 32, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 2", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 33, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 3", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 34, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 4", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 35, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 5", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 36, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 6", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 37, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 7", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 38, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TCPB Tell Capture Pos. Buffer 8", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 39, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TESMH Tell SMU Error History", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 40, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "GR Gear Ratio", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 41, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TTPS Tell Temperature Power Stage (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 42, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TVPSM Tell voltage power supply motor in [mV]", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 43, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "LARES linear axis resolution in [inc/m]", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 44, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "LAST linear axis stroke in [inc]", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5001, .subindex = 45, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TTGS Tell trajectory state", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5002, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(16U)},
+    {.index = 0x5002, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "CO Clear Output Number", .low = od::num::i(1), .high = od::num::i(8)},
+    {.index = 0x5002, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "EVT Event Activation", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5002, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "G Go Immediately", .low = od::num::i(-2147483648), .high = od::num::i(2147483647)},
+    {.index = 0x5002, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "IX Start Index Number", .low = od::num::i(1), .high = od::num::i(50)},
+    {.index = 0x5002, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "PG Start Program Number", .low = od::num::i(1), .high = od::num::i(63)},
+    {.index = 0x5002, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "SO Set Output Number", .low = od::num::i(1), .high = od::num::i(8)},
+    {.index = 0x5002, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "SOX Set Output Hex Mask", .low = od::num::i(0), .high = od::num::i(255)},
+    {.index = 0x5002, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "TGD Set Trigger Position Downward", .low = od::num::i(-2000000000), .high = od::num::i(2000000000)},
+    {.index = 0x5002, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "TGU Set Trigger Position Upward", .low = od::num::i(-2000000000), .high = od::num::i(2000000000)},
+    {.index = 0x5002, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "ETI Enable Track Input", .low = od::num::i(0), .high = od::num::i(12)},
+    {.index = 0x5002, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "DTI Disable Track Input", .low = od::num::i(0), .high = od::num::i(12)},
+    {.index = 0x5002, .subindex = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "PRF Start Profile Number", .low = od::num::i(1), .high = od::num::i(5)},
+    {.index = 0x5002, .subindex = 13, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "CRDA Cogging Reference Drive Automatic", .low = od::num::i(0), .high = od::num::i(2147483647)},
+    {.index = 0x5002, .subindex = 14, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "DIF Drive I_Force", .low = od::num::i(1), .high = od::num::i(10)},
+    {.index = 0x5002, .subindex = 15, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "CLIF Change Limit I_Force", .low = od::num::i(0), .high = od::num::i(2000)},
+    {.index = 0x5002, .subindex = 16, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::wo, .name = "DF Drive Force (Xvi75V8S only)", .low = od::num::i(1), .high = od::num::i(16)},
+    {.index = 0x5003, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(106U)},
+    {.index = 0x5003, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AC Acceleration", .low = od::num::i(2000), .high = od::num::i(1000000000), .default_value = od::num::i(1000000)},
+    {.index = 0x5003, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .name = "S-Curve Profile (in percent)", .low = od::num::i(1), .high = od::num::i(100), .default_value = od::num::i(20)},
+    {.index = 0x5003, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SP Speed", .low = od::num::i(10), .high = od::num::i(100000000), .default_value = od::num::i(100000)},
+    {.index = 0x5003, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PO Position (absolute)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .name = "WA Way (relative)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(20000)},
+    {.index = 0x5003, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DP Deviation Position", .low = od::num::i(1), .high = od::num::i(1000000), .default_value = od::num::i(2000)},
+    {.index = 0x5003, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRHR Direction Reference", .low = od::num::i(0), .high = od::num::i(5), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DTP Deviation Target Position", .low = od::num::i(1), .high = od::num::i(10000), .default_value = od::num::i(100)},
+    {.index = 0x5003, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ED Emergency Deceleration", .low = od::num::i(10000), .high = od::num::i(1000000000), .default_value = od::num::i(10000000)},
+    {.index = 0x5003, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ILAS Input Low Active Selective", .low = od::num::i(0), .high = od::num::i(4095), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ILA Input Low Active", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 12, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IS Stop Current (Linear) Nominal Current (Rotative) scaled to 10mA", .low = od::num::i(10), .high = od::num::i(2000)},
+    {.index = 0x5003, .subindex = 13, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SLPP Software Limit Position Positive", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 14, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SLPN Software Limit Position Negative", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 15, .object = od::object_code::array, .type = od::data_type::integer32, .name = "MD Mode", .low = od::num::i(0), .high = od::num::i(13), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 16, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ML Mass Load (WebMotion: Payload / Inertia)", .low = od::num::i(0), .high = od::num::i(100000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 17, .object = od::object_code::array, .type = od::data_type::integer32, .name = "BWC Bandwidth Current Controller (WebMotion: GAIN CUR)", .low = od::num::i(5), .high = od::num::i(5000), .default_value = od::num::i(1500)},
+    {.index = 0x5003, .subindex = 18, .object = od::object_code::array, .type = od::data_type::integer32, .name = "BWP Bandwidth Position Controller (WebMotion: GAIN POS)", .low = od::num::i(1), .high = od::num::i(5000), .default_value = od::num::i(50)},
+    {.index = 0x5003, .subindex = 19, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IR Run Current (Linear) Torque Current (Rotative) scaled to 10mA", .low = od::num::i(10), .high = od::num::i(2000), .default_value = od::num::i(1200)},
+    {.index = 0x5003, .subindex = 20, .object = od::object_code::array, .type = od::data_type::integer32, .name = "NIX Preselected Index Number", .low = od::num::i(1), .high = od::num::i(50)},
+    {.index = 0x5003, .subindex = 21, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AIX Acceleration of selected Index", .low = od::num::i(2), .high = od::num::i(1000000), .default_value = od::num::i(1000)},
+    {.index = 0x5003, .subindex = 22, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SIX Speed of selected Index", .low = od::num::i(10), .high = od::num::i(100000000), .default_value = od::num::i(100000)},
+    {.index = 0x5003, .subindex = 23, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DIX Distance of selected Index (depends on absolute or relative index definition)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 24, .object = od::object_code::array, .type = od::data_type::integer32, .name = "CI Card Identifier", .low = od::num::i(0), .high = od::num::i(255), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 25, .object = od::object_code::array, .type = od::data_type::integer32, .name = "GSID Gantry Slave Identifier", .low = od::num::i(0), .high = od::num::i(4), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 26, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FQC Filter Quality Current", .low = od::num::i(500), .high = od::num::i(100000), .default_value = od::num::i(5000)},
+    {.index = 0x5003, .subindex = 27, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FFC Filter Frequency Current", .low = od::num::i(0), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 28, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ICP Increments per Puls", .low = od::num::i(0), .high = od::num::i(50), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 29, .object = od::object_code::array, .type = od::data_type::integer32, .name = "INH Input Home Sensor", .low = od::num::i(1), .high = od::num::i(8), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 30, .object = od::object_code::array, .type = od::data_type::integer32, .name = "OVRD Speed Override", .low = od::num::i(0), .high = od::num::i(100), .default_value = od::num::i(100)},
+    {.index = 0x5003, .subindex = 31, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PWRT Phasing Rotative w/o HALL", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 32, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SOA Set Output Activity", .low = od::num::i(0), .high = od::num::i(255), .default_value = od::num::i(255)},
+    {.index = 0x5003, .subindex = 33, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SOT Set Output Type", .low = od::num::i(0), .high = od::num::i(65535), .default_value = od::num::i(21845)},
+    {.index = 0x5003, .subindex = 34, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SR Synchronous Ratio", .low = od::num::i(-1000), .high = od::num::i(1000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 35, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "CAB CAN Baud Rate", .low = od::num::i(10000), .high = od::num::i(1000000), .default_value = od::num::i(500000)},
+    {.index = 0x5003, .subindex = 36, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "ROID Rotative Motor Identifier", .low = od::num::i(0), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 37, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 38, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 39, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SIFS Sector I_Force Start (FTM = 0) SFS Sector Force Start (FTM = 1,2)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 40, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SIFE Sector I_Force End (FTM = 0) SFE Sector Force End (FTM = 1,2)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 41, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IFL I_Force Low", .low = od::num::i(-2312), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 42, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IFH I_Force High", .low = od::num::i(-2312), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 43, .object = od::object_code::array, .type = od::data_type::integer32, .name = "MLPN Mechanical Limit Position Negative", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 44, .object = od::object_code::array, .type = od::data_type::integer32, .name = "MLPP Mechanical Limit Position Positive", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 45, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PGMSO Preset Gantry Master Slave Offset", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 46, .object = od::object_code::array, .type = od::data_type::integer32, .name = "BRKD Brake delay", .low = od::num::i(1), .high = od::num::i(1000), .default_value = od::num::i(100)},
+    {.index = 0x5003, .subindex = 47, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 48, .object = od::object_code::array, .type = od::data_type::integer32, .name = "LIF Limit I_Force", .low = od::num::i(0), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 49, .object = od::object_code::array, .type = od::data_type::integer32, .name = "TYIX Type of Index", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 50, .object = od::object_code::array, .type = od::data_type::integer32, .name = "NSEC Preselected Sector Number", .low = od::num::i(1), .high = od::num::i(10), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 51, .object = od::object_code::array, .type = od::data_type::integer32, .name = "STCX Sector Transition Configuration (Hex Mask)", .low = od::num::i(0), .high = od::num::i(65535), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 52, .object = od::object_code::array, .type = od::data_type::integer32, .name = "NDIF Preselected Drive I_Force Number (FTM = 0) NDF Preselected Drive Force Number (FTM = 1,2)", .low = od::num::i(1), .high = od::num::i(10), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 53, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ADIF Acceleration of selected Drive I_Force (FTM = 0) ADF Acceleration of selected Drive Force (FTM = 1,2)", .low = od::num::i(2), .high = od::num::i(1000000), .default_value = od::num::i(1000)},
+    {.index = 0x5003, .subindex = 54, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SDIF Speed of selected Drive I_Force (FTM = 0) SDF Speed of selected Drive Force (FTM = 1,2)", .low = od::num::i(10), .high = od::num::i(100000000), .default_value = od::num::i(100000)},
+    {.index = 0x5003, .subindex = 55, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IDIF I_Force Limit of selected Drive I_Force", .low = od::num::i(1), .high = od::num::i(2000), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 56, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DDIF Direction of selected Drive I_Force (FTM = 0) DDF Direction of selected Drive Force (FTM = 1,2)", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 57, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SSEC Select Sectors (binary notation, LSB = sector 1)", .low = od::num::i(0), .high = od::num::i(1023), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 58, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SSO Set Sector Offset", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 59, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENCPD Encoder Plausibility Checking Disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 60, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SPAD Set Point ACK disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .high = od::num::i(0), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 62, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRH Dir Home", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 63, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRZ Z-Mark", .low = od::num::i(1), .high = od::num::i(3), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 64, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FQS Filter Quality Speed", .low = od::num::i(500), .high = od::num::i(100000), .default_value = od::num::i(5000)},
+    {.index = 0x5003, .subindex = 65, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FFS Filter Frequency Speed", .low = od::num::i(0), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 66, .object = od::object_code::array, .type = od::data_type::integer32, .name = "EBMD Enhanced Bandwidth Mode Disabled", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 67, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(1000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 68, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AIXD Acceleration of dynamically selected Index", .low = od::num::i(2), .high = od::num::i(1000000), .default_value = od::num::i(1000)},
+    {.index = 0x5003, .subindex = 69, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SIXD Speed of dynamically selected Index", .low = od::num::i(10), .high = od::num::i(100000000), .default_value = od::num::i(100000)},
+    {.index = 0x5003, .subindex = 70, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DIXD Distance of dynamically selected Index (depends on absolute or relative index definition)", .low = od::num::i(-2000000000), .high = od::num::i(2000000000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 71, .object = od::object_code::array, .type = od::data_type::integer32, .name = "TYIXD Type of dynamically selected Index", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 72, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PPSD Pole Placement Stability Dynamics", .low = od::num::i(-50), .high = od::num::i(50), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 73, .object = od::object_code::array, .type = od::data_type::integer32, .name = "IFDCS I_Force Drift Compensation Setting", .low = od::num::i(0), .high = od::num::i(7), .default_value = od::num::i(3)},
+    {.index = 0x5003, .subindex = 74, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 75, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SORF Swing Out Reduction Frequency", .low = od::num::i(0), .high = od::num::i(1000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 76, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SORD Swing Out Reduction Damping", .low = od::num::i(0), .high = od::num::i(50), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 77, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 78, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 79, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AVF Filter Frequency for Current Shaper", .low = od::num::i(0), .high = od::num::i(2000), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 80, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AVD Damping Ratio for Current Shaper", .low = od::num::i(1), .high = od::num::i(50), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 81, .object = od::object_code::array, .type = od::data_type::integer32, .name = "NOF Preselected Output Function", .low = od::num::i(1), .high = od::num::i(8), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 82, .object = od::object_code::array, .type = od::data_type::integer32, .name = "TYOF Type of Output Function", .low = od::num::i(0), .high = od::num::i(13), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 83, .object = od::object_code::array, .type = od::data_type::integer32, .name = "NIF Preselected Input Function", .low = od::num::i(1), .high = od::num::i(8), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 84, .object = od::object_code::array, .type = od::data_type::integer32, .name = "TYIF Type of Input Function", .low = od::num::i(0), .high = od::num::i(22), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 85, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PAIF Parameter A of Input Function", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 86, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PBIF Parameter B of Input Function", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 87, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PCIF Parameter C of Input Function", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 88, .object = od::object_code::array, .type = od::data_type::integer32, .name = "CLF Change Limit Force (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 89, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FD Force of selected Drive Force (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 90, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FH Force High (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 91, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FL Force Low (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 92, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FTM Forceteq Mode (Xvi75V8S only)", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 93, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQBW Signateq Bandwidth (Xvi75V8S only)", .low = od::num::i(100), .high = od::num::i(5000), .default_value = od::num::i(500)},
+    {.index = 0x5003, .subindex = 94, .object = od::object_code::array, .type = od::data_type::integer32, .name = "MM Motor Manufacturer (Xvi75V8S only)", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 95, .object = od::object_code::array, .type = od::data_type::integer32, .name = "AREF Automatic Reference", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 96, .object = od::object_code::array, .type = od::data_type::integer32, .name = "EGMSO Enable user defined gantry Master/Slave offset", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 97, .object = od::object_code::array, .type = od::data_type::integer32, .name = "VMTAE Virtual multiturn for rotative motors with absolute encoder", .low = od::num::i(0), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 98, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENAR Enable absolute reference", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 99, .object = od::object_code::array, .type = od::data_type::integer32, .name = "CTAB Correction Table State", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 100, .object = od::object_code::array, .type = od::data_type::integer32, .name = "APSN number of program to auto start", .low = od::num::i(0), .high = od::num::i(63), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 101, .object = od::object_code::array, .type = od::data_type::integer32, .name = "APSD Automatic program start delay[ms]", .low = od::num::i(0), .high = od::num::i(65535), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 102, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PMHSD Profinet MC_Home support disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 103, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FCSM Force Calibration Storage mode", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 104, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SOD P402 Switch on at transition 3 disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5003, .subindex = 105, .object = od::object_code::array, .type = od::data_type::integer32, .name = "GCME Gantry Coupled Mode Enable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(1)},
+    {.index = 0x5003, .subindex = 106, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FBCM Force buffered CSP mode", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5004, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(11U)},
+    {.index = 0x5004, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .name = "POL Pole Pairs", .low = od::num::i(0), .high = od::num::i(100), .default_value = od::num::i(0)},
+    {.index = 0x5004, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENC Encoder Increments (Rotative, 1 turn of motor shaft)", .low = od::num::i(10), .high = od::num::i(10000000), .default_value = od::num::i(24000)},
+    {.index = 0x5004, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PHD Phase Direction", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5004, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .name = "PHO Phase Offset", .low = od::num::i(0), .high = od::num::i(359), .default_value = od::num::i(0)},
+    {.index = 0x5004, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .name = "MAMO Slider Mass (LINAX / ELAX) Rotor Inertia (Rotative)", .low = od::num::i(0), .high = od::num::i(10000000)},
+    {.index = 0x5004, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FCM Force Constant of Motor", .low = od::num::i(0), .high = od::num::i(100000000)},
+    {.index = 0x5004, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .name = "LPH Inductance Phase-Phase", .low = od::num::i(0), .high = od::num::i(100000)},
+    {.index = 0x5004, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RPH Resistance Phase-Phase", .low = od::num::i(0), .high = od::num::i(100000)},
+    {.index = 0x5004, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FFDY Frictional Force Dynamic", .low = od::num::i(0), .high = od::num::i(10000)},
+    {.index = 0x5004, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FFST Frictional Force Static", .low = od::num::i(0), .high = od::num::i(10000)},
+    {.index = 0x5004, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DMLPP Detected Mechanical Limit Position Positive", .low = od::num::i(0), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(13U)},
+    {.index = 0x5005, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "VERS Version SMU", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SLS Timeout", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "Speed Limit", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "Stop Timeout", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "Position Window", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SFTRD Input Configuration SMU", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "TESM Tell SMU Error", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SMU Master Error Bitfeld", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SMU Slave Error Bitfeld", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SMU Master Info Bitfeld", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SMU Slave Info Bitfeld", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SPC Safety Parameter CRC", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5005, .subindex = 13, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SPCMAC Safety Parameter and MAC Adress CRC (Xvi75V8S only)", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5006, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(10U)},
+    {.index = 0x5006, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .name = "EGW Set Gateway Address", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(-1062731263)},
+    {.index = 0x5006, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .name = "EIP Set IP Address", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(-1062731164)},
+    {.index = 0x5006, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENM Set Net Mask", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(-1024)},
+    {.index = 0x5006, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "EMAC Read MAC Address 3 high Bytes", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5006, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "EMAC Read MAC Address 3 low Bytes", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5006, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .name = "EPRT Set Port Number", .low = od::num::i(1), .high = od::num::i(65535), .default_value = od::num::i(10001)},
+    {.index = 0x5006, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "LICR Show Installed Licences", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5006, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SERB Set Baud Rate on Serial Interface", .low = od::num::i(9600), .high = od::num::i(345600), .default_value = od::num::i(115200)},
+    {.index = 0x5006, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "WebMotion Version", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5006, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "WebMotion Boot Version", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5010, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumOfEntries", .default_value = od::num::u(14U)},
+    {.index = 0x5010, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SQVER Signateq Firmware Version", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQBW Signateq Bandwidth", .low = od::num::i(100), .high = od::num::i(5000), .default_value = od::num::i(500)},
+    {.index = 0x5010, .subindex = 3, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQSNF Signateq Sensor Nominal Force", .low = od::num::i(0), .high = od::num::i(200000), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 4, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQMRP Signateq Measurement Range", .low = od::num::i(0), .high = od::num::i(200000), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 5, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Reserved", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 6, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQSS Signateq Sensor Sensitivity", .low = od::num::i(0), .high = od::num::i(25000000), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 7, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQSFT Signateq Sensor Force Type", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 8, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQCM Signateq Calibration Mode", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 9, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SQFD Signateq Force Direction", .low = od::num::i(0), .high = od::num::i(2), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 10, .object = od::object_code::array, .type = od::data_type::integer32, .name = "LFRMS Limit Force Reached Maximum Speed", .low = od::num::i(0), .high = od::num::i(9000000), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 11, .object = od::object_code::array, .type = od::data_type::integer32, .name = "CLFO Clear force offset", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .name = "SQAC Signateq available calibrations", .low = od::num::i(0), .high = od::num::i(7), .default_value = od::num::i(0)},
+    {.index = 0x5010, .subindex = 13, .object = od::object_code::array, .type = od::data_type::integer32, .name = "BWFP Bandwidth for forceteq pro controller", .low = od::num::i(1), .high = od::num::i(1000), .default_value = od::num::i(50)},
+    {.index = 0x5010, .subindex = 14, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FTPES Forceteq Pro Elastic Spring Constant", .low = od::num::i(1), .high = od::num::i(10000000), .default_value = od::num::i(1000)},
+    {.index = 0x5011, .type = od::data_type::visible_string, .name = "Signateq Sensor Model Type (SQSMT)"},
+    {.index = 0x5012, .type = od::data_type::visible_string, .name = "Signateq Sensor Serial Number (SQSSN)"},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Tell Error String (TES)", .default_text = "no error"},
+    {.index = 0x5021, .type = od::data_type::visible_string, .name = "Servo identification string (SID)"},
+    {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "Error Code", .low = od::num::u(0U), .high = od::num::u(65535U), .default_value = od::num::u(0U)},
+    {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .name = "Controlword", .low = od::num::u(0U), .high = od::num::u(65535U), .default_value = od::num::u(0U)},
+    {.index = 0x6041, .type = od::data_type::unsigned16, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Statusword", .low = od::num::u(0U), .high = od::num::u(65535U), .default_value = od::num::u(0U)},
+    {.index = 0x6060, .type = od::data_type::integer8, .pdo = od::pdo_mapping::yes, .name = "Modes of Operation Requested", .low = od::num::i(-2), .high = od::num::i(10), .default_value = od::num::i(0)},
+    {.index = 0x6061, .type = od::data_type::integer8, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Modes of Operation Display", .low = od::num::i(-2), .high = od::num::i(10), .default_value = od::num::i(0)},
+    {.index = 0x6064, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Position Actual Value", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x6065, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Following Position Error Window", .low = od::num::u(1U), .high = od::num::u(1000000U), .default_value = od::num::u(2000U)},
+    {.index = 0x6067, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Target Position Window", .low = od::num::u(1U), .high = od::num::u(10000U), .default_value = od::num::u(100U)},
+    {.index = 0x6068, .type = od::data_type::unsigned16, .name = "Position Window Time", .low = od::num::u(0U), .high = od::num::u(1000U), .default_value = od::num::u(0U)},
+    {.index = 0x606C, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Velocity Actual Value", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x6073, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .name = "Limit I_Force", .low = od::num::u(0U), .high = od::num::u(2000U), .default_value = od::num::u(0U)},
+    {.index = 0x6078, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Motor Current Actual Value", .low = od::num::i(-20000), .high = od::num::i(20000)},
+    {.index = 0x607A, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .name = "Target Position", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x607D, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Highest Sub-index Value", .low = od::num::u(2U), .high = od::num::u(2U), .default_value = od::num::u(2U)},
+    {.index = 0x607D, .subindex = 1, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Software Position Limit Left", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x607D, .subindex = 2, .object = od::object_code::array, .type = od::data_type::integer32, .name = "Software Position Limit Right", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
+    {.index = 0x6081, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Speed", .low = od::num::u(10U), .high = od::num::u(100000000U), .default_value = od::num::u(100000U)},
+    {.index = 0x6083, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Acceleration", .low = od::num::u(2000U), .high = od::num::u(1000000000U), .default_value = od::num::u(1000000U)},
+    {.index = 0x6085, .type = od::data_type::unsigned32, .name = "Quick Stop Deceleration", .low = od::num::u(10000U), .high = od::num::u(1000000000U), .default_value = od::num::u(10000000U)},
+    {.index = 0x6098, .type = od::data_type::integer8, .name = "Reference Methods", .low = od::num::i(1), .high = od::num::i(15), .default_value = od::num::i(1)},
+    {.index = 0x6099, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Highest Sub-index Value", .low = od::num::u(2U), .high = od::num::u(2U), .default_value = od::num::u(2U)},
+    {.index = 0x6099, .subindex = 1, .object = od::object_code::array, .type = od::data_type::unsigned32, .name = "Reference-Speed searching external Reference sensor", .low = od::num::u(0U), .high = od::num::u(250000U), .default_value = od::num::u(1000U)},
+    {.index = 0x6099, .subindex = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .name = "Z-Speed searching internal encoder Z-mark", .low = od::num::u(0U), .high = od::num::u(100000U), .default_value = od::num::u(500U)},
+    {.index = 0x60B1, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .name = "Velocity Offset", .low = od::num::i(-9000000), .high = od::num::i(9000000), .default_value = od::num::i(0)},
+    {.index = 0x60B2, .type = od::data_type::integer16, .pdo = od::pdo_mapping::yes, .name = "Torque Offset", .low = od::num::i(-32768), .high = od::num::i(32767), .default_value = od::num::i(0)},
+    {.index = 0x60C2, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Highest Sub-index Value", .low = od::num::u(2U), .high = od::num::u(2U), .default_value = od::num::u(2U)},
+    {.index = 0x60C2, .subindex = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Base value", .low = od::num::u(0U), .high = od::num::u(255U), .default_value = od::num::u(1U)},
+    {.index = 0x60C2, .subindex = 2, .object = od::object_code::record, .type = od::data_type::integer8, .name = "10^EXPONENT", .low = od::num::i(-128), .high = od::num::i(63), .default_value = od::num::i(-3)},
+    {.index = 0x60F4, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Actual Position Following Error", .low = od::num::i(-2147483648), .high = od::num::i(2147483647)},
+    {.index = 0x60FD, .type = od::data_type::unsigned32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .name = "Digital Inputs", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x60FE, .object = od::object_code::array, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Highest Sub-index Value", .low = od::num::u(1U), .high = od::num::u(2U), .default_value = od::num::u(2U)},
+    {.index = 0x60FE, .subindex = 1, .object = od::object_code::array, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .name = "Output Bit", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x60FE, .subindex = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .name = "Output Mask (not supported)", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
+    {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .name = "Target Velocity", .low = od::num::i(-9000000), .high = od::num::i(9000000), .default_value = od::num::i(0)},
+    {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Supported Modes of Operation", .low = od::num::u(65697U), .high = od::num::u(65697U), .default_value = od::num::u(65697U)},
+    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Product Website Address", .default_text = "http://www.jennyscience.ch"},
+}};
+
+inline constexpr od::dictionary dictionary{entries};
+static_assert(dictionary.is_valid());
+
+inline constexpr const od::entry &device_type = entries[0]; // 0x1000
+inline constexpr const od::entry &error_register = entries[1]; // 0x1001
+inline constexpr const od::entry &nmt_cyclelen_u32 = entries[2]; // 0x1006
+inline constexpr const od::entry &manufacturer_device_name = entries[3]; // 0x1008
+inline constexpr const od::entry &manufacturer_hardware_version = entries[4]; // 0x1009
+inline constexpr const od::entry &manufacturer_software_version = entries[5]; // 0x100A
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object", {entries.data() + 6, 5}};
+inline constexpr const od::entry &identity_object_nbr_of_entries = entries[6];
+inline constexpr const od::entry &identity_object_vendor_id = entries[7];
+inline constexpr const od::entry &identity_object_product_code = entries[8];
+inline constexpr const od::entry &identity_object_revision_number = entries[9];
+inline constexpr const od::entry &identity_object_serial_number = entries[10];
+inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration", {entries.data() + 11, 5}};
+inline constexpr const od::entry &cfm_verifyconfiguration_nbr_of_entries = entries[11];
+inline constexpr const od::entry &cfm_verifyconfiguration_confdate_u32 = entries[12];
+inline constexpr const od::entry &cfm_verifyconfiguration_conftime_u32 = entries[13];
+inline constexpr const od::entry &cfm_verifyconfiguration_confid_u32 = entries[14];
+inline constexpr const od::entry &cfm_verifyconfiguration_verifyconfinvalid_u32 = entries[15];
+inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC", {entries.data() + 16, 10}};
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_nbr_of_entries = entries[16];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceindex_u16 = entries[17];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacedescription_vstr = entries[18];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacetype_u8 = entries[19];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacemtu_u32 = entries[20];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacephysaddress_ostr = entries[21];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacename_vstr = entries[22];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceoperstatus_u8 = entries[23];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceadminstate_u8 = entries[24];
+inline constexpr const od::entry &nmt_interfacegroup_0h_rec_valid_bool = entries[25];
+inline constexpr const od::entry &sdo_sequlayertimeout_u32 = entries[26]; // 0x1300
+inline constexpr const od::entry &sdo_cmdlayertimeout_u32 = entries[27]; // 0x1301
+inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC", {entries.data() + 28, 3}};
+inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nbr_of_entries = entries[28];
+inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nodeid_u8 = entries[29];
+inline constexpr const od::entry &pdo_rxcommparam_00h_rec_mappingversion_u8 = entries[30];
+inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::record, "PDO_RxMappParam_00h_AU64", {entries.data() + 31, 9}};
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_nbr_of_entries = entries[31];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_1 = entries[32];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_2 = entries[33];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_3 = entries[34];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_4 = entries[35];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_5 = entries[36];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_6 = entries[37];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_7 = entries[38];
+inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_8 = entries[39];
+inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC", {entries.data() + 40, 3}};
+inline constexpr const od::entry &pdo_txcommparam_00h_rec_nbr_of_entries = entries[40];
+inline constexpr const od::entry &pdo_txcommparam_00h_rec_nodeid_u8 = entries[41];
+inline constexpr const od::entry &pdo_txcommparam_00h_rec_mappingversion_u8 = entries[42];
+inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::record, "PDO_TxMappParam_00h_AU64", {entries.data() + 43, 9}};
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_nbr_of_entries = entries[43];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_1 = entries[44];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_2 = entries[45];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_3 = entries[46];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_4 = entries[47];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_5 = entries[48];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_6 = entries[49];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_7 = entries[50];
+inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_8 = entries[51];
+inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC", {entries.data() + 52, 4}};
+inline constexpr const od::entry &dll_cnlosssoc_rec_numberofentries = entries[52];
+inline constexpr const od::entry &dll_cnlosssoc_rec_cumulativecnt_u32 = entries[53];
+inline constexpr const od::entry &dll_cnlosssoc_rec_thresholdcnt_u32 = entries[54];
+inline constexpr const od::entry &dll_cnlosssoc_rec_threshold_u32 = entries[55];
+inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC", {entries.data() + 56, 4}};
+inline constexpr const od::entry &dll_cncrcerror_rec_numberofentries = entries[56];
+inline constexpr const od::entry &dll_cncrcerror_rec_cumulativecnt_u32 = entries[57];
+inline constexpr const od::entry &dll_cncrcerror_rec_thresholdcnt_u32 = entries[58];
+inline constexpr const od::entry &dll_cncrcerror_rec_threshold_u32 = entries[59];
+inline constexpr const od::entry &dll_cnlossofsoctolerance_u32 = entries[60]; // 0x1C14
+inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC", {entries.data() + 61, 6}};
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_numberofentries = entries[61];
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_ifindex_u16 = entries[62];
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_addr_ipad = entries[63];
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_netmask_ipad = entries[64];
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_reasmmaxsize_u16 = entries[65];
+inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_defaultgateway_ipad = entries[66];
+inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC", {entries.data() + 67, 4}};
+inline constexpr const od::entry &nwl_ipgroup_rec_numberofentries = entries[67];
+inline constexpr const od::entry &nwl_ipgroup_rec_forwarding_bool = entries[68];
+inline constexpr const od::entry &nwl_ipgroup_rec_defaultttl_u16 = entries[69];
+inline constexpr const od::entry &nwl_ipgroup_rec_forwarddatagrams_u32 = entries[70];
+inline constexpr const od::entry &nmt_featureflags_u32 = entries[71]; // 0x1F82
+inline constexpr const od::entry &nmt_eplversion_u8 = entries[72]; // 0x1F83
+inline constexpr const od::entry &nmt_currnmtstate_u8 = entries[73]; // 0x1F8C
+inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC", {entries.data() + 74, 3}};
+inline constexpr const od::entry &nmt_eplnodeid_rec_numberofentries = entries[74];
+inline constexpr const od::entry &nmt_eplnodeid_rec_nodeid_u8 = entries[75];
+inline constexpr const od::entry &nmt_eplnodeid_rec_nodeidbyhw_bool = entries[76];
+inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC", {entries.data() + 77, 10}};
+inline constexpr const od::entry &nmt_cycletiming_rec_numberofentries = entries[77];
+inline constexpr const od::entry &nmt_cycletiming_rec_isochrtxmaxpayload_u16 = entries[78];
+inline constexpr const od::entry &nmt_cycletiming_rec_isochrrxmaxpayload_u16 = entries[79];
+inline constexpr const od::entry &nmt_cycletiming_rec_presmaxlatency_u32 = entries[80];
+inline constexpr const od::entry &nmt_cycletiming_rec_preqactpayloadlimit_u16 = entries[81];
+inline constexpr const od::entry &nmt_cycletiming_rec_presactpayloadlimit_u16 = entries[82];
+inline constexpr const od::entry &nmt_cycletiming_rec_asndmaxlatency_u32 = entries[83];
+inline constexpr const od::entry &nmt_cycletiming_rec_multiplcyclecnt_u8 = entries[84];
+inline constexpr const od::entry &nmt_cycletiming_rec_asyncmtusize_u16 = entries[85];
+inline constexpr const od::entry &nmt_cycletiming_rec_prescaler_u16 = entries[86];
+inline constexpr const od::entry &nmt_cnbasicethernettimeout_u32 = entries[87]; // 0x1F99
+inline constexpr const od::entry &nmt_hostname_vstr = entries[88]; // 0x1F9A
+inline constexpr const od::entry &nmt_resetcmd_u8 = entries[89]; // 0x1F9E
+inline constexpr const od::entry &s_curve_profile = entries[90]; // 0x2000
+inline constexpr const od::entry &reserved_2001 = entries[91]; // 0x2001
+inline constexpr const od::entry &reserved_2002 = entries[92]; // 0x2002
+inline constexpr const od::entry &reserved_2003 = entries[93]; // 0x2003
+inline constexpr const od::entry &xenax_error_number = entries[94]; // 0x2004
+inline constexpr const od::entry &i_force_actual = entries[95]; // 0x2005
+inline constexpr const od::entry &process_status_register = entries[96]; // 0x2006
+inline constexpr const od::entry &pdo_cycle_time = entries[97]; // 0x2007
+inline constexpr const od::entry &motor_type = entries[98]; // 0x2008
+inline constexpr const od::entry &limit_force = entries[99]; // 0x2009
+inline constexpr const od::entry &force_actual_value = entries[100]; // 0x200A
+inline constexpr const od::entry &direct_commands = entries[101]; // 0x5000
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter", {entries.data() + 102, 46}};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter", {entries.data() + 148, 17}};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter", {entries.data() + 165, 107}};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter", {entries.data() + 272, 12}};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter", {entries.data() + 284, 14}};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter", {entries.data() + 298, 11}};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter", {entries.data() + 309, 15}};
+inline constexpr const od::entry &signateq_sensor_model_type_sqsmt = entries[324]; // 0x5011
+inline constexpr const od::entry &signateq_sensor_serial_number_sqssn = entries[325]; // 0x5012
+inline constexpr const od::entry &tell_error_string_tes = entries[326]; // 0x5020
+inline constexpr const od::entry &servo_identification_string_sid = entries[327]; // 0x5021
+inline constexpr const od::entry &error_code = entries[328]; // 0x603F
+inline constexpr const od::entry &controlword = entries[329]; // 0x6040
+inline constexpr const od::entry &statusword = entries[330]; // 0x6041
+inline constexpr const od::entry &modes_of_operation_requested = entries[331]; // 0x6060
+inline constexpr const od::entry &modes_of_operation_display = entries[332]; // 0x6061
+inline constexpr const od::entry &position_actual_value = entries[333]; // 0x6064
+inline constexpr const od::entry &following_position_error_window = entries[334]; // 0x6065
+inline constexpr const od::entry &target_position_window = entries[335]; // 0x6067
+inline constexpr const od::entry &position_window_time = entries[336]; // 0x6068
+inline constexpr const od::entry &velocity_actual_value = entries[337]; // 0x606C
+inline constexpr const od::entry &limit_i_force = entries[338]; // 0x6073
+inline constexpr const od::entry &motor_current_actual_value = entries[339]; // 0x6078
+inline constexpr const od::entry &target_position = entries[340]; // 0x607A
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions", {entries.data() + 341, 3}};
+inline constexpr const od::entry &speed = entries[344]; // 0x6081
+inline constexpr const od::entry &acceleration = entries[345]; // 0x6083
+inline constexpr const od::entry &quick_stop_deceleration = entries[346]; // 0x6085
+inline constexpr const od::entry &reference_methods = entries[347]; // 0x6098
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds", {entries.data() + 348, 3}};
+inline constexpr const od::entry &velocity_offset = entries[351]; // 0x60B1
+inline constexpr const od::entry &torque_offset = entries[352]; // 0x60B2
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time", {entries.data() + 353, 3}};
+inline constexpr const od::entry &synchronous_cycle_time_highest_sub_index_value = entries[353];
+inline constexpr const od::entry &synchronous_cycle_time_base_value = entries[354];
+inline constexpr const od::entry &synchronous_cycle_time_n_10_exponent = entries[355];
+inline constexpr const od::entry &actual_position_following_error = entries[356]; // 0x60F4
+inline constexpr const od::entry &digital_inputs = entries[357]; // 0x60FD
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs", {entries.data() + 358, 3}};
+inline constexpr const od::entry &target_velocity = entries[361]; // 0x60FF
+inline constexpr const od::entry &supported_modes_of_operation = entries[362]; // 0x6502
+inline constexpr const od::entry &product_website_address = entries[363]; // 0x6505
+
+} // namespace fieldcodec::dictionaries::xenax_powerlink
+// clang-format on

@@ -1,0 +1,29 @@
+// The checked-in generated dictionaries: shapes other modules rely on.
+#include <fieldcodec/dictionaries/dpq_parameters.hpp>
+#include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/od/value.hpp>
+
+#include <doctest/doctest.h>
+
+namespace dpq = fieldcodec::dictionaries::dpq_parameters;
+namespace pac = fieldcodec::dictionaries::pacontrol_commands;
+namespace xc = fieldcodec::dictionaries::xenax_canopen;
+using fieldcodec::errc;
+
+// DPQ manual 004, chapter 3: Inj. P Limit 1 = 4.0 bar with scale 327,67 → 1311 (0x051F).
+static_assert(dpq::inj_p_limit_1.index == 0x2023);
+static_assert(dpq::inj_p_limit_1.to_raw(4.0).value() == 1311);
+static_assert(dpq::inj_p_limit_1.to_raw(5000.5).error() == errc::out_of_range);
+static_assert(dpq::dictionary.lookup(0x2023, 0).value() == &dpq::inj_p_limit_1);
+static_assert(dpq::dictionary.size() == 221);
+
+static_assert(pac::table.find(0x0600) == &pac::cmd_stop);
+static_assert(pac::cmd_stop.allowed_in("online"));
+
+TEST_CASE("generated: xenax_canopen identity object") {
+  const auto *e = xc::dictionary.find(0x1018, 1);
+  REQUIRE(e != nullptr);
+  CHECK(e->type == fieldcodec::od::data_type::unsigned32);
+  CHECK(xc::dictionary.object(0x1018).size() >= 2);
+}
