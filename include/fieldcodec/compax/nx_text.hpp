@@ -1,0 +1,518 @@
+// fieldcodec — COMPAX Nx commands as program text, the way the manual writes them
+// ("POSA 250", "IF E5=1 GOTO 12", "POSR 100 SPEED 50 ACCEL 200", "P12=V3+5").
+//
+// Text form (one space between words, no spaces inside an operand expression):
+//   NOP  SETS  END  RETURN  VALIDP|VALIDC|VALIDF  SETC n
+//   POSA|POSR|SPEED|SETM x      x = decimal with up to 3 places, Pn, Vn; POSA HOME, POSR CAM,
+//                               SPEED SYNC
+//   ACCEL|WAIT|REPEAT|LOOP x    x = integer 0..65535, Pn, Vn; WAIT START
+//   GOTO n|EXT  GOSUB n|EXT
+//   IF Ex=y… GOTO|GOSUB n   IF ERROR …   IF STOP …   IF <o1><cmp><o2> GOTO|GOSUB n
+//   OUTPUT Ax=y…   Pn=<o1>[<ari><o2>]   Vn=<o1>[<ari><o2>]
+//   POSA x WAIT y   POSR x SPEED y [ACCEL z]   POSR x WAIT y   POSR x OUTPUT Ax=y…
+//   SPEED x WAIT y   WAIT POSA x   WAIT POSR x
+// Operands: Pn, Sn, Vn or a decimal constant; comparisons = < > <= >= <>; arithmetic
+// + - * / \ %. DSP values print with the fewest decimals (at most 3) that show them.
+#pragma once
+
+#include <fieldcodec/compax/dsp_number.hpp>
+#include <fieldcodec/compax/nx.hpp>
+#include <fieldcodec/core/ascii.hpp>
+#include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/result.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace fieldcodec::compax::nx {
+
+/// A buffer this size holds the text of every command.
+inline constexpr std::size_t text_max = 64;
+
+namespace detail {
+
+struct text_writer {
+  std::span<char> out;
+  std::size_t pos = 0;
+  bool ok = true;
+
+  constexpr void put(char c) noexcept {
+    if (pos < out.size()) {
+      out[pos++] = c;
+    } else {
+      ok = false;
+    }
+  }
+  constexpr void put(std::string_view s) noexcept {
+    for (const char c : s) put(c);
+  }
+  constexpr void put_unsigned(std::uint64_t v) noexcept {
+    char tmp[20]{};
+    auto n = ascii::format_unsigned(v, tmp);
+    put(std::string_view{tmp, n.value()});
+  }
+  constexpr void put_dsp(dsp_number d) noexcept {
+    char tmp[32]{};
+    const decimal dec = normalize(decimal{d.to_thousandths(), 3});
+    auto n = format_decimal(dec, tmp);
+    if (!n) {
+      ok = false;
+      return;
+    }
+    put(std::string_view{tmp, n.value()});
+  }
+};
+
+struct names {
+  op o;
+  std::string_view word;
+  std::string_view special;
+};
+inline constexpr std::array<names, 14> op_names{{
+    {op::nop, "NOP", ""},
+    {op::posa, "POSA", "HOME"},
+    {op::posr, "POSR", "CAM"},
+    {op::speed, "SPEED", "SYNC"},
+    {op::setm, "SETM", ""},
+    {op::accel, "ACCEL", ""},
+    {op::wait, "WAIT", "START"},
+    {op::repeat, "REPEAT", ""},
+    {op::loop, "LOOP", ""},
+    {op::setc, "SETC", ""},
+    {op::sets, "SETS", ""},
+    {op::gosub, "GOSUB", "EXT"},
+    {op::goto_, "GOTO", "EXT"},
+    {op::end, "END", ""},
+}};
+
+[[nodiscard]] constexpr const names *find_names(op o) noexcept {
+  for (const auto &n : op_names) {
+    if (n.o == o) return &n;
+  }
+  return nullptr;
+}
+[[nodiscard]] constexpr const names *find_names(std::string_view w) noexcept {
+  for (const auto &n : op_names) {
+    if (n.word == w) return &n;
+  }
+  return nullptr;
+}
+
+[[nodiscard]] constexpr bool is_dsp_op(op o) noexcept {
+  return o == op::posa || o == op::posr || o == op::speed || o == op::setm;
+}
+
+constexpr void put_arg(text_writer &w, op o, const arg &a) noexcept {
+  const names *n = find_names(o);
+  switch (a.kind) {
+  case arg_kind::special: w.put(n->special); return;
+  case arg_kind::parameter:
+    w.put('P');
+    w.put_unsigned(static_cast<std::uint64_t>(a.value));
+    return;
+  case arg_kind::variable:
+    w.put('V');
+    w.put_unsigned(static_cast<std::uint64_t>(a.value));
+    return;
+  case arg_kind::value:
+    if (is_dsp_op(o)) {
+      w.put_dsp(dsp_number{a.value});
+    } else {
+      w.put_unsigned(static_cast<std::uint64_t>(a.value));
+    }
+    return;
+  }
+}
+
+constexpr void put_simple(text_writer &w, op o, const arg &a) noexcept {
+  const names *n = find_names(o);
+  w.put(n->word);
+  const family *f = find_family(o);
+  if (f->s == shape::none || f->s == shape::zero) return;
+  w.put(' ');
+  put_arg(w, o, a);
+}
+
+constexpr void put_operand(text_writer &w, const operand &o) noexcept {
+  switch (o.type) {
+  case operand_type::constant: w.put_dsp(o.constant); return;
+  case operand_type::parameter: w.put('P'); break;
+  case operand_type::status: w.put('S'); break;
+  case operand_type::variable: w.put('V'); break;
+  }
+  w.put_unsigned(o.number);
+}
+
+[[nodiscard]] constexpr std::string_view symbol(comparison c) noexcept {
+  switch (c) {
+  case comparison::eq: return "=";
+  case comparison::lt: return "<";
+  case comparison::gt: return ">";
+  case comparison::le: return "<=";
+  case comparison::ge: return ">=";
+  case comparison::ne: return "<>";
+  }
+  return "";
+}
+[[nodiscard]] constexpr char symbol(arithmetic a) noexcept {
+  switch (a) {
+  case arithmetic::add: return '+';
+  case arithmetic::sub: return '-';
+  case arithmetic::mul: return '*';
+  case arithmetic::div: return '/';
+  case arithmetic::int_div: return '\\';
+  case arithmetic::mod: return '%';
+  case arithmetic::none: break;
+  }
+  return '?';
+}
+
+constexpr void put_pattern(text_writer &w, char letter, std::uint16_t x,
+                           const pattern &p) noexcept {
+  w.put(letter);
+  w.put_unsigned(x);
+  w.put('=');
+  for (std::size_t i = 0; i < p.count; ++i) w.put(static_cast<char>('0' + p.digits[i]));
+}
+
+constexpr void put_jump(text_writer &w, jump j, std::uint16_t target) noexcept {
+  w.put(j == jump::gosub ? " GOSUB " : " GOTO ");
+  w.put_unsigned(target);
+}
+
+} // namespace detail
+
+/// Write the program text of `c` into `out`; returns the number of characters.
+/// Errors: those of encode_content (the command is validated first), buffer_too_small.
+[[nodiscard]] constexpr result<std::size_t> format_command(const command &c,
+                                                           std::span<char> out) noexcept {
+  std::array<std::uint8_t, content_max> scratch{};
+  if (auto e = encode_content(c, scratch); !e) return e.error();
+  detail::text_writer w{out};
+  switch (c.code) {
+  case op::valid:
+    w.put("VALID");
+    w.put(c.letter);
+    break;
+  case op::return_: w.put("RETURN"); break;
+  case op::if_input:
+    w.put("IF ");
+    if (c.number == input_error) {
+      w.put("ERROR");
+    } else if (c.number == input_stop) {
+      w.put("STOP");
+    } else {
+      detail::put_pattern(w, 'E', c.number, c.pat);
+    }
+    detail::put_jump(w, c.jmp, c.target);
+    break;
+  case op::if_compare:
+    w.put("IF ");
+    detail::put_operand(w, c.o1);
+    w.put(detail::symbol(c.cmp));
+    detail::put_operand(w, c.o2);
+    detail::put_jump(w, c.jmp, c.target);
+    break;
+  case op::output:
+    w.put("OUTPUT ");
+    detail::put_pattern(w, 'A', c.number, c.pat);
+    break;
+  case op::assign_p:
+  case op::assign_v:
+    w.put(c.code == op::assign_p ? 'P' : 'V');
+    w.put_unsigned(c.number);
+    w.put('=');
+    detail::put_operand(w, c.o1);
+    if (c.ari != arithmetic::none) {
+      w.put(detail::symbol(c.ari));
+      detail::put_operand(w, c.o2);
+    }
+    break;
+  default:
+    if (c.code == op::wait && c.code2 != op::none) {
+      w.put("WAIT"); // WAIT POSA x / WAIT POSR x: the START is implied
+    } else {
+      detail::put_simple(w, c.code, c.a);
+    }
+    if (c.code2 == op::output) {
+      w.put(" OUTPUT ");
+      detail::put_pattern(w, 'A', c.number, c.pat);
+    } else if (c.code2 != op::none) {
+      w.put(' ');
+      detail::put_simple(w, c.code2, c.b);
+    }
+    if (c.code3 != op::none) {
+      w.put(' ');
+      detail::put_simple(w, c.code3, c.c);
+    }
+    break;
+  }
+  if (!w.ok) return errc::buffer_too_small;
+  return w.pos;
+}
+
+namespace detail {
+
+struct tokens {
+  std::string_view rest;
+  /// The next space-separated word ("" at the end).
+  constexpr std::string_view next() noexcept {
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    std::size_t n = 0;
+    while (n < rest.size() && rest[n] != ' ') ++n;
+    const std::string_view t = rest.substr(0, n);
+    rest.remove_prefix(n);
+    return t;
+  }
+  constexpr bool done() noexcept {
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    return rest.empty();
+  }
+};
+
+[[nodiscard]] constexpr result<std::uint16_t> parse_u16(std::string_view s) noexcept {
+  auto v = ascii::parse_unsigned(s);
+  if (!v) return v.error();
+  if (v.value() > 0xFFFFU) return errc::out_of_range;
+  return static_cast<std::uint16_t>(v.value());
+}
+
+[[nodiscard]] constexpr result<dsp_number> parse_dsp(std::string_view s) noexcept {
+  auto t = parse_fixed(s, 3);
+  if (!t) return t.error();
+  return dsp_number::from_thousandths(t.value());
+}
+
+[[nodiscard]] constexpr result<arg> parse_arg(op o, std::string_view s) noexcept {
+  if (s.empty()) return errc::bad_syntax;
+  const names *n = find_names(o);
+  if (!n->special.empty() && s == n->special) return special();
+  if (s.front() == 'P' || s.front() == 'V') {
+    auto num = parse_u16(s.substr(1));
+    if (!num) return num.error();
+    return s.front() == 'P' ? parameter(num.value()) : variable(num.value());
+  }
+  if (is_dsp_op(o)) {
+    auto d = parse_dsp(s);
+    if (!d) return d.error();
+    return number(d.value());
+  }
+  auto v = parse_u16(s);
+  if (!v) return v.error();
+  return integer(v.value());
+}
+
+/// Length of a leading operand in `s`: Pn / Sn / Vn or a decimal constant (optional '-').
+[[nodiscard]] constexpr std::size_t operand_length(std::string_view s) noexcept {
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == 'P' || s[i] == 'S' || s[i] == 'V')) {
+    ++i;
+  } else if (i < s.size() && s[i] == '-') {
+    ++i;
+  }
+  while (i < s.size() && (ascii::is_digit(s[i]) || s[i] == '.')) ++i;
+  return i;
+}
+
+[[nodiscard]] constexpr result<operand> parse_operand(std::string_view s) noexcept {
+  if (s.empty()) return errc::bad_syntax;
+  const char t = s.front();
+  if (t == 'P' || t == 'S' || t == 'V') {
+    auto n = parse_u16(s.substr(1));
+    if (!n) return n.error();
+    const operand_type ty = t == 'P'   ? operand_type::parameter
+                            : t == 'S' ? operand_type::status
+                                       : operand_type::variable;
+    return operand_of(ty, n.value());
+  }
+  auto d = parse_dsp(s);
+  if (!d) return d.error();
+  return constant(d.value());
+}
+
+[[nodiscard]] constexpr result<pattern> parse_pattern(std::string_view s) noexcept {
+  if (s.empty() || s.size() > 8U) return errc::bad_length;
+  pattern p{};
+  for (const char ch : s) {
+    if (!ascii::is_digit(ch)) return errc::bad_digit;
+    p.digits[p.count++] = static_cast<std::uint8_t>(ch - '0');
+  }
+  return p;
+}
+
+/// "E5=101" / "A3=1" → number and pattern.
+[[nodiscard]] constexpr status parse_io(std::string_view s, char letter, command &c) noexcept {
+  if (s.size() < 2U || s.front() != letter) return errc::bad_syntax;
+  const auto eq = s.find('=');
+  if (eq == std::string_view::npos) return errc::bad_syntax;
+  auto x = parse_u16(s.substr(1, eq - 1U));
+  if (!x) return x.error();
+  auto p = parse_pattern(s.substr(eq + 1U));
+  if (!p) return p.error();
+  c.number = x.value();
+  c.pat = p.value();
+  return {};
+}
+
+[[nodiscard]] constexpr status parse_jump(tokens &t, command &c) noexcept {
+  const auto j = t.next();
+  if (j == "GOTO") {
+    c.jmp = jump::goto_;
+  } else if (j == "GOSUB") {
+    c.jmp = jump::gosub;
+  } else {
+    return errc::bad_syntax;
+  }
+  auto n = parse_u16(t.next());
+  if (!n) return n.error();
+  c.target = n.value();
+  return {};
+}
+
+[[nodiscard]] constexpr result<comparison> parse_comparison(std::string_view &s) noexcept {
+  constexpr std::array<comparison, 6> order{comparison::le, comparison::ge, comparison::ne,
+                                            comparison::eq, comparison::lt, comparison::gt};
+  for (const comparison c : order) {
+    const auto sym = symbol(c);
+    if (s.substr(0, sym.size()) == sym) {
+      s.remove_prefix(sym.size());
+      return c;
+    }
+  }
+  return errc::bad_syntax;
+}
+
+[[nodiscard]] constexpr result<command> parse_if(tokens &t) noexcept {
+  const auto cond = t.next();
+  command c{};
+  if (cond == "ERROR" || cond == "STOP") {
+    c = make_if_input(cond == "ERROR" ? input_error : input_stop, pattern{1, {1}}, jump::goto_, 0);
+  } else if (!cond.empty() && cond.front() == 'E') {
+    c.code = op::if_input;
+    FIELDCODEC_TRY_STATUS(parse_io(cond, 'E', c));
+  } else {
+    c.code = op::if_compare;
+    std::string_view s = cond;
+    const std::size_t n1 = operand_length(s);
+    auto a = parse_operand(s.substr(0, n1));
+    if (!a) return a.error();
+    s.remove_prefix(n1);
+    auto cmp = parse_comparison(s);
+    if (!cmp) return cmp.error();
+    auto b = parse_operand(s);
+    if (!b) return b.error();
+    c.o1 = a.value();
+    c.cmp = cmp.value();
+    c.o2 = b.value();
+  }
+  FIELDCODEC_TRY_STATUS(parse_jump(t, c));
+  return c;
+}
+
+[[nodiscard]] constexpr result<command> parse_assign(std::string_view s) noexcept {
+  command c{};
+  c.code = s.front() == 'P' ? op::assign_p : op::assign_v;
+  const auto eq = s.find('=');
+  if (eq == std::string_view::npos) return errc::bad_syntax;
+  auto n = parse_u16(s.substr(1, eq - 1U));
+  if (!n) return n.error();
+  c.number = n.value();
+  s.remove_prefix(eq + 1U);
+  const std::size_t n1 = operand_length(s);
+  auto a = parse_operand(s.substr(0, n1));
+  if (!a) return a.error();
+  c.o1 = a.value();
+  s.remove_prefix(n1);
+  if (s.empty()) return c;
+  constexpr std::array<arithmetic, 6> ops{arithmetic::add, arithmetic::sub,     arithmetic::mul,
+                                          arithmetic::div, arithmetic::int_div, arithmetic::mod};
+  for (const arithmetic o : ops) {
+    if (s.front() == symbol(o)) c.ari = o;
+  }
+  if (c.ari == arithmetic::none) return errc::bad_syntax;
+  auto b = parse_operand(s.substr(1));
+  if (!b) return b.error();
+  c.o2 = b.value();
+  return c;
+}
+
+[[nodiscard]] constexpr result<command> parse_words(tokens &t) noexcept {
+  const auto w = t.next();
+  if (w.empty()) return errc::bad_syntax;
+  if (w == "IF") return parse_if(t);
+  if (w == "OUTPUT") {
+    command c{};
+    c.code = op::output;
+    FIELDCODEC_TRY_STATUS(parse_io(t.next(), 'A', c));
+    return c;
+  }
+  if (w == "RETURN") return make(op::return_);
+  if (w == "VALIDP" || w == "VALIDC" || w == "VALIDF") return make_valid(w.back());
+  if ((w.front() == 'P' || w.front() == 'V') && w.find('=') != std::string_view::npos) {
+    return parse_assign(w);
+  }
+  const names *n = find_names(w);
+  if (n == nullptr) return errc::unknown_command;
+  command c = make(n->o);
+  const family *f = find_family(n->o);
+  if (n->o == op::wait) {
+    // WAIT POSA x / WAIT POSR x
+    const auto save = t;
+    const auto nw = t.next();
+    if (nw == "POSA" || nw == "POSR") {
+      c.a = special();
+      c.code2 = nw == "POSA" ? op::posa : op::posr;
+      auto b = parse_arg(c.code2, t.next());
+      if (!b) return b.error();
+      c.b = b.value();
+      return c;
+    }
+    t = save;
+  }
+  if (f->s != shape::none && f->s != shape::zero) {
+    auto a = parse_arg(n->o, t.next());
+    if (!a) return a.error();
+    c.a = a.value();
+  }
+  for (int part = 0; part < 2 && !t.done() && can_continue(c, part + 1); ++part) {
+    const auto nw = t.next();
+    if (nw == "OUTPUT" && part == 0) {
+      c.code2 = op::output;
+      FIELDCODEC_TRY_STATUS(parse_io(t.next(), 'A', c));
+      break;
+    }
+    const names *nn = find_names(nw);
+    if (nn == nullptr) return errc::unknown_command;
+    auto a = parse_arg(nn->o, t.next());
+    if (!a) return a.error();
+    c = then(c, nn->o, a.value());
+  }
+  return c;
+}
+
+[[nodiscard]] constexpr result<command> parse_text(std::string_view text) noexcept {
+  tokens t{text};
+  auto c = parse_words(t);
+  if (!c) return c.error();
+  if (!t.done()) return errc::bad_length;
+  return c;
+}
+
+} // namespace detail
+
+/// Program text → command. The result is validated like encode_content() would.
+/// Errors: bad_syntax, unknown_command, bad_digit, out_of_range, not_representable (more than
+/// 3 decimals), overflow, invalid_argument (combination not in the table), bad_length (text
+/// left over, pattern length).
+[[nodiscard]] constexpr result<command> parse_command(std::string_view text) noexcept {
+  auto c = detail::parse_text(text);
+  if (!c) return c.error();
+  std::array<std::uint8_t, content_max> scratch{};
+  if (auto e = encode_content(c.value(), scratch); !e) return e.error();
+  return c;
+}
+
+} // namespace fieldcodec::compax::nx

@@ -1,0 +1,414 @@
+// COMPAX Nx binary program records (manual 000, 2.11.2): every row of the "set memory command
+// code table" encoded from a typed command, decoded back, and through program text.
+#include <fieldcodec/compax/nx.hpp>
+#include <fieldcodec/compax/nx_text.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cx = fieldcodec::compax;
+namespace nx = fieldcodec::compax::nx;
+using fieldcodec::errc;
+using bytes = std::vector<std::uint8_t>;
+
+namespace {
+
+constexpr cx::dsp_number mm(std::int64_t thousandths) {
+  return cx::dsp_number::from_thousandths(thousandths).value();
+}
+
+bytes content(const nx::command &c) {
+  std::array<std::uint8_t, nx::content_max> b{};
+  auto n = nx::encode_content(c, b);
+  REQUIRE(n.has_value());
+  return bytes(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n.value()));
+}
+
+std::string text(const nx::command &c) {
+  std::array<char, nx::text_max> t{};
+  auto n = nx::format_command(c, t);
+  REQUIRE(n.has_value());
+  return std::string(t.data(), n.value());
+}
+
+// bytes ⇄ command ⇄ text ⇄ record, all four ways
+void round_trip(const nx::command &c, const bytes &expected, std::string_view program) {
+  CAPTURE(program);
+  const bytes b = content(c);
+  CHECK(b == expected);
+  auto back = nx::decode_content(b);
+  REQUIRE(back.has_value());
+  CHECK(back.value() == c);
+  CHECK(text(c) == program);
+  auto parsed = nx::parse_command(program);
+  REQUIRE(parsed.has_value());
+  CHECK(parsed.value() == c);
+  auto rec = nx::encode_record(c);
+  REQUIRE(rec.has_value());
+  CHECK(rec.value()[0] == b.size());
+  for (std::size_t i = 1 + b.size(); i < nx::record_size; ++i) CHECK(rec.value()[i] == 0);
+  CHECK(nx::decode_record(rec.value()).value() == c);
+}
+
+bytes dsp_bytes(cx::dsp_number n) {
+  std::array<std::uint8_t, 6> b{};
+  REQUIRE(cx::encode_dsp(n, b).has_value());
+  return bytes(b.begin(), b.end());
+}
+bytes cat(std::initializer_list<bytes> parts) {
+  bytes out;
+  for (const auto &p : parts) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+} // namespace
+
+// DSP number format (assumption, docs/compax.md): 24.24 two's complement, NL first.
+static_assert(cx::dsp_number::from_thousandths(1000).value().raw == 0x01000000);
+static_assert(cx::dsp_number::from_thousandths(-1000).value().raw == -0x01000000);
+static_assert(cx::dsp_number::from_thousandths(500).value().raw == 0x00800000);
+static_assert(cx::dsp_number::from_thousandths(250'000).value().to_thousandths() == 250'000);
+static_assert(cx::dsp_number::from_thousandths(-4'000'000'000).value().to_thousandths() ==
+              -4'000'000'000);
+static_assert(cx::dsp_number::from_thousandths(8'388'608'000).error() == errc::overflow);
+
+// Records and text work in constant expressions.
+static_assert(nx::encode_record(nx::make(nx::op::posa, nx::special())).value() ==
+              nx::record{7, 0x41, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF});
+static_assert(nx::decode_record(nx::record{3, 0x47, 0x00, 0x0C}).value() ==
+              nx::make(nx::op::goto_, nx::integer(12)));
+static_assert(nx::parse_command("IF E5=1 GOTO 12").value() ==
+              nx::make_if_input(5, nx::pattern{1, {1}}, nx::jump::goto_, 12));
+static_assert(nx::parse_command("POSA 250").value() ==
+              nx::make(nx::op::posa, nx::number(cx::dsp_number{250 * cx::dsp_format::one})));
+
+TEST_CASE("DSP number bytes: NL NM NH VL VM VH") {
+  CHECK(dsp_bytes(mm(250'000)) == bytes{0x00, 0x00, 0x00, 0xFA, 0x00, 0x00});
+  CHECK(dsp_bytes(mm(1'500)) == bytes{0x00, 0x00, 0x80, 0x01, 0x00, 0x00});
+  CHECK(dsp_bytes(mm(-1'000)) == bytes{0x00, 0x00, 0x00, 0xFF, 0xFF, 0xFF});
+  CHECK(dsp_bytes(mm(4'000'000'000)) == bytes{0x00, 0x00, 0x00, 0x00, 0x09, 0x3D});
+  CHECK(cx::decode_dsp(bytes{0x00, 0x00, 0x80, 0x01, 0x00, 0x00}).value() == mm(1'500));
+  CHECK(cx::decode_dsp(bytes{0x00, 0x00, 0x80, 0x01, 0x00}).error() == errc::truncated);
+  // 0.001 steps survive the trip
+  for (std::int64_t t = -3000; t <= 3000; ++t) {
+    CHECK(cx::dsp_number::from_thousandths(t).value().to_thousandths() == t);
+  }
+}
+
+TEST_CASE("Nx set-memory table: simple commands, value / parameter / variable forms") {
+  using nx::op;
+  round_trip(nx::make(op::nop), {0x20}, "NOP");
+  round_trip(nx::make_valid('P'), {0x01, 0x56, 0x50}, "VALIDP");
+  round_trip(nx::make_valid('C'), {0x01, 0x56, 0x43}, "VALIDC");
+  round_trip(nx::make_valid('F'), {0x01, 0x56, 0x46}, "VALIDF");
+  round_trip(nx::make(op::end), {0x45, 0x00}, "END");
+  round_trip(nx::make(op::return_), {0x55, 0x00}, "RETURN");
+  round_trip(nx::make(op::sets), {0x51}, "SETS");
+  round_trip(nx::make(op::setc, nx::integer(7)), {0x43, 0x00, 0x07}, "SETC 7");
+  // ACCEL / LOOP / REPEAT / WAIT: 2-byte value MSB LSB, parameter | 0x20, variable | 0x80
+  round_trip(nx::make(op::accel, nx::integer(1000)), {0x4C, 0x03, 0xE8}, "ACCEL 1000");
+  round_trip(nx::make(op::accel, nx::parameter(6)), {0x6C, 0x00, 0x06}, "ACCEL P6");
+  round_trip(nx::make(op::accel, nx::variable(12)), {0xCC, 0x00, 0x0C}, "ACCEL V12");
+  round_trip(nx::make(op::loop, nx::integer(300)), {0x4B, 0x01, 0x2C}, "LOOP 300");
+  round_trip(nx::make(op::loop, nx::parameter(40)), {0x6B, 0x00, 0x28}, "LOOP P40");
+  round_trip(nx::make(op::loop, nx::variable(10)), {0xCB, 0x00, 0x0A}, "LOOP V10");
+  round_trip(nx::make(op::repeat, nx::integer(5)), {0x54, 0x00, 0x05}, "REPEAT 5");
+  round_trip(nx::make(op::repeat, nx::parameter(41)), {0x74, 0x00, 0x29}, "REPEAT P41");
+  round_trip(nx::make(op::repeat, nx::variable(3)), {0xD4, 0x00, 0x03}, "REPEAT V3");
+  round_trip(nx::make(op::wait, nx::integer(500)), {0x57, 0x01, 0xF4}, "WAIT 500");
+  round_trip(nx::make(op::wait, nx::parameter(8)), {0x77, 0x00, 0x08}, "WAIT P8");
+  round_trip(nx::make(op::wait, nx::variable(9)), {0xD7, 0x00, 0x09}, "WAIT V9");
+  round_trip(nx::make(op::wait, nx::special()), {0x57, 0x00, 0x00}, "WAIT START");
+  round_trip(nx::make(op::goto_, nx::integer(12)), {0x47, 0x00, 0x0C}, "GOTO 12");
+  round_trip(nx::make(op::goto_, nx::integer(302)), {0x47, 0x01, 0x2E}, "GOTO 302");
+  round_trip(nx::make(op::goto_, nx::special()), {0x47, 0x00, 0x00}, "GOTO EXT");
+  round_trip(nx::make(op::gosub, nx::integer(200)), {0x42, 0x00, 0xC8}, "GOSUB 200");
+  round_trip(nx::make(op::gosub, nx::special()), {0x42, 0x00, 0x00}, "GOSUB EXT");
+  // POSA / POSR / SPEED / SETM: 6-byte DSP value, parameter/variable number + 4 zero bytes
+  round_trip(nx::make(op::posa, nx::number(mm(250'000))), cat({{0x41}, dsp_bytes(mm(250'000))}),
+             "POSA 250");
+  round_trip(nx::make(op::posa, nx::number(mm(-12'345))), cat({{0x41}, dsp_bytes(mm(-12'345))}),
+             "POSA -12.345");
+  round_trip(nx::make(op::posa, nx::parameter(12)), {0x61, 0x00, 0x0C, 0, 0, 0, 0}, "POSA P12");
+  round_trip(nx::make(op::posa, nx::variable(3)), {0xC1, 0x00, 0x03, 0, 0, 0, 0}, "POSA V3");
+  round_trip(nx::make(op::posa, nx::special()), {0x41, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
+             "POSA HOME");
+  round_trip(nx::make(op::posr, nx::number(mm(15'800))), cat({{0x52}, dsp_bytes(mm(15'800))}),
+             "POSR 15.8");
+  round_trip(nx::make(op::posr, nx::parameter(40)), {0x72, 0x00, 0x28, 0, 0, 0, 0}, "POSR P40");
+  round_trip(nx::make(op::posr, nx::variable(10)), {0xD2, 0x00, 0x0A, 0, 0, 0, 0}, "POSR V10");
+  round_trip(nx::make(op::posr, nx::special()), {0x52, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
+             "POSR CAM");
+  round_trip(nx::make(op::speed, nx::number(mm(75'000))), cat({{0x53}, dsp_bytes(mm(75'000))}),
+             "SPEED 75");
+  round_trip(nx::make(op::speed, nx::parameter(2)), {0x73, 0x00, 0x02, 0, 0, 0, 0}, "SPEED P2");
+  round_trip(nx::make(op::speed, nx::variable(7)), {0xD3, 0x00, 0x07, 0, 0, 0, 0}, "SPEED V7");
+  round_trip(nx::make(op::speed, nx::special()), {0x53, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
+             "SPEED SYNC");
+  round_trip(nx::make(op::setm, nx::number(mm(1'250))), cat({{0x4D}, dsp_bytes(mm(1'250))}),
+             "SETM 1.25");
+  round_trip(nx::make(op::setm, nx::parameter(30)), {0x6D, 0x00, 0x1E, 0, 0, 0, 0}, "SETM P30");
+  round_trip(nx::make(op::setm, nx::variable(31)), {0xCD, 0x00, 0x1F, 0, 0, 0, 0}, "SETM V31");
+}
+
+TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
+  using nx::jump;
+  const auto p1 = nx::pattern{1, {1}};
+  // manual text example: IF E5=1 GOTO 12
+  round_trip(nx::make_if_input(5, p1, jump::goto_, 12), {0x49, 0x00, 0x05, 0x31, 0x47, 0x00, 0x0C},
+             "IF E5=1 GOTO 12");
+  round_trip(nx::make_if_input(5, nx::pattern{1, {0}}, jump::gosub, 40),
+             {0x49, 0x00, 0x05, 0x30, 0x42, 0x00, 0x28}, "IF E5=0 GOSUB 40");
+  round_trip(nx::make_if_input(9, nx::pattern{2, {1, 0}}, jump::gosub, 40),
+             {0x49, 0x00, 0x09, 0x31, 0x30, 0x42, 0x00, 0x28}, "IF E9=10 GOSUB 40");
+  round_trip(nx::make_if_input(1, nx::pattern{8, {1, 0, 1, 1, 0, 0, 1, 0}}, jump::goto_, 250),
+             {0x49, 0x00, 0x01, 0x31, 0x30, 0x31, 0x31, 0x30, 0x30, 0x31, 0x30, 0x47, 0x00, 0xFA},
+             "IF E1=10110010 GOTO 250");
+  round_trip(nx::make_if_error(jump::gosub, 200), {0x49, 0x00, 0xFF, 0x31, 0x42, 0x00, 0xC8},
+             "IF ERROR GOSUB 200");
+  round_trip(nx::make_if_stop(jump::gosub, 201), {0x49, 0x00, 0xFE, 0x31, 0x42, 0x00, 0xC9},
+             "IF STOP GOSUB 201");
+  // IF <operand> <comparison> <operand>: 19 bytes, the longest record
+  round_trip(
+      nx::make_if_compare(nx::operand_of(nx::operand_type::variable, 1), nx::comparison::ge,
+                          nx::operand_of(nx::operand_type::parameter, 5), jump::goto_, 7),
+      {0x4A, 0x56, 0x00, 0x01, 0, 0, 0, 0, 0xBE, 0x50, 0x00, 0x05, 0, 0, 0, 0, 0x47, 0x00, 0x07},
+      "IF V1>=P5 GOTO 7");
+  round_trip(nx::make_if_compare(nx::operand_of(nx::operand_type::status, 1), nx::comparison::lt,
+                                 nx::constant(mm(100'500)), jump::gosub, 9),
+             cat({{0x4A, 0x53, 0x00, 0x01, 0, 0, 0, 0, 0x3C, 0x20},
+                  dsp_bytes(mm(100'500)),
+                  {0x42, 0x00, 0x09}}),
+             "IF S1<100.5 GOSUB 9");
+  struct cmp_case {
+    nx::comparison cmp;
+    std::string_view sym;
+    int code;
+  };
+  for (auto [cmp, sym, code] :
+       {cmp_case{nx::comparison::eq, "=", 0x3D}, cmp_case{nx::comparison::gt, ">", 0x3E},
+        cmp_case{nx::comparison::le, "<=", 0xBC}, cmp_case{nx::comparison::ne, "<>", 0xBB}}) {
+    const auto c = nx::make_if_compare(nx::operand_of(nx::operand_type::variable, 2), cmp,
+                                       nx::constant(mm(-3'000)), jump::goto_, 1);
+    CHECK(content(c)[8] == code);
+    CHECK(text(c) == "IF V2" + std::string(sym) + "-3 GOTO 1");
+    CHECK(nx::parse_command(text(c)).value() == c);
+  }
+  // OUTPUT Ax=y…
+  round_trip(nx::make_output(5, p1), {0x4F, 0x00, 0x05, 0x31}, "OUTPUT A5=1");
+  round_trip(nx::make_output(9, nx::pattern{3, {1, 0, 1}}), {0x4F, 0x00, 0x09, 0x31, 0x30, 0x31},
+             "OUTPUT A9=101");
+  round_trip(nx::make_output(1, nx::pattern{8, {1, 1, 1, 1, 0, 0, 0, 0}}),
+             {0x4F, 0x00, 0x01, 0x31, 0x31, 0x31, 0x31, 0x30, 0x30, 0x30, 0x30},
+             "OUTPUT A1=11110000");
+  round_trip(nx::make_output(0, nx::pattern{1, {2}}), {0x4F, 0x00, 0x00, 0x32}, "OUTPUT A0=2");
+  // Pn= / Vn=
+  round_trip(
+      nx::make_assign(false, 12, nx::operand_of(nx::operand_type::variable, 3), nx::arithmetic::add,
+                      nx::constant(mm(5'000))),
+      cat({{0x50, 0x00, 0x0C, 0x56, 0x00, 0x03, 0, 0, 0, 0, 0x2B, 0x20}, dsp_bytes(mm(5'000))}),
+      "P12=V3+5");
+  round_trip(
+      nx::make_assign(true, 1, nx::operand_of(nx::operand_type::status, 2), nx::arithmetic::mul,
+                      nx::constant(mm(500))),
+      cat({{0x56, 0x00, 0x01, 0x53, 0x00, 0x02, 0, 0, 0, 0, 0x2A, 0x20}, dsp_bytes(mm(500))}),
+      "V1=S2*0.5");
+  round_trip(nx::make_assign(true, 4, nx::constant(mm(-7'000))),
+             cat({{0x56, 0x00, 0x04, 0x20}, dsp_bytes(mm(-7'000))}), "V4=-7");
+  round_trip(
+      nx::make_assign(true, 4, nx::operand_of(nx::operand_type::variable, 4), nx::arithmetic::sub,
+                      nx::constant(mm(-1'000))),
+      cat({{0x56, 0x00, 0x04, 0x56, 0x00, 0x04, 0, 0, 0, 0, 0x2D, 0x20}, dsp_bytes(mm(-1'000))}),
+      "V4=V4--1");
+  struct ari_case {
+    nx::arithmetic ari;
+    char sym;
+    int code;
+  };
+  for (auto [ari, sym, code] :
+       {ari_case{nx::arithmetic::sub, '-', 0x2D}, ari_case{nx::arithmetic::div, '/', 0x2F},
+        ari_case{nx::arithmetic::int_div, '\\', 0x5C}, ari_case{nx::arithmetic::mod, '%', 0x25}}) {
+    const auto c = nx::make_assign(false, 7, nx::operand_of(nx::operand_type::parameter, 8), ari,
+                                   nx::operand_of(nx::operand_type::variable, 9));
+    CHECK(content(c)[10] == code);
+    CHECK(text(c) == std::string("P7=P8") + sym + "V9");
+    CHECK(nx::parse_command(text(c)).value() == c);
+  }
+}
+
+TEST_CASE("Nx set-memory table: combined commands") {
+  using nx::op;
+  const auto posr = nx::make(op::posr, nx::number(mm(100'000)));
+  round_trip(nx::then(nx::make(op::posa, nx::number(mm(250'000))), op::wait, nx::integer(500)),
+             cat({{0x41}, dsp_bytes(mm(250'000)), {0x57, 0x01, 0xF4}}), "POSA 250 WAIT 500");
+  round_trip(nx::then(nx::make(op::posa, nx::variable(1)), op::wait, nx::variable(2)),
+             {0xC1, 0x00, 0x01, 0, 0, 0, 0, 0xD7, 0x00, 0x02}, "POSA V1 WAIT V2");
+  round_trip(nx::then(nx::make(op::posa, nx::number(mm(1'000))), op::wait, nx::variable(12)),
+             cat({{0x41}, dsp_bytes(mm(1'000)), {0xD7, 0x00, 0x0C}}), "POSA 1 WAIT V12");
+  round_trip(nx::then_output(posr, 3, nx::pattern{1, {1}}),
+             cat({{0x52}, dsp_bytes(mm(100'000)), {0x4F, 0x00, 0x03, 0x31}}),
+             "POSR 100 OUTPUT A3=1");
+  round_trip(nx::then_output(nx::make(op::posr, nx::parameter(40)), 4, nx::pattern{1, {0}}),
+             {0x72, 0x00, 0x28, 0, 0, 0, 0, 0x4F, 0x00, 0x04, 0x30}, "POSR P40 OUTPUT A4=0");
+  round_trip(nx::then_output(nx::make(op::posr, nx::variable(10)), 4, nx::pattern{1, {1}}),
+             {0xD2, 0x00, 0x0A, 0, 0, 0, 0, 0x4F, 0x00, 0x04, 0x31}, "POSR V10 OUTPUT A4=1");
+  round_trip(nx::then(posr, op::speed, nx::number(mm(50'000))),
+             cat({{0x52}, dsp_bytes(mm(100'000)), {0x53}, dsp_bytes(mm(50'000))}),
+             "POSR 100 SPEED 50");
+  round_trip(nx::then(nx::make(op::posr, nx::variable(1)), op::speed, nx::variable(2)),
+             {0xD2, 0x00, 0x01, 0, 0, 0, 0, 0xD3, 0x00, 0x02, 0, 0, 0, 0}, "POSR V1 SPEED V2");
+  // POSR … SPEED … ACCEL …: the ACCEL word MSB first (decision against the printed LSB…MSB row)
+  round_trip(
+      nx::then(nx::then(posr, op::speed, nx::number(mm(50'000))), op::accel, nx::integer(0x0102)),
+      cat({{0x52}, dsp_bytes(mm(100'000)), {0x53}, dsp_bytes(mm(50'000)), {0x4C, 0x01, 0x02}}),
+      "POSR 100 SPEED 50 ACCEL 258");
+  round_trip(nx::then(nx::then(nx::make(op::posr, nx::variable(1)), op::speed, nx::variable(2)),
+                      op::accel, nx::variable(3)),
+             {0xD2, 0x00, 0x01, 0, 0, 0, 0, 0xD3, 0x00, 0x02, 0, 0, 0, 0, 0xCC, 0x00, 0x03},
+             "POSR V1 SPEED V2 ACCEL V3");
+  round_trip(
+      nx::then(nx::then(posr, op::speed, nx::variable(12)), op::accel, nx::parameter(41)),
+      cat({{0x52}, dsp_bytes(mm(100'000)), {0xD3, 0x00, 0x0C, 0, 0, 0, 0, 0x6C, 0x00, 0x29}}),
+      "POSR 100 SPEED V12 ACCEL P41");
+  round_trip(nx::then(posr, op::wait, nx::integer(20)),
+             cat({{0x52}, dsp_bytes(mm(100'000)), {0x57, 0x00, 0x14}}), "POSR 100 WAIT 20");
+  round_trip(nx::then(nx::make(op::posr, nx::variable(5)), op::wait, nx::variable(6)),
+             {0xD2, 0x00, 0x05, 0, 0, 0, 0, 0xD7, 0x00, 0x06}, "POSR V5 WAIT V6");
+  round_trip(nx::then(nx::make(op::speed, nx::number(mm(10'000))), op::wait, nx::integer(100)),
+             cat({{0x53}, dsp_bytes(mm(10'000)), {0x57, 0x00, 0x64}}), "SPEED 10 WAIT 100");
+  round_trip(nx::then(nx::make(op::speed, nx::variable(1)), op::wait, nx::variable(2)),
+             {0xD3, 0x00, 0x01, 0, 0, 0, 0, 0xD7, 0x00, 0x02}, "SPEED V1 WAIT V2");
+  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posa, nx::number(mm(100'000))),
+             cat({{0x57, 0x00, 0x00, 0x41}, dsp_bytes(mm(100'000))}), "WAIT POSA 100");
+  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posr, nx::number(mm(-5'000))),
+             cat({{0x57, 0x00, 0x00, 0x52}, dsp_bytes(mm(-5'000))}), "WAIT POSR -5");
+}
+
+TEST_CASE("Nx bad input: codes, lengths, truncation, digits") {
+  using nx::op;
+  // unknown command codes, including the nibble-swapped variable codes of the other tables
+  for (std::uint8_t code :
+       {std::uint8_t{0x00}, std::uint8_t{0x1C}, std::uint8_t{0x2D}, std::uint8_t{0x3D},
+        std::uint8_t{0x7D}, std::uint8_t{0x63}, std::uint8_t{0xFF}, std::uint8_t{0x44}}) {
+    CAPTURE(code);
+    const bytes b{code, 0x00, 0x01, 0, 0, 0, 0};
+    CHECK(nx::decode_content(b).error() == errc::unknown_command);
+  }
+  // 0x4D is SETM value (not REPEAT variable): 7 bytes
+  CHECK(nx::decode_content(bytes{0x4D, 0x00, 0x03}).error() == errc::truncated);
+  // truncated records
+  CHECK(nx::decode_content(bytes{0x41, 0, 0, 0, 0, 0}).error() == errc::truncated);
+  CHECK(nx::decode_content(bytes{0x4C, 0x03}).error() == errc::truncated);
+  CHECK(nx::decode_content(bytes{0x49, 0x00, 0x05, 0x31, 0x47, 0x00}).error() == errc::truncated);
+  CHECK(nx::decode_content(bytes{0x49, 0x00, 0x05}).error() == errc::truncated);
+  CHECK(nx::decode_content(bytes{0x4F, 0x00, 0x05}).error() == errc::truncated);
+  CHECK(nx::decode_content(bytes{}).error() == errc::truncated);
+  CHECK(nx::decode_record(bytes{}).error() == errc::truncated);
+  CHECK(nx::decode_record(bytes{0x03, 0x4C, 0x03}).error() == errc::truncated);
+  // lengths that disagree with the content
+  CHECK(nx::decode_record(bytes{0x02, 0x4C, 0x03, 0xE8}).error() == errc::bad_length);
+  CHECK(nx::decode_record(bytes{0x04, 0x4C, 0x03, 0xE8, 0x00}).error() == errc::bad_length);
+  CHECK(nx::decode_record(bytes{0x00, 0x20}).error() == errc::bad_length);
+  CHECK(nx::decode_record(bytes{0x14, 0x20}).error() == errc::bad_length);
+  CHECK(nx::decode_record(bytes(21, 0x01)).error() == errc::too_long);
+  CHECK(nx::decode_content(bytes{0x45, 0x00, 0x00}).error() == errc::bad_length);
+  CHECK(nx::decode_content(bytes{0x47, 0x00, 0x01, 0x45, 0x00}).error() == errc::bad_length);
+  // a third command after POSR … WAIT …
+  CHECK(nx::decode_content(bytes{0xD2, 0, 1, 0, 0, 0, 0, 0xD7, 0, 2, 0x4C, 0, 1}).error() ==
+        errc::bad_length);
+  CHECK(nx::decode_record(bytes{0x03, 0x4C, 0x03, 0xE8, 0x77, 0x77}).value() ==
+        nx::make(op::accel, nx::integer(1000))); // padding is ignored
+  // y digits other than 0x30/0x31
+  CHECK(nx::decode_content(bytes{0x49, 0x00, 0x05, 0x32, 0x47, 0x00, 0x0C}).error() ==
+        errc::bad_digit);
+  CHECK(nx::decode_content(bytes{0x49, 0x00, 0x05, 0x01, 0x47, 0x00, 0x0C}).error() ==
+        errc::bad_digit);
+  CHECK(nx::decode_content(bytes{0x4F, 0x00, 0x05, 0x31, 0x20}).error() == errc::bad_digit);
+  CHECK(nx::decode_content(bytes{0x4F, 0x00, 0x00, 0x31, 0x31}).error() == errc::bad_length);
+  CHECK(nx::decode_content(
+            bytes{0x4F, 0x00, 0x01, 0x31, 0x31, 0x31, 0x31, 0x31, 0x31, 0x31, 0x31, 0x31})
+            .error() == errc::bad_length);
+  // IF ERROR with a pattern other than "1"
+  CHECK(nx::decode_content(bytes{0x49, 0x00, 0xFF, 0x30, 0x42, 0x00, 0x01}).error() ==
+        errc::out_of_range);
+  // operand type, comparison and arithmetic codes
+  CHECK(nx::decode_content(bytes{0x56, 0x00, 0x01, 0x51, 0, 1, 0, 0, 0, 0}).error() ==
+        errc::unknown_command);
+  CHECK(nx::decode_content(
+            bytes{0x56, 0x00, 0x01, 0x56, 0, 1, 0, 0, 0, 0, 0x2C, 0x56, 0, 1, 0, 0, 0, 0})
+            .error() == errc::unknown_command);
+  CHECK(nx::decode_content(
+            bytes{0x4A, 0x56, 0, 1, 0, 0, 0, 0, 0x3F, 0x56, 0, 1, 0, 0, 0, 0, 0x47, 0, 1})
+            .error() == errc::unknown_command);
+  CHECK(nx::decode_content(
+            bytes{0x4A, 0x56, 0, 1, 0, 0, 0, 0, 0x3D, 0x56, 0, 1, 0, 0, 0, 0, 0x48, 0, 1})
+            .error() == errc::unknown_command);
+  // non-zero padding in a parameter form
+  CHECK(nx::decode_content(bytes{0x61, 0x00, 0x0C, 0, 0, 1, 0}).error() == errc::out_of_range);
+  // combinations the table does not have: bytes after a command that takes no follower
+  CHECK(nx::decode_content(bytes{0x4C, 0x03, 0xE8, 0x57, 0x00, 0x01}).error() == errc::bad_length);
+  CHECK(nx::decode_content(bytes{0x57, 0x00, 0x05, 0x41, 0, 0, 0, 1, 0, 0}).error() ==
+        errc::bad_length);
+  // … and a follower the table does not list
+  CHECK(nx::decode_content(bytes{0x41, 0, 0, 0, 1, 0, 0, 0x4C, 0x03, 0xE8}).error() ==
+        errc::unknown_command);
+  CHECK(nx::decode_content(bytes{0x41, 0, 0, 0, 1, 0, 0, 0x4F, 0x00, 0x01, 0x31}).error() ==
+        errc::unknown_command);
+  // SETM has no special form
+  CHECK(nx::decode_content(bytes{0x4D, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}).error() ==
+        errc::out_of_range);
+  CHECK(nx::decode_content(bytes{0x01, 0x56, 0x51}).error() == errc::unknown_command);
+}
+
+TEST_CASE("Nx encoder refuses what it cannot write") {
+  using nx::op;
+  std::array<std::uint8_t, nx::content_max> b{};
+  CHECK(nx::encode_content(nx::make(op::setc, nx::parameter(1)), b).error() == errc::type_mismatch);
+  CHECK(nx::encode_content(nx::make(op::setm, nx::special()), b).error() == errc::type_mismatch);
+  CHECK(nx::encode_content(nx::make(op::wait, nx::integer(0)), b).error() == errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::goto_, nx::integer(0)), b).error() == errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::loop, nx::integer(65536)), b).error() ==
+        errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::posa, nx::integer(-1)), b).error() == errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::end, nx::integer(1)), b).error() == errc::invalid_argument);
+  CHECK(
+      nx::encode_content(nx::then(nx::make(op::accel, nx::integer(1)), op::wait, nx::integer(1)), b)
+          .error() == errc::invalid_argument);
+  CHECK(nx::encode_content(nx::make_valid('X'), b).error() == errc::invalid_argument);
+  CHECK(nx::encode_content(nx::make_output(3, nx::pattern{1, {2}}), b).error() == errc::bad_digit);
+  CHECK(nx::encode_content(nx::make_output(3, nx::pattern{0, {}}), b).error() == errc::bad_length);
+  CHECK(nx::encode_content(nx::make(op::none), b).error() == errc::unknown_command);
+  std::array<std::uint8_t, 3> small{};
+  CHECK(nx::encode_content(nx::make(op::posa, nx::special()), small).error() ==
+        errc::buffer_too_small);
+}
+
+TEST_CASE("Nx text bad input") {
+  CHECK(nx::parse_command("").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("JUMP 5").error() == errc::unknown_command);
+  CHECK(nx::parse_command("POSA").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("POSA 1.0005").error() == errc::not_representable);
+  CHECK(nx::parse_command("POSA 9000000").error() == errc::overflow);
+  CHECK(nx::parse_command("POSA 1x").error() == errc::bad_digit);
+  CHECK(nx::parse_command("ACCEL 70000").error() == errc::out_of_range);
+  CHECK(nx::parse_command("WAIT 0").error() == errc::out_of_range);
+  CHECK(nx::parse_command("END 5").error() == errc::bad_length);
+  CHECK(nx::parse_command("POSA 1 SPEED 5").error() == errc::invalid_argument);
+  CHECK(nx::parse_command("IF E5=2 GOTO 3").error() == errc::bad_digit);
+  CHECK(nx::parse_command("IF E5=1 JUMP 3").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("IF V1=>P2 GOTO 3").error() == errc::bad_digit);
+  CHECK(nx::parse_command("IF V1 GOTO 3").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("POSR 1 SPEED 2 ACCEL 3 WAIT 4").error() == errc::bad_length);
+  CHECK(nx::parse_command("POSR 1 SPEED 2 JUMP 3").error() == errc::unknown_command);
+  CHECK(nx::parse_command("OUTPUT B5=1").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("P1=V2^3").error() == errc::bad_syntax);
+  CHECK(nx::parse_command("IF E5=101010101 GOTO 3").error() == errc::bad_length);
+  std::array<char, 5> tiny{};
+  CHECK(nx::format_command(nx::make(nx::op::posa, nx::special()), tiny).error() ==
+        errc::buffer_too_small);
+}
