@@ -64,6 +64,28 @@ constexpr od::entry pressure_fb{.index = 0x2F11,
                                 .scale = {{32767, 2}, {0, 0}},
                                 .scaled = true};
 
+constexpr co::can_frame frame8(std::uint16_t id, std::array<std::uint8_t, 8> d) {
+  co::can_frame f;
+  f.id = id;
+  f.dlc = 8;
+  f.data = d;
+  return f;
+}
+} // namespace
+
+// The manual's event-timer write and the DPQ parameter write, at compile time.
+static_assert(dpq::write_request(5, event_timer, 100.0).value() ==
+              frame8(0x605, {0x2B, 0x00, 0x18, 0x05, 0x64, 0x00, 0x00, 0x00}));
+static_assert(dpq::read_request(5, event_timer).value() ==
+              frame8(0x605, {0x40, 0x00, 0x18, 0x05, 0x00, 0x00, 0x00, 0x00}));
+static_assert(dpq::write_request(5, inj_p_limit_1, 4.0).value() ==
+              frame8(0x605, {0x23, 0x23, 0x20, 0x00, 0x1F, 0x05, 0x00, 0x00}));
+static_assert(dpq::read_response(5, inj_p_limit_1,
+                                 frame8(0x585, {0x43, 0x23, 0x20, 0x00, 0x1F, 0x05, 0x00, 0x00}))
+                  .value()
+                  .mantissa == 4001);
+
+namespace {
 co::can_frame frame(std::uint16_t id, std::initializer_list<std::uint8_t> bytes) {
   auto f = co::make_frame(id, bytes);
   REQUIRE(f.has_value());
