@@ -110,7 +110,8 @@ TEST_CASE("pacontrol CMD: handshake (acknowledgement mechanism 2.4)") {
   const pb::cmd_reply quiet{};
   CHECK(hs.update(quiet) == pb::cmd_progress::idle);
   // Read input 5: the staged image keeps SF, start() toggles it.
-  CHECK(hs.stage(0x1900, 5, 0) == in5_staged);
+  CHECK(hs.stage(0x1900, 5, 0).value() == in5_staged);
+  CHECK(hs.stage(0x8000, 5, 0).error() == errc::overflow);
   auto req = hs.start(0x1900, 5, 0);
   REQUIRE(req);
   CHECK(req.value() == in5);

@@ -175,10 +175,11 @@ public:
 
   /// The same data with the SEND flag not toggled, for masters that write the command
   /// first and toggle in a later cycle (as the Interbus example of 4.2.4 does).
-  [[nodiscard]] constexpr cmd_request stage(std::uint16_t code, std::uint16_t parameter,
-                                            std::uint32_t date) const noexcept {
-    return cmd_request{date, parameter, static_cast<std::uint16_t>(code & max_command_code),
-                       send_flag_};
+  /// Errors: overflow (code above 0x7FFF).
+  [[nodiscard]] constexpr result<cmd_request> stage(std::uint16_t code, std::uint16_t parameter,
+                                                    std::uint32_t date) const noexcept {
+    if (code > max_command_code) return errc::overflow;
+    return cmd_request{date, parameter, code, send_flag_};
   }
 
   /// Evaluates a reply against the current command.
