@@ -66,6 +66,12 @@ TEST_CASE("to_eu in binary floating point") {
   CHECK(sc::to_eu(1311, dpq_pressure) == doctest::Approx(4.000976).epsilon(1e-6));
   CHECK(sc::to_eu(0, {{10, 0}, {-50, 0}}) == -50.0);
   CHECK(sc::to_eu(52500, {{105, 1}, {}}) == 5000.0);
+  // The scale is the nearest double to 327.67 (one exact division), not a value accumulated by
+  // repeated division: 32767 / 327.67 is exactly 100.
+  CHECK(sc::to_eu(32767, dpq_pressure) == 100.0);
+  for (std::int64_t raw = -70000; raw <= 70000; raw += 7) {
+    CHECK(sc::to_eu(raw, dpq_pressure) == static_cast<double>(raw) / 327.67);
+  }
 }
 
 TEST_CASE("bad arguments and non-finite inputs") {

@@ -114,12 +114,13 @@ struct range {
   return to_raw(d.value(), s, f);
 }
 
-/// Device → PLC as a double: raw / scale + offset (one division, one addition in binary).
+/// Device → PLC as a double: raw / scale + offset. Each decimal becomes a double with one
+/// division by an exact power of ten (327.67 is 32767 / 100, the nearest double to 327.67),
+/// then one division and one addition in binary.
 [[nodiscard]] constexpr double to_eu(std::int64_t raw, linear s) noexcept {
-  double scale = static_cast<double>(s.scale.mantissa);
-  for (unsigned i = 0; i < s.scale.places; ++i) scale /= 10.0;
-  double offset = static_cast<double>(s.offset.mantissa);
-  for (unsigned i = 0; i < s.offset.places; ++i) offset /= 10.0;
+  const double scale = static_cast<double>(s.scale.mantissa) / detail::pow10_double(s.scale.places);
+  const double offset =
+      static_cast<double>(s.offset.mantissa) / detail::pow10_double(s.offset.places);
   return static_cast<double>(raw) / scale + offset;
 }
 
