@@ -2,6 +2,8 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/od/value.hpp>
+
 #include <algorithm>
 #include <deque>
 #include <map>
@@ -343,6 +345,28 @@ private:
         return false;
       }
       out = p.value;
+      if (od::is_unsigned_integer(type) && out.kind == od::number_kind::signed_ &&
+          static_cast<std::int64_t>(out.bits) >= 0) {
+        out = od::num::u(out.bits);
+      }
+      return true;
+    }
+    if (od::is_time(type) && trim(v).find(' ') != std::string_view::npos) {
+      // "<days> <milliseconds>" as lely writes TIME_OF_DAY / TIME_DIFFERENCE
+      const std::string_view t = trim(v);
+      const auto sp = t.find(' ');
+      const int_parse days = parse_int(t.substr(0, sp));
+      const int_parse ms = parse_int(t.substr(sp + 1U));
+      auto dv = days.value.to_uint64();
+      auto mv = ms.value.to_uint64();
+      if (!days.ok || !ms.ok || !dv || !mv || dv.value() > 0xFFFFU ||
+          mv.value() > od::time_ms_max) {
+        bad_value(s, k, "expected '<days 0..65535> <milliseconds 0..268435455>', got '" + v + "'",
+                  0);
+        return false;
+      }
+      out = od::to_number(od::time_value{static_cast<std::uint32_t>(mv.value()),
+                                         static_cast<std::uint16_t>(dv.value())});
       return true;
     }
     if (od::is_real(type)) {
@@ -361,7 +385,7 @@ private:
     int_parse p = parse_int(v);
     if (!p.ok) {
       // a decimal fraction for an integer type ("0.0"): keep it exactly, warn
-      if (auto d = parse_decimal(trim(v))) {
+      if (auto d = parse_decimal(trim(v)); d && v.find('.') != std::string::npos) {
         diag_.warning(file_, k.line, k.value_col,
                       "expected an integer, got '" + v + "' in " + k.name + " of [" + s.name + "]");
         out = od::num::d(d.value());
@@ -624,24 +648,32 @@ private:
       compact_object(index, s, info, compact, sub_it != subs_.end());
       return;
     }
-    if (!has_sub_number) {
-      diag_.error(file_, s.line, 2,
-                  "missing SubNumber in [" + s.name + "] (object type " +
-                      std::string(od::name(info.code)) + ")");
+    if (!has_sub_number && sub_it == subs_.end()) {
+      // an ARRAY/RECORD written like a VAR (no SubNumber, no sub-sections): keep its one value
+      diag_.warning(file_, s.line, 2,
+                    "[" + s.name + "] (object type " + std::string(od::name(info.code)) +
+                        ") has no SubNumber, CompactSubObj or sub-object sections; read as one "
+                        "entry at sub-index 0");
+      entry e;
+      e.index = index;
+      e.object = info.code;
+      e.line = s.line;
+      if (!var_keys(s, e, true)) return;
+      dict_.objects[index] = info;
+      dict_.entries.push_back(std::move(e));
       return;
     }
-    // static_cast for the checks below
-    info.sub_number = static_cast<std::uint8_t>(sub_number);
     std::size_t count = 0;
     if (sub_it != subs_.end()) {
       for (const auto &[sub, ss] : sub_it->second) {
         ++count;
-        if (count > sub_number) {
-          diag_.error(file_, ss->line, 2,
-                      "sub-index 0x" + hex(sub, 2) + " of [" + ss->name +
-                          "] is sub-object number " + std::to_string(count) + " but [" + s.name +
-                          "] has SubNumber=" + std::to_string(sub_number));
-          return;
+        if (has_sub_number && count == sub_number + 1U) {
+          diag_.warning(file_, ss->line, 2,
+                        "sub-index 0x" + hex(sub, 2) + " of [" + ss->name +
+                            "] is sub-object number " + std::to_string(count) + " but [" + s.name +
+                            "] has SubNumber=" + std::to_string(sub_number) +
+                            " (SubNumber counts sub-objects); all " +
+                            std::to_string(sub_it->second.size()) + " are kept");
         }
         entry e;
         e.index = index;
@@ -652,13 +684,17 @@ private:
         dict_.entries.push_back(std::move(e));
       }
     }
-    if (count < sub_number) {
+    if (!has_sub_number) {
+      diag_.warning(file_, s.line, 2,
+                    "missing SubNumber in [" + s.name + "]; " + std::to_string(count) +
+                        " sub-object sections found");
+    } else if (count < sub_number) {
       const ini_key *k = s.find("SUBNUMBER");
-      diag_.error(file_, k->line, k->value_col,
-                  "[" + s.name + "] has SubNumber=" + std::to_string(sub_number) + " but " +
-                      std::to_string(count) + " sub-object section" + (count == 1U ? "" : "s"));
-      return;
+      diag_.warning(file_, k->line, k->value_col,
+                    "[" + s.name + "] has SubNumber=" + std::to_string(sub_number) + " but " +
+                        std::to_string(count) + " sub-object section" + (count == 1U ? "" : "s"));
     }
+    info.sub_number = static_cast<std::uint8_t>(count);
     dict_.objects[index] = info;
   }
 
@@ -759,9 +795,9 @@ private:
         listed.insert(index);
         auto obj = objects_.find(index);
         if (obj == objects_.end()) {
-          diag_.error(file_, k.line, k.value_col,
-                      "object 0x" + hex(index, 4) + " listed in [" + s->name +
-                          "] has no section [" + hex(index, 4) + "]");
+          diag_.warning(file_, k.line, k.value_col,
+                        "object 0x" + hex(index, 4) + " listed in [" + s->name +
+                            "] has no section [" + hex(index, 4) + "]");
           continue;
         }
         if (auto it = dict_.objects.find(index); it != dict_.objects.end()) it->second.list = which;

@@ -42,8 +42,9 @@ std::string eds_limit(const entry &e, const od::number &n) {
       auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
       if (raw) {
         const std::int64_t v = raw.value();
-        return v < 0 ? std::to_string(v)
-                     : eds_number(od::num::u(static_cast<std::uint64_t>(v)), false);
+        return v < 0 || od::is_signed_integer(e.type)
+                   ? std::to_string(v)
+                   : eds_number(od::num::u(static_cast<std::uint64_t>(v)), false);
       }
     }
   }
@@ -68,8 +69,10 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   } else if (e.def || e.def_nodeid) {
     o += "DefaultValue=" + eds_number(e.def, e.def_nodeid) + "\n";
   }
-  if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
-  if (e.high) o += "HighLimit=" + eds_limit(e, e.high) + "\n";
+  if (!od::is_byte_string(e.type)) { // limits of a string are not expressible in an EDS
+    if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
+    if (e.high) o += "HighLimit=" + eds_limit(e, e.high) + "\n";
+  }
   o += std::string("PDOMapping=") + (e.pdo == od::pdo_mapping::no ? "0" : "1") + "\n";
   if (e.has_obj_flags) o += "ObjFlags=0x" + hex(e.obj_flags, 1) + "\n";
   if (dcf) {

@@ -1,5 +1,32 @@
 # Included at the end of the top-level CMakeLists.txt (cmake_language DEFER in
-# codegen/CMakeLists.txt), when test_codegen and fieldcodec-gen both exist.
+# codegen/CMakeLists.txt), when tests/ has defined its targets.
 if(TARGET test_codegen)
   target_link_libraries(test_codegen PRIVATE fieldcodec_codegen)
+endif()
+
+# The CLI: exit codes 0 / 1 / 2, --help, --check.
+add_test(NAME codegen_cli
+  COMMAND ${CMAKE_COMMAND}
+    -DGEN=$<TARGET_FILE:fieldcodec-gen>
+    -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_cli
+    -P ${PROJECT_SOURCE_DIR}/tests/codegen/cli.cmake)
+
+# The checked-in generated headers are what the generator writes today.
+add_test(NAME codegen_drift
+  COMMAND ${PROJECT_SOURCE_DIR}/codegen/regenerate.sh --check --gen $<TARGET_FILE:fieldcodec-gen>)
+
+# Every real EDS/DCF of the shared corpus is read and its header compiles (when the corpus
+# folder exists beside the repository).
+set(FIELDCODEC_EDS_CORPUS "${PROJECT_SOURCE_DIR}/../shared/eds-corpus" CACHE PATH
+  "Folder of real EDS/DCF files for the corpus test")
+if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
+  add_test(NAME codegen_corpus
+    COMMAND ${CMAKE_COMMAND}
+      -DGEN=$<TARGET_FILE:fieldcodec-gen>
+      -DCORPUS=${FIELDCODEC_EDS_CORPUS}
+      -DCXX=${CMAKE_CXX_COMPILER}
+      -DINCLUDE_DIR=${PROJECT_SOURCE_DIR}/include
+      -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_corpus
+      -P ${PROJECT_SOURCE_DIR}/tests/codegen/corpus.cmake)
 endif()
