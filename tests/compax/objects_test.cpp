@@ -1,0 +1,175 @@
+// COMPAX objects by dictionary entry (compax/objects.hpp) and the DRIVECOM wrappers over ds402
+// (compax/drivecom.hpp). Entries are written here like the generated ones; when the generated
+// dictionary exists the manual's examples are also checked by name.
+#include <fieldcodec/compax/drivecom.hpp>
+#include <fieldcodec/compax/objects.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry.hpp>
+
+#if __has_include(<fieldcodec/dictionaries/compax_objects.hpp>)
+#include <fieldcodec/dictionaries/compax_objects.hpp>
+#define FIELDCODEC_HAVE_COMPAX_DICTIONARY 1
+#endif
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cx = fieldcodec::compax;
+namespace od = fieldcodec::od;
+using fieldcodec::decimal;
+using fieldcodec::errc;
+using bytes = std::vector<std::uint8_t>;
+
+namespace {
+
+constexpr od::entry lage_ziel{.index = 0x607A,
+                              .type = od::data_type::integer32,
+                              .name = "LAGE_ZIEL",
+                              .scale = {{1000, 0}, {0, 0}},
+                              .scaled = true};
+constexpr od::entry posa{.index = 0x5FF0,
+                         .type = od::data_type::octet_string,
+                         .size = 6,
+                         .name = "POSA",
+                         .scale = {{1000, 0}, {0, 0}},
+                         .scaled = true};
+constexpr od::entry posr0speed{
+    .index = 0x5FED, .type = od::data_type::octet_string, .size = 3, .name = "POSR0SPEED"};
+constexpr od::entry speed{.index = 0x5FEC,
+                          .type = od::data_type::integer16,
+                          .name = "SPEED",
+                          .scale = {{64, 0}, {0, 0}},
+                          .scaled = true};
+constexpr od::entry out_enable{
+    .index = 0x5FFF, .type = od::data_type::boolean, .name = "OUT_ENABLE"};
+constexpr od::entry accel_pos{.index = 0x5FEA,
+                              .type = od::data_type::unsigned16,
+                              .name = "ACCEL_POS",
+                              .low = od::num::i(0),
+                              .high = od::num::i(65000)};
+constexpr std::array<od::entry, 3> px_entries{{
+    {.index = 0x5FD4,
+     .subindex = 11,
+     .type = od::data_type::integer32,
+     .name = "Px",
+     .scale = {{1000, 0}, {0, 0}},
+     .scaled = true},
+    {.index = 0x5FD4,
+     .subindex = 21,
+     .type = od::data_type::integer32,
+     .name = "Px",
+     .scale = {{1000000, 0}, {0, 0}},
+     .scaled = true},
+    {.index = 0x5FD4,
+     .subindex = 100,
+     .type = od::data_type::integer32,
+     .name = "Px",
+     .scale = {{1, 0}, {0, 0}},
+     .scaled = true},
+}};
+constexpr od::dictionary px_dict{px_entries};
+
+bytes enc(const od::entry &e, decimal v) {
+  std::array<std::uint8_t, 8> b{};
+  auto n = cx::encode_object(e, v, b);
+  REQUIRE(n.has_value());
+  return bytes(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(n.value()));
+}
+
+} // namespace
+
+TEST_CASE("objects by entry: integers, BCD, boolean") {
+  CHECK(enc(lage_ziel, decimal{-1000, 0}) == bytes{0xFF, 0xF0, 0xBD, 0xC0});
+  CHECK(fieldcodec::equal(cx::decode_object(lage_ziel, bytes{0xFF, 0xF0, 0xBD, 0xC0}).value(),
+                          decimal{-1000, 0}));
+  CHECK(cx::decode_object(lage_ziel, bytes{0x80, 0, 0, 0}).error() == errc::overflow);
+  CHECK(cx::decode_object(lage_ziel, bytes{0x80, 0, 0}).error() == errc::truncated);
+  std::array<std::uint8_t, 4> b4{};
+  CHECK(cx::encode_object(lage_ziel, decimal{-2147483648, 3}, b4).error() == errc::overflow);
+  CHECK(cx::encode_object(lage_ziel, decimal{2147484, 0}, b4).error() == errc::overflow);
+  CHECK(enc(posa, decimal{735015, 2}) == bytes{0x00, 0x00, 0x07, 0x35, 0x01, 0x50});
+  CHECK(
+      fieldcodec::equal(cx::decode_object(posa, bytes{0xFF, 0x00, 0x37, 0x89, 0x12, 0x10}).value(),
+                        decimal{-3789121, 2}));
+  CHECK(cx::decode_object(posa, bytes{0x01, 0, 0, 0, 0, 0}).error() == errc::bad_sign);
+  CHECK(enc(posa, decimal{10005, 4}) == bytes{0x00, 0x00, 0x00, 0x00, 0x10, 0x01});
+  std::array<std::uint8_t, 6> b6{};
+  CHECK(cx::encode_object(posa, decimal{4000001, 0}, b6).error() == errc::out_of_range);
+  CHECK(enc(posr0speed, decimal{35, 0}) == bytes{0x03, 0x50, 0x00});
+  CHECK(cx::encode_object(posr0speed, decimal{-1, 0}, b4).error() == errc::out_of_range);
+  CHECK(enc(speed, decimal{75, 0}) == bytes{0x12, 0xC0});
+  CHECK(fieldcodec::equal(cx::decode_object(speed, bytes{0x12, 0xC0}).value(), decimal{75, 0}));
+  CHECK(enc(out_enable, decimal{1, 0}) == bytes{0xFF});
+  CHECK(cx::encode_object(out_enable, decimal{2, 0}, b4).error() == errc::out_of_range);
+  CHECK(cx::decode_object(out_enable, bytes{0x01}).error() == errc::out_of_range);
+  CHECK(enc(accel_pos, decimal{1000, 0}) == bytes{0x03, 0xE8});
+  CHECK(cx::encode_object(accel_pos, decimal{65001, 0}, b4).error() == errc::out_of_range);
+  std::array<std::uint8_t, 1> b1{};
+  CHECK(cx::encode_object(lage_ziel, decimal{1, 0}, b1).error() == errc::buffer_too_small);
+  const od::entry text{.index = 0x5FE6, .type = od::data_type::visible_string, .size = 20};
+  CHECK(cx::encode_object(text, decimal{1, 0}, b4).error() == errc::type_mismatch);
+}
+
+TEST_CASE("Px in engineering units with the resolution of its row") {
+  std::array<std::uint8_t, 4> b{};
+  // 2.4.13 example: P11 = 5000 → 00 4C 4B 40
+  REQUIRE(cx::encode_px(px_dict, 11, decimal{5000, 0}, b).value() == 4);
+  CHECK(b == std::array<std::uint8_t, 4>{0x00, 0x4C, 0x4B, 0x40});
+  CHECK(fieldcodec::equal(cx::decode_px(px_dict, 11, b).value(), decimal{5000, 0}));
+  REQUIRE(cx::encode_px(px_dict, 21, decimal{1, 6}, b).has_value());
+  CHECK(b == std::array<std::uint8_t, 4>{0, 0, 0, 1});
+  REQUIRE(cx::encode_px(px_dict, 100, decimal{15, 1}, b).has_value()); // rounded half away
+  CHECK(b == std::array<std::uint8_t, 4>{0, 0, 0, 2});
+  CHECK(cx::encode_px(px_dict, 12, decimal{1, 0}, b).error() == errc::unknown_object);
+}
+
+TEST_CASE("DRIVECOM profile 22 over ds402") {
+  using fieldcodec::ds402::state;
+  CHECK(cx::drivecom_state(cx::statuswort{0x0040}).value() == state::switch_on_disabled);
+  CHECK(cx::drivecom_state(cx::statuswort{0x0027}).value() == state::operation_enabled);
+  CHECK(cx::drivecom_state(cx::statuswort{0x0008}).value() == state::fault);
+  // COMPAX bits of the previous word survive (FreezePAD, relative)
+  const auto prev =
+      cx::steuerwort{}.with(cx::steuerwort_bit::freeze_pad).with(cx::steuerwort_bit::relative);
+  const auto next = cx::next_steuerwort(cx::statuswort{0x0040}, state::operation_enabled, prev);
+  REQUIRE(next.has_value());
+  CHECK(next.value().raw == (0x0006 | 0x0100 | 0x0040));
+  CHECK(cx::next_steuerwort(cx::statuswort{0x0021}, state::operation_enabled, prev).value().raw ==
+        (0x000F | 0x0100 | 0x0040));
+  // fault: rising edge of bit 7
+  CHECK(cx::next_steuerwort(cx::statuswort{0x0008}, state::operation_enabled, cx::steuerwort{})
+            .value()
+            .test(cx::steuerwort_bit::fault_reset));
+}
+
+#ifdef FIELDCODEC_HAVE_COMPAX_DICTIONARY
+TEST_CASE("generated COMPAX dictionary: manual examples by name") {
+  namespace d = fieldcodec::dictionaries::compax_objects;
+  CHECK(enc(d::lage_ziel, decimal{-1000, 0}) == bytes{0xFF, 0xF0, 0xBD, 0xC0});
+  CHECK(enc(d::realnull, decimal{-500, 0}) == bytes{0xFF, 0xF8, 0x5E, 0xE0});
+  CHECK(enc(d::posa, decimal{735015, 2}) == bytes{0x00, 0x00, 0x07, 0x35, 0x01, 0x50});
+  CHECK(enc(d::posr, decimal{-3789121, 2}) == bytes{0xFF, 0x00, 0x37, 0x89, 0x12, 0x10});
+  CHECK(enc(d::posr0speed, decimal{35, 0}) == bytes{0x03, 0x50, 0x00});
+  CHECK(enc(d::speed, decimal{75, 0}) == bytes{0x12, 0xC0});
+  CHECK(enc(d::override_, decimal{50, 0}) == bytes{0x80});
+  CHECK(enc(d::geschw_max, decimal{95, 0}) == bytes{0x00, 0x01, 0x73, 0x18});
+  CHECK(enc(d::nennmoment, decimal{52, 1}) == bytes{0x00, 0x34});
+  CHECK(enc(d::nennstrom, decimal{51, 1}) == bytes{0x00, 0x33});
+  CHECK(enc(d::rampe_ref, decimal{733, 0}) == bytes{0x00, 0x00, 0x02, 0xDD});
+  std::array<std::uint8_t, 4> b{};
+  REQUIRE(cx::encode_px(d::dictionary, 11, decimal{5000, 0}, b).has_value());
+  CHECK(b == std::array<std::uint8_t, 4>{0x00, 0x4C, 0x4B, 0x40});
+  // every Px row has a resolution of 1, 0.001 or 0.000001
+  for (unsigned n = 1; n <= 250; ++n) {
+    auto e = d::dictionary.lookup(cx::index::px, static_cast<std::uint8_t>(n));
+    REQUIRE(e.has_value());
+    CHECK(e.value()->scaled);
+  }
+  // pointers for OBJECT_REQ
+  CHECK(d::lage_ist.pointer == 67);
+  CHECK(d::speed.pointer == 38);
+}
+#endif
