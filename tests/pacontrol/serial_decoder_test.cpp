@@ -123,13 +123,16 @@ TEST_CASE("pacontrol serial decoder: characters outside the protocol's set") {
 }
 
 TEST_CASE("pacontrol serial decoder: overlong fields never overrun the buffer") {
-  // 20 characters per field are accepted, 21 are not.
-  CHECK(serial::decode_frame(frame("0907;1;1;12345678901234567890", "0").span()).error() ==
-        errc::overflow); // 20 digits: accepted by length, more than int64 holds
-  CHECK(error_of(frame("0907;1;1;9999999999.999999999", "0")) == errc::overflow);
-  CHECK(error_of(frame("0907;1;1;123456789012345678901", "0")) == errc::too_long);
-  CHECK(error_of(frame("0907;000000000000000000001;1;0", "0")) == errc::too_long);
-  CHECK(serial::decode_frame(frame("0907;00000000000000000001;1;0", "0").span()));
+  // 21 characters per field are accepted, 22 are not.
+  CHECK(serial::decode_frame(frame("0907;1;1;123456789012345678901", "0").span()).error() ==
+        errc::overflow); // 21 digits: accepted by length, more than int64 holds
+  CHECK(error_of(frame("0907;1;1;99999999999.999999999", "0")) == errc::overflow);
+  CHECK(error_of(frame("0907;1;1;1234567890123456789012", "0")) == errc::too_long);
+  CHECK(error_of(frame("0907;0000000000000000000001;1;0", "0")) == errc::too_long);
+  CHECK(serial::decode_frame(frame("0907;000000000000000000001;1;0", "0").span()));
+  // The longest dates the encoder can write fit (fuzz finding F1).
+  CHECK(serial::decode_frame(frame("0907;1;1;-0.000000000000000001", "0").span()));
+  CHECK(serial::decode_frame(frame("0907;1;1;-922337203685477580.8", "0").span()));
   // A stream that never ends a frame: every field at the limit, then more fields.
   serial::decoder d;
   CHECK(d.push(0x01).value() == frame_kind::none);
@@ -137,7 +140,7 @@ TEST_CASE("pacontrol serial decoder: overlong fields never overrun the buffer") 
   errc first{};
   std::size_t errors = 0;
   for (int i = 0; i < 10000; ++i) {
-    const std::uint8_t b = (i % 21 == 20) ? std::uint8_t{';'} : std::uint8_t{'7'};
+    const std::uint8_t b = (i % 22 == 21) ? std::uint8_t{';'} : std::uint8_t{'7'};
     auto r = d.push(b);
     if (!r) {
       if (errors++ == 0) first = r.error();

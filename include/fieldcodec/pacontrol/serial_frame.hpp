@@ -32,8 +32,10 @@ inline constexpr std::uint8_t etx = 0x03;
 inline constexpr std::uint8_t eot = 0x04;
 inline constexpr char separator = ';';
 
-/// Longest field the decoder accepts (an int32 needs 11 characters, a real at most 20).
-inline constexpr std::size_t max_field_chars = 20;
+/// Longest field the decoder accepts and the encoder writes: the longest text of a valid date
+/// (a real with an int64 mantissa and up to 18 places, e.g. "-0.000000000000000001" or
+/// "-922337203685477580.8", is 21 characters; an int32 needs 11).
+inline constexpr std::size_t max_field_chars = 21;
 /// Fields of a request and of an acknowledgement.
 inline constexpr std::size_t request_fields = 4;
 inline constexpr std::size_t acknowledgement_fields = 6;
@@ -113,6 +115,7 @@ struct text_writer {
     char tmp[48]{};
     auto len = format_decimal(v.number, tmp);
     if (!len) return len.error();
+    if (len.value() > max_field_chars) return errc::too_long; // cannot happen for valid dates
     return put_text(std::span<const char>(tmp, len.value()));
   }
 };
