@@ -228,15 +228,17 @@ private:
   serial::acknowledgement acknowledgement_{};
 };
 
-/// Decodes exactly one complete frame (or a lone EOT poll) from `bytes`.
-/// Errors: those of decoder::push; truncated (the bytes end inside a frame or are empty);
-/// bad_length (bytes follow the frame).
+/// One frame decoded by decode_frame: `req` is valid for a request, `ack` for an
+/// acknowledgement.
 struct decoded_frame {
   frame_kind kind = frame_kind::none;
   request req{};
   acknowledgement ack{};
 };
 
+/// Decodes exactly one complete frame (or a lone EOT poll) from `bytes`.
+/// Errors: those of decoder::push; truncated (the bytes end inside a frame or are empty);
+/// bad_length (bytes follow the frame).
 [[nodiscard]] constexpr result<decoded_frame> decode_frame(std::span<const std::uint8_t> bytes,
                                                            decoder_options options = {}) noexcept {
   decoder d(options);

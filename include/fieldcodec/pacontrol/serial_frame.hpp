@@ -100,7 +100,7 @@ struct text_writer {
     out[n++] = b;
     return {};
   }
-  /// Writes text produced by a formatter into a scratch buffer, then copies it.
+  /// Appends characters.
   constexpr status put_text(std::span<const char> text) noexcept {
     for (const char c : text) FIELDCODEC_TRY_STATUS(put(c));
     return {};
