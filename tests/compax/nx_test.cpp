@@ -76,6 +76,10 @@ static_assert(cx::dsp_number::from_thousandths(250'000).value().to_thousandths()
 static_assert(cx::dsp_number::from_thousandths(-4'000'000'000).value().to_thousandths() ==
               -4'000'000'000);
 static_assert(cx::dsp_number::from_thousandths(8'388'608'000).error() == errc::overflow);
+static_assert(cx::dsp_number::from_thousandths(-8'388'608'001).error() == errc::overflow);
+static_assert(cx::dsp_number::from_thousandths(-8'388'608'000).value().raw ==
+              cx::dsp_format::raw_min);
+static_assert(cx::dsp_number{cx::dsp_format::raw_max}.to_thousandths() == 8'388'607'999);
 
 // Records and text work in constant expressions.
 static_assert(nx::encode_record(nx::make(nx::op::posa, nx::special())).value() ==
@@ -388,6 +392,21 @@ TEST_CASE("Nx encoder refuses what it cannot write") {
         errc::buffer_too_small);
 }
 
+TEST_CASE("Nx: DSP extremes through text") {
+  // POSA with the largest and the smallest 48-bit value
+  for (const bytes &b : {bytes{0x41, 0xFE, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F},
+                         bytes{0x41, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80}}) {
+    auto c = nx::decode_content(b);
+    REQUIRE(c.has_value());
+    std::array<char, nx::text_max> t{};
+    auto n = nx::format_command(c.value(), t);
+    REQUIRE(n.has_value());
+    CHECK(nx::parse_command(std::string_view{t.data(), n.value()}).has_value());
+  }
+  CHECK(text(nx::make(nx::op::posa, nx::number(cx::dsp_number{cx::dsp_format::raw_min}))) ==
+        "POSA -8388608");
+}
+
 TEST_CASE("Nx text bad input") {
   CHECK(nx::parse_command("").error() == errc::bad_syntax);
   CHECK(nx::parse_command("JUMP 5").error() == errc::unknown_command);
@@ -411,4 +430,41 @@ TEST_CASE("Nx text bad input") {
   std::array<char, 5> tiny{};
   CHECK(nx::format_command(nx::make(nx::op::posa, nx::special()), tiny).error() ==
         errc::buffer_too_small);
+}
+
+TEST_CASE("Nx: whatever decodes re-encodes to the same bytes and survives text") {
+  // deterministic pseudo-random contents built from the table's codes and byte values
+  std::uint32_t x = 12345;
+  auto rnd = [&x] {
+    x = x * 1664525U + 1013904223U;
+    return x >> 8U;
+  };
+  constexpr std::array<std::uint8_t, 40> codes{
+      0x20, 0x01, 0x41, 0x42, 0x43, 0x45, 0x47, 0x49, 0x4A, 0x4B, 0x4C, 0x4D, 0x4F, 0x50,
+      0x51, 0x52, 0x53, 0x54, 0x55, 0x56, 0x57, 0x61, 0x6B, 0x6C, 0x6D, 0x72, 0x73, 0x74,
+      0x77, 0xC1, 0xCB, 0xCC, 0xCD, 0xD2, 0xD3, 0xD4, 0xD7, 0x30, 0x31, 0xFF};
+  std::size_t decoded = 0;
+  for (int i = 0; i < 200000; ++i) {
+    bytes b(1 + rnd() % nx::content_max);
+    for (auto &v : b) {
+      const auto r = rnd();
+      v = (r % 3U == 0U) ? codes[(r >> 4U) % codes.size()]
+                         : static_cast<std::uint8_t>((r % 5U == 0U) ? 0U : (r >> 8U) & 0xFFU);
+    }
+    auto c = nx::decode_content(b);
+    if (!c) continue;
+    ++decoded;
+    CAPTURE(b);
+    CHECK(content(c.value()) == b);
+    std::array<char, nx::text_max> t{};
+    auto n = nx::format_command(c.value(), t);
+    REQUIRE(n.has_value());
+    auto p = nx::parse_command(std::string_view{t.data(), n.value()});
+    REQUIRE(p.has_value());
+    // text keeps 3 decimals of DSP values: compare through the text again
+    std::array<char, nx::text_max> t2{};
+    CHECK(nx::format_command(p.value(), t2).value() == n.value());
+    CHECK(std::string_view{t2.data(), n.value()} == std::string_view{t.data(), n.value()});
+  }
+  CHECK(decoded > 1000);
 }

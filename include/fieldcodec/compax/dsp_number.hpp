@@ -37,23 +37,28 @@ struct dsp_format {
 struct dsp_number {
   std::int64_t raw = 0;
 
+  /// Range of from_thousandths(): [−2^23, 2^23) in units of 0.001.
+  static constexpr std::int64_t min_thousandths = -(std::int64_t{1} << 23U) * 1000;
+  static constexpr std::int64_t max_thousandths = (std::int64_t{1} << 23U) * 1000 - 1;
+
   /// From units of 0.001 (thousandths), rounded half away from zero.
-  /// Errors: overflow (outside the 48-bit range, |value| ≥ 2^23).
+  /// Errors: overflow (outside [min_thousandths, max_thousandths]).
   [[nodiscard]] static constexpr result<dsp_number> from_thousandths(std::int64_t t) noexcept {
-    constexpr std::int64_t limit = (std::int64_t{1} << 23U) * 1000; // 2^23 in thousandths
-    if (t >= limit || t <= -limit) return errc::overflow;
+    if (t > max_thousandths || t < min_thousandths) return errc::overflow;
     const bool neg = t < 0;
     const std::int64_t mag = neg ? -t : t;
     const std::int64_t r = (mag * dsp_format::one + 500) / 1000;
-    if (r > dsp_format::raw_max) return errc::overflow;
     return dsp_number{neg ? -r : r};
   }
-  /// To units of 0.001, rounded half away from zero.
+  /// To units of 0.001, rounded half away from zero and limited to [min_thousandths,
+  /// max_thousandths] (the top 2^-24 steps below 2^23 would round up to 2^23), so that the
+  /// result always converts back.
   [[nodiscard]] constexpr std::int64_t to_thousandths() const noexcept {
     const bool neg = raw < 0;
     const std::int64_t mag = neg ? -raw : raw;
     const std::int64_t t = (mag * 1000 + dsp_format::one / 2) / dsp_format::one;
-    return neg ? -t : t;
+    const std::int64_t v = neg ? -t : t;
+    return v > max_thousandths ? max_thousandths : v;
   }
   friend constexpr bool operator==(const dsp_number &, const dsp_number &) = default;
 };
