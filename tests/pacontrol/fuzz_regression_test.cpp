@@ -1,6 +1,9 @@
-// Regression tests for inputs found by fuzz/fuzz_pacontrol_serial.cpp (see fuzz/FINDINGS.md).
+// Regression tests for inputs found by fuzz/fuzz_pacontrol_serial.cpp and
+// fuzz/fuzz_pacontrol_profibus.cpp (see fuzz/FINDINGS.md).
 // A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
 // suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
+#include <fieldcodec/pacontrol/position.hpp>
+#include <fieldcodec/pacontrol/profibus_axis.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
 
@@ -40,4 +43,25 @@ void check_ack_round_trip(fc::decimal date) {
 TEST_CASE("fuzz F1: the decoder reads back every date the encoder writes") {
   check_ack_round_trip({-1, 18});
   check_ack_round_trip({std::numeric_limits<std::int64_t>::min(), 1});
+}
+
+// F2 (2026-11-21, fuzz_pacontrol_profibus): a ×1000 position near the int32 limits
+// (7F FF FF FF = 2147483.647) decodes to the nearest float, 2147483.75, and encode_position of
+// that float fails with errc::overflow (its shortest decimal 2147483.8 × 1000 is beyond int32):
+// an axis status read from the bus cannot be written back. Same for 80 00 00 00.
+TEST_CASE("fuzz F2: a decoded x1000 position re-encodes" * doctest::may_fail()) {
+  using pac::position_format;
+  for (const auto raw : {std::array<std::uint8_t, 4>{0x7F, 0xFF, 0xFF, 0xFF},
+                         std::array<std::uint8_t, 4>{0x80, 0x00, 0x00, 0x00}}) {
+    auto f = pac::decode_position(raw, position_format::milli_integer);
+    REQUIRE(f.has_value());
+    auto back = pac::encode_position(f.value(), position_format::milli_integer);
+    REQUIRE(back.has_value()); // F2: errc::overflow
+    CHECK(pac::decode_position(back.value(), position_format::milli_integer).value() == f.value());
+  }
+  const std::array<std::uint8_t, 12> status{0x00, 0x00, 0xC3, 0x41, 0x00, 0x00,
+                                            0x00, 0x00, 0x7F, 0xFF, 0xFF, 0xFF};
+  auto s = pac::profibus::decode_axis_status(status, position_format::milli_integer);
+  REQUIRE(s.has_value());
+  CHECK(pac::profibus::encode_axis_status(s.value(), position_format::milli_integer).has_value());
 }
