@@ -15,10 +15,14 @@ namespace fieldcodec::gen {
 
 namespace {
 
+// Message building with views into the file text.
+std::string operator+(std::string a, std::string_view b) { return a.append(b); }
+std::string operator+(const char *a, std::string_view b) { return std::string(a).append(b); }
+
 struct ini_key {
-  std::string name;  // as written (trimmed)
-  std::string upper; // upper case, for lookup
-  std::string value; // trimmed
+  std::string_view name;  // as written (trimmed), points into the reader's text
+  std::string upper;      // upper case, for lookup
+  std::string_view value; // trimmed
   int line = 0;
   int value_col = 0;
 };
@@ -112,13 +116,14 @@ public:
 
   std::optional<dictionary> read(std::string_view bytes) {
     bool converted = false;
-    const std::string text = to_utf8(bytes, converted);
-    if (!split(text)) return std::nullopt;
+    text_ = to_utf8(bytes, converted);
+    if (!split(text_)) return std::nullopt;
     if (sections_.empty()) {
       diag_.error(file_, 1, 1, "expected a section such as '[FileInfo]', got an empty file");
       return std::nullopt;
     }
     index_sections();
+    dict_.entries.reserve(sections_.size());
     header_sections();
     objects();
     object_lists();
@@ -188,6 +193,7 @@ private:
         }
         sections_.push_back({name, to_upper(name), line_no, {}});
         current = &sections_.back();
+        current->keys.reserve(8);
         continue;
       }
       const auto eq = line.find('=');
@@ -206,15 +212,15 @@ private:
         if (diag_.too_many()) return false;
         continue;
       }
-      const std::string key(trim(line.substr(0, eq)));
+      const std::string_view key = trim(line.substr(0, eq));
       std::size_t vstart = eq + 1U;
       while (vstart < line.size() && (line[vstart] == ' ' || line[vstart] == '\t')) ++vstart;
       if (key.empty()) {
         diag_.error(file_, line_no, static_cast<int>(lead) + 1, "expected a key before '='");
         continue;
       }
-      current->keys.push_back({key, to_upper(key), std::string(trim(line.substr(eq + 1U))), line_no,
-                               static_cast<int>(vstart) + 1});
+      current->keys.push_back(
+          {key, to_upper(key), trim(line.substr(eq + 1U)), line_no, static_cast<int>(vstart) + 1});
     }
     return true;
   }
@@ -278,7 +284,7 @@ private:
     copy(other("DUMMYUSAGE"), dict_.dummy_usage);
     if (const ini_section *c = other("COMMENTS")) {
       for (const auto &k : c->keys) {
-        if (k.upper.starts_with("LINE") && k.upper != "LINES") dict_.comments.push_back(k.value);
+        if (k.upper.starts_with("LINE") && k.upper != "LINES") dict_.comments.emplace_back(k.value);
       }
     }
     const ini_section *dc = other("DEVICECOMISSIONING");
@@ -317,7 +323,7 @@ private:
   // Parses a $NODEID expression or a plain number. Returns false after reporting.
   bool parse_number_value(const ini_section &s, const ini_key &k, od::data_type type,
                           od::number &out, bool &nodeid) {
-    std::string v = k.value;
+    const std::string v(k.value);
     nodeid = false;
     const std::string up = to_upper(v);
     const auto at = up.find("$NODEID");
@@ -439,9 +445,10 @@ private:
     return u && u.value() <= unsigned_max(w);
   }
 
-  static std::string unquote(const std::string &v) {
-    if (v.size() >= 2U && v.front() == '"' && v.back() == '"') return v.substr(1, v.size() - 2U);
-    return v;
+  static std::string unquote(std::string_view v) {
+    if (v.size() >= 2U && v.front() == '"' && v.back() == '"')
+      return std::string(v.substr(1, v.size() - 2U));
+    return std::string(v);
   }
 
   // Fills `e` from the keys of a VAR-like section. `base` supplies inherited values
@@ -537,7 +544,7 @@ private:
       if (numeric) {
         if (!parse_number_value(s, *k, e.type, num, nodeid)) ok = false;
       } else {
-        text = e.type == od::data_type::visible_string ? unquote(k->value) : k->value;
+        text = e.type == od::data_type::visible_string ? unquote(k->value) : std::string(k->value);
       }
     };
     bool dummy = false;
@@ -822,6 +829,7 @@ private:
 
   const std::string &file_;
   diagnostics &diag_;
+  std::string text_;                 // the file as UTF-8; keys and values are views into it
   std::deque<ini_section> sections_; // deque: pointers stay valid
   std::map<std::uint16_t, const ini_section *> objects_;
   std::map<std::uint16_t, std::map<std::uint8_t, const ini_section *>> subs_;

@@ -132,31 +132,68 @@ void emit_entry(std::string &o, const entry &e) {
     o += ", .pdo = od::pdo_mapping::" + std::string(od::name(e.pdo));
   if (e.flags != 0U) o += ", .flags = 0x" + hex(e.flags, 2);
   if (e.size != 0U) o += ", .size = " + std::to_string(e.size);
-  o += ", .name = " + cpp_string(e.name);
-  if (e.low) o += ", .low = " + number_literal(e.low);
-  if (e.high) o += ", .high = " + number_literal(e.high);
-  if (e.def) o += ", .default_value = " + number_literal(e.def);
+  o += ", .name = ";
+  append_cpp_string(o, e.name);
+  if (e.low) {
+    o += ", .low = ";
+    o += number_literal(e.low);
+  }
+  if (e.high) {
+    o += ", .high = ";
+    o += number_literal(e.high);
+  }
+  if (e.def) {
+    o += ", .default_value = ";
+    o += number_literal(e.def);
+  }
   if (e.def_nodeid) o += ", .default_nodeid = true";
-  if (!e.def_text.empty()) o += ", .default_text = " + cpp_string(e.def_text);
+  if (!e.def_text.empty()) {
+    o += ", .default_text = ";
+    append_cpp_string(o, e.def_text);
+  }
   if (e.scaled || e.offset.mantissa != 0) {
     o += ", .scale = {{" + std::to_string(e.scale.mantissa) + ", " +
          std::to_string(e.scale.places) + "}, {" + std::to_string(e.offset.mantissa) + ", " +
          std::to_string(e.offset.places) + "}}";
   }
   if (e.scaled) o += ", .scaled = true";
-  if (!e.unit.empty()) o += ", .unit = " + cpp_string(e.unit);
-  if (!e.alt_name.empty()) o += ", .alt_name = " + cpp_string(e.alt_name);
+  if (!e.unit.empty()) {
+    o += ", .unit = ";
+    append_cpp_string(o, e.unit);
+  }
+  if (!e.alt_name.empty()) {
+    o += ", .alt_name = ";
+    append_cpp_string(o, e.alt_name);
+  }
   if (e.pointer != od::no_pointer) o += ", .pointer = " + std::to_string(e.pointer);
   if (e.bus == od::bus_manager::available) o += ", .bus = od::bus_manager::available";
   if (e.bus == od::bus_manager::not_available) o += ", .bus = od::bus_manager::not_available";
-  if (!e.acceptance.empty()) o += ", .acceptance = " + cpp_string(e.acceptance);
-  if (!e.section.empty()) o += ", .section = " + cpp_string(e.section);
-  if (!e.remark.empty()) o += ", .remark = " + cpp_string(e.remark);
+  if (!e.acceptance.empty()) {
+    o += ", .acceptance = ";
+    append_cpp_string(o, e.acceptance);
+  }
+  if (!e.section.empty()) {
+    o += ", .section = ";
+    append_cpp_string(o, e.section);
+  }
+  if (!e.remark.empty()) {
+    o += ", .remark = ";
+    append_cpp_string(o, e.remark);
+  }
   if (e.has_obj_flags && e.obj_flags != 0U) o += ", .obj_flags = 0x" + hex(e.obj_flags, 1);
-  if (e.param) o += ", .parameter_value = " + number_literal(e.param);
+  if (e.param) {
+    o += ", .parameter_value = ";
+    o += number_literal(e.param);
+  }
   if (e.param_nodeid) o += ", .parameter_nodeid = true";
-  if (!e.param_text.empty()) o += ", .parameter_text = " + cpp_string(e.param_text);
-  if (!e.denotation.empty()) o += ", .denotation = " + cpp_string(e.denotation);
+  if (!e.param_text.empty()) {
+    o += ", .parameter_text = ";
+    append_cpp_string(o, e.param_text);
+  }
+  if (!e.denotation.empty()) {
+    o += ", .denotation = ";
+    append_cpp_string(o, e.denotation);
+  }
   o += "},\n";
 }
 
@@ -174,19 +211,46 @@ void emit_commands(std::string &o, const dictionary &d) {
        "> commands{{\n";
   for (const auto &c : d.commands) {
     o += "    {.code = 0x" + hex(c.code, 4) + ", .name = " + cpp_string(c.name);
-    if (!c.section.empty()) o += ", .section = " + cpp_string(c.section);
-    if (!c.title.empty()) o += ", .title = " + cpp_string(c.title);
-    if (!c.parameter.empty()) o += ", .parameter = " + cpp_string(c.parameter);
-    if (c.parameter_min) o += ", .parameter_min = " + number_literal(c.parameter_min);
-    if (c.parameter_max) o += ", .parameter_max = " + number_literal(c.parameter_max);
+    if (!c.section.empty()) {
+      o += ", .section = ";
+      append_cpp_string(o, c.section);
+    }
+    if (!c.title.empty()) {
+      o += ", .title = ";
+      append_cpp_string(o, c.title);
+    }
+    if (!c.parameter.empty()) {
+      o += ", .parameter = ";
+      append_cpp_string(o, c.parameter);
+    }
+    if (c.parameter_min) {
+      o += ", .parameter_min = ";
+      o += number_literal(c.parameter_min);
+    }
+    if (c.parameter_max) {
+      o += ", .parameter_max = ";
+      o += number_literal(c.parameter_max);
+    }
     if (c.date_type != od::command_value::none)
       o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
-    if (!c.date.empty()) o += ", .date = " + cpp_string(c.date);
+    if (!c.date.empty()) {
+      o += ", .date = ";
+      append_cpp_string(o, c.date);
+    }
     if (c.reply_type != od::command_value::none)
       o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
-    if (!c.reply.empty()) o += ", .reply = " + cpp_string(c.reply);
-    if (!c.modes.empty()) o += ", .modes = " + cpp_string(c.modes);
-    if (!c.remark.empty()) o += ", .remark = " + cpp_string(c.remark);
+    if (!c.reply.empty()) {
+      o += ", .reply = ";
+      append_cpp_string(o, c.reply);
+    }
+    if (!c.modes.empty()) {
+      o += ", .modes = ";
+      append_cpp_string(o, c.modes);
+    }
+    if (!c.remark.empty()) {
+      o += ", .remark = ";
+      append_cpp_string(o, c.remark);
+    }
     o += "},\n";
   }
   o += "}};\n\ninline constexpr od::command_table "

@@ -263,8 +263,13 @@ bool is_identifier(std::string_view s) noexcept {
   return !is_cpp_keyword(s);
 }
 
+namespace {
+constexpr char lower_table[] = "abcdefghijklmnopqrstuvwxyz";
+}
+
 std::string make_identifier(std::string_view name) {
   std::string out;
+  out.reserve(name.size() + 4U);
   bool pending_sep = false;
   auto put = [&](std::string_view t) {
     if (pending_sep && !out.empty()) out += '_';
@@ -274,9 +279,9 @@ std::string make_identifier(std::string_view name) {
   for (std::size_t i = 0; i < name.size(); ++i) {
     const auto c = static_cast<unsigned char>(name[i]);
     if (c >= 'A' && c <= 'Z') {
-      put(std::string(1, static_cast<char>(c - 'A' + 'a')));
+      put(std::string_view(&lower_table[c - 'A'], 1));
     } else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) {
-      put(std::string(1, static_cast<char>(c)));
+      put(std::string_view(&name[i], 1));
     } else if (c == 0xC3U && i + 1U < name.size()) { // UTF-8 Latin-1 supplement
       const auto d = static_cast<unsigned char>(name[i + 1U]);
       ++i;
@@ -307,7 +312,14 @@ std::string make_identifier(std::string_view name) {
 }
 
 std::string cpp_string(std::string_view s) {
-  std::string out = "\"";
+  std::string out;
+  append_cpp_string(out, s);
+  return out;
+}
+
+void append_cpp_string(std::string &out, std::string_view s) {
+  out.reserve(out.size() + s.size() + 2U);
+  out += '"';
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto c = static_cast<unsigned char>(s[i]);
     if (c == '"' || c == '\\') {
@@ -326,7 +338,6 @@ std::string cpp_string(std::string_view s) {
     }
   }
   out += '"';
-  return out;
 }
 
 std::string hex(std::uint64_t v, int digits) {

@@ -42,6 +42,7 @@ struct int_parse {
 
 /// A C++ string literal of `s` (UTF-8 kept, control characters and quotes escaped).
 [[nodiscard]] std::string cpp_string(std::string_view s);
+void append_cpp_string(std::string &out, std::string_view s);
 
 [[nodiscard]] std::string hex(std::uint64_t v, int digits);
 
