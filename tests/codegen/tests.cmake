@@ -30,3 +30,13 @@ if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
       -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_corpus
       -P ${PROJECT_SOURCE_DIR}/tests/codegen/corpus.cmake)
 endif()
+
+# fieldcodec_generate_dictionary() in a user project (fieldcodec added as a subproject).
+add_test(NAME codegen_cmake_function
+  COMMAND ${CMAKE_CTEST_COMMAND} --build-and-test
+    ${PROJECT_SOURCE_DIR}/tests/codegen/cmake_function
+    ${CMAKE_CURRENT_BINARY_DIR}/codegen_cmake_function
+    --build-generator ${CMAKE_GENERATOR}
+    --build-options -DFIELDCODEC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
+      -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
+    --test-command user)
