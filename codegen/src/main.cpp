@@ -105,7 +105,8 @@ int main(int argc, char **argv) {
       if (!value(eds_out)) return usage_error("option --eds needs a file name");
     } else if (a == "--name") {
       if (!value(name)) return usage_error("option --name needs a name");
-      if (!fieldcodec::gen::is_identifier(name)) {
+      if (!fieldcodec::gen::is_identifier(name) || name == "od" || name == "std" ||
+          name == "detail") {
         return usage_error("--name '" + name + "' is not a C++ identifier");
       }
     } else if (a == "--check") {
