@@ -96,7 +96,7 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
   std::uint64_t v = 0;
   for (std::size_t i = 0; i < length; ++i) {
     const std::size_t k = offset + i;
-    if (((pdo[k / 8U] >> (k % 8U)) & 1U) != 0U) v |= std::uint64_t{1} << i;
+    if (((static_cast<unsigned>(pdo[k / 8U]) >> (k % 8U)) & 1U) != 0U) v |= std::uint64_t{1} << i;
   }
   return v;
 }
