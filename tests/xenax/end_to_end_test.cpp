@@ -12,7 +12,9 @@
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/xenax/error_code.hpp>
+#include <fieldcodec/xenax/homing.hpp>
 #include <fieldcodec/xenax/modes.hpp>
+#include <fieldcodec/xenax/units.hpp>
 
 #include <doctest/doctest.h>
 
@@ -133,6 +135,12 @@ struct simulated_xenax {
         position = goal;
         mode_bits = xenax::sw::bit10;
       }
+    }
+    if (state == ds402::state::operation_enabled && rising &&
+        mode_display() == static_cast<std::int8_t>(xenax::mode::reference)) {
+      // the reference run completes at once: performed (bit 10) and achieved (bit 12)
+      position = 0;
+      mode_bits = xenax::sw::bit10 | xenax::sw::bit12;
     }
     previous_cw = cw;
     store_value(0x6040, cw);
@@ -397,4 +405,70 @@ TEST_CASE("XENAX 5.4.1: jog mode is selected with 6060h = 0xFF (-1)") {
                              });
   CHECK(m.client.state() == sdo::transfer_state::failed);
   CHECK(m.client.abort_code_value() == 0x06090031U);
+}
+
+TEST_CASE("XENAX 5.1.2 reference of a LINAX, then 5.3.1 cyclic synchronous position set-up") {
+  simulated_xenax drive;
+  master m(drive);
+  m.send(co::nmt::encode(co::nmt::command::start, node).value());
+  m.statusword = drive.statusword();
+  (void)m.take_log();
+
+  // 6060h := 6, wait 6061h = 6, 6098h := 1 (start direction positive)
+  m.sdo_write<std::int8_t>(0x6060, static_cast<std::int8_t>(xenax::mode::reference));
+  CHECK(xenax::decode_mode(static_cast<std::int8_t>(m.sdo_read(0x6061).at(0))).value() ==
+        xenax::mode::reference);
+  m.sdo_write<std::int8_t>(0x6098,
+                           static_cast<std::int8_t>(xenax::reference_method::linear_positive));
+  // 0x06, 0x07, 0x0F, then 0x1F starts the reference; wait for bit 12 (reference achieved)
+  m.power_to(ds402::state::ready_to_switch_on);
+  m.power_to(ds402::state::switched_on);
+  m.power_to(ds402::state::operation_enabled);
+  m.rpdo1(xenax::reference_start);
+  const auto ref = xenax::decode_status(m.statusword, xenax::mode::reference).value();
+  CHECK(ref.reference_achieved);
+  CHECK(!ref.reference_error);
+  check_frames(m.take_log(), {
+                                 F(0x601, {0x2F, 0x60, 0x60, 0x00, 0x06, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0x60, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x601, {0x40, 0x61, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x4F, 0x61, 0x60, 0x00, 0x06, 0x00, 0x00, 0x00}),
+                                 F(0x601, {0x2F, 0x98, 0x60, 0x00, 0x01, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0x98, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x201, {0x06, 0x00}),
+                                 F(0x181, {0x21, 0x02}),
+                                 F(0x281, {0x21, 0x02, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x201, {0x07, 0x00}),
+                                 F(0x181, {0x23, 0x02}),
+                                 F(0x281, {0x23, 0x02, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x201, {0x0F, 0x00}),
+                                 F(0x181, {0x27, 0x02}),
+                                 F(0x281, {0x27, 0x02, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x201, {0x1F, 0x00}),
+                                 F(0x181, {0x27, 0x16}),
+                                 F(0x281, {0x27, 0x16, 0x00, 0x00, 0x00, 0x00}),
+                             });
+
+  // 5.3.1: 6060h := 8; 60C2h sub 1 := 0x05, sub 2 := 0xFC (500 us); 6065h window
+  m.sdo_write<std::int8_t>(0x6060, static_cast<std::int8_t>(xenax::mode::cyclic_sync_position));
+  const auto t = xenax::encode_cycle_time(500).value();
+  const std::array<std::uint8_t, 1> base{t.base};
+  const std::array<std::uint8_t, 1> exponent{static_cast<std::uint8_t>(t.exponent)};
+  m.sdo_write(0x60C2, 1, base);
+  m.sdo_write(0x60C2, 2, exponent);
+  m.sdo_write<std::uint32_t>(0x6065, 2'000);
+  check_frames(m.take_log(), {
+                                 F(0x601, {0x2F, 0x60, 0x60, 0x00, 0x08, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0x60, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x601, {0x2F, 0xC2, 0x60, 0x01, 0x05, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0xC2, 0x60, 0x01, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x601, {0x2F, 0xC2, 0x60, 0x02, 0xFC, 0x00, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0xC2, 0x60, 0x02, 0x00, 0x00, 0x00, 0x00}),
+                                 F(0x601, {0x23, 0x65, 0x60, 0x00, 0xD0, 0x07, 0x00, 0x00}),
+                                 F(0x581, {0x60, 0x65, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}),
+                             });
+  // read back: 5 x 10^-4 s
+  const auto b = m.sdo_read(0x60C2, 1);
+  const auto e = m.sdo_read(0x60C2, 2);
+  CHECK(xenax::decode_cycle_time({b.at(0), static_cast<std::int8_t>(e.at(0))}).value() == 500);
 }
