@@ -1,0 +1,288 @@
+// Fuzz harness for the CANopen frame decoders (canopen/): COB-ID classification, NMT,
+// heartbeat / boot-up, node guarding, EMCY, SYNC, TIME and every SDO frame.
+//
+// The input is a sequence of 11-byte CAN frames: id (2 bytes, little-endian, not masked: ids
+// above 0x7FF must be refused) | flags (bit 0 RTR, bits 1-4 DLC 0..15) | 8 data bytes. Every
+// frame goes through every decoder; a guard monitor and responder also see the sequence.
+//
+// Property: what decodes re-encodes (with the module's own encoder) to the canonical frame, and
+// that decodes to the same value. Canonical frame: the same id, RTR and DLC, the data bytes
+// beyond the DLC cleared (all of them for a remote frame). For SDO frames, additionally (CiA
+// 301 bit fields the decoder ignores): reserved bits of byte 0 cleared (bit 4 of initiate /
+// abort / block-less commands, bits 0-3 of segment requests without data, the n bits when e = 0
+// or s = 0), and bytes that carry nothing cleared (bytes 4-7 of an initiate upload request /
+// initiate download response / initiate without size, expedited bytes beyond the size, segment
+// bytes beyond the data). A non-last segment with fewer than 7 data bytes decodes (the machines
+// accept it) but has no canonical form: the segment encoders refuse it with bad_length. Block
+// transfer frames are decoded only as far as their multiplexer.
+#include "check.hpp"
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sync.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace fc = fieldcodec;
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+using fc::errc;
+
+namespace {
+
+co::can_frame canonical(const co::can_frame &f) {
+  co::can_frame c = f;
+  for (std::size_t i = f.rtr ? 0U : f.dlc; i < c.data.size(); ++i) c.data[i] = 0;
+  return c;
+}
+
+template <class R>
+void same_frame(const R &encoded, const co::can_frame &canon) {
+  FUZZ_CHECK(encoded.has_value());
+  FUZZ_CHECK(encoded.value() == canon);
+  FUZZ_CHECK(encoded.value().is_valid());
+}
+
+void check_classify(const co::can_frame &f) {
+  auto c = co::classify(f.id);
+  if (f.id > co::max_can_id) {
+    FUZZ_CHECK(c.is(errc::invalid_argument));
+    return;
+  }
+  FUZZ_CHECK(c.has_value());
+  const auto [fn, node] = c.value();
+  using co::function;
+  std::optional<fc::result<std::uint16_t>> id;
+  switch (fn) {
+  case function::emcy: id = co::cob_id::emcy(node); break;
+  case function::tpdo1: id = co::cob_id::tpdo(1, node); break;
+  case function::rpdo1: id = co::cob_id::rpdo(1, node); break;
+  case function::tpdo2: id = co::cob_id::tpdo(2, node); break;
+  case function::rpdo2: id = co::cob_id::rpdo(2, node); break;
+  case function::tpdo3: id = co::cob_id::tpdo(3, node); break;
+  case function::rpdo3: id = co::cob_id::rpdo(3, node); break;
+  case function::tpdo4: id = co::cob_id::tpdo(4, node); break;
+  case function::rpdo4: id = co::cob_id::rpdo(4, node); break;
+  case function::sdo_tx: id = co::cob_id::sdo_tx(node); break;
+  case function::sdo_rx: id = co::cob_id::sdo_rx(node); break;
+  case function::nmt_error: id = co::cob_id::nmt_error(node); break;
+  case function::nmt: FUZZ_CHECK(f.id == co::cob_id::nmt && node == 0); break;
+  case function::sync: FUZZ_CHECK(f.id == co::cob_id::sync && node == 0); break;
+  case function::time: FUZZ_CHECK(f.id == co::cob_id::time && node == 0); break;
+  case function::unassigned: FUZZ_CHECK(node == 0); break;
+  }
+  if (id) FUZZ_CHECK(id->has_value() && id->value() == f.id);
+  FUZZ_CHECK(co::to_string(fn).size() > 0);
+}
+
+void check_nmt(const co::can_frame &f, const co::can_frame &canon) {
+  if (auto m = co::nmt::decode(f)) {
+    same_frame(co::nmt::encode(m.value().cs, m.value().node), canon);
+    FUZZ_CHECK(co::nmt::decode(canon).value() == m.value());
+  }
+  if (auto h = co::nmt::decode_heartbeat(f)) {
+    const auto &v = h.value();
+    same_frame(v.is_boot_up() ? co::nmt::encode_boot_up(v.node)
+                              : co::nmt::encode_heartbeat(v.node, v.s),
+               canon);
+    FUZZ_CHECK(co::nmt::decode_heartbeat(canon).value() == v);
+  }
+  if (auto n = co::nmt::decode_guard_request(f)) {
+    // A remote frame carries no data: canonical = id, RTR, DLC 1.
+    same_frame(co::nmt::encode_guard_request(n.value()), canon);
+  }
+  if (auto g = co::nmt::decode_guard_response(f)) {
+    const auto &v = g.value();
+    same_frame(co::nmt::encode_guard_response(v.node, v.s, v.toggle), canon);
+    FUZZ_CHECK(co::nmt::decode_guard_response(canon).value() == v);
+  }
+}
+
+void check_emcy_sync_time(const co::can_frame &f, const co::can_frame &canon) {
+  if (auto e = co::emcy::decode(f)) {
+    same_frame(co::emcy::encode(e.value().node, e.value().m), canon);
+    FUZZ_CHECK(co::emcy::decode(canon).value() == e.value());
+    (void)co::emcy::classify(e.value().m.error_code);
+  }
+  if (auto s = co::sync::decode(f)) {
+    if (s.value()) {
+      same_frame(co::sync::encode(*s.value()), canon);
+    } else {
+      FUZZ_CHECK(co::sync::encode() == canon);
+    }
+  }
+  if (auto t = co::time_stamp::decode(f)) {
+    same_frame(co::time_stamp::encode(t.value()), canon);
+    const auto back = co::time_stamp::decode(canon).value();
+    FUZZ_CHECK(back.ms == t.value().ms && back.days == t.value().days);
+  }
+}
+
+bool same_message(const sdo::message &a, const sdo::message &b) {
+  if (a.k != b.k || a.index != b.index || a.sub != b.sub || a.expedited != b.expedited ||
+      a.size_indicated != b.size_indicated || a.toggle != b.toggle || a.last != b.last ||
+      a.size != b.size || a.code != b.code || a.data_size != b.data_size) {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.data_size; ++i) {
+    if (a.data[i] != b.data[i]) return false;
+  }
+  return true;
+}
+
+/// Re-encodes a decoded SDO message with the module's encoders (nullopt: no encoder — block
+/// frames).
+std::optional<fc::result<co::can_frame>> reencode(const sdo::addressed &a) {
+  const auto &m = a.m;
+  const bool to_server = a.dir == sdo::direction::to_server;
+  const std::uint8_t node = a.node;
+  switch (m.k) {
+  case sdo::kind::initiate_download_request:
+  case sdo::kind::initiate_upload_response:
+    if (m.expedited) {
+      if (m.size_indicated) {
+        return to_server ? sdo::expedited_download(node, m.index, m.sub, m.bytes())
+                         : sdo::expedited_upload_response(node, m.index, m.sub, m.bytes());
+      }
+      return to_server ? sdo::expedited_download_unsized(node, m.index, m.sub, m.bytes())
+                       : sdo::expedited_upload_response_unsized(node, m.index, m.sub, m.bytes());
+    }
+    return to_server ? sdo::initiate_download(node, m.index, m.sub, m.size, m.size_indicated)
+                     : sdo::upload_response(node, m.index, m.sub, m.size, m.size_indicated);
+  case sdo::kind::download_segment_request:
+    return sdo::download_segment(node, m.toggle, m.bytes(), m.last);
+  case sdo::kind::upload_segment_response:
+    return sdo::upload_segment(node, m.toggle, m.bytes(), m.last);
+  case sdo::kind::initiate_upload_request: return sdo::initiate_upload(node, m.index, m.sub);
+  case sdo::kind::upload_segment_request: return sdo::upload_segment_request(node, m.toggle);
+  case sdo::kind::initiate_download_response: return sdo::download_response(node, m.index, m.sub);
+  case sdo::kind::download_segment_response: return sdo::download_segment_response(node, m.toggle);
+  case sdo::kind::abort:
+    return sdo::abort(a.dir, node, m.index, m.sub, static_cast<sdo::abort_code>(m.code));
+  default: return std::nullopt;
+  }
+}
+
+/// The canonical form of an SDO frame (see the header comment).
+co::can_frame sdo_canonical(const co::can_frame &canon, const sdo::message &m) {
+  co::can_frame c = canon;
+  auto &d = c.data;
+  const auto clear = [&d](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) d[i] = 0;
+  };
+  switch (m.k) {
+  case sdo::kind::initiate_download_request:
+  case sdo::kind::initiate_upload_response: {
+    const auto ccs = static_cast<std::uint8_t>(d[0] & 0xE0U);
+    if (m.expedited) {
+      d[0] = static_cast<std::uint8_t>(ccs |
+                                       (m.size_indicated ? ((4U - m.data_size) << 2U) | 3U : 2U));
+      clear(4U + m.data_size, 8);
+    } else {
+      d[0] = static_cast<std::uint8_t>(ccs | (m.size_indicated ? 1U : 0U));
+      if (!m.size_indicated) clear(4, 8);
+    }
+    break;
+  }
+  case sdo::kind::download_segment_request:
+  case sdo::kind::upload_segment_response:
+    d[0] =
+        static_cast<std::uint8_t>((d[0] & 0xF0U) | ((7U - m.data_size) << 1U) | (m.last ? 1U : 0U));
+    clear(1U + m.data_size, 8);
+    break;
+  case sdo::kind::initiate_upload_request:
+  case sdo::kind::initiate_download_response:
+    d[0] = static_cast<std::uint8_t>(d[0] & 0xE0U);
+    clear(4, 8);
+    break;
+  case sdo::kind::upload_segment_request:
+  case sdo::kind::download_segment_response:
+    d[0] = static_cast<std::uint8_t>(d[0] & 0xF0U);
+    clear(1, 8);
+    break;
+  case sdo::kind::abort: d[0] = 0x80U; break;
+  default: break;
+  }
+  return c;
+}
+
+void check_sdo(const co::can_frame &f, const co::can_frame &canon) {
+  auto req = sdo::decode_request(f);
+  auto rsp = sdo::decode_response(f);
+  if (f.rtr && f.id <= co::max_can_id && f.dlc <= co::max_dlc) {
+    FUZZ_CHECK(req.is(errc::unexpected_frame) && rsp.is(errc::unexpected_frame));
+  }
+  auto a = sdo::decode(f);
+  if (!a) {
+    FUZZ_CHECK(a.error() == errc::unexpected_frame || a.error() == errc::bad_length ||
+               a.error() == errc::unknown_command);
+    return;
+  }
+  const auto &m = a.value().m;
+  FUZZ_CHECK(m.data_size <= 7U);
+  FUZZ_CHECK(same_message(m, (a.value().dir == sdo::direction::to_server ? req : rsp).value()));
+  auto enc = reencode(a.value());
+  if (!enc) return; // block transfer
+  const bool short_segment =
+      (m.k == sdo::kind::download_segment_request || m.k == sdo::kind::upload_segment_response) &&
+      !m.last && m.data_size != 7U;
+  if (short_segment) {
+    FUZZ_CHECK(enc->is(errc::bad_length));
+    return;
+  }
+  same_frame(*enc, sdo_canonical(canon, m));
+  auto back = sdo::decode(enc->value());
+  FUZZ_CHECK(back.has_value() && back.value().node == a.value().node &&
+             back.value().dir == a.value().dir && same_message(back.value().m, m));
+}
+
+struct guards {
+  co::nmt::guard_monitor monitor{5};
+  co::nmt::guard_responder responder{5};
+
+  void step(const co::can_frame &f) {
+    const bool before = monitor.expected_toggle();
+    auto s = monitor.accept(f);
+    auto g = co::nmt::decode_guard_response(f);
+    if (s) {
+      FUZZ_CHECK(g && g.value().node == 5 && g.value().toggle == before);
+      FUZZ_CHECK(monitor.expected_toggle() == !before);
+    } else {
+      FUZZ_CHECK(monitor.expected_toggle() == before);
+    }
+    // The responder answers requests to node 5 with alternating toggles the monitor accepts.
+    if (auto r = responder.respond(f, co::nmt::state::operational)) {
+      co::nmt::guard_monitor m2 = monitor;
+      auto t = m2.accept(r.value());
+      FUZZ_CHECK(t.has_value() || t.is(errc::bad_toggle));
+    }
+  }
+};
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+  guards g;
+  for (std::size_t at = 0; at + 11 <= size; at += 11) {
+    const std::uint8_t *p = data + at;
+    co::can_frame f;
+    f.id = static_cast<std::uint16_t>(p[0] | (p[1] << 8U));
+    if ((p[1] & 0x80U) == 0U) f.id &= 0x7FFU; // mostly valid identifiers
+    f.rtr = (p[2] & 1U) != 0U;
+    f.dlc = static_cast<std::uint8_t>((p[2] >> 1U) & 0x0FU);
+    for (std::size_t i = 0; i < 8; ++i) f.data[i] = p[3 + i];
+    const auto canon = canonical(f);
+    check_classify(f);
+    check_nmt(f, canon);
+    check_emcy_sync_time(f, canon);
+    check_sdo(f, canon);
+    g.step(f);
+  }
+  return 0;
+}
