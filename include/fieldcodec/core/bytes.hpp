@@ -40,7 +40,7 @@ namespace detail {
   return detail::width_mask(width);
 }
 
-// GCC 12 at -O2/-O3 reports -Warray-bounds / -Wstringop-overflow inside the two loops below
+// GCC 12 at -O2/-O3 reports -Warray-bounds / -Wstringop-overflow inside the loops below
 // for paths its jump threading invents after inlining (a constant width larger than a constant
 // span whose size check has already returned). Every access is preceded by an explicit size
 // check, so the false positives are silenced here, and only here.
@@ -50,20 +50,46 @@ namespace detail {
 #pragma GCC diagnostic ignored "-Wstringop-overflow"
 #endif
 
+namespace detail {
+// Fixed-width bodies, written as the plain shift-or loops a person would write: with a constant
+// width, compilers unroll them early and merge them into one (byte-swapped) load or store.
+template <std::size_t W>
+[[nodiscard]] constexpr std::uint64_t load_fixed(std::span<const std::uint8_t> in,
+                                                 byte_order order) noexcept {
+  std::uint64_t v = 0;
+  if (order == byte_order::big) {
+    for (std::size_t i = 0; i < W; ++i) v = (v << 8U) | in[i];
+  } else {
+    for (std::size_t i = W; i-- > 0U;) v = (v << 8U) | in[i];
+  }
+  return v;
+}
+template <std::size_t W>
+constexpr void store_fixed(std::span<std::uint8_t> out, std::uint64_t value,
+                           byte_order order) noexcept {
+  for (std::size_t i = 0; i < W; ++i) {
+    out[order == byte_order::little ? i : W - 1U - i] =
+        static_cast<std::uint8_t>(value >> (8U * i));
+  }
+}
+} // namespace detail
+
 /// Read an unsigned integer of `width` bytes (1..8) from the front of `in`.
 /// Errors: bad_length (width not 1..8), truncated (fewer than `width` bytes).
 [[nodiscard]] constexpr result<std::uint64_t>
 load_unsigned(std::span<const std::uint8_t> in, std::size_t width, byte_order order) noexcept {
   if (width < 1U || width > 8U) return errc::bad_length;
   if (in.size() < width) return errc::truncated;
-  // Walk from the most significant byte (the loop bound is explicit for the optimiser).
-  std::uint64_t v = 0;
-  std::size_t k = order == byte_order::big ? 0U : width - 1U;
-  for (std::size_t i = 0; i < 8U && i < width; ++i) {
-    v = (v << 8U) | in[k];
-    k = order == byte_order::big ? k + 1U : k - 1U;
+  switch (width) { // a constant width selects one unrolled body
+  case 1: return detail::load_fixed<1>(in, order);
+  case 2: return detail::load_fixed<2>(in, order);
+  case 3: return detail::load_fixed<3>(in, order);
+  case 4: return detail::load_fixed<4>(in, order);
+  case 5: return detail::load_fixed<5>(in, order);
+  case 6: return detail::load_fixed<6>(in, order);
+  case 7: return detail::load_fixed<7>(in, order);
+  default: return detail::load_fixed<8>(in, order);
   }
-  return v;
 }
 
 /// Read a two's complement signed integer of `width` bytes (1..8), sign-extended.
@@ -72,7 +98,10 @@ load_signed(std::span<const std::uint8_t> in, std::size_t width, byte_order orde
   auto u = load_unsigned(in, width, order);
   if (!u) return u.error();
   std::uint64_t v = u.value();
-  if (width < 8U && (v >> (8U * width - 1U)) != 0U) v |= ~detail::width_mask(width);
+  if (width < 8U) { // sign extension without a branch: (v ^ s) − s, s the sign bit
+    const std::uint64_t sign = std::uint64_t{1} << (8U * width - 1U);
+    v = (v ^ sign) - sign;
+  }
   return static_cast<std::int64_t>(v); // modular conversion, well defined since C++20
 }
 
@@ -83,11 +112,15 @@ load_signed(std::span<const std::uint8_t> in, std::size_t width, byte_order orde
   if (width < 1U || width > 8U) return errc::bad_length;
   if (value > unsigned_max(width)) return errc::overflow;
   if (out.size() < width) return errc::buffer_too_small;
-  // Fill from the least significant byte; k walks forwards or backwards through the field.
-  std::size_t k = order == byte_order::little ? 0U : width - 1U;
-  for (std::size_t i = 0; i < 8U && i < width; ++i) {
-    out[k] = static_cast<std::uint8_t>(value >> (8U * i));
-    k = order == byte_order::little ? k + 1U : k - 1U;
+  switch (width) { // a constant width selects one unrolled body
+  case 1: detail::store_fixed<1>(out, value, order); break;
+  case 2: detail::store_fixed<2>(out, value, order); break;
+  case 3: detail::store_fixed<3>(out, value, order); break;
+  case 4: detail::store_fixed<4>(out, value, order); break;
+  case 5: detail::store_fixed<5>(out, value, order); break;
+  case 6: detail::store_fixed<6>(out, value, order); break;
+  case 7: detail::store_fixed<7>(out, value, order); break;
+  default: detail::store_fixed<8>(out, value, order); break;
   }
   return {};
 }

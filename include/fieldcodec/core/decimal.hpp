@@ -27,6 +27,42 @@ inline constexpr std::uint8_t decimal_max_places = 18;
 
 namespace detail {
 
+/// 10^n for n = 0..19.
+inline constexpr std::array<std::uint64_t, 20> pow10_u64 = [] {
+  std::array<std::uint64_t, 20> t{};
+  std::uint64_t v = 1;
+  for (auto &x : t) {
+    x = v;
+    v *= 10U; // wraps after 10^19, never stored
+  }
+  return t;
+}();
+
+/// 10^n as an int64 for n = 0..18.
+[[nodiscard]] constexpr std::int64_t pow10_i64(unsigned n) noexcept {
+  return static_cast<std::int64_t>(pow10_u64[n]);
+}
+
+// Checked int64 arithmetic (the builtins are constexpr in GCC and Clang). True on success.
+constexpr bool mul_i64(std::int64_t a, std::int64_t b, std::int64_t &out) noexcept {
+  return !__builtin_mul_overflow(a, b, &out);
+}
+constexpr bool add_i64(std::int64_t a, std::int64_t b, std::int64_t &out) noexcept {
+  return !__builtin_add_overflow(a, b, &out);
+}
+constexpr bool sub_i64(std::int64_t a, std::int64_t b, std::int64_t &out) noexcept {
+  return !__builtin_sub_overflow(a, b, &out);
+}
+
+/// round(num / den), half away from zero, den > 0. Cannot overflow.
+[[nodiscard]] constexpr std::int64_t round_div_i64(std::int64_t num, std::int64_t den) noexcept {
+  std::int64_t q = num / den;
+  const std::int64_t rem = num % den;
+  const std::int64_t arem = rem < 0 ? -rem : rem;
+  if (arem >= den - arem) q += num < 0 ? -1 : 1; // remainder at least half
+  return q;
+}
+
 /// Unsigned 128-bit magnitude as four 32-bit limbs, least significant first. Portable (no
 /// __int128, works on 32-bit targets) and constexpr.
 struct u128 {
@@ -182,6 +218,15 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 
 /// Exact comparison: negative, zero or positive.
 [[nodiscard]] constexpr int compare(decimal a, decimal b) noexcept {
+  // Fast path: bring both to the same places in int64 when that cannot overflow.
+  if (a.places <= decimal_max_places && b.places <= decimal_max_places) {
+    std::int64_t x = a.mantissa;
+    std::int64_t y = b.mantissa;
+    if ((a.places >= b.places ? detail::mul_i64(y, detail::pow10_i64(a.places - b.places), y)
+                              : detail::mul_i64(x, detail::pow10_i64(b.places - a.places), x))) {
+      return x < y ? -1 : (x > y ? 1 : 0);
+    }
+  }
   const unsigned p = a.places > b.places ? a.places : b.places;
   detail::wide wa;
   detail::wide wb;
@@ -206,11 +251,14 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 /// beyond `places`), overflow (outside int64), invalid_argument (places > 18).
 [[nodiscard]] constexpr result<std::int64_t> to_fixed(decimal d, unsigned places) noexcept {
   if (places > decimal_max_places || d.places > decimal_max_places) return errc::invalid_argument;
-  d = normalize(d);
-  if (d.places > places) return errc::not_representable;
-  detail::wide w;
-  if (!detail::widen(d, places, w)) return errc::overflow;
-  return detail::round_div_pow10(w, 0);
+  if (d.places > places) { // the extra digits must be zeros
+    const std::int64_t p = detail::pow10_i64(d.places - places);
+    if (d.mantissa % p != 0) return errc::not_representable;
+    return d.mantissa / p;
+  }
+  std::int64_t v = 0;
+  if (!detail::mul_i64(d.mantissa, detail::pow10_i64(places - d.places), v)) return errc::overflow;
+  return v;
 }
 
 /// The value in units of 10^-places, rounded half away from zero.
@@ -218,16 +266,12 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 [[nodiscard]] constexpr result<std::int64_t> round_to_fixed(decimal d, unsigned places) noexcept {
   if (places > decimal_max_places || d.places > decimal_max_places) return errc::invalid_argument;
   if (d.places <= places) return to_fixed(d, places);
-  detail::wide w;
-  detail::widen(d, d.places, w);
-  return detail::round_div_pow10(w, d.places - places);
+  return detail::round_div_i64(d.mantissa, detail::pow10_i64(d.places - places));
 }
 
-/// Parse strict decimal text: `-?[0-9]+(\.[0-9]+)?`. Trailing fractional zeros are kept in
-/// `places` ("5552.0" is {55520, 1}). Errors: bad_syntax (empty, lone '-', '.' without digits
-/// on both sides), bad_digit (any other character), overflow (more than 18 significant digits
-/// or more than 18 places).
-[[nodiscard]] constexpr result<decimal> parse_decimal(std::string_view s) noexcept {
+namespace detail {
+// The general parser: exact error classification and overflow checks on every digit.
+[[nodiscard]] constexpr result<decimal> parse_decimal_checked(std::string_view s) noexcept {
   const bool neg = !s.empty() && s.front() == '-';
   if (neg) s.remove_prefix(1);
   const auto dot = s.find('.');
@@ -255,26 +299,59 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
       neg ? static_cast<std::int64_t>(std::uint64_t{0} - m) : static_cast<std::int64_t>(m);
   return decimal{sm, static_cast<std::uint8_t>(fp.size())};
 }
+} // namespace detail
+
+/// Parse strict decimal text: `-?[0-9]+(\.[0-9]+)?`. Trailing fractional zeros are kept in
+/// `places` ("5552.0" is {55520, 1}). Errors: bad_syntax (empty, lone '-', '.' without digits
+/// on both sides), bad_digit (any other character), overflow (more than 18 significant digits
+/// or more than 18 places).
+[[nodiscard]] constexpr result<decimal> parse_decimal(std::string_view s) noexcept {
+  // One pass over well-formed text of at most 18 digits (which cannot overflow); anything else
+  // goes to the checked parser, which classifies the error.
+  const std::size_t n = s.size();
+  const bool neg = n != 0U && s[0] == '-';
+  std::size_t i = neg ? 1U : 0U;
+  const std::size_t int_start = i;
+  std::uint64_t m = 0;
+  while (i < n && ascii::is_digit(s[i])) m = m * 10U + static_cast<std::uint64_t>(s[i++] - '0');
+  const std::size_t int_digits = i - int_start;
+  std::size_t frac_digits = 0;
+  bool dot = false;
+  if (i < n && s[i] == '.') {
+    dot = true;
+    const std::size_t frac_start = ++i;
+    while (i < n && ascii::is_digit(s[i])) m = m * 10U + static_cast<std::uint64_t>(s[i++] - '0');
+    frac_digits = i - frac_start;
+  }
+  if (i != n || int_digits == 0U || (dot && frac_digits == 0U) || int_digits + frac_digits > 18U) {
+    return detail::parse_decimal_checked(s);
+  }
+  const auto sm = static_cast<std::int64_t>(m); // < 10^18
+  return decimal{neg ? -sm : sm, static_cast<std::uint8_t>(frac_digits)};
+}
 
 /// Write `d` with exactly d.places fractional digits ("-1055.88"; "0.05"; "-0.5").
 /// Returns the number of characters. Errors: buffer_too_small, invalid_argument (places > 18).
 [[nodiscard]] constexpr result<std::size_t> format_decimal(decimal d,
                                                            std::span<char> out) noexcept {
   if (d.places > decimal_max_places) return errc::invalid_argument;
-  char digits[20]{};
-  auto n = ascii::format_unsigned(detail::magnitude(d.mantissa), digits);
-  if (!n) return n.error();
-  const std::size_t nd = n.value();
-  const std::size_t places = d.places;
-  const std::size_t padded = nd > places ? nd : places + 1U; // at least one digit before '.'
-  const std::size_t len = (d.mantissa < 0 ? 1U : 0U) + padded + (places > 0U ? 1U : 0U);
-  if (out.size() < len) return errc::buffer_too_small;
-  std::size_t k = 0;
-  if (d.mantissa < 0) out[k++] = '-';
-  for (std::size_t i = 0; i < padded; ++i) {
-    if (places > 0U && i == padded - places) out[k++] = '.';
-    out[k++] = i < padded - nd ? '0' : digits[i - (padded - nd)];
+  // Built backwards: fractional digits, '.', at least one integer digit, sign.
+  char tmp[1 + 20 + 1 + decimal_max_places]{};
+  std::size_t k = sizeof tmp;
+  std::uint64_t m = detail::magnitude(d.mantissa);
+  for (std::size_t i = 0; i < d.places; ++i) {
+    tmp[--k] = static_cast<char>('0' + static_cast<int>(m % 10U));
+    m /= 10U;
   }
+  if (d.places > 0U) tmp[--k] = '.';
+  do {
+    tmp[--k] = static_cast<char>('0' + static_cast<int>(m % 10U));
+    m /= 10U;
+  } while (m != 0U);
+  if (d.mantissa < 0) tmp[--k] = '-';
+  const std::size_t len = sizeof tmp - k;
+  if (out.size() < len) return errc::buffer_too_small;
+  for (std::size_t i = 0; i < len; ++i) out[i] = tmp[k + i];
   return len;
 }
 
@@ -296,10 +373,21 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 }
 
 namespace detail {
+/// 10^k as a double for k = 0..22 (all exact).
+inline constexpr std::array<double, 23> pow10_double_table = [] {
+  std::array<double, 23> t{};
+  double v = 1.0;
+  for (auto &x : t) {
+    x = v;
+    v *= 10.0;
+  }
+  return t;
+}();
 /// 10^k as a double, exact for k = 0..22.
 constexpr double pow10_double(unsigned k) noexcept {
-  double v = 1.0;
-  for (unsigned i = 0; i < k; ++i) v *= 10.0;
+  if (k < pow10_double_table.size()) return pow10_double_table[k];
+  double v = pow10_double_table.back();
+  for (unsigned i = 22; i < k; ++i) v *= 10.0;
   return v;
 }
 } // namespace detail

@@ -71,6 +71,33 @@ enum class errc : std::uint8_t {
 namespace detail {
 // Not constexpr on purpose: reaching it during constant evaluation is a compile error.
 [[noreturn]] inline void bad_result_access() noexcept { __builtin_trap(); }
+
+// Where result<T> keeps its value and its error. Two plain members when T can be default
+// constructed: GCC's scalar replacement of aggregates gives up on unions, so a union made every
+// result<std::array<...>> cost extra stores of temporaries (an encoder returning 4 bytes took
+// 18 instructions instead of 11). Other types share one union.
+template <class T, bool Split = std::is_default_constructible_v<T>>
+struct result_storage {
+  constexpr explicit result_storage(const T &v) noexcept(std::is_nothrow_copy_constructible_v<T>)
+      : value_(v) {}
+  constexpr explicit result_storage(T &&v) noexcept(std::is_nothrow_move_constructible_v<T>)
+      : value_(std::move(v)) {}
+  constexpr explicit result_storage(errc e) noexcept : value_(), error_(e) {}
+  T value_;
+  errc error_{};
+};
+template <class T>
+struct result_storage<T, false> {
+  constexpr explicit result_storage(const T &v) noexcept(std::is_nothrow_copy_constructible_v<T>)
+      : value_(v) {}
+  constexpr explicit result_storage(T &&v) noexcept(std::is_nothrow_move_constructible_v<T>)
+      : value_(std::move(v)) {}
+  constexpr explicit result_storage(errc e) noexcept : error_(e) {}
+  union {
+    T value_;
+    errc error_;
+  };
+};
 } // namespace detail
 
 template <class T>
@@ -83,10 +110,10 @@ public:
   using value_type = T;
 
   constexpr result(const T &v) noexcept(std::is_nothrow_copy_constructible_v<T>)
-      : value_(v), has_(true) {}
+      : s_(v), has_(true) {}
   constexpr result(T &&v) noexcept(std::is_nothrow_move_constructible_v<T>)
-      : value_(std::move(v)), has_(true) {}
-  constexpr result(errc e) noexcept : error_(e), has_(false) {}
+      : s_(std::move(v)), has_(true) {}
+  constexpr result(errc e) noexcept : s_(e), has_(false) {}
 
   [[nodiscard]] constexpr bool has_value() const noexcept { return has_; }
   [[nodiscard]] constexpr explicit operator bool() const noexcept { return has_; }
@@ -94,15 +121,15 @@ public:
   /// The value. Traps (or fails to compile in a constant expression) on an error.
   [[nodiscard]] constexpr const T &value() const &noexcept {
     if (!has_) detail::bad_result_access();
-    return value_;
+    return s_.value_;
   }
   [[nodiscard]] constexpr T &value() &noexcept {
     if (!has_) detail::bad_result_access();
-    return value_;
+    return s_.value_;
   }
   [[nodiscard]] constexpr T value() &&noexcept {
     if (!has_) detail::bad_result_access();
-    return std::move(value_);
+    return std::move(s_.value_);
   }
   [[nodiscard]] constexpr const T &operator*() const &noexcept { return value(); }
   [[nodiscard]] constexpr const T *operator->() const noexcept { return &value(); }
@@ -110,41 +137,40 @@ public:
   /// The error. Traps (or fails to compile in a constant expression) on a value.
   [[nodiscard]] constexpr errc error() const noexcept {
     if (has_) detail::bad_result_access();
-    return error_;
+    return s_.error_;
   }
 
   /// The value, or `fallback` on an error.
-  [[nodiscard]] constexpr T value_or(T fallback) const noexcept { return has_ ? value_ : fallback; }
+  [[nodiscard]] constexpr T value_or(T fallback) const noexcept {
+    return has_ ? s_.value_ : fallback;
+  }
 
   /// True when this holds the error `e`.
-  [[nodiscard]] constexpr bool is(errc e) const noexcept { return !has_ && error_ == e; }
+  [[nodiscard]] constexpr bool is(errc e) const noexcept { return !has_ && s_.error_ == e; }
 
   /// Apply `f` to the value; an error passes through unchanged.
   template <class F>
   constexpr auto transform(F &&f) const {
-    using U = std::remove_cvref_t<decltype(f(value_))>;
-    if (!has_) return result<U>(error_);
-    return result<U>(f(value_));
+    using U = std::remove_cvref_t<decltype(f(s_.value_))>;
+    if (!has_) return result<U>(s_.error_);
+    return result<U>(f(s_.value_));
   }
   /// Apply `f` (which returns a result) to the value; an error passes through unchanged.
   template <class F>
   constexpr auto and_then(F &&f) const {
-    using R = std::remove_cvref_t<decltype(f(value_))>;
-    if (!has_) return R(error_);
-    return f(value_);
+    using R = std::remove_cvref_t<decltype(f(s_.value_))>;
+    if (!has_) return R(s_.error_);
+    return f(s_.value_);
   }
 
   friend constexpr bool operator==(const result &a, const result &b) noexcept {
     if (a.has_ != b.has_) return false;
-    return a.has_ ? a.value_ == b.value_ : a.error_ == b.error_;
+    return a.has_ ? a.s_.value_ == b.s_.value_ : a.s_.error_ == b.s_.error_;
   }
   friend constexpr bool operator==(const result &a, errc e) noexcept { return a.is(e); }
 
 private:
-  union {
-    T value_;
-    errc error_;
-  };
+  detail::result_storage<T> s_;
   bool has_;
 };
 

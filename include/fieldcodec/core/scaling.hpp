@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace fieldcodec::scaling {
 
@@ -72,6 +73,18 @@ struct range {
     return errc::invalid_argument;
   }
   const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
+  // Fast path: everything in int64 when nothing overflows (the usual case); same result.
+  if (p + s.scale.places <= decimal_max_places) {
+    std::int64_t a = 0;
+    std::int64_t b = 0;
+    std::int64_t diff = 0;
+    std::int64_t prod = 0;
+    if (detail::mul_i64(eu.mantissa, detail::pow10_i64(p - eu.places), a) &&
+        detail::mul_i64(s.offset.mantissa, detail::pow10_i64(p - s.offset.places), b) &&
+        detail::sub_i64(a, b, diff) && detail::mul_i64(diff, s.scale.mantissa, prod)) {
+      return detail::round_div_i64(prod, detail::pow10_i64(p + s.scale.places));
+    }
+  }
   detail::wide diff;
   detail::wide off;
   detail::widen(eu, p, diff); // ≤ 63 + 60 bits, cannot fail
@@ -134,6 +147,21 @@ struct range {
   if (s.scale.mantissa == 0 || places > decimal_max_places ||
       s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
     return errc::invalid_argument;
+  }
+  // Fast path: everything in int64 when nothing overflows (the usual case); same result.
+  if (s.scale.places + s.offset.places <= decimal_max_places &&
+      s.scale.mantissa != std::numeric_limits<std::int64_t>::min()) {
+    std::int64_t n = 0;
+    std::int64_t om = 0;
+    std::int64_t den = 0;
+    const std::int64_t m = s.scale.mantissa < 0 ? -s.scale.mantissa : s.scale.mantissa;
+    if (detail::mul_i64(raw, detail::pow10_i64(s.scale.places + s.offset.places), n) &&
+        detail::mul_i64(s.offset.mantissa, s.scale.mantissa, om) && detail::add_i64(n, om, n) &&
+        detail::mul_i64(n, detail::pow10_i64(places), n) &&
+        detail::mul_i64(m, detail::pow10_i64(s.offset.places), den)) {
+      const std::int64_t q = detail::round_div_i64(n, den);
+      return decimal{s.scale.mantissa < 0 ? -q : q, static_cast<std::uint8_t>(places)};
+    }
   }
   detail::wide n;
   if (!detail::widen(decimal{raw, 0}, s.scale.places + s.offset.places, n)) return errc::overflow;
