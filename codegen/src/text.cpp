@@ -267,6 +267,21 @@ namespace {
 constexpr char lower_table[] = "abcdefghijklmnopqrstuvwxyz";
 }
 
+namespace {
+/// A '-' is a minus sign (not a separator) when nothing but spaces, dots and colons follow it
+/// ("Limit-", "Limit- :") or when it stands before a digit after a non-alphanumeric ("jog -1").
+bool sign_minus(std::string_view name, std::size_t i) {
+  std::size_t j = i + 1U;
+  while (j < name.size() && (name[j] == ' ' || name[j] == '.' || name[j] == ':')) ++j;
+  if (j == name.size()) return true;
+  const bool digit_next = i + 1U < name.size() && name[i + 1U] >= '0' && name[i + 1U] <= '9';
+  const bool word_before = i > 0U && ((name[i - 1U] >= 'a' && name[i - 1U] <= 'z') ||
+                                      (name[i - 1U] >= 'A' && name[i - 1U] <= 'Z') ||
+                                      (name[i - 1U] >= '0' && name[i - 1U] <= '9'));
+  return digit_next && !word_before;
+}
+} // namespace
+
 std::string make_identifier(std::string_view name) {
   std::string out;
   out.reserve(name.size() + 4U);
@@ -300,6 +315,15 @@ std::string make_identifier(std::string_view name) {
       while (i + 1U < name.size() && (static_cast<unsigned char>(name[i + 1U]) & 0xC0U) == 0x80U) {
         ++i;
       }
+      pending_sep = true;
+    } else if (c == '+') {
+      // "Limit+" and "Limit-" are different parameters: spell the signs out
+      pending_sep = true;
+      put("plus");
+      pending_sep = true;
+    } else if (c == '-' && !out.empty() && sign_minus(name, i)) {
+      pending_sep = true;
+      put("minus");
       pending_sep = true;
     } else {
       pending_sep = true;

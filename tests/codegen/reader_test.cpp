@@ -332,6 +332,12 @@ TEST_CASE("identifiers") {
   CHECK(gen::make_identifier("1st value") == "n_1st_value");
   CHECK(gen::make_identifier("delete") == "delete_");
   CHECK(gen::make_identifier("Valve % open") == "valve_open");
+  // Signs are spelled out where they tell parameters apart (DPQ "Limit-" / "Limit+").
+  CHECK(gen::make_identifier("Decompres.: Limit-") == "decompres_limit_minus");
+  CHECK(gen::make_identifier("Decompres.: Limit+") == "decompres_limit_plus");
+  CHECK(gen::make_identifier("Limit- :") == "limit_minus");
+  CHECK(gen::make_identifier("Jog -1") == "jog_minus_1");
+  CHECK(gen::make_identifier("Pos-FB 2") == "pos_fb_2"); // a hyphen between words separates
   CHECK(gen::make_identifier("\xC3\x9C"
                              "berlast") == "ueberlast");
   CHECK(gen::make_identifier("---") == "");
