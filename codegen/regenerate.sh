@@ -1,6 +1,6 @@
 #!/bin/sh
 # Regenerate include/fieldcodec/dictionaries/<name>.hpp from every dictionaries/*.eds, *.dcf
-# and *.csv. With --check nothing is written: the script fails (exit 1) when a checked-in
+# and *.csv, and the EDS exports in dictionaries/export/ (DPQ). With --check nothing is written: the script fails (exit 1) when a checked-in
 # header differs from what the generator writes, is missing, or has no source any more.
 #
 # usage: codegen/regenerate.sh [--check] [--gen PATH/TO/fieldcodec-gen]
@@ -27,6 +27,8 @@ if [ -z "$gen" ]; then
   gen=build-regenerate/codegen/fieldcodec-gen
 fi
 out=include/fieldcodec/dictionaries
+# CSV tables of CANopen devices that are also exported as EDS to dictionaries/export/
+eds_exports="dpq_parameters"
 mkdir -p "$out"
 status=0
 expected=
@@ -48,6 +50,14 @@ for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
   if ! "$gen" $check --quiet --name "$stem" -o "$out/$stem.hpp" "$src"; then
     status=1
   fi
+  # CiA 306 exports of the CSV parameter tables of CANopen devices, for standard CANopen tools
+  case " $eds_exports " in
+    *" $stem "*)
+      mkdir -p dictionaries/export
+      if ! "$gen" $check --quiet --name "$stem" --eds "dictionaries/export/$stem.eds" "$src"; then
+        status=1
+      fi ;;
+  esac
 done
 if [ -n "$check" ]; then
   for h in "$out"/*.hpp; do

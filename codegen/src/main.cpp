@@ -142,6 +142,12 @@ int main(int argc, char **argv) {
       std::cerr << input << ": error: a command table cannot be written as EDS\n";
       return 1;
     }
+    // A CSV table holds only the device's own parameters: the export adds the mandatory
+    // communication objects so that CANopen tools load it.
+    if (input.size() >= 4 &&
+        (input.substr(input.size() - 4) == ".csv" || input.substr(input.size() - 4) == ".CSV")) {
+      fieldcodec::gen::add_mandatory_objects(*dict);
+    }
     rc |= output(eds_out, fieldcodec::gen::write_eds(*dict), check);
   }
   return rc;

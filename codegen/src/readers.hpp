@@ -19,6 +19,11 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
 
+/// Adds CiA 301's mandatory objects 1000h (device type), 1001h (error register) and 1018h
+/// (identity, vendor-ID) with neutral values where the dictionary lacks them — CSV tables have
+/// no communication objects, and CANopen tools refuse an EDS without them.
+void add_mandatory_objects(dictionary &d);
+
 /// Write a dictionary (object table) as a CiA 306 EDS (or DCF when it has DCF values).
 [[nodiscard]] std::string write_eds(const dictionary &d);
 

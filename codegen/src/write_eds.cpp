@@ -3,6 +3,7 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <fieldcodec/core/scaling.hpp>
@@ -41,7 +42,15 @@ std::string eds_limit(const entry &e, const od::number &n) {
     if (d) {
       auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
       if (raw) {
-        const std::int64_t v = raw.value();
+        // An EDS limit must be a value of the object's type: a printed range wider than the
+        // field (flag range_exceeds_field) is cut to what the field can hold.
+        std::int64_t v = raw.value();
+        const auto width = od::fixed_size(e.type);
+        const scaling::field f{static_cast<std::uint8_t>(width), od::is_signed_integer(e.type)};
+        if (width >= 1U && width <= 8U) {
+          if (v < f.min()) v = f.min();
+          if (v > f.max()) v = f.max();
+        }
         return v < 0 || od::is_signed_integer(e.type)
                    ? std::to_string(v)
                    : eds_number(od::num::u(static_cast<std::uint64_t>(v)), false);
@@ -86,6 +95,47 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
 }
 
 } // namespace
+
+void add_mandatory_objects(dictionary &d) {
+  auto add = [&](std::uint16_t index, od::object_code code, std::string name,
+                 std::vector<entry> subs) {
+    if (d.objects.count(index) != 0U) return;
+    object_info info;
+    info.index = index;
+    info.code = code;
+    info.name = name;
+    info.list = 0;
+    info.sub_number = code == od::object_code::var ? 0 : static_cast<std::uint8_t>(subs.size());
+    d.objects[index] = info;
+    for (auto &e : subs) {
+      e.index = index;
+      d.entries.push_back(std::move(e));
+    }
+  };
+  auto var = [](std::uint8_t sub, std::string name, od::data_type t, od::number def) {
+    entry e;
+    e.subindex = sub;
+    e.name = std::move(name);
+    e.type = t;
+    e.type_code = static_cast<std::uint16_t>(t);
+    e.access = od::access::ro;
+    e.def = def;
+    return e;
+  };
+  add(0x1000, od::object_code::var, "Device type",
+      {var(0, "Device type", od::data_type::unsigned32, od::num::u(0))});
+  add(0x1001, od::object_code::var, "Error register",
+      {var(0, "Error register", od::data_type::unsigned8, od::num::u(0))});
+  add(0x1018, od::object_code::record, "Identity object",
+      {var(0, "Highest sub-index supported", od::data_type::unsigned8, od::num::u(1)),
+       var(1, "Vendor-ID", od::data_type::unsigned32, od::num::u(0))});
+  for (auto &e : d.entries) {
+    if (e.index == 0x1018U) e.object = od::object_code::var;
+  }
+  std::stable_sort(d.entries.begin(), d.entries.end(), [](const entry &a, const entry &b) {
+    return a.index != b.index ? a.index < b.index : a.subindex < b.subindex;
+  });
+}
 
 std::string write_eds(const dictionary &d) {
   std::string o;

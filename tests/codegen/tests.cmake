@@ -40,3 +40,7 @@ add_test(NAME codegen_cmake_function
     --build-options -DFIELDCODEC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
       -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
     --test-command user)
+
+# The DPQ EDS export (dictionaries/export/) is a clean CiA 306 file: read back with --strict.
+add_test(NAME codegen_export_strict
+  COMMAND fieldcodec-gen --strict ${PROJECT_SOURCE_DIR}/dictionaries/export/dpq_parameters.eds)

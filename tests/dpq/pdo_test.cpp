@@ -125,3 +125,26 @@ TEST_CASE("dpq pdo: TPDO1 of the example (Position FB, Pressure FB)") {
   const std::array<std::uint8_t, 4> printed{0x00, 0x12, 0x23, 0x11};
   CHECK(co::pdo::unpack_all(map, printed, back).error() == errc::truncated);
 }
+
+TEST_CASE("PDO mappability follows the Bus Manager column") {
+  // dictionaries/dpq_parameters.csv: bus_manager "available" → pdo_mapping yes (read/write)
+  // or tx (read-only); "not available" → no. The example's parameters validate as mappings.
+  for (const od::entry &e : p::entries) {
+    const bool available = e.bus == od::bus_manager::available;
+    CHECK(od::mappable_tx(e.pdo) == available);
+    CHECK(od::mappable_rx(e.pdo) == (available && od::writable(e.access_type)));
+  }
+  const std::array<co::pdo::mapping_entry, 2> rx{{
+      co::pdo::mapping_entry{p::inj_velocity_1.index, 0, 16},
+      co::pdo::mapping_entry{p::inj_position_2.index, 0, 32},
+  }};
+  CHECK(co::pdo::validate(p::dictionary, co::pdo::direction::rpdo,
+                          std::span<const co::pdo::mapping_entry>(rx))
+            .value() == 48);
+  const std::array<co::pdo::mapping_entry, 1> not_available{{
+      co::pdo::mapping_entry{p::analog_vel_max.index, 0, 32},
+  }};
+  CHECK(co::pdo::validate(p::dictionary, co::pdo::direction::tpdo,
+                          std::span<const co::pdo::mapping_entry>(not_available))
+            .error() == errc::access_denied);
+}
