@@ -12,12 +12,16 @@ endfunction()
 
 set(prefix ${WORK_DIR}/prefix)
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/lib -DCMAKE_CXX_COMPILER=${CXX}
-    -DFIELDCODEC_BUILD_TESTS=OFF -DFIELDCODEC_BUILD_CODEGEN=OFF
+    -DFIELDCODEC_BUILD_TESTS=OFF -DFIELDCODEC_BUILD_CODEGEN=ON
     -DFIELDCODEC_BUILD_EXAMPLES=OFF -DFIELDCODEC_BUILD_FUZZERS=OFF
     -DCMAKE_INSTALL_PREFIX=${prefix})
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/lib --target fieldcodec-gen)
 run(${CMAKE_COMMAND} --install ${WORK_DIR}/lib)
 if(NOT EXISTS ${prefix}/include/fieldcodec/core/result.hpp)
   message(FATAL_ERROR "headers were not installed")
+endif()
+if(NOT EXISTS ${prefix}/bin/fieldcodec-gen)
+  message(FATAL_ERROR "the generator was not installed")
 endif()
 
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/consumer -B ${WORK_DIR}/consumer
