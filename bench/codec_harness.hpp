@@ -29,6 +29,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace bench {
@@ -105,6 +106,8 @@ bool check() {
 /// values.
 template <auto &In, class Fc, class Base>
 void add(registry &r, std::string name, Fc, Base) {
+  static_assert(std::is_empty_v<Fc> && std::is_empty_v<Base>,
+                "pass captureless lambdas (they are default-constructed in the loop)");
   r.push_back(op{std::move(name), &run<In, Fc>, &run<In, Base>, &check<In, Fc, Base>});
 }
 
