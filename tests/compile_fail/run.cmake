@@ -1,0 +1,25 @@
+# Compiles tests/compile_fail/pdo_static_mapping.cpp once per case: case 0 must compile,
+# cases 1..N must fail with a diagnostic naming compile_error::pdo_mapping_.
+set(expect_1 "length")
+set(expect_2 "exceeds_pdo_length")
+set(expect_3 "not_in_dictionary")
+set(expect_4 "access")
+foreach(case RANGE 0 4)
+  execute_process(
+    COMMAND ${CXX} -std=c++20 -fsyntax-only -I${INCLUDE_DIR} -DCASE=${case} ${SOURCE}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(case EQUAL 0)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "the correct mapping did not compile:\n${out}")
+    endif()
+  else()
+    if(rc EQUAL 0)
+      message(FATAL_ERROR "case ${case}: a wrong mapping compiled")
+    endif()
+    if(NOT out MATCHES "pdo_mapping_[a-z_]*${expect_${case}}")
+      message(FATAL_ERROR "case ${case}: failed without naming the mapping problem:\n${out}")
+    endif()
+    string(REGEX MATCH "pdo_mapping_[a-z_]+" what "${out}")
+    message(STATUS "case ${case}: refused (${what})")
+  endif()
+endforeach()
