@@ -240,9 +240,22 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 
 /// The same value with trailing fractional zeros removed (1.500 → 1.5, canonical form).
 [[nodiscard]] constexpr decimal normalize(decimal d) noexcept {
-  while (d.places > 0 && d.mantissa % 10 == 0) {
+  // Trailing zeros go 8, then 4, 2 and 1 at a time: a few divisions instead of one per zero.
+  while (d.places >= 8U && d.mantissa % 100'000'000 == 0) {
+    d.mantissa /= 100'000'000;
+    d.places = static_cast<std::uint8_t>(d.places - 8U);
+  }
+  if (d.places >= 4U && d.mantissa % 10'000 == 0) {
+    d.mantissa /= 10'000;
+    d.places = static_cast<std::uint8_t>(d.places - 4U);
+  }
+  if (d.places >= 2U && d.mantissa % 100 == 0) {
+    d.mantissa /= 100;
+    d.places = static_cast<std::uint8_t>(d.places - 2U);
+  }
+  if (d.places >= 1U && d.mantissa % 10 == 0) {
     d.mantissa /= 10;
-    --d.places;
+    d.places = static_cast<std::uint8_t>(d.places - 1U);
   }
   return d;
 }
