@@ -87,8 +87,9 @@ struct range {
   }
   detail::wide diff;
   detail::wide off;
-  detail::widen(eu, p, diff); // ≤ 63 + 60 bits, cannot fail
-  detail::widen(decimal{-s.offset.mantissa, s.offset.places}, p, off);
+  detail::widen(eu, p, diff);      // ≤ 63 + 60 bits, cannot fail
+  detail::widen(s.offset, p, off); // then − offset, without negating the int64 (INT64_MIN)
+  off.negative = !off.negative && !off.mag.is_zero();
   if (!detail::add(diff, off)) return errc::overflow;
   if (!detail::mul(diff.mag, detail::magnitude(s.scale.mantissa))) return errc::overflow;
   if (s.scale.mantissa < 0) diff.negative = !diff.negative;
