@@ -13,10 +13,11 @@
 //   codec_x --reps N                repetitions per measurement (default 9, median reported)
 //   codec_x --list                  operation names, one per line
 //   codec_x --check                 only compare fieldcodec against the baseline on all inputs
-//   codec_x --run NAME --impl fieldcodec|baseline --iterations N
+//   codec_x --run NAME --impl fieldcodec|baseline|empty --iterations N
 //                                   exactly N iterations of one operation, nothing else (for
 //                                   valgrind --tool=callgrind: instructions(2N) − instructions(N)
-//                                   divided by N is instructions per operation, see callgrind.sh)
+//                                   divided by N is instructions per operation, see callgrind.sh;
+//                                   "empty" is the loop alone over the same inputs)
 #pragma once
 
 #include <algorithm>
@@ -78,6 +79,7 @@ struct op {
   run_fn fieldcodec;
   run_fn baseline;
   check_fn check;
+  run_fn empty; ///< the same loop over the same inputs, doing nothing with them
 };
 
 using registry = std::vector<op>;
@@ -90,6 +92,12 @@ template <auto &In, class F>
     const auto r = F{}(In[i & mask]);
     keep(r);
   }
+}
+
+template <auto &In>
+[[gnu::noinline]] void run_empty(std::size_t iterations) {
+  constexpr std::size_t mask = In.size() - 1U;
+  for (std::size_t i = 0; i < iterations; ++i) keep(In[i & mask]);
 }
 
 template <auto &In, class Fc, class Base>
@@ -108,7 +116,8 @@ template <auto &In, class Fc, class Base>
 void add(registry &r, std::string name, Fc, Base) {
   static_assert(std::is_empty_v<Fc> && std::is_empty_v<Base>,
                 "pass captureless lambdas (they are default-constructed in the loop)");
-  r.push_back(op{std::move(name), &run<In, Fc>, &run<In, Base>, &check<In, Fc, Base>});
+  r.push_back(
+      op{std::move(name), &run<In, Fc>, &run<In, Base>, &check<In, Fc, Base>, &run_empty<In>});
 }
 
 /// Register the harness itself: an operation that only moves its input to the barrier.
@@ -151,7 +160,7 @@ inline double median(std::vector<double> v) {
 inline int usage(const char *self) {
   std::fprintf(stderr,
                "usage: %s [--quick] [--reps N] [--filter TEXT] [--list] [--check]\n"
-               "       %s --run NAME --impl fieldcodec|baseline --iterations N\n",
+               "       %s --run NAME --impl fieldcodec|baseline|empty --iterations N\n",
                self, self);
   return 2;
 }
@@ -199,6 +208,8 @@ inline int main(int argc, char **argv, const registry &ops) {
         o.fieldcodec(iterations);
       } else if (impl == "baseline") {
         o.baseline(iterations);
+      } else if (impl == "empty") {
+        o.empty(iterations);
       } else {
         return detail::usage(argv[0]);
       }
