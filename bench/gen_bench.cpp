@@ -27,9 +27,8 @@ std::string hex4(unsigned v) {
 
 void var(std::string &o, const std::string &sec, const std::string &name, unsigned type,
          const char *access, const std::string &def, bool value) {
-  o += "[" + sec + "]\r\nParameterName=" + name + "\r\nObjectType=0x7\r\nDataType=0x" +
-       hex4(type) + "\r\nAccessType=" + access + "\r\nDefaultValue=" + def +
-       "\r\nPDOMapping=0\r\n";
+  o += "[" + sec + "]\r\nParameterName=" + name + "\r\nObjectType=0x7\r\nDataType=0x" + hex4(type) +
+       "\r\nAccessType=" + access + "\r\nDefaultValue=" + def + "\r\nPDOMapping=0\r\n";
   if (value) o += "ParameterValue=" + def + "\r\nDenotation=" + name + " (configured)\r\n";
   o += "\r\n";
 }
@@ -45,10 +44,10 @@ std::string make_dcf(std::size_t target) {
   std::string body;
   auto record = [&](unsigned index, const std::string &name, unsigned subs, unsigned type) {
     objects.push_back(hex4(index));
-    body += "[" + hex4(index) + "]\r\nParameterName=" + name + "\r\nObjectType=0x9\r\nSubNumber=" +
-            std::to_string(subs + 1U) + "\r\n\r\n";
-    var(body, hex4(index) + "sub0", "Highest sub-index supported", 0x5, "ro",
-        std::to_string(subs), false);
+    body += "[" + hex4(index) + "]\r\nParameterName=" + name +
+            "\r\nObjectType=0x9\r\nSubNumber=" + std::to_string(subs + 1U) + "\r\n\r\n";
+    var(body, hex4(index) + "sub0", "Highest sub-index supported", 0x5, "ro", std::to_string(subs),
+        false);
     for (unsigned s = 1; s <= subs; ++s) {
       var(body, hex4(index) + "sub" + std::to_string(s), name + " entry " + std::to_string(s), type,
           "rw", s % 3U == 0U ? "$NODEID+0x" + hex4(0x180U + s) : "0x" + hex4(s * 37U), true);
@@ -80,8 +79,9 @@ std::string make_dcf(std::size_t target) {
       objects.push_back(hex4(index));
       const unsigned t = types[k % 7U];
       var(body, hex4(index), "Vendor parameter " + std::to_string(k), t, k % 2U ? "rw" : "ro",
-          t == 0x8 ? "1.25" : (t == 0x3 || t == 0x4 || t == 0x2) ? "-" + std::to_string(k % 100U)
-                                                                  : std::to_string(k * 3U),
+          t == 0x8                             ? "1.25"
+          : (t == 0x3 || t == 0x4 || t == 0x2) ? "-" + std::to_string(k % 100U)
+                                               : std::to_string(k * 3U),
           true);
     }
     ++index;
@@ -112,7 +112,8 @@ int main(int argc, char **argv) {
     fieldcodec::gen::diagnostics diag;
     auto d = fieldcodec::gen::read_eds(dcf, "bench.dcf", diag);
     if (!d) {
-      for (const auto &x : diag.all()) std::fprintf(stderr, "%s\n", fieldcodec::gen::diagnostics::format(x).c_str());
+      for (const auto &x : diag.all())
+        std::fprintf(stderr, "%s\n", fieldcodec::gen::diagnostics::format(x).c_str());
       return 1;
     }
     d->source_name = "bench.dcf";
@@ -127,9 +128,10 @@ int main(int argc, char **argv) {
   }
   std::sort(ms.begin(), ms.end());
   std::sort(parse_ms.begin(), parse_ms.end());
-  std::printf("DCF %zu bytes, %zu entries -> header %zu bytes; parse+emit over %d runs: best %.2f ms, "
-              "median %.2f ms (of which parsing: best %.2f ms, median %.2f ms)\n",
-              dcf.size(), entries, header_bytes, runs, ms.front(), ms[ms.size() / 2U],
-              parse_ms.front(), parse_ms[parse_ms.size() / 2U]);
+  std::printf(
+      "DCF %zu bytes, %zu entries -> header %zu bytes; parse+emit over %d runs: best %.2f ms, "
+      "median %.2f ms (of which parsing: best %.2f ms, median %.2f ms)\n",
+      dcf.size(), entries, header_bytes, runs, ms.front(), ms[ms.size() / 2U], parse_ms.front(),
+      parse_ms[parse_ms.size() / 2U]);
   return 0;
 }
