@@ -1,0 +1,125 @@
+// Fuzz harness for the generator's readers (codegen/: CiA 306 EDS/DCF reader and CSV table
+// reader of fieldcodec-gen). The generator is a host tool whose reader is a library target
+// (fieldcodec_codegen) that the fuzz build does not configure (FIELDCODEC_BUILD_CODEGEN=OFF),
+// so the harness compiles the reader and writer sources into itself (a unity build of
+// text.cpp, eds_reader.cpp, csv_reader.cpp and write_eds.cpp; read_file.cpp, emit_header.cpp
+// and main.cpp are not needed).
+//
+// Byte 0 bit 0 selects the reader (0 EDS/DCF, 1 CSV); the rest is the file's text.
+//
+// Properties:
+// * The reader returns a dictionary exactly when it reported no error, and every diagnostic
+//   names the file and a line within the text (1..lines+1, or 0 for the whole file).
+// * What reads re-writes to the writer's normalised EDS (hex indices, explicit sub-object
+//   sections, LF line endings, objects in index order — the canonical form), and that reads
+//   back without errors to the same objects (index, sub-index, data type, access, PDO mapping,
+//   limits, default) and re-writes to exactly the same text (the normalised form is a fixed
+//   point). CSV object tables go through the same EDS round trip; command tables only through
+//   the reader.
+#include "check.hpp"
+
+#include "../codegen/src/text.cpp"
+
+#include "../codegen/src/csv_reader.cpp"
+#include "../codegen/src/eds_reader.cpp"
+#include "../codegen/src/write_eds.cpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace gen = fieldcodec::gen;
+
+namespace {
+
+void check_diagnostics(const gen::diagnostics &diag, const std::optional<gen::dictionary> &d,
+                       std::string_view text, const std::string &file) {
+  FUZZ_CHECK(d.has_value() == !diag.has_errors());
+  // Line breaks as the readers count them: LF, CR LF, or a lone CR.
+  int lines = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) {
+      ++lines;
+    }
+  }
+  for (const auto &x : diag.all()) {
+    FUZZ_CHECK(x.file == file);
+    FUZZ_CHECK(x.line >= 0 && x.line <= lines + 1);
+    FUZZ_CHECK(x.column >= 0);
+    FUZZ_CHECK(!x.message.empty());
+  }
+}
+
+/// Same number, whatever its kind (the writer prints non-negative integers in hex, which read
+/// back as unsigned; reals shortest-round-trip).
+bool same_number(const fieldcodec::od::number &a, const fieldcodec::od::number &b) {
+  if (a.has_value() != b.has_value()) return false;
+  if (!a) return true;
+  auto x = a.to_decimal();
+  auto y = b.to_decimal();
+  if (x && y) return fieldcodec::compare(x.value(), y.value()) == 0;
+  return a == b;
+}
+
+/// Same object as far as an EDS can say: PDO mapping only as mappable or not (EDS PDOMapping is
+/// 0/1; the CSV's rx/tx become 1), limits of scaled CSV entries are written as raw values.
+/// Known open finding F6: the EDS reader accepts DataType=0x0 (its message says 0x0001..0xFFFF)
+/// and keeps it as DOMAIN; the writer then writes 0x000F.
+bool same_entry(const gen::entry &a, const gen::entry &b) {
+  const bool f6 = a.type_code == 0U && b.type_code == 0x000FU;
+  return a.index == b.index && a.subindex == b.subindex && (a.type_code == b.type_code || f6) &&
+         a.access == b.access &&
+         (a.pdo == fieldcodec::od::pdo_mapping::no) == (b.pdo == fieldcodec::od::pdo_mapping::no) &&
+         (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high))) &&
+         same_number(a.def, b.def) && a.def_nodeid == b.def_nodeid;
+}
+
+void round_trip(const gen::dictionary &d, bool from_csv) {
+  if (d.is_command_table) return;
+  const std::string w1 = gen::write_eds(d);
+  gen::diagnostics diag2;
+  auto d2 = gen::read_eds(w1, "w1.eds", diag2);
+  check_diagnostics(diag2, d2, w1, "w1.eds");
+  FUZZ_CHECK(d2.has_value());
+  FUZZ_CHECK(d2->entries.size() >= d.entries.size());
+  for (const auto &e : d.entries) {
+    const auto it = std::find_if(d2->entries.begin(), d2->entries.end(), [&](const auto &x) {
+      return x.index == e.index && x.subindex == e.subindex;
+    });
+    FUZZ_CHECK(it != d2->entries.end());
+    FUZZ_CHECK(same_entry(e, *it));
+  }
+  const std::string w2 = gen::write_eds(*d2);
+  if (!from_csv) {
+    FUZZ_CHECK(w1 == w2);
+    return;
+  }
+  // Known open finding F5 (fuzz/FINDINGS.md): numbers the CSV reader keeps as signed are
+  // written in decimal, the EDS reader reads them back as unsigned, written in hex — so for CSV
+  // input the fixed point is reached one EDS pass later. Until F5 is fixed, CSV input checks
+  // the fixed point from there on.
+  gen::diagnostics diag3;
+  auto d3 = gen::read_eds(w2, "w2.eds", diag3);
+  FUZZ_CHECK(d3.has_value());
+  FUZZ_CHECK(gen::write_eds(*d3) == w2);
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::string_view text(reinterpret_cast<const char *>(data + 1), size - 1);
+  gen::diagnostics diag;
+  const bool csv = (data[0] & 1U) != 0U;
+  const std::string file = csv ? "fuzz.csv" : "fuzz.eds";
+  auto d = csv ? gen::read_csv(text, file, diag) : gen::read_eds(text, file, diag);
+  check_diagnostics(diag, d, text, file);
+  if (!d) return 0;
+  d->source_name = file; // as read_file() does
+  d->stem = "fuzz";
+  round_trip(*d, csv);
+  return 0;
+}
