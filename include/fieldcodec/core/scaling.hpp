@@ -150,15 +150,16 @@ struct range {
     return errc::invalid_argument;
   }
   // Fast path: everything in int64 when nothing overflows (the usual case); same result.
-  if (s.scale.places + s.offset.places <= decimal_max_places &&
-      s.scale.mantissa != std::numeric_limits<std::int64_t>::min()) {
+  // n = raw·10^(sp+op+places) + o·m·10^places (for a constant `s`, o·m·10^places folds).
+  const unsigned shift = s.scale.places + s.offset.places + places;
+  if (shift <= decimal_max_places && s.scale.mantissa != std::numeric_limits<std::int64_t>::min()) {
     std::int64_t n = 0;
     std::int64_t om = 0;
     std::int64_t den = 0;
     const std::int64_t m = s.scale.mantissa < 0 ? -s.scale.mantissa : s.scale.mantissa;
-    if (detail::mul_i64(raw, detail::pow10_i64(s.scale.places + s.offset.places), n) &&
-        detail::mul_i64(s.offset.mantissa, s.scale.mantissa, om) && detail::add_i64(n, om, n) &&
-        detail::mul_i64(n, detail::pow10_i64(places), n) &&
+    if (detail::mul_i64(raw, detail::pow10_i64(shift), n) &&
+        detail::mul_i64(s.offset.mantissa, s.scale.mantissa, om) &&
+        detail::mul_i64(om, detail::pow10_i64(places), om) && detail::add_i64(n, om, n) &&
         detail::mul_i64(m, detail::pow10_i64(s.offset.places), den)) {
       const std::int64_t q = detail::round_div_i64(n, den);
       return decimal{s.scale.mantissa < 0 ? -q : q, static_cast<std::uint8_t>(places)};
