@@ -1,0 +1,19 @@
+// Regression tests for inputs found by fuzz/fuzz_xenax.cpp (see fuzz/FINDINGS.md).
+// A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
+// suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
+#include <fieldcodec/xenax/units.hpp>
+
+#include <doctest/doctest.h>
+
+namespace xe = fieldcodec::xenax;
+
+// F7 (2026-11-21, fuzz_xenax): decode_cycle_time({base 0, any exponent}) returns 0 µs, but
+// encode_cycle_time(0) refuses 0 with out_of_range: a 60C2h value read from a drive does not
+// write back. Either decode refuses base 0 (out_of_range) or encode accepts 0.
+TEST_CASE("fuzz F7: a decoded cycle time re-encodes" * doctest::may_fail()) {
+  auto us = xe::decode_cycle_time({0, -3});
+  if (!us) return; // refused: fixed
+  auto back = xe::encode_cycle_time(us.value());
+  REQUIRE(back.has_value());
+  CHECK(xe::decode_cycle_time(back.value()).value() == us.value());
+}
