@@ -42,3 +42,20 @@ TEST_CASE("fuzz F3: round_trip_places is defined for every scale" * doctest::may
   CHECK(round_trip_places_evaluable<1, 19>);
   CHECK(round_trip_places_evaluable<int64_min, 0>);
 }
+
+// F8 (2026-11-21, fuzz_dpq, conversion mode): conversion::to_eu_decimal(raw) promises that the
+// EU it returns converts back to `raw`. round_trip_places needs 10^p >= |scale|; for a scale
+// above 10^18 no p <= 18 does, it returns 18 anyway, and the read-back is off by one. Either an
+// error (not_representable) or a correct round trip fixes it.
+TEST_CASE("fuzz F8: to_eu_decimal(raw) converts back for huge scales" * doctest::may_fail()) {
+  fieldcodec::dpq::conversion c;
+  c.scale = {{1'508'283'684'162'011'643, 0}, {0, 1}};
+  c.field = {8, true};
+  c.has_range = false;
+  const std::int64_t raw = 2'387'286'014'124'100'095;
+  auto eu = c.to_eu_decimal(raw);
+  if (!eu) return; // refused: fixed
+  auto back = c.to_raw(eu.value());
+  REQUIRE(back.has_value());
+  CHECK(back.value() == raw); // F8: 2387286014124100094
+}
