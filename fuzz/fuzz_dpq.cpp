@@ -4,7 +4,8 @@
 // Byte 0 bit 0 selects the mode: 0 = an entry of the generated DPQ dictionary (bytes 1-2 pick
 // it), 1 = a fuzzed dpq::conversion (scale, offset, field, range from the input). The rest
 // gives an engineering value (decimal mantissa + places, and the same bytes as a double) and
-// the field's bytes.
+// the field's bytes. With bit 1 set in the entry mode, the rest is instead the 8 data bytes of
+// the card's SDO answer (dpq/sdo.hpp) on 0x585.
 //
 // Properties:
 // * to_raw never returns a value outside the field (width and signedness), and never a value
@@ -16,6 +17,9 @@
 // * bytes → raw → EU → raw → bytes: what decodes re-encodes to the same bytes, unless the EU
 //   lies outside the printed range (values read from the card may; then to_raw says
 //   out_of_range and the EU really is outside [low, high]).
+// * SDO answers: a read response decodes to a raw value inside the field; its canonical form
+//   (expedited upload response with size indication and the field's bytes) decodes to the same
+//   raw value, and writing the EU read back sends those bytes.
 #include "check.hpp"
 
 #include <fieldcodec/core/decimal.hpp>
@@ -23,6 +27,7 @@
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dpq/conversion.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
 
 #include <algorithm>
@@ -189,6 +194,41 @@ void check_entry(const od::entry &e, decimal eu, double eu_d, std::span<const st
   }
 }
 
+/// The card's answers to reads and writes of `e` (dpq/sdo.hpp), from 8 fuzzed data bytes.
+void check_sdo(const od::entry &e, reader &r) {
+  fieldcodec::canopen::can_frame f;
+  f.id = 0x585;
+  f.dlc = 8;
+  for (auto &b : f.data) b = static_cast<std::uint8_t>(r.take(1));
+  if (auto raw = dpq::read_raw_response(5, e, f)) {
+    auto field = e.raw_field();
+    FUZZ_CHECK(field.has_value());
+    FUZZ_CHECK(raw.value() >= field.value().min() && raw.value() <= field.value().max());
+    // canonical answer: expedited upload response with size indication and the field's bytes
+    auto p = dpq::raw_to_bytes(e, raw.value());
+    if (p) {
+      auto canon = fieldcodec::canopen::sdo::expedited_upload_response(5, e.index, e.subindex,
+                                                                       p.value().span());
+      FUZZ_CHECK(canon.has_value());
+      FUZZ_CHECK(dpq::read_raw_response(5, e, canon.value()).value() == raw.value());
+    } else {
+      FUZZ_CHECK(p.is(errc::out_of_range)); // a value outside the printed range
+    }
+    if (auto eu = dpq::read_response(5, e, f)) {
+      auto w = dpq::write_request(5, e, eu.value());
+      if (w) {
+        auto m = fieldcodec::canopen::sdo::decode_request(w.value());
+        FUZZ_CHECK(m.has_value() && p.has_value());
+        FUZZ_CHECK(std::equal(m.value().bytes().begin(), m.value().bytes().end(),
+                              p.value().span().begin(), p.value().span().end()));
+      } else {
+        FUZZ_CHECK(w.is(errc::access_denied) || w.is(errc::out_of_range));
+      }
+    }
+  }
+  if (dpq::write_response(5, e, f)) FUZZ_CHECK((f.data[0] >> 5U) == 3U);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
@@ -197,6 +237,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   if ((data[0] & 1U) == 0U) {
     constexpr auto dict = fieldcodec::dictionaries::dpq_parameters::dictionary;
     const od::entry &e = dict.entries()[r.take(2) % dict.size()];
+    if ((data[0] & 2U) != 0U) {
+      check_sdo(e, r);
+      return 0;
+    }
     const decimal eu = decimal_of(r);
     double eu_d = 0;
     const auto bits = r.take(8);
