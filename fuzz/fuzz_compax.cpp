@@ -12,12 +12,14 @@
 //   rounds a DSP raw value to the nearest thousandth (documented in nx_text.hpp); text → command
 //   → text → command is exact, and the text of that command is a fixed point.
 // * PCP request: the pad byte after an odd data length becomes 0.
-// * OBJECT_REQ / OBJECT_RSP, DSP numbers, identification, process-data records, integers and
-//   booleans: the same bytes.
+// * POLARITAET: bit 7 only. OVERRIDE: byte → percent at 2 places → the same byte.
+// * OBJECT_REQ / OBJECT_RSP, DSP numbers, identification, process-data records, integers,
+//   booleans, CONTROL commands and selection codes: the same bytes.
 // And what encodes decodes to the same value (numbers given as thousandths, DSP conversions,
 // OBJECT_REQ/RSP answered through object_channel).
 #include "check.hpp"
 
+#include <fieldcodec/compax/control.hpp>
 #include <fieldcodec/compax/dsp_number.hpp>
 #include <fieldcodec/compax/identification.hpp>
 #include <fieldcodec/compax/nx.hpp>
@@ -250,12 +252,36 @@ void check_process_data(bytes in) {
   if (auto s = cx::decode_pd_select(rec)) FUZZ_CHECK(same(cx::encode_pd_select(s.value()), rec));
 }
 
+/// CONTROL command, selection codes, OVERRIDE, POLARITAET.
+void check_control(bytes in) {
+  if (in.size() < 2) return;
+  if (auto c = cx::decode_control(in[0])) {
+    FUZZ_CHECK(static_cast<std::uint8_t>(c.value()) == in[0]);
+    FUZZ_CHECK(!cx::to_string(c.value()).empty());
+  }
+  const auto two = in.first(2);
+  const auto selection = [&]<class E>(E) {
+    if (auto e = cx::decode_selection<E>(two))
+      FUZZ_CHECK(same(cx::encode_selection(e.value()), two));
+  };
+  selection(cx::operating_mode{});
+  selection(cx::ref_mode{});
+  selection(cx::ramp_form{});
+  // OVERRIDE: byte → percent (2 places) → byte
+  auto pct = cx::decode_override(in[0]);
+  FUZZ_CHECK(pct.has_value());
+  auto b = cx::encode_override(pct.value());
+  FUZZ_CHECK(b.has_value() && b.value() == in[0]);
+  // POLARITAET: canonical form keeps bit 7 only
+  FUZZ_CHECK(cx::encode_polarity(cx::decode_polarity(in[1])) == (in[1] & 0x80U));
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   if (size == 0) return 0;
   const bytes in(data + 1, size - 1);
-  switch (data[0] % 9U) {
+  switch (data[0] % 10U) {
   case 0: check_position(in); break;
   case 1: check_identification(in); break;
   case 2: check_values(in); break;
@@ -265,6 +291,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   case 6: check_object(in); break;
   case 7: check_pcp(in); break;
   case 8: check_process_data(in); break;
+  case 9: check_control(in); break;
   }
   return 0;
 }
