@@ -1,7 +1,10 @@
 // Regression tests for inputs found by fuzz/fuzz_pacontrol_serial.cpp and
-// fuzz/fuzz_pacontrol_profibus.cpp (see fuzz/FINDINGS.md).
+// fuzz/fuzz_pacontrol_profibus.cpp and fuzz/fuzz_pacontrol_command.cpp (see fuzz/FINDINGS.md).
 // A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
 // suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
+#include <fieldcodec/core/ieee754.hpp>
+#include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/pacontrol/command.hpp>
 #include <fieldcodec/pacontrol/position.hpp>
 #include <fieldcodec/pacontrol/profibus_axis.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
@@ -64,4 +67,19 @@ TEST_CASE("fuzz F2: a decoded x1000 position re-encodes" * doctest::may_fail()) 
   auto s = pac::profibus::decode_axis_status(status, position_format::milli_integer);
   REQUIRE(s.has_value());
   CHECK(pac::profibus::encode_axis_status(s.value(), position_format::milli_integer).has_value());
+}
+
+// F9 (2026-11-21, fuzz_pacontrol_command): reply_value(cmd, profibus reply) documents only
+// not_representable for NaN/±∞, but refuses finite floats too: below about 1e-10 (no decimal of
+// at most 18 places, e.g. 1e-20 or any denormal, i.e. an int32 date 1..8388607 read as a float)
+// with not_representable, and from about 9.2e17 on with overflow (the master style's ".0"
+// multiplies the int64 mantissa by 10). A float R register holding such a value cannot be read.
+TEST_CASE("fuzz F9: every finite float reply date reads" * doctest::may_fail()) {
+  const auto &cmd = fieldcodec::dictionaries::pacontrol_commands::cmd_put_float_reg;
+  for (const float f : {1e-20F, 1e18F}) {
+    pac::profibus::cmd_reply reply{};
+    reply.date = fc::ieee754::to_bits(f);
+    auto v = pac::reply_value(cmd, reply);
+    CHECK(v.has_value());
+  }
 }
