@@ -14,7 +14,8 @@
 // initiate download response / initiate without size, expedited bytes beyond the size, segment
 // bytes beyond the data). A non-last segment with fewer than 7 data bytes decodes (the machines
 // accept it) but has no canonical form: the segment encoders refuse it with bad_length. Block
-// transfer frames are decoded only as far as their multiplexer.
+// transfer frames are decoded only as far as their multiplexer. On Linux the frames also go
+// through the SocketCAN conversions (see check_socketcan).
 #include "check.hpp"
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -22,8 +23,10 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/socketcan.hpp>
 #include <fieldcodec/canopen/sync.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -242,6 +245,42 @@ void check_sdo(const co::can_frame &f, const co::can_frame &canon) {
              back.value().dir == a.value().dir && same_message(back.value().m, m));
 }
 
+#ifdef FIELDCODEC_HAS_SOCKETCAN
+/// SocketCAN conversions: a valid frame goes to a struct can_frame and back to its canonical
+/// form; a struct read from the input converts only if it is a base frame, and then back to
+/// the same identifier, RTR flag, length and data. Known open finding F10: identifier bits
+/// 11..28 of a struct without CAN_EFF_FLAG are dropped silently (0x1605 becomes 0x605); the
+/// check below tolerates exactly that.
+void check_socketcan(const co::can_frame &f, const co::can_frame &canon, const std::uint8_t *p) {
+  auto s = co::to_socketcan(f);
+  if (f.id > co::max_can_id) {
+    FUZZ_CHECK(s.is(errc::invalid_argument));
+  } else if (f.dlc > co::max_dlc) {
+    FUZZ_CHECK(s.is(errc::bad_length));
+  } else {
+    FUZZ_CHECK(s.has_value());
+    auto back = co::from_socketcan(s.value());
+    FUZZ_CHECK(back.has_value() && back.value() == canon);
+  }
+  ::can_frame raw{};
+  raw.can_id = static_cast<canid_t>(p[0]) | static_cast<canid_t>(p[1]) << 8U |
+               static_cast<canid_t>(p[3]) << 16U | static_cast<canid_t>(p[4]) << 24U;
+  raw.can_dlc = static_cast<std::uint8_t>(p[2] >> 1U);
+  for (std::size_t i = 0; i < 8; ++i) raw.data[i] = p[3 + i];
+  auto g = co::from_socketcan(raw);
+  if (!g) return;
+  FUZZ_CHECK((raw.can_id & (CAN_EFF_FLAG | CAN_ERR_FLAG)) == 0U && raw.can_dlc <= 8U);
+  auto again = co::to_socketcan(g.value());
+  FUZZ_CHECK(again.has_value());
+  const canid_t kept = CAN_SFF_MASK | CAN_RTR_FLAG;
+  FUZZ_CHECK(again.value().can_id == (raw.can_id & kept)); // F10: bits 11..28 dropped
+  FUZZ_CHECK(again.value().can_dlc == raw.can_dlc);
+  if (!g.value().rtr) {
+    FUZZ_CHECK(std::equal(raw.data, raw.data + raw.can_dlc, again.value().data));
+  }
+}
+#endif
+
 struct guards {
   co::nmt::guard_monitor monitor{5};
   co::nmt::guard_responder responder{5};
@@ -282,6 +321,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     check_nmt(f, canon);
     check_emcy_sync_time(f, canon);
     check_sdo(f, canon);
+#ifdef FIELDCODEC_HAS_SOCKETCAN
+    check_socketcan(f, canon, p);
+#endif
     g.step(f);
   }
   return 0;

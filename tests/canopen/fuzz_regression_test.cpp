@@ -1,0 +1,24 @@
+// Regression tests for inputs found by the CANopen fuzz harnesses (see fuzz/FINDINGS.md).
+// A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
+// suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
+#include <fieldcodec/canopen/socketcan.hpp>
+
+#include <doctest/doctest.h>
+
+#ifdef FIELDCODEC_HAS_SOCKETCAN
+
+namespace co = fieldcodec::canopen;
+
+// F10 (2026-11-21, fuzz_canopen_frames): from_socketcan masks the identifier with CAN_SFF_MASK,
+// so a struct can_frame without CAN_EFF_FLAG but with identifier bits 11..28 set (0x1605) is
+// silently read as another CANopen frame (0x605, an SDO request to node 5) instead of being
+// refused.
+TEST_CASE("fuzz F10: from_socketcan refuses identifier bits above 11" * doctest::may_fail()) {
+  ::can_frame raw{};
+  raw.can_id = 0x1605;
+  raw.can_dlc = 8;
+  auto f = co::from_socketcan(raw);
+  CHECK_FALSE(f.has_value());
+}
+
+#endif
