@@ -53,10 +53,11 @@ namespace detail {
 namespace detail {
 // Fixed-width bodies, written as the plain shift-or loops a person would write: with a constant
 // width, compilers unroll them early and merge them into one (byte-swapped) load or store.
-// load_unsigned takes them only for a width that is constant after inlining (__builtin_constant_p)
-// and keeps one compact loop for a run-time width (≈ 350 bytes less on Cortex-M). store_unsigned
-// always switches: with the loop present, GCC no longer keeps a caller's small output buffer in
-// registers (2 more instructions for a 2-byte store).
+// Built with -Os, load_unsigned takes them only for a width that is constant after inlining
+// (__builtin_constant_p) and reads a run-time width with one compact loop (≈ 350 bytes less on
+// Cortex-M); otherwise a run-time width jumps to its unrolled body, which is faster (an SDO
+// expedited value: 79 instead of 114 instructions). store_unsigned always switches: with a loop
+// present, GCC no longer keeps a caller's small output buffer in registers.
 template <std::size_t W>
 [[nodiscard]] constexpr std::uint64_t load_fixed(std::span<const std::uint8_t> in,
                                                  byte_order order) noexcept {
@@ -84,13 +85,17 @@ constexpr void store_fixed(std::span<std::uint8_t> out, std::uint64_t value,
 load_unsigned(std::span<const std::uint8_t> in, std::size_t width, byte_order order) noexcept {
   if (width < 1U || width > 8U) return errc::bad_length;
   if (in.size() < width) return errc::truncated;
-  if (!__builtin_constant_p(width)) { // a run-time width: one compact loop
+#if defined(__OPTIMIZE_SIZE__)
+  if (!__builtin_constant_p(width)) { // -Os and a run-time width: one compact loop
     std::uint64_t v = 0;
-    for (std::size_t i = 0; i < 8U && i < width; ++i) {
-      v = (v << 8U) | in[order == byte_order::big ? i : width - 1U - i];
+    if (order == byte_order::big) {
+      for (std::size_t i = 0; i < width; ++i) v = (v << 8U) | in[i];
+    } else {
+      for (std::size_t i = width; i-- > 0U;) v = (v << 8U) | in[i];
     }
     return v;
   }
+#endif
   switch (width) { // a constant width (after inlining) selects one unrolled body
   case 1: return detail::load_fixed<1>(in, order);
   case 2: return detail::load_fixed<2>(in, order);
