@@ -429,6 +429,18 @@ void add_scaling(bench::registry &r) {
         const std::int64_t raw = hand_round_div(eu.mantissa * 32767, 100'000);
         return raw > 0xFFFF ? bad : raw;
       });
+  bench::add<g_eu_plimit>(
+      r, "scaling/to_raw 0.001 units x327.67 u16",
+      [](fieldcodec::decimal eu) {
+        // the caller's units are 0.001 (a compile-time precision), as in most control code
+        const fieldcodec::decimal d{eu.mantissa, 3};
+        return fieldcodec::scaling::to_raw(d, plimit, u16, plimit_range).value_or(bad);
+      },
+      [](fieldcodec::decimal eu) {
+        if (eu.mantissa < 0 || eu.mantissa > 100'000) return bad;
+        const std::int64_t raw = hand_round_div(eu.mantissa * 32767, 100'000);
+        return raw > 0xFFFF ? bad : raw;
+      });
   bench::add<g_eu_temp>(
       r, "scaling/to_raw decimal (x+50)*10 i16",
       [](fieldcodec::decimal eu) {
