@@ -31,12 +31,22 @@ inline constexpr std::uint8_t sign_negative = 0xFF;
 /// max_bytes), bad_digit (a nibble A–F).
 [[nodiscard]] constexpr result<std::uint64_t> decode(std::span<const std::uint8_t> in) noexcept {
   if (in.empty() || in.size() > max_bytes) return errc::bad_length;
+  // Two bytes (four digits) per step: half the loop overhead of a byte loop.
   std::uint64_t v = 0;
-  for (const std::uint8_t b : in) {
-    const unsigned hi = b >> 4U;
-    const unsigned lo = b & 0x0FU;
+  std::size_t i = in.size() % 2U;
+  if (i != 0U) {
+    const unsigned hi = in[0] >> 4U;
+    const unsigned lo = in[0] & 0x0FU;
     if (hi > 9U || lo > 9U) return errc::bad_digit;
-    v = v * 100U + hi * 10U + lo;
+    v = hi * 10U + lo;
+  }
+  for (; i < in.size(); i += 2U) {
+    const unsigned a = in[i];
+    const unsigned b = in[i + 1U];
+    if ((a >> 4U) > 9U || (a & 0x0FU) > 9U || (b >> 4U) > 9U || (b & 0x0FU) > 9U) {
+      return errc::bad_digit;
+    }
+    v = v * 10000U + (a >> 4U) * 1000U + (a & 0x0FU) * 100U + (b >> 4U) * 10U + (b & 0x0FU);
   }
   return v;
 }
