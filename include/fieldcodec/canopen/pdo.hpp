@@ -62,14 +62,22 @@ struct mapping_entry {
   if (length < 1U || length > 64U) return errc::bad_length;
   if (length < 64U && (raw >> length) != 0U) return errc::overflow;
   if (offset + length > pdo.size() * 8U) return errc::buffer_too_small;
-  for (std::size_t i = 0; i < length; ++i) {
-    const std::size_t k = offset + i;
-    const auto mask = static_cast<std::uint8_t>(1U << (k % 8U));
-    if (((raw >> i) & 1U) != 0U) {
-      pdo[k / 8U] = static_cast<std::uint8_t>(pdo[k / 8U] | mask);
-    } else {
-      pdo[k / 8U] = static_cast<std::uint8_t>(pdo[k / 8U] & ~mask);
-    }
+  if (offset % 8U == 0U && length % 8U == 0U) { // whole bytes: a little-endian store
+    return store_unsigned(pdo.subspan(offset / 8U), length / 8U, raw, byte_order::little);
+  }
+  // A byte at a time: at most 9 steps for 64 bits (a whole byte per step when aligned).
+  std::size_t bit = offset;
+  std::size_t done = 0;
+  while (done < length) {
+    const std::size_t shift = bit % 8U;
+    const std::size_t n = 8U - shift < length - done ? 8U - shift : length - done;
+    const unsigned low = (1U << n) - 1U;
+    const auto mask = static_cast<unsigned>(low << shift);
+    const auto bits = static_cast<unsigned>((raw >> done) & low);
+    std::uint8_t &b = pdo[bit / 8U];
+    b = static_cast<std::uint8_t>((b & ~mask) | (bits << shift));
+    bit += n;
+    done += n;
   }
   return {};
 }
@@ -93,10 +101,19 @@ struct mapping_entry {
 unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length) noexcept {
   if (length < 1U || length > 64U) return errc::bad_length;
   if (offset + length > pdo.size() * 8U) return errc::truncated;
+  if (offset % 8U == 0U && length % 8U == 0U) { // whole bytes: a little-endian load
+    return load_unsigned(pdo.subspan(offset / 8U), length / 8U, byte_order::little);
+  }
   std::uint64_t v = 0;
-  for (std::size_t i = 0; i < length; ++i) {
-    const std::size_t k = offset + i;
-    if (((static_cast<unsigned>(pdo[k / 8U]) >> (k % 8U)) & 1U) != 0U) v |= std::uint64_t{1} << i;
+  std::size_t bit = offset;
+  std::size_t done = 0;
+  while (done < length) {
+    const std::size_t shift = bit % 8U;
+    const std::size_t n = 8U - shift < length - done ? 8U - shift : length - done;
+    const unsigned bits = (static_cast<unsigned>(pdo[bit / 8U]) >> shift) & ((1U << n) - 1U);
+    v |= std::uint64_t{bits} << done;
+    bit += n;
+    done += n;
   }
   return v;
 }
