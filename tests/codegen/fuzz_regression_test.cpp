@@ -66,3 +66,20 @@ TEST_CASE("fuzz F6: DataType=0x0 is refused or kept" * doctest::may_fail()) {
   REQUIRE(find(*d2) != d2->entries.end());
   CHECK(find(*d2)->type_code == find(*d)->type_code);
 }
+
+// F11 (2026-11-21, fuzz_codegen, EDS): `ObjectType=0` (NULL) is accepted — only a warning that
+// SubNumber=2 has no sub-object sections — although the reader refuses 0x1, 0x3, 0x4 with
+// "expected object type 0x2, 0x5, 0x6, 0x7, 0x8 or 0x9"; write_eds then writes the object as
+// `ObjectType=0x0` without DataType, and reading that back fails with "missing DataType in
+// [2000]": the generator writes an EDS it cannot read.
+TEST_CASE("fuzz F11: what the reader accepts, the writer writes readably" * doctest::may_fail()) {
+  gen::diagnostics diag;
+  auto d = read("[FileInfo]\nFileName=x.eds\n\n[DeviceInfo]\nVendorName=x\n\n"
+                "[OptionalObjects]\nSupportedObjects=1\n1=0x2000\n\n"
+                "[2000]\nSubNumber=2\nParameterName=Rec\nObjectType=0\n",
+                false, diag);
+  if (!d) return; // refused: fixed
+  gen::diagnostics diag2;
+  auto d2 = gen::read_eds(gen::write_eds(*d), "w1.eds", diag2);
+  CHECK(d2.has_value());
+}
