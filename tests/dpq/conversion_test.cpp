@@ -58,14 +58,14 @@ static_assert(inj_p_limit_1.to_raw(5000.001).error() == errc::out_of_range);
 static_assert(inj_p_limit_1.to_raw(-0.001).error() == errc::out_of_range);
 
 // Round-trip precision per scale.
-static_assert(dpq::round_trip_places({{32767, 2}, {0, 0}}) == 3);
-static_assert(dpq::round_trip_places({{105, 1}, {0, 0}}) == 2);
-static_assert(dpq::round_trip_places({{163835, 1}, {0, 0}}) == 5);
-static_assert(dpq::round_trip_places({{128, 0}, {0, 0}}) == 3);
-static_assert(dpq::round_trip_places({{500, 0}, {0, 0}}) == 3);
-static_assert(dpq::round_trip_places({{1, 0}, {1, 0}}) == 0);
-static_assert(dpq::round_trip_places({{100, 0}, {0, 0}}) == 2);
-static_assert(dpq::round_trip_places({{1, 0}, {5, 1}}) == 1);
+static_assert(dpq::round_trip_places({{32767, 2}, {0, 0}}).value() == 3);
+static_assert(dpq::round_trip_places({{105, 1}, {0, 0}}).value() == 2);
+static_assert(dpq::round_trip_places({{163835, 1}, {0, 0}}).value() == 5);
+static_assert(dpq::round_trip_places({{128, 0}, {0, 0}}).value() == 3);
+static_assert(dpq::round_trip_places({{500, 0}, {0, 0}}).value() == 3);
+static_assert(dpq::round_trip_places({{1, 0}, {1, 0}}).value() == 0);
+static_assert(dpq::round_trip_places({{100, 0}, {0, 0}}).value() == 2);
+static_assert(dpq::round_trip_places({{1, 0}, {5, 1}}).value() == 1);
 
 TEST_CASE("dpq: worked example of the manual, 4.0 bar -> 1311 -> 1F 05 00 00 -> 4.001") {
   // 004 manual, 3.3 "Parameter conversion" (and its copy in 3.4).

@@ -30,6 +30,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 namespace fieldcodec::dpq {
@@ -56,12 +57,25 @@ struct payload {
 /// least the offset's places and 10^p ≥ |scale| (then the rounding error of the EU, at most
 /// ½·10^-p, moves raw by less than ½; when 10^p = |scale| the EU is exact). 327.67 → 3,
 /// 10.5 → 2, 16383.5 → 5, 1 → 0.
-[[nodiscard]] constexpr unsigned round_trip_places(scaling::linear s) noexcept {
-  const decimal mag{s.scale.mantissa < 0 ? -s.scale.mantissa : s.scale.mantissa, s.scale.places};
+/// Errors: invalid_argument (offset or scale with more than 18 places), not_representable
+/// (|scale| > 10^18: no p ≤ 18 round-trips — found by fuzz_dpq, F8).
+[[nodiscard]] constexpr result<unsigned> round_trip_places(scaling::linear s) noexcept {
+  if (s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
+    return errc::invalid_argument;
+  }
+  // |scale| without negating INT64_MIN (F3): its magnitude 2^63 is never a power of ten, so
+  // comparing against INT64_MAX instead decides every "10^p >= |scale|" the same way.
+  const std::int64_t m = s.scale.mantissa;
+  const decimal mag{m == std::numeric_limits<std::int64_t>::min()
+                        ? std::numeric_limits<std::int64_t>::max()
+                    : m < 0 ? -m
+                            : m,
+                    s.scale.places};
   unsigned p = s.offset.places;
   std::int64_t pow = 1;
-  for (unsigned i = 0; i < p; ++i) pow *= 10;
-  while (p < decimal_max_places && compare(decimal{pow, 0}, mag) < 0) {
+  for (unsigned i = 0; i < p; ++i) pow *= 10; // p <= 18: at most 10^18
+  while (compare(decimal{pow, 0}, mag) < 0) {
+    if (p == decimal_max_places) return errc::not_representable;
     ++p;
     pow *= 10;
   }
@@ -102,7 +116,9 @@ struct conversion {
   }
   /// raw → EU exactly at round_trip_places(scale): converting the result back gives `raw`.
   [[nodiscard]] constexpr result<decimal> to_eu_decimal(std::int64_t raw) const noexcept {
-    return scaling::to_eu_decimal(raw, scale, round_trip_places(scale));
+    auto p = round_trip_places(scale);
+    if (!p) return p.error();
+    return scaling::to_eu_decimal(raw, scale, p.value());
   }
 
   /// A raw value as the field's bytes, least significant first.

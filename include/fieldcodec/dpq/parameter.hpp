@@ -107,7 +107,9 @@ raw_from_bytes(const od::entry &e, std::span<const std::uint8_t> in) noexcept {
 /// raw → EU, exactly, at round_trip_places of the entry's scale (converting the result back
 /// gives `raw` again). Errors: those of scaling::to_eu_decimal.
 [[nodiscard]] constexpr result<decimal> to_eu(const od::entry &e, std::int64_t raw) noexcept {
-  return e.to_eu_decimal(raw, round_trip_places(e.scale));
+  auto p = round_trip_places(e.scale);
+  if (!p) return p.error();
+  return e.to_eu_decimal(raw, p.value());
 }
 
 /// Bytes → EU. Errors: those of raw_from_bytes and to_eu.
