@@ -110,8 +110,10 @@ struct cycle_time {
   if (us > 255U) return errc::out_of_range;
   return cycle_time{static_cast<std::uint8_t>(us), static_cast<std::int8_t>(exponent)};
 }
-/// (base, exponent) → µs. Errors: not_representable (not a whole number of µs), overflow.
+/// (base, exponent) → µs. Errors: out_of_range (base 0: no cycle, which encode_cycle_time
+/// refuses too — fuzz F7), not_representable (not a whole number of µs), overflow.
 [[nodiscard]] constexpr result<std::uint32_t> decode_cycle_time(cycle_time t) noexcept {
+  if (t.base == 0U) return errc::out_of_range;
   std::uint64_t v = t.base;
   int e = t.exponent + 6;
   if (e < 0) {
