@@ -15,6 +15,8 @@
 //   shorter than the mapping is truncated.
 // * pack_all of the fuzzed raw values (also sign-extended negatives) → unpack_all gives each
 //   value's low `bits` bits; unpack_signed → pack_signed round-trips every entry.
+// * unpack of a single entry at any offset / length agrees with a bit-by-bit reference model
+//   (CiA 301: little-endian bit order), and pack changes exactly that entry's bits.
 // * decode_cob_id → encode_cob_id gives back the same 32-bit value (there is nothing to
 //   canonicalise: decode refuses every bit it would drop), and to_frame carries the bytes.
 #include "check.hpp"
@@ -55,6 +57,46 @@ bool entry_ok(pdo::mapping_entry m, pdo::direction d) {
   if (e == nullptr) return false;
   if (d == pdo::direction::rpdo) return od::mappable_rx(e->pdo) && od::writable(e->access_type);
   return od::mappable_tx(e->pdo) && od::readable(e->access_type);
+}
+
+/// Reference model: CiA 301 packs PDO data little-endian, bit k of the PDO is bit k % 8 of byte
+/// k / 8; an entry of n bits at offset o holds bits o .. o + n - 1, least significant first.
+std::uint64_t reference_unpack(std::span<const std::uint8_t> pdo, std::size_t offset,
+                               std::size_t length) {
+  std::uint64_t v = 0;
+  for (std::size_t i = 0; i < length; ++i) {
+    const std::size_t k = offset + i;
+    if (((static_cast<unsigned>(pdo[k / 8U]) >> (k % 8U)) & 1U) != 0U) v |= std::uint64_t{1} << i;
+  }
+  return v;
+}
+
+/// Single entries at any offset: unpack agrees with the reference, and pack writes exactly the
+/// entry's bits (the others stay as they were).
+void check_single(std::span<const std::uint8_t> bytes, std::size_t offset, std::size_t length,
+                  std::uint64_t value) {
+  auto u = pdo::unpack(bytes, offset, length);
+  if (length < 1U || length > 64U) {
+    FUZZ_CHECK(u.is(errc::bad_length));
+    return;
+  }
+  if (offset + length > bytes.size() * 8U) {
+    FUZZ_CHECK(u.is(errc::truncated));
+    return;
+  }
+  FUZZ_CHECK(u.has_value() && u.value() == reference_unpack(bytes, offset, length));
+  const std::uint64_t mask = length == 64U ? ~std::uint64_t{0} : (std::uint64_t{1} << length) - 1U;
+  std::vector<std::uint8_t> buf(bytes.begin(), bytes.end());
+  FUZZ_CHECK(pdo::pack(buf, offset, length, value & mask).has_value());
+  for (std::size_t k = 0; k < bytes.size() * 8U; ++k) {
+    const bool inside = k >= offset && k < offset + length;
+    const bool want =
+        inside ? ((value >> (k - offset)) & 1U) != 0U : ((bytes[k / 8U] >> (k % 8U)) & 1U) != 0U;
+    FUZZ_CHECK((((buf[k / 8U] >> (k % 8U)) & 1U) != 0U) == want);
+  }
+  if (length < 64U && (value >> length) != 0U) {
+    FUZZ_CHECK(pdo::pack(buf, offset, length, value).is(errc::overflow));
+  }
 }
 
 } // namespace
@@ -112,6 +154,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     FUZZ_CHECK(v.error() == pdo::to_errc(report.problem));
     FUZZ_CHECK(report.entry < std::max<std::size_t>(entries.size(), 1U) ||
                report.problem == pdo::mapping_problem::too_many_entries);
+  }
+
+  // Single entries against the reference model, at offsets and lengths taken from the input.
+  if (bytes.size() >= 2) {
+    std::uint64_t value = 0;
+    for (std::size_t b = 0; b < 8 && b < bytes.size(); ++b)
+      value |= std::uint64_t{bytes[b]} << (8U * b);
+    check_single(bytes, bytes[0] % (bytes.size() * 8U), bytes[1] % 66U,
+                 value * 0x9E3779B97F4A7C15U);
   }
 
   // Packing (any entry lengths 1..64, checked or not).
