@@ -248,9 +248,8 @@ void check_sdo(const co::can_frame &f, const co::can_frame &canon) {
 #ifdef FIELDCODEC_HAS_SOCKETCAN
 /// SocketCAN conversions: a valid frame goes to a struct can_frame and back to its canonical
 /// form; a struct read from the input converts only if it is a base frame, and then back to
-/// the same identifier, RTR flag, length and data. Known open finding F10: identifier bits
-/// 11..28 of a struct without CAN_EFF_FLAG are dropped silently (0x1605 becomes 0x605); the
-/// check below tolerates exactly that.
+/// the same identifier, RTR flag, length and data (F10, fixed: identifier bits 11..28 of a
+/// struct without CAN_EFF_FLAG are refused, not dropped).
 void check_socketcan(const co::can_frame &f, const co::can_frame &canon, const std::uint8_t *p) {
   auto s = co::to_socketcan(f);
   if (f.id > co::max_can_id) {
@@ -270,10 +269,10 @@ void check_socketcan(const co::can_frame &f, const co::can_frame &canon, const s
   auto g = co::from_socketcan(raw);
   if (!g) return;
   FUZZ_CHECK((raw.can_id & (CAN_EFF_FLAG | CAN_ERR_FLAG)) == 0U && raw.can_dlc <= 8U);
+  FUZZ_CHECK((raw.can_id & CAN_EFF_MASK & ~CAN_SFF_MASK) == 0U);
   auto again = co::to_socketcan(g.value());
   FUZZ_CHECK(again.has_value());
-  const canid_t kept = CAN_SFF_MASK | CAN_RTR_FLAG;
-  FUZZ_CHECK(again.value().can_id == (raw.can_id & kept)); // F10: bits 11..28 dropped
+  FUZZ_CHECK(again.value().can_id == raw.can_id);
   FUZZ_CHECK(again.value().can_dlc == raw.can_dlc);
   if (!g.value().rtr) {
     FUZZ_CHECK(std::equal(raw.data, raw.data + raw.can_dlc, again.value().data));

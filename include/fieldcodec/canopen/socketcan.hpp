@@ -42,6 +42,11 @@ namespace fieldcodec::canopen {
 [[nodiscard]] inline result<can_frame> from_socketcan(const ::can_frame &in) noexcept {
   if ((in.can_id & static_cast<canid_t>(CAN_ERR_FLAG)) != 0U) return errc::unexpected_frame;
   if ((in.can_id & static_cast<canid_t>(CAN_EFF_FLAG)) != 0U) return errc::unexpected_frame;
+  // A base frame has 11 identifier bits: anything above them would be silently dropped and the
+  // frame misrouted (0x1605 read as 0x605), so it is refused (fuzz F10).
+  if ((in.can_id & static_cast<canid_t>(CAN_EFF_MASK & ~CAN_SFF_MASK)) != 0U) {
+    return errc::invalid_argument;
+  }
   if (in.can_dlc > max_dlc) return errc::bad_length;
   can_frame f;
   f.id = static_cast<std::uint16_t>(in.can_id & static_cast<canid_t>(CAN_SFF_MASK));
