@@ -477,7 +477,7 @@ private:
     if (const ini_key *k = s.find("DATATYPE"); k != nullptr && !k->value.empty()) {
       const int_parse p = parse_int(k->value);
       auto v = p.value.to_uint64();
-      if (!p.ok || !v || v.value() > 0xFFFFU) {
+      if (!p.ok || !v || v.value() == 0U || v.value() > 0xFFFFU) { // 0 is no type (fuzz F6)
         bad_value(s, *k, p.ok ? "expected a data type 0x0001..0xFFFF" : p.error, p.error_pos);
         ok = false;
       } else {
@@ -597,7 +597,8 @@ private:
     bool has_code = false;
     if (!count_key(s, "OBJECTTYPE", 0xFF, code, has_code)) return;
     switch (code) {
-    case 0x0:
+    // 0x0 (NULL) is refused like the other undefined codes: it has no data type, so the writer
+    // could not write it back readably (fuzz F11).
     case 0x2:
     case 0x5:
     case 0x6:

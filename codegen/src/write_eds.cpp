@@ -34,6 +34,17 @@ std::string eds_number(const od::number &n, bool nodeid) {
   return nodeid ? "$NODEID+" + s : s;
 }
 
+// A number of an entry in the form the EDS reader reads back unchanged: values of unsigned
+// types are written in hex whatever kind the source gave them (a CSV "0" is read as signed, an
+// EDS "0x0" as unsigned), so CSV -> EDS -> EDS is a fixed point (fuzz F5).
+std::string entry_number(const entry &e, const od::number &n, bool nodeid) {
+  if (n.kind == od::number_kind::signed_ && od::is_unsigned_integer(e.type) &&
+      static_cast<std::int64_t>(n.bits) >= 0) {
+    return eds_number(od::num::u(n.bits), nodeid);
+  }
+  return eds_number(n, nodeid);
+}
+
 // A limit as a raw value: CSV limits of scaled entries are engineering units.
 std::string eds_limit(const entry &e, const od::number &n) {
   if (!n) return "";
@@ -57,7 +68,7 @@ std::string eds_limit(const entry &e, const od::number &n) {
       }
     }
   }
-  return eds_number(n, false);
+  return entry_number(e, n, false);
 }
 
 void var_keys(std::string &o, const entry &e, bool dcf) {
@@ -76,7 +87,7 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   if (od::is_byte_string(e.type)) {
     if (!e.def_text.empty()) o += "DefaultValue=" + e.def_text + "\n";
   } else if (e.def || e.def_nodeid) {
-    o += "DefaultValue=" + eds_number(e.def, e.def_nodeid) + "\n";
+    o += "DefaultValue=" + entry_number(e, e.def, e.def_nodeid) + "\n";
   }
   if (!od::is_byte_string(e.type)) { // limits of a string are not expressible in an EDS
     if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
@@ -88,7 +99,7 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
     if (od::is_byte_string(e.type)) {
       if (!e.param_text.empty()) o += "ParameterValue=" + e.param_text + "\n";
     } else if (e.param || e.param_nodeid) {
-      o += "ParameterValue=" + eds_number(e.param, e.param_nodeid) + "\n";
+      o += "ParameterValue=" + entry_number(e, e.param, e.param_nodeid) + "\n";
     }
     if (!e.denotation.empty()) o += "Denotation=" + e.denotation + "\n";
   }
