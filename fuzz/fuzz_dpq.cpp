@@ -17,6 +17,8 @@
 // * bytes → raw → EU → raw → bytes: what decodes re-encodes to the same bytes, unless the EU
 //   lies outside the printed range (values read from the card may; then to_raw says
 //   out_of_range and the EU really is outside [low, high]).
+// * scaling::scale_to_raw and scaling::to_eu_decimal agree with a 128-bit reference model
+//   wherever its intermediates fit (differential check of the core fast paths).
 // * SDO answers: a read response decodes to a raw value inside the field; its canonical form
 //   (expedited upload response with size indication and the field's bytes) decodes to the same
 //   raw value, and writing the EU read back sends those bytes.
@@ -77,8 +79,91 @@ bool in_range(decimal eu, const fc::scaling::range &r) {
   return fc::compare(eu, r.low) >= 0 && fc::compare(eu, r.high) <= 0;
 }
 
+// Reference model of core/scaling in 128-bit integers (only where every intermediate fits):
+//   raw = round_half_away((eu − offset) × scale)
+//   eu(places) = round_half_away((raw / scale + offset) × 10^places) / 10^places
+__extension__ typedef __int128 i128;
+constexpr i128 i128_max = static_cast<i128>(~static_cast<unsigned __int128>(0) >> 1U);
+
+bool mul_fits(i128 a, i128 b, i128 &out) {
+  const i128 ma = a < 0 ? -a : a;
+  const i128 mb = b < 0 ? -b : b;
+  if (ma != 0 && mb > i128_max / ma) return false;
+  out = a * b;
+  return true;
+}
+i128 pow10_128(unsigned n) {
+  i128 v = 1;
+  for (unsigned i = 0; i < n; ++i) v *= 10;
+  return v;
+}
+i128 round_div(i128 num, i128 den) { // den > 0, half away from zero
+  const i128 q = num / den;
+  const i128 r = num % den;
+  const i128 twice = (r < 0 ? -r : r) * 2;
+  if (twice >= den) return num < 0 ? q - 1 : q + 1;
+  return q;
+}
+
+/// scale_to_raw against the reference (nothing when an intermediate would not fit 127 bits).
+void check_scale_to_raw(decimal eu, const fc::scaling::linear &s) {
+  if (eu.places > 18U || s.offset.places > 18U || s.scale.places > 18U || s.scale.mantissa == 0) {
+    return;
+  }
+  const unsigned p = std::max<unsigned>(eu.places, s.offset.places);
+  const i128 diff = static_cast<i128>(eu.mantissa) * pow10_128(p - eu.places) -
+                    static_cast<i128>(s.offset.mantissa) * pow10_128(p - s.offset.places);
+  i128 prod = 0;
+  if (!mul_fits(diff, s.scale.mantissa, prod)) return;
+  const unsigned den_places = p + s.scale.places;
+  if (den_places > 37U) return;
+  const i128 want = round_div(prod, pow10_128(den_places));
+  auto got = fc::scaling::scale_to_raw(eu, s);
+  if (want > std::numeric_limits<std::int64_t>::max() ||
+      want < std::numeric_limits<std::int64_t>::min()) {
+    FUZZ_CHECK(got.is(errc::overflow));
+  } else {
+    FUZZ_CHECK(got.has_value() && got.value() == static_cast<std::int64_t>(want));
+  }
+}
+
+/// to_eu_decimal against the reference.
+void check_to_eu_decimal(std::int64_t raw, const fc::scaling::linear &s, unsigned places) {
+  if (places > 18U || s.offset.places > 18U || s.scale.places > 18U || s.scale.mantissa == 0) {
+    return;
+  }
+  // eu × 10^places = (raw × 10^(sp + op) + o × m) × 10^places / (m × 10^op)
+  const i128 m = s.scale.mantissa;
+  i128 a = 0;
+  i128 b = 0;
+  i128 num = 0;
+  i128 den = 0;
+  if (s.scale.places + s.offset.places > 37U || places > 37U) return;
+  if (!mul_fits(raw, pow10_128(s.scale.places + s.offset.places), a)) return;
+  if (!mul_fits(s.offset.mantissa, m, b)) return;
+  if ((b > 0 && a > i128_max - b) || (b < 0 && a < -i128_max - b)) return;
+  if (!mul_fits(a + b, pow10_128(places), num)) return;
+  if (!mul_fits(m, pow10_128(s.offset.places), den)) return;
+  if (den < 0) {
+    num = -num;
+    den = -den;
+  }
+  const i128 want = round_div(num, den);
+  auto got = fc::scaling::to_eu_decimal(raw, s, places);
+  if (want > std::numeric_limits<std::int64_t>::max() ||
+      want < std::numeric_limits<std::int64_t>::min()) {
+    FUZZ_CHECK(got.is(errc::overflow));
+  } else if (got) { // the module may refuse intermediates beyond its own 128-bit/64-bit limits
+    FUZZ_CHECK(got.value().mantissa == static_cast<std::int64_t>(want) &&
+               got.value().places == places);
+  } else {
+    FUZZ_CHECK(got.is(errc::overflow));
+  }
+}
+
 void check_conversion(const dpq::conversion &c, decimal eu, double eu_d,
                       std::span<const std::uint8_t> bytes) {
+  check_scale_to_raw(eu, c.scale);
   const bool field_ok = c.field.bytes >= 1U && c.field.bytes <= 8U;
   for (const auto raw : {c.to_raw(eu), c.to_raw(eu_d)}) {
     if (!raw) {
@@ -122,6 +207,7 @@ void check_conversion(const dpq::conversion &c, decimal eu, double eu_d,
   }
   auto p = c.encode_raw(raw.value());
   FUZZ_CHECK(p.has_value() && std::equal(in.begin(), in.end(), p.value().span().begin()));
+  check_to_eu_decimal(raw.value(), c.scale, eu.places % 19U);
   auto e = c.decode(in);
   if (!e) return; // scaling::to_eu_decimal overflow (huge scale/offset)
   auto back = c.to_raw(e.value());
