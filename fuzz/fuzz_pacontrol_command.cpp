@@ -8,7 +8,7 @@
 // Properties:
 // * A Profibus reply date decodes (reply_value) to a value that cmd_date encodes back to the
 //   same 32 bits. Canonical form: a float −0.0 reads as 0.0 (a decimal has no sign of zero).
-//   reply_value fails only for NaN / ±∞ (its documented errors) — and, finding F9, for finite
+//   reply_value fails only for NaN / ±∞ and (F9, documented) for finite
 //   floats below 1e-8 or from about 9.2e17 on.
 // * A request built for a command (make_request with an int32 / float / its own value) passes
 //   the command's checks, encodes, and the RS232 frame decodes to the same request; the
@@ -56,10 +56,10 @@ void check_reply(const od::command &cmd, std::uint32_t date) {
       FUZZ_CHECK(v.is(errc::not_representable));
       return;
     }
-    // Known open finding F9: finite floats below 1e-8 or from 9e18 on have no exact decimal of
-    // at most 18 places / 9 digits (not_representable), and from about 9.2e17 on the master
-    // style's one fractional digit overflows the int64 mantissa (overflow); reply_value
-    // documents neither.
+    // F9 (decided and documented in reply_value): finite floats below 1e-8 or from 9e18 on have
+    // no exact decimal of at most 18 places / 9 digits (not_representable), and from about
+    // 9.2e17 on the master style's one fractional digit overflows the int64 mantissa
+    // (overflow).
     const float f = fc::ieee754::from_bits(date);
     const float a = f < 0.0F ? -f : f;
     FUZZ_CHECK((v.is(errc::not_representable) && (a < 1e-8F || a >= 9e18F)) ||

@@ -182,8 +182,14 @@ TEST_CASE("pacontrol positions: ×1000 integers both ways") {
   REQUIRE(d);
   CHECK(d.value().mantissa == -2147483648LL);
   CHECK(d.value().places == 3);
+  // Near the int32 limits the nearest float (2147483.75) would not encode again: decoding gives
+  // the nearest float towards zero instead (fuzz F2); the exact value is decode_position_decimal.
   CHECK(pac::decode_position(be32(0x7FFFFFFFU), position_format::milli_integer).value() ==
-        2147483.647F);
+        2147483.5F);
+  CHECK(pac::decode_position(be32(0x80000000U), position_format::milli_integer).value() ==
+        -2147483.5F);
+  CHECK(pac::decode_position(be32(0x7FFFF000U), position_format::milli_integer).value() ==
+        2147479.552F); // away from the limits: the nearest float, as before
   CHECK(pac::encode_position(2147483.75F, position_format::milli_integer).error() ==
         errc::overflow);
   CHECK(pac::encode_position(decimal{2147483648, 3}, position_format::milli_integer).error() ==

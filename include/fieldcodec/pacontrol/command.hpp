@@ -146,7 +146,11 @@ start_command(profibus::cmd_handshake &hs, const od::command &cmd,
 }
 
 /// The acknowledgement date of a Profibus reply, typed by the command (a float reply is
-/// given in the shortest decimal form). Errors: not_representable (NaN/∞ float date).
+/// given in the shortest decimal form, as the RS232 text would carry it: no exponent).
+/// Errors: not_representable (NaN/∞, or a finite float too small for a decimal of at most 18
+/// places, |v| below about 1e-10 including every denormal), overflow (|v| from about 9.2e17
+/// on, where the decimal's int64 mantissa ends). Such values cannot travel as PA-CONTROL text
+/// either; the raw bits are still in the reply (fuzz F9).
 [[nodiscard]] constexpr result<value> reply_value(const od::command &cmd,
                                                   const profibus::cmd_reply &reply) noexcept {
   if (cmd.reply_type == od::command_value::floating) {

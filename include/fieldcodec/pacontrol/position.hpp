@@ -93,7 +93,11 @@ encode_position(decimal v, position_format format) noexcept {
   return to_bytes<std::int32_t>(raw.value(), byte_order::big);
 }
 
-/// A position from the first 4 bytes of `in`.
+/// A position from the first 4 bytes of `in`. In integer format the result is the float
+/// nearest to raw / 1000 — except within 22 of the int32 limits, where that float (e.g.
+/// 2147483.75 for 7F FF FF FF) would not fit ×1000 into int32 again: there it is the nearest
+/// float towards zero, so every decoded position encodes again (fuzz F2). Use
+/// decode_position_decimal for the exact value.
 /// Errors: truncated, not_representable (NaN or ±∞ in float format).
 [[nodiscard]] constexpr result<float> decode_position(std::span<const std::uint8_t> in,
                                                       position_format format) noexcept {
@@ -102,7 +106,10 @@ encode_position(decimal v, position_format format) noexcept {
   }
   auto raw = load<std::int32_t>(in, byte_order::big);
   if (!raw) return raw.error();
-  return to_float(from_milli(raw.value()));
+  float f = to_float(from_milli(raw.value()));
+  // Decrementing the bit pattern of a non-zero float moves its magnitude one step towards zero.
+  while (!to_milli(f) && f != 0.0F) f = ieee754::from_bits(ieee754::to_bits(f) - 1U);
+  return f;
 }
 
 /// A position as an exact decimal: raw / 1000 in integer format, the shortest decimal of the
