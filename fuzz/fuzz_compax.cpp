@@ -15,6 +15,8 @@
 // * POLARITAET: bit 7 only. OVERRIDE: byte → percent at 2 places → the same byte.
 // * OBJECT_REQ / OBJECT_RSP, DSP numbers, identification, process-data records, integers,
 //   booleans, CONTROL commands and selection codes: the same bytes.
+// * Objects by dictionary entry (objects.hpp): bytes → engineering value (6 places) → the same
+//   bytes, unless the value lies outside the entry's limits (encode says out_of_range).
 // And what encodes decodes to the same value (numbers given as thousandths, DSP conversions,
 // OBJECT_REQ/RSP answered through object_channel).
 #include "check.hpp"
@@ -25,11 +27,13 @@
 #include <fieldcodec/compax/nx.hpp>
 #include <fieldcodec/compax/nx_text.hpp>
 #include <fieldcodec/compax/object_channel.hpp>
+#include <fieldcodec/compax/objects.hpp>
 #include <fieldcodec/compax/pcp.hpp>
 #include <fieldcodec/compax/position.hpp>
 #include <fieldcodec/compax/process_data.hpp>
 #include <fieldcodec/compax/values.hpp>
 #include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/dictionaries/compax_objects.hpp>
 
 #include <algorithm>
 #include <array>
@@ -276,12 +280,31 @@ void check_control(bytes in) {
   FUZZ_CHECK(cx::encode_polarity(cx::decode_polarity(in[1])) == (in[1] & 0x80U));
 }
 
+/// Objects by dictionary entry (engineering units): bytes → EU (6 places) → bytes.
+void check_objects(bytes in) {
+  if (in.size() < 2) return;
+  constexpr auto d = fieldcodec::dictionaries::compax_objects::dictionary;
+  const fieldcodec::od::entry &e = d.entries()[(std::size_t{in[0]} << 8U | in[1]) % d.size()];
+  const bytes value = in.subspan(2);
+  auto eu = cx::decode_object(e, value);
+  if (!eu) return;
+  std::array<std::uint8_t, 16> out{};
+  auto n = cx::encode_object(e, eu.value(), out);
+  if (n) {
+    FUZZ_CHECK(n.value() == value.size());
+    FUZZ_CHECK(std::equal(value.begin(), value.end(), out.begin()));
+  } else {
+    // values read from the drive may lie outside the entry's limits; nothing else may fail
+    FUZZ_CHECK(n.is(errc::out_of_range));
+  }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
   if (size == 0) return 0;
   const bytes in(data + 1, size - 1);
-  switch (data[0] % 10U) {
+  switch (data[0] % 11U) {
   case 0: check_position(in); break;
   case 1: check_identification(in); break;
   case 2: check_values(in); break;
@@ -292,6 +315,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   case 7: check_pcp(in); break;
   case 8: check_process_data(in); break;
   case 9: check_control(in); break;
+  case 10: check_objects(in); break;
   }
   return 0;
 }
