@@ -83,7 +83,8 @@ bool in_range(decimal eu, const fc::scaling::range &r) {
 //   raw = round_half_away((eu − offset) × scale)
 //   eu(places) = round_half_away((raw / scale + offset) × 10^places) / 10^places
 __extension__ typedef __int128 i128;
-constexpr i128 i128_max = static_cast<i128>(~static_cast<unsigned __int128>(0) >> 1U);
+__extension__ typedef unsigned __int128 u128;
+constexpr i128 i128_max = static_cast<i128>(~static_cast<u128>(0) >> 1U);
 
 bool mul_fits(i128 a, i128 b, i128 &out) {
   const i128 ma = a < 0 ? -a : a;
