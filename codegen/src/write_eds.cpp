@@ -221,7 +221,13 @@ std::string write_eds(const dictionary &d) {
       var_keys(o, d.entries[i], d.is_dcf);
     } else {
       o += "ParameterName=" + info.name + "\n";
-      const auto code = info.code == od::object_code::var ? od::object_code::record : info.code;
+      // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
+      // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
+      // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).
+      const bool single_code = info.code == od::object_code::var ||
+                               info.code == od::object_code::domain ||
+                               info.code == od::object_code::deftype;
+      const auto code = single_code ? od::object_code::record : info.code;
       o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
       if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
       o += "SubNumber=" + std::to_string(n) + "\n";

@@ -83,3 +83,25 @@ TEST_CASE("fuzz F11: what the reader accepts, the writer writes readably") {
   auto d2 = gen::read_eds(gen::write_eds(*d), "w1.eds", diag2);
   CHECK(d2.has_value());
 }
+
+// F12 (2026-11-21, fuzz_codegen, 10-minute campaign): an object with ObjectType=5 (DEFTYPE) and
+// SubNumber=2 but no sub-object sections is read (with a warning); write_eds wrote it as
+// `ObjectType=0x5` with `SubNumber=0` and no DataType, which the reader refuses ("missing
+// DataType in [2000]"). Objects written as containers are now written as RECORD.
+TEST_CASE("fuzz F12: a DEFTYPE object with a SubNumber is written readably") {
+  for (const char *type : {"5", "2", "7"}) {
+    gen::diagnostics diag;
+    const std::string text =
+        std::string("[FileInfo]\nFileName=x.eds\n\n[DeviceInfo]\nVendorName=x\n\n"
+                    "[OptionalObjects]\nSupportedObjects=1\n1=0x2000\n\n"
+                    "[2000]\nSubNumber=2\nParameterName=Rec\nObjectType=") +
+        type + "\n";
+    auto d = read(text, false, diag);
+    if (!d) continue; // refused on reading: consistent too
+    const std::string w1 = gen::write_eds(*d);
+    gen::diagnostics diag2;
+    auto d2 = gen::read_eds(w1, "w1.eds", diag2);
+    REQUIRE(d2.has_value());
+    CHECK(gen::write_eds(*d2) == w1);
+  }
+}
