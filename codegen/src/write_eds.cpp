@@ -34,6 +34,11 @@ std::string eds_number(const od::number &n, bool nodeid) {
   return nodeid ? "$NODEID+" + s : s;
 }
 
+// Text as an EDS value: readers trim the spaces around a value, so they are not written
+// (a CSV name printed with a trailing space, DPQ "BackP: Pres 4Ds ", would otherwise change
+// on every EDS pass — fuzz F13).
+std::string eds_text(const std::string &s) { return std::string(trim(s)); }
+
 // A number of an entry in the form the EDS reader reads back unchanged: values of unsigned
 // types are written in hex whatever kind the source gave them (a CSV "0" is read as signed, an
 // EDS "0x0" as unsigned), so CSV -> EDS -> EDS is a fixed point (fuzz F5).
@@ -72,7 +77,7 @@ std::string eds_limit(const entry &e, const od::number &n) {
 }
 
 void var_keys(std::string &o, const entry &e, bool dcf) {
-  o += "ParameterName=" + e.name + "\n";
+  o += "ParameterName=" + eds_text(e.name) + "\n";
   o += "ObjectType=0x" +
        hex(static_cast<std::uint8_t>(e.subindex == 0 && (e.object == od::object_code::var ||
                                                          e.object == od::object_code::domain ||
@@ -85,7 +90,7 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   o += "DataType=0x" + hex(type, 4) + "\n";
   o += "AccessType=" + std::string(od::name(e.access)) + "\n";
   if (od::is_byte_string(e.type)) {
-    if (!e.def_text.empty()) o += "DefaultValue=" + e.def_text + "\n";
+    if (!e.def_text.empty()) o += "DefaultValue=" + eds_text(e.def_text) + "\n";
   } else if (e.def || e.def_nodeid) {
     o += "DefaultValue=" + entry_number(e, e.def, e.def_nodeid) + "\n";
   }
@@ -97,11 +102,11 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   if (e.has_obj_flags) o += "ObjFlags=0x" + hex(e.obj_flags, 1) + "\n";
   if (dcf) {
     if (od::is_byte_string(e.type)) {
-      if (!e.param_text.empty()) o += "ParameterValue=" + e.param_text + "\n";
+      if (!e.param_text.empty()) o += "ParameterValue=" + eds_text(e.param_text) + "\n";
     } else if (e.param || e.param_nodeid) {
       o += "ParameterValue=" + entry_number(e, e.param, e.param_nodeid) + "\n";
     }
-    if (!e.denotation.empty()) o += "Denotation=" + e.denotation + "\n";
+    if (!e.denotation.empty()) o += "Denotation=" + eds_text(e.denotation) + "\n";
   }
 }
 
@@ -220,7 +225,7 @@ std::string write_eds(const dictionary &d) {
     if (single) {
       var_keys(o, d.entries[i], d.is_dcf);
     } else {
-      o += "ParameterName=" + info.name + "\n";
+      o += "ParameterName=" + eds_text(info.name) + "\n";
       // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
       // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
       // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).

@@ -105,3 +105,19 @@ TEST_CASE("fuzz F12: a DEFTYPE object with a SubNumber is written readably") {
     CHECK(gen::write_eds(*d2) == w1);
   }
 }
+
+// F13 (2026-11-21, fuzz_codegen, 10-minute campaign): a CSV name with a trailing space (the DPQ
+// table has "BackP: Pres 4Ds " as printed) was written to the EDS with the space, which the EDS
+// reader trims: CSV -> EDS -> EDS was not a fixed point. The writer trims text values.
+TEST_CASE("fuzz F13: text values with surrounding spaces are written trimmed") {
+  gen::diagnostics diag;
+  auto d =
+      read("index,subindex,name,data_type,access\n0x2000,0,Pres 4Ds ,UNSIGNED16,rw\n", true, diag);
+  REQUIRE(d.has_value());
+  const std::string w1 = gen::write_eds(*d);
+  CHECK(w1.find("ParameterName=Pres 4Ds\n") != std::string::npos);
+  gen::diagnostics diag2;
+  auto d2 = gen::read_eds(w1, "w1.eds", diag2);
+  REQUIRE(d2.has_value());
+  CHECK(gen::write_eds(*d2) == w1);
+}
