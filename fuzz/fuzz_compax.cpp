@@ -292,7 +292,12 @@ void check_objects(bytes in) {
   auto n = cx::encode_object(e, eu.value(), out);
   if (n) {
     FUZZ_CHECK(n.value() == value.size());
-    FUZZ_CHECK(std::equal(value.begin(), value.end(), out.begin()));
+    // Canonical form: a BCD "negative zero" (sign byte FF, all digits 0) is written back as
+    // positive zero (sign byte 00); everything else re-encodes to the same bytes.
+    const bool negative_zero = eu.value().mantissa == 0 && !value.empty() && value[0] == 0xFFU &&
+                               out[0] == 0x00U &&
+                               std::equal(value.begin() + 1, value.end(), out.begin() + 1);
+    FUZZ_CHECK(negative_zero || std::equal(value.begin(), value.end(), out.begin()));
   } else {
     // values read from the drive may lie outside the entry's limits; nothing else may fail
     FUZZ_CHECK(n.is(errc::out_of_range));
