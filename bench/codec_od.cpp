@@ -37,13 +37,13 @@ void fill(bench::rng &r) {
     const auto subs = static_cast<std::size_t>(r.between(1, 4));
     for (std::size_t s = 0; s < subs && i < N; ++s, ++i) {
       e[i].index = index;
-      e[i].subindex = static_cast<std::uint8_t>(s);
+      e[i].sub = static_cast<std::uint8_t>(s);
     }
     index = static_cast<std::uint16_t>(index + r.between(1, 3));
   }
   for (auto &k : dict<N>::keys) {
     const od::entry &x = e[r.below(N)];
-    k = {x.index, x.subindex};
+    k = {x.index, x.sub};
     if (r.below(10) == 0U) k.sub = 0xFE; // a miss
   }
 }
@@ -64,14 +64,14 @@ void add_lookup(bench::registry &r) {
         std::size_t hi = N;
         while (lo < hi) {
           const std::size_t mid = (lo + hi) / 2U;
-          const std::uint32_t have = (std::uint32_t{e[mid].index} << 8U) | e[mid].subindex;
+          const std::uint32_t have = (std::uint32_t{e[mid].index} << 8U) | e[mid].sub;
           if (have < want) {
             lo = mid + 1U;
           } else {
             hi = mid;
           }
         }
-        if (lo < N && e[lo].index == k.index && e[lo].subindex == k.sub) return &e[lo];
+        if (lo < N && e[lo].index == k.index && e[lo].sub == k.sub) return &e[lo];
         return nullptr;
       });
 }

@@ -112,7 +112,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if ((p[0] & 0x80U) == 0U) {
       const std::size_t k = (std::size_t{p[0]} << 8U | p[1]) % dict.size();
       const od::entry &e = dict.entries()[k];
-      entries.push_back({e.index, e.subindex, natural_bits(e)});
+      entries.push_back({e.index, e.sub, natural_bits(e)});
     } else {
       entries.push_back({static_cast<std::uint16_t>(p[1] | (p[2] << 8U)),
                          static_cast<std::uint8_t>(p[0] & 0x7FU), p[3]});

@@ -68,7 +68,7 @@ bool same_number(const fieldcodec::od::number &a, const fieldcodec::od::number &
 /// 0/1; the CSV's rx/tx become 1), limits of scaled CSV entries are written as raw values.
 /// (F6, fixed: DataType=0x0 is refused, so type codes survive unchanged.)
 bool same_entry(const gen::entry &a, const gen::entry &b) {
-  return a.index == b.index && a.subindex == b.subindex && a.type_code == b.type_code &&
+  return a.index == b.index && a.sub == b.sub && a.type_code == b.type_code &&
          a.access == b.access &&
          (a.pdo == fieldcodec::od::pdo_mapping::no) == (b.pdo == fieldcodec::od::pdo_mapping::no) &&
          (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high))) &&
@@ -87,7 +87,7 @@ void round_trip(const gen::dictionary &d, bool from_csv) {
   FUZZ_CHECK(d2->entries.size() >= d.entries.size());
   for (const auto &e : d.entries) {
     const auto it = std::find_if(d2->entries.begin(), d2->entries.end(), [&](const auto &x) {
-      return x.index == e.index && x.subindex == e.subindex;
+      return x.index == e.index && x.sub == e.sub;
     });
     FUZZ_CHECK(it != d2->entries.end());
     FUZZ_CHECK(same_entry(e, *it));

@@ -279,8 +279,8 @@ void check_sdo(const od::entry &e, reader &r) {
     // canonical answer: expedited upload response with size indication and the field's bytes
     auto p = dpq::raw_to_bytes(e, raw.value());
     if (p) {
-      auto canon = fieldcodec::canopen::sdo::expedited_upload_response(5, e.index, e.subindex,
-                                                                       p.value().span());
+      auto canon =
+          fieldcodec::canopen::sdo::expedited_upload_response(5, e.index, e.sub, p.value().span());
       FUZZ_CHECK(canon.has_value());
       FUZZ_CHECK(dpq::read_raw_response(5, e, canon.value()).value() == raw.value());
     } else {

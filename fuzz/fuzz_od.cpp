@@ -72,7 +72,7 @@ void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte
 
   // SDO: expedited upload response with the bytes (little-endian on CANopen) → the value.
   if (order != fc::byte_order::little || w > 4U) return;
-  auto f = sdo::expedited_upload_response(5, e.index, e.subindex, in);
+  auto f = sdo::expedited_upload_response(5, e.index, e.sub, in);
   FUZZ_CHECK(f.has_value());
   auto v = sdo::upload_value(e, f.value());
   FUZZ_CHECK(v.has_value() && v.value() == any.value());
@@ -120,8 +120,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   const od::entry &e = d.entries()[k];
   const std::span<const std::uint8_t> in(data + 3, size - 3);
 
-  const od::entry *found = d.find(e.index, e.subindex);
-  FUZZ_CHECK(found != nullptr && found->index == e.index && found->subindex == e.subindex);
+  const od::entry *found = d.find(e.index, e.sub);
+  FUZZ_CHECK(found != nullptr && found->index == e.index && found->sub == e.sub);
 
   if (od::is_byte_string(e.type)) {
     check_bytes(e, in);

@@ -205,15 +205,15 @@ public:
     if (diag_.has_errors()) return std::nullopt;
     if (has_index) {
       std::sort(dict_.entries.begin(), dict_.entries.end(), [](const entry &a, const entry &b) {
-        return a.index != b.index ? a.index < b.index : a.subindex < b.subindex;
+        return a.index != b.index ? a.index < b.index : a.sub < b.sub;
       });
       for (std::size_t i = 1; i < dict_.entries.size(); ++i) {
         const entry &a = dict_.entries[i - 1U];
         const entry &b = dict_.entries[i];
-        if (a.index == b.index && a.subindex == b.subindex) {
+        if (a.index == b.index && a.sub == b.sub) {
           diag_.error(file_, std::max(a.line, b.line), 1,
                       "duplicate object 0x" + hex(b.index, 4) + " sub-index " +
-                          std::to_string(b.subindex) + " (also at line " +
+                          std::to_string(b.sub) + " (also at line " +
                           std::to_string(std::min(a.line, b.line)) + ")");
         }
       }
@@ -241,7 +241,7 @@ public:
         for (const auto &e : dict_.entries) {
           if (e.index == index) {
             ++n;
-            if (e.subindex != 0U) var = false;
+            if (e.sub != 0U) var = false;
           }
         }
         if (info.code == od::object_code::var && !var) {
@@ -352,7 +352,7 @@ private:
             "expected a sub-index 0..255, got '" + text(r, "subindex") + "'");
         return;
       }
-      e.subindex = static_cast<std::uint8_t>(s.value());
+      e.sub = static_cast<std::uint8_t>(s.value());
     }
     e.name = text(r, "name");
     if (e.name.empty()) {

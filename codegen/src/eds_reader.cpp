@@ -129,7 +129,7 @@ public:
     object_lists();
     if (diag_.has_errors()) return std::nullopt;
     std::sort(dict_.entries.begin(), dict_.entries.end(), [](const entry &a, const entry &b) {
-      return a.index != b.index ? a.index < b.index : a.subindex < b.subindex;
+      return a.index != b.index ? a.index < b.index : a.sub < b.sub;
     });
     return std::move(dict_);
   }
@@ -685,7 +685,7 @@ private:
         }
         entry e;
         e.index = index;
-        e.subindex = sub;
+        e.sub = sub;
         e.object = info.code;
         e.line = ss->line;
         if (!var_keys(*ss, e, true)) continue;
@@ -762,7 +762,7 @@ private:
     dict_.entries.push_back(sub0);
     for (std::uint32_t i = 1; i <= compact; ++i) {
       entry e = proto;
-      e.subindex = static_cast<std::uint8_t>(i);
+      e.sub = static_cast<std::uint8_t>(i);
       e.param = {};
       e.param_nodeid = false;
       e.param_text.clear();

@@ -122,7 +122,7 @@ private:
 
 void emit_entry(std::string &o, const entry &e) {
   o += "    {.index = 0x" + hex(e.index, 4);
-  if (e.subindex != 0U) o += ", .subindex = " + std::to_string(e.subindex);
+  if (e.sub != 0U) o += ", .sub = " + std::to_string(e.sub);
   if (e.object != od::object_code::var)
     o += std::string(", .object = od::object_code::") + object_enum(e.object);
   o += std::string(", .type = od::data_type::") + data_type_enum(e.type);
@@ -329,9 +329,9 @@ std::string emit_header(const dictionary &d) {
         if (!named) continue;
         std::string sub = !e.symbol.empty() ? e.symbol : s + "_" + make_identifier(e.name);
         if (e.symbol.empty() && make_identifier(e.name).empty()) {
-          sub = s + "_sub" + std::to_string(e.subindex);
+          sub = s + "_sub" + std::to_string(e.sub);
         }
-        const std::string ss = sym.take(sub, "sub" + std::to_string(e.subindex));
+        const std::string ss = sym.take(sub, "sub" + std::to_string(e.sub));
         o += "inline constexpr const od::entry &" + ss + " = entries[" + std::to_string(k) + "];\n";
       }
     }

@@ -18,7 +18,7 @@ namespace fieldcodec::gen {
 /// One sub-object as read from an EDS/DCF or a CSV object table.
 struct entry {
   std::uint16_t index = 0;
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
   od::object_code object = od::object_code::var;
   std::uint16_t type_code = 0;                ///< data type as written (may be > 0x1B)
   od::data_type type = od::data_type::domain; ///< type_code if a basic type, DOMAIN otherwise

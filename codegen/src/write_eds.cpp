@@ -79,9 +79,9 @@ std::string eds_limit(const entry &e, const od::number &n) {
 void var_keys(std::string &o, const entry &e, bool dcf) {
   o += "ParameterName=" + eds_text(e.name) + "\n";
   o += "ObjectType=0x" +
-       hex(static_cast<std::uint8_t>(e.subindex == 0 && (e.object == od::object_code::var ||
-                                                         e.object == od::object_code::domain ||
-                                                         e.object == od::object_code::deftype)
+       hex(static_cast<std::uint8_t>(e.sub == 0 && (e.object == od::object_code::var ||
+                                                    e.object == od::object_code::domain ||
+                                                    e.object == od::object_code::deftype)
                                          ? e.object
                                          : od::object_code::var),
            1) +
@@ -130,7 +130,7 @@ void add_mandatory_objects(dictionary &d) {
   };
   auto var = [](std::uint8_t sub, std::string name, od::data_type t, od::number def) {
     entry e;
-    e.subindex = sub;
+    e.sub = sub;
     e.name = std::move(name);
     e.type = t;
     e.type_code = static_cast<std::uint16_t>(t);
@@ -149,7 +149,7 @@ void add_mandatory_objects(dictionary &d) {
     if (e.index == 0x1018U) e.object = od::object_code::var;
   }
   std::stable_sort(d.entries.begin(), d.entries.end(), [](const entry &a, const entry &b) {
-    return a.index != b.index ? a.index < b.index : a.subindex < b.subindex;
+    return a.index != b.index ? a.index < b.index : a.sub < b.sub;
   });
 }
 
@@ -220,7 +220,7 @@ std::string write_eds(const dictionary &d) {
     const bool single =
         (info.code == od::object_code::var || info.code == od::object_code::domain ||
          info.code == od::object_code::deftype) &&
-        n == 1U && d.entries[i].subindex == 0U;
+        n == 1U && d.entries[i].sub == 0U;
     o += "\n[" + hex(index, 4) + "]\n";
     if (single) {
       var_keys(o, d.entries[i], d.is_dcf);
@@ -237,7 +237,7 @@ std::string write_eds(const dictionary &d) {
       if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
       o += "SubNumber=" + std::to_string(n) + "\n";
       for (std::size_t k = i; k < i + n; ++k) {
-        o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].subindex, 1) + "]\n";
+        o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].sub, 1) + "]\n";
         var_keys(o, d.entries[k], d.is_dcf);
       }
     }

@@ -163,7 +163,7 @@ namespace {
 std::vector<mapping_entry> default_mapping(const od::dictionary &d, std::uint16_t index) {
   std::vector<mapping_entry> v;
   for (const auto &e : d.object(index)) {
-    if (e.subindex == 0) continue;
+    if (e.sub == 0) continue;
     auto n = e.default_for(1);
     if (!n) continue;
     auto u = n.value().to_uint64();

@@ -60,18 +60,18 @@ constexpr od::entry test_entries[] = {
     {.index = 0x201A, .type = data_type::unsigned56},
     {.index = 0x201B, .type = data_type::unsigned64},
     {.index = 0x3000,
-     .subindex = 0,
+     .sub = 0,
      .object = od::object_code::record,
      .type = data_type::unsigned8,
      .access_type = od::access::ro,
      .default_value = od::num::u(2)},
     {.index = 0x3000,
-     .subindex = 1,
+     .sub = 1,
      .object = od::object_code::record,
      .type = data_type::unsigned16,
      .access_type = od::access::wo},
     {.index = 0x3000,
-     .subindex = 2,
+     .sub = 2,
      .object = od::object_code::record,
      .type = data_type::integer16,
      .low = od::num::i(-20),
@@ -142,10 +142,10 @@ TEST_CASE("client and server transfer every fixed-size type") {
     }
     if (e.index == 0x3000) v = {0xF6, 0xFF}; // -10 within -20..20
     CAPTURE(e.index);
-    CHECK(b.write(e.index, e.subindex, v) == sdo::transfer_state::done);
+    CHECK(b.write(e.index, e.sub, v) == sdo::transfer_state::done);
     if (!od::readable(e.access_type)) continue;
     std::array<std::uint8_t, 16> buf{};
-    CHECK(b.read(e.index, e.subindex, buf) == sdo::transfer_state::done);
+    CHECK(b.read(e.index, e.sub, buf) == sdo::transfer_state::done);
     REQUIRE(b.client.received().size() == w);
     CHECK(std::equal(v.begin(), v.end(), b.client.received().begin()));
     ++checked;

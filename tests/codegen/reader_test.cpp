@@ -41,7 +41,7 @@ outcome read_text(const std::string &text, const std::string &name, bool eds = t
 
 const gen::entry *find(const gen::dictionary &d, std::uint16_t index, std::uint8_t sub) {
   for (const auto &e : d.entries) {
-    if (e.index == index && e.subindex == sub) return &e;
+    if (e.index == index && e.sub == sub) return &e;
   }
   return nullptr;
 }
@@ -52,9 +52,9 @@ void same_eds_content(const gen::dictionary &a, const gen::dictionary &b, bool l
   for (std::size_t i = 0; i < a.entries.size(); ++i) {
     const gen::entry &x = a.entries[i];
     const gen::entry &y = b.entries[i];
-    INFO("entry 0x" << gen::hex(x.index, 4) << " sub " << int{x.subindex});
+    INFO("entry 0x" << gen::hex(x.index, 4) << " sub " << int{x.sub});
     CHECK(x.index == y.index);
-    CHECK(x.subindex == y.subindex);
+    CHECK(x.sub == y.sub);
     CHECK(x.object == y.object);
     CHECK(x.type == y.type);
     CHECK(x.access == y.access);

@@ -26,7 +26,7 @@ using fc::errc;
 namespace {
 // CiA 301 0x1800 sub 5, event timer of TPDO1, UNSIGNED16 in ms (unscaled).
 constexpr od::entry event_timer{.index = 0x1800,
-                                .subindex = 5,
+                                .sub = 5,
                                 .object = od::object_code::record,
                                 .type = od::data_type::unsigned16,
                                 .name = "Event timer"};

@@ -24,7 +24,7 @@ TEST_CASE("dpq sdo abort: the manual's 16 rows, byte by byte") {
   };
   // Columns as printed: additional code (two bytes), error code, error class.
   constexpr std::array<printed, 16> table{{
-      {0x11, 0x0, 0x9, 0x6, 0x06090011}, // no subindex
+      {0x11, 0x0, 0x9, 0x6, 0x06090011}, // no sub
       {0x0, 0x0, 0x1, 0x6, 0x06010000},  // only reading or writing possible
       {0x31, 0x0, 0x9, 0x6, 0x06090031}, // value too great
       {0x32, 0x0, 0x9, 0x6, 0x06090032}, // value too small

@@ -32,13 +32,13 @@ constexpr std::array<od::entry, 7> test_entries{{
      .name = "Number of entries",
      .default_value = od::num::u(2)},
     {.index = 0x1018,
-     .subindex = 1,
+     .sub = 1,
      .object = od::object_code::record,
      .type = od::data_type::unsigned32,
      .access_type = od::access::ro,
      .name = "Vendor-ID"},
     {.index = 0x1018,
-     .subindex = 3,
+     .sub = 3,
      .object = od::object_code::record,
      .type = od::data_type::unsigned32,
      .access_type = od::access::ro,
@@ -157,7 +157,7 @@ TEST_CASE("od: data type properties") {
 
 TEST_CASE("od: lookup") {
   for (const od::entry &e : dict) {
-    auto r = dict.lookup(e.index, e.subindex);
+    auto r = dict.lookup(e.index, e.sub);
     REQUIRE(r);
     CHECK(r.value() == &e);
   }

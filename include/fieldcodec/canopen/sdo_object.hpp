@@ -31,14 +31,14 @@ template <od::value_type T>
   std::array<std::uint8_t, 8> b{};
   auto n = od::encode(e, value, b);
   if (!n) return n.error();
-  return expedited_download(node, e.index, e.subindex,
+  return expedited_download(node, e.index, e.sub,
                             std::span<const std::uint8_t>(b).first(n.value()));
 }
 
 /// Initiate upload of entry `e`. Errors: access_denied (write-only), invalid_argument (node).
 [[nodiscard]] constexpr result<can_frame> upload(std::uint8_t node, const od::entry &e) noexcept {
   if (!od::readable(e.access_type)) return errc::access_denied;
-  return initiate_upload(node, e.index, e.subindex);
+  return initiate_upload(node, e.index, e.sub);
 }
 
 /// The value in an expedited upload response for entry `e`.
@@ -52,7 +52,7 @@ template <od::value_type T>
   const message &r = m.value();
   if (r.k == kind::abort) return errc::aborted;
   if (r.k != kind::initiate_upload_response || !r.expedited) return errc::unexpected_frame;
-  if (r.index != e.index || r.sub != e.subindex) return errc::unexpected_frame;
+  if (r.index != e.index || r.sub != e.sub) return errc::unexpected_frame;
   const std::size_t w = od::fixed_size(e.type);
   if (w == 0U || w > 4U) return errc::type_mismatch;
   if (r.size_indicated && r.data_size != w) return errc::bad_length;

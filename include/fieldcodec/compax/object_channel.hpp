@@ -38,25 +38,24 @@ enum class object_access : std::uint8_t { write = 0, read = 1 };
 struct object_request {
   object_access access = object_access::read;
   std::uint8_t pointer = 0;
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
   object_data data{};
 
   friend constexpr bool operator==(const object_request &, const object_request &) = default;
 };
 
-/// A read request for `pointer`/`subindex`.
+/// A read request for `pointer`/`sub`.
 [[nodiscard]] constexpr object_request object_read(std::uint8_t pointer,
-                                                   std::uint8_t subindex = 0) noexcept {
-  return object_request{object_access::read, pointer, subindex, {}};
+                                                   std::uint8_t sub = 0) noexcept {
+  return object_request{object_access::read, pointer, sub, {}};
 }
 
 /// A write request; `data` (1..4 bytes, the object's bytes as on PCP) is left aligned.
 /// Errors: bad_length (empty or more than 4 bytes).
 [[nodiscard]] constexpr result<object_request>
-object_write(std::uint8_t pointer, std::uint8_t subindex,
-             std::span<const std::uint8_t> data) noexcept {
+object_write(std::uint8_t pointer, std::uint8_t sub, std::span<const std::uint8_t> data) noexcept {
   if (data.empty() || data.size() > object_data_max) return errc::bad_length;
-  object_request r{object_access::write, pointer, subindex, {}};
+  object_request r{object_access::write, pointer, sub, {}};
   for (std::size_t i = 0; i < data.size(); ++i) r.data[i] = data[i];
   return r;
 }
@@ -67,7 +66,7 @@ encode_object_request(const object_request &r) noexcept {
   if (r.pointer > object_pointer_max) return errc::out_of_range;
   object_frame f{};
   f[0] = static_cast<std::uint8_t>((r.access == object_access::read ? 0x80U : 0x00U) | r.pointer);
-  f[1] = r.subindex;
+  f[1] = r.sub;
   for (std::size_t i = 0; i < object_data_max; ++i) f[2U + i] = r.data[i];
   return f;
 }
@@ -110,7 +109,7 @@ struct object_response {
   bool is_error = false;
   object_access access = object_access::read; ///< meaningless for an error
   std::uint8_t pointer = 0;                   ///< meaningless for an error
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
   object_data data{};            ///< read data or the echoed write data
   std::uint8_t error_number = 0; ///< only for an error (see object_error)
 
@@ -124,7 +123,7 @@ decode_object_response(std::span<const std::uint8_t> in) noexcept {
   if (in.size() < object_req_size) return errc::truncated;
   if (in.size() > object_req_size) return errc::bad_length;
   object_response r{};
-  r.subindex = in[1];
+  r.sub = in[1];
   if (in[0] == object_rsp_error_marker) {
     if (in[3] != 0U || in[4] != 0U || in[5] != 0U) return errc::unexpected_frame;
     r.is_error = true;
@@ -140,7 +139,7 @@ decode_object_response(std::span<const std::uint8_t> in) noexcept {
 /// OBJECT_RSP bytes the drive sends for `r` (for simulators and tests).
 [[nodiscard]] constexpr object_frame encode_object_response(const object_response &r) noexcept {
   object_frame f{};
-  f[1] = r.subindex;
+  f[1] = r.sub;
   if (r.is_error) {
     f[0] = object_rsp_error_marker;
     f[2] = r.error_number;
@@ -156,8 +155,8 @@ decode_object_response(std::span<const std::uint8_t> in) noexcept {
 /// access, pointer and sub-index; a write must echo all six bytes.
 [[nodiscard]] constexpr bool answers(const object_request &req,
                                      const object_response &rsp) noexcept {
-  if (rsp.is_error) return rsp.subindex == req.subindex;
-  if (rsp.access != req.access || rsp.pointer != req.pointer || rsp.subindex != req.subindex) {
+  if (rsp.is_error) return rsp.sub == req.sub;
+  if (rsp.access != req.access || rsp.pointer != req.pointer || rsp.sub != req.sub) {
     return false;
   }
   return req.access == object_access::read || rsp.data == req.data;

@@ -37,7 +37,7 @@ struct pcp_request {
   pcp_service service = pcp_service::read_request;
   std::uint16_t param_counter = 3;
   std::uint16_t index = 0;
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
   std::uint8_t length = 0; ///< data bytes (0 for a read)
   std::uint8_t invoke_id = 0;
   std::uint8_t comm_ref = 0;
@@ -70,23 +70,23 @@ struct pcp_request {
 }
 
 /// A read request for index/sub-index.
-[[nodiscard]] constexpr pcp_request pcp_read(std::uint16_t index, std::uint8_t subindex) noexcept {
+[[nodiscard]] constexpr pcp_request pcp_read(std::uint16_t index, std::uint8_t sub) noexcept {
   pcp_request r{};
   r.service = pcp_service::read_request;
   r.param_counter = pcp_param_counter(r.service, 0);
   r.index = index;
-  r.subindex = subindex;
+  r.sub = sub;
   return r;
 }
 
 /// A write request with the object's data bytes. Errors: bad_length (empty or above 32 bytes).
-[[nodiscard]] constexpr result<pcp_request> pcp_write(std::uint16_t index, std::uint8_t subindex,
+[[nodiscard]] constexpr result<pcp_request> pcp_write(std::uint16_t index, std::uint8_t sub,
                                                       std::span<const std::uint8_t> data) noexcept {
   if (data.empty() || data.size() > pcp_data_max) return errc::bad_length;
   pcp_request r{};
   r.service = pcp_service::write_request;
   r.index = index;
-  r.subindex = subindex;
+  r.sub = sub;
   r.length = static_cast<std::uint8_t>(data.size());
   r.param_counter = pcp_param_counter(r.service, data.size());
   for (std::size_t i = 0; i < data.size(); ++i) r.data[i] = data[i];
@@ -109,7 +109,7 @@ encode_pcp_request(const pcp_request &r, std::span<std::uint8_t> out) noexcept {
   FIELDCODEC_TRY_STATUS(w.write_u8(r.invoke_id));
   FIELDCODEC_TRY_STATUS(w.write_u8(r.comm_ref));
   FIELDCODEC_TRY_STATUS(w.write(r.index, byte_order::big));
-  FIELDCODEC_TRY_STATUS(w.write_u8(r.subindex));
+  FIELDCODEC_TRY_STATUS(w.write_u8(r.sub));
   FIELDCODEC_TRY_STATUS(w.write_u8(r.length));
   FIELDCODEC_TRY_STATUS(w.write_bytes(r.payload()));
   if ((r.length & 1U) != 0U) FIELDCODEC_TRY_STATUS(w.write_u8(0));
@@ -135,7 +135,7 @@ decode_pcp_request(std::span<const std::uint8_t> in) noexcept {
   r.invoke_id = invoke.value();
   r.comm_ref = cr.value();
   r.index = index.value();
-  r.subindex = sub.value();
+  r.sub = sub.value();
   r.length = len.value();
   if (auto c = check_pcp_request(r); !c) return c.error();
   auto data = rd.read_bytes(r.length);

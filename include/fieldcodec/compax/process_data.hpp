@@ -17,15 +17,15 @@ namespace fieldcodec::compax {
 /// that removes an assignment.
 struct pd_assignment {
   std::uint16_t index = 0;
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
 
-  [[nodiscard]] constexpr bool is_null() const noexcept { return index == 0U && subindex == 0U; }
+  [[nodiscard]] constexpr bool is_null() const noexcept { return index == 0U && sub == 0U; }
   friend constexpr bool operator==(const pd_assignment &, const pd_assignment &) = default;
 };
 
 /// Value of P135..P142: index · 256 + sub-index (e.g. LAGE_ZIEL 0x607A → 6322688).
 [[nodiscard]] constexpr std::uint32_t assignment_parameter(pd_assignment a) noexcept {
-  return (std::uint32_t{a.index} << 8U) | a.subindex;
+  return (std::uint32_t{a.index} << 8U) | a.sub;
 }
 /// P135..P142 value → assignment. Errors: out_of_range (above 16 777 215).
 [[nodiscard]] constexpr result<pd_assignment> assignment_from_parameter(std::uint32_t v) noexcept {
@@ -40,7 +40,7 @@ inline constexpr std::size_t assignment_size = 3;
 [[nodiscard]] constexpr std::array<std::uint8_t, assignment_size>
 encode_assignment(pd_assignment a) noexcept {
   return {static_cast<std::uint8_t>(a.index >> 8U), static_cast<std::uint8_t>(a.index & 0xFFU),
-          a.subindex};
+          a.sub};
 }
 /// Errors: truncated, bad_length.
 [[nodiscard]] constexpr result<pd_assignment>

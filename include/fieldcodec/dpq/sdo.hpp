@@ -31,7 +31,7 @@ write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexc
   if (!od::writable(e.access_type)) return errc::access_denied;
   auto p = raw_to_bytes(e, raw);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
 }
 
 /// Expedited download of an engineering value. Errors: access_denied, out_of_range, overflow,
@@ -40,13 +40,13 @@ write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexc
 write_request(std::uint8_t node, const od::entry &e, decimal eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
 }
 [[nodiscard]] constexpr result<canopen::can_frame>
 write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.subindex, p.value().span());
+  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
 }
 
 /// Upload request (command 0x40; the manual's example prints 0x42, see errata DPQ-F1).
@@ -54,7 +54,7 @@ write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
 [[nodiscard]] constexpr result<canopen::can_frame> read_request(std::uint8_t node,
                                                                 const od::entry &e) noexcept {
   if (!od::readable(e.access_type)) return errc::access_denied;
-  return canopen::sdo::initiate_upload(node, e.index, e.subindex);
+  return canopen::sdo::initiate_upload(node, e.index, e.sub);
 }
 
 namespace detail {
@@ -69,7 +69,7 @@ response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f)
   if (f.id != id.value() || f.rtr) return errc::unexpected_frame;
   auto m = canopen::sdo::decode_response(f);
   if (!m) return m.error();
-  if (m.value().index != e.index || m.value().sub != e.subindex) return errc::unexpected_frame;
+  if (m.value().index != e.index || m.value().sub != e.sub) return errc::unexpected_frame;
   if (m.value().k == canopen::sdo::kind::abort) return errc::aborted;
   return m;
 }

@@ -28,7 +28,7 @@ public:
   /// static_assert it; lookups assume it.
   [[nodiscard]] constexpr bool is_valid() const noexcept {
     for (std::size_t i = 1; i < entries_.size(); ++i) {
-      if (!less(entries_[i - 1U], entries_[i].index, entries_[i].subindex)) return false;
+      if (!less(entries_[i - 1U], entries_[i].index, entries_[i].sub)) return false;
     }
     return true;
   }
@@ -39,26 +39,25 @@ public:
   [[nodiscard]] constexpr const_iterator end() const noexcept { return entries_.end(); }
   [[nodiscard]] constexpr std::span<const entry> entries() const noexcept { return entries_; }
 
-  /// The entry (index, subindex), or nullptr.
-  [[nodiscard]] constexpr const entry *find(std::uint16_t index,
-                                            std::uint8_t subindex) const noexcept {
-    const std::size_t i = lower_bound(index, subindex);
-    if (i < entries_.size() && entries_[i].index == index && entries_[i].subindex == subindex) {
+  /// The entry (index, sub), or nullptr.
+  [[nodiscard]] constexpr const entry *find(std::uint16_t index, std::uint8_t sub) const noexcept {
+    const std::size_t i = lower_bound(index, sub);
+    if (i < entries_.size() && entries_[i].index == index && entries_[i].sub == sub) {
       return &entries_[i];
     }
     return nullptr;
   }
 
-  /// The entry (index, subindex). Errors: unknown_object.
+  /// The entry (index, sub). Errors: unknown_object.
   [[nodiscard]] constexpr result<const entry *> lookup(std::uint16_t index,
-                                                       std::uint8_t subindex) const noexcept {
-    const entry *e = find(index, subindex);
+                                                       std::uint8_t sub) const noexcept {
+    const entry *e = find(index, sub);
     if (e == nullptr) return errc::unknown_object;
     return e;
   }
 
-  [[nodiscard]] constexpr bool contains(std::uint16_t index, std::uint8_t subindex) const noexcept {
-    return find(index, subindex) != nullptr;
+  [[nodiscard]] constexpr bool contains(std::uint16_t index, std::uint8_t sub) const noexcept {
+    return find(index, sub) != nullptr;
   }
 
   /// All sub-entries of object `index` in sub-index order (empty when the object is unknown).
@@ -88,16 +87,16 @@ public:
 
 private:
   [[nodiscard]] static constexpr bool less(const entry &e, std::uint16_t index,
-                                           std::uint8_t subindex) noexcept {
-    return e.index < index || (e.index == index && e.subindex < subindex);
+                                           std::uint8_t sub) noexcept {
+    return e.index < index || (e.index == index && e.sub < sub);
   }
   [[nodiscard]] constexpr std::size_t lower_bound(std::uint16_t index,
-                                                  std::uint8_t subindex) const noexcept {
+                                                  std::uint8_t sub) const noexcept {
     std::size_t lo = 0;
     std::size_t hi = entries_.size();
     while (lo < hi) {
       const std::size_t mid = lo + (hi - lo) / 2U;
-      if (less(entries_[mid], index, subindex)) {
+      if (less(entries_[mid], index, sub)) {
         lo = mid + 1U;
       } else {
         hi = mid;

@@ -34,7 +34,7 @@ inline constexpr std::uint8_t no_pointer = 0xFF;
 
 struct entry {
   std::uint16_t index = 0;
-  std::uint8_t subindex = 0;
+  std::uint8_t sub = 0;
   object_code object = object_code::var; ///< code of the object this sub-object belongs to
   data_type type = data_type::unsigned8;
   access access_type = access::rw;

@@ -23,24 +23,24 @@ struct object {
   [[nodiscard]] constexpr auto begin() const noexcept { return entries.begin(); }
   [[nodiscard]] constexpr auto end() const noexcept { return entries.end(); }
 
-  /// The sub-entry `subindex`, or nullptr.
-  [[nodiscard]] constexpr const entry *find(std::uint8_t subindex) const noexcept {
+  /// The sub-entry `sub`, or nullptr.
+  [[nodiscard]] constexpr const entry *find(std::uint8_t sub) const noexcept {
     std::size_t lo = 0;
     std::size_t hi = entries.size();
     while (lo < hi) {
       const std::size_t mid = lo + (hi - lo) / 2U;
-      if (entries[mid].subindex < subindex) {
+      if (entries[mid].sub < sub) {
         lo = mid + 1U;
       } else {
         hi = mid;
       }
     }
-    if (lo < entries.size() && entries[lo].subindex == subindex) return &entries[lo];
+    if (lo < entries.size() && entries[lo].sub == sub) return &entries[lo];
     return nullptr;
   }
   /// Errors: unknown_object.
-  [[nodiscard]] constexpr result<const entry *> lookup(std::uint8_t subindex) const noexcept {
-    const entry *e = find(subindex);
+  [[nodiscard]] constexpr result<const entry *> lookup(std::uint8_t sub) const noexcept {
+    const entry *e = find(sub);
     if (e == nullptr) return errc::unknown_object;
     return e;
   }
