@@ -111,7 +111,8 @@ TEST_CASE("fuzz F12: a DEFTYPE object with a SubNumber is written readably") {
 // reader trims: CSV -> EDS -> EDS was not a fixed point. The writer trims text values.
 TEST_CASE("fuzz F13: text values with surrounding spaces are written trimmed") {
   gen::diagnostics diag;
-  auto d = read("index,subindex,name,data_type,access\n0x2000,0,Pres 4Ds ,UNSIGNED16,rw\n", true, diag);
+  auto d =
+      read("index,subindex,name,data_type,access\n0x2000,0,Pres 4Ds ,UNSIGNED16,rw\n", true, diag);
   REQUIRE(d.has_value());
   const std::string w1 = gen::write_eds(*d);
   CHECK(w1.find("ParameterName=Pres 4Ds\n") != std::string::npos);
