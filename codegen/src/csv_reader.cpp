@@ -322,7 +322,7 @@ private:
         bad(*f, column, "expected a decimal number such as 327.67, got '" + f->text + "'");
         return false;
       }
-      out = od::num::d(normalize(d.value()));
+      out = od::decimal_number(normalize(d.value()));
       return true;
     }
     bool present = false;
@@ -470,7 +470,7 @@ private:
           std::string_view t = trim(rest);
           e.def_nodeid = true;
           if (t.empty()) {
-            e.def = od::num::u(0);
+            e.def = od::unsigned_number(0);
           } else if (t.front() == '+') {
             const int_parse p = parse_int(t.substr(1));
             if (!p.ok) {
@@ -488,7 +488,7 @@ private:
             bad(*f, "default", "expected a real number, got '" + f->text + "'");
             return;
           }
-          e.def = od::num::f(*d);
+          e.def = od::real_number(*d);
         } else if (!csv_number(r, "default", e.def)) {
           return;
         }

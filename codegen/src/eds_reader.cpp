@@ -353,7 +353,7 @@ private:
       out = p.value;
       if (od::is_unsigned_integer(type) && out.kind == od::number_kind::signed_ &&
           static_cast<std::int64_t>(out.bits) >= 0) {
-        out = od::num::u(out.bits);
+        out = od::unsigned_number(out.bits);
       }
       return true;
     }
@@ -377,12 +377,12 @@ private:
     }
     if (od::is_real(type)) {
       if (auto d = parse_real(v)) {
-        out = od::num::f(*d);
+        out = od::real_number(*d);
         return true;
       }
       const int_parse p = parse_int(v);
       if (p.ok) {
-        out = od::num::f(p.value.to_double());
+        out = od::real_number(p.value.to_double());
         return true;
       }
       bad_value(s, k, "expected a real number, got '" + v + "'", 0);
@@ -394,7 +394,7 @@ private:
       if (auto d = parse_decimal(trim(v)); d && v.find('.') != std::string::npos) {
         diag_.warning(file_, k.line, k.value_col,
                       "expected an integer, got '" + v + "' in " + k.name + " of [" + s.name + "]");
-        out = od::num::d(d.value());
+        out = od::decimal_number(d.value());
         return true;
       }
       bad_value(s, k, p.error, p.error_pos);
@@ -411,15 +411,15 @@ private:
           p.value.bits > static_cast<std::uint64_t>(signed_max(w))) {
         std::uint64_t b = p.value.bits;
         if (w < 8U) b |= ~detail::width_mask(w);
-        p.value = od::num::i(static_cast<std::int64_t>(b));
+        p.value = od::signed_number(static_cast<std::int64_t>(b));
       } else if (p.value.bits <= static_cast<std::uint64_t>(signed_max(w))) {
-        p.value = od::num::i(static_cast<std::int64_t>(p.value.bits));
+        p.value = od::signed_number(static_cast<std::int64_t>(p.value.bits));
       }
     }
     if (od::is_integer(type) || type == od::data_type::boolean) {
       if (p.value.kind == od::number_kind::signed_ &&
           static_cast<std::int64_t>(p.value.bits) >= 0 && od::is_unsigned_integer(type)) {
-        p.value = od::num::u(p.value.bits);
+        p.value = od::unsigned_number(p.value.bits);
       }
       if (!fits(type, p.value)) {
         diag_.warning(file_, k.line, k.value_col,
@@ -727,7 +727,7 @@ private:
     sub0.type_code = 0x0005;
     sub0.type = od::data_type::unsigned8;
     sub0.access = od::access::ro;
-    sub0.def = od::num::u(compact);
+    sub0.def = od::unsigned_number(compact);
     std::map<std::uint32_t, std::string> names;
     std::map<std::uint32_t, const ini_key *> values;
     if (auto it = names_.find(index); it != names_.end()) {

@@ -3,11 +3,14 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace fieldcodec::gen {
 
@@ -19,20 +22,20 @@ std::string number_literal(const od::number &n) {
   case od::number_kind::signed_: {
     const auto v = static_cast<std::int64_t>(n.bits);
     if (v == std::numeric_limits<std::int64_t>::min())
-      return "od::num::i(-9223372036854775807 - 1)";
-    return "od::num::i(" + std::to_string(v) + ")";
+      return "od::signed_number(-9223372036854775807 - 1)";
+    return "od::signed_number(" + std::to_string(v) + ")";
   }
-  case od::number_kind::unsigned_: return "od::num::u(" + std::to_string(n.bits) + "U)";
+  case od::number_kind::unsigned_: return "od::unsigned_number(" + std::to_string(n.bits) + "U)";
   case od::number_kind::real: {
     std::array<char, 64> buf{};
     const double d = n.to_double();
     auto [p, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), d);
     std::string s(buf.data(), p);
     if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return "od::num::f(" + s + ")";
+    return "od::real_number(" + s + ")";
   }
   case od::number_kind::decimal_:
-    return "od::num::d(" + std::to_string(static_cast<std::int64_t>(n.bits)) + ", " +
+    return "od::decimal_number(" + std::to_string(static_cast<std::int64_t>(n.bits)) + ", " +
            std::to_string(n.places) + ")";
   }
   return "{}";
@@ -100,8 +103,8 @@ const char *access_enum(od::access a) {
 class symbols {
 public:
   symbols() {
-    for (const char *r : {"entries", "dictionary", "commands", "table", "od", "std", "fieldcodec",
-                          "node_id", "source_file", "detail"}) {
+    for (const char *r : {"entries", "infos", "scales", "dictionary", "commands", "table", "od",
+                          "std", "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
       used_.insert(r);
     }
   }
@@ -120,8 +123,35 @@ private:
   std::set<std::string> used_;
 };
 
-void emit_entry(std::string &o, const entry &e) {
-  o += "    {.index = 0x" + hex(e.index, 4);
+/// The od::flag bits of an entry, as a C++ expression ("" when none).
+std::string flags_expression(const entry &e) {
+  struct bit {
+    bool set;
+    const char *name;
+  };
+  const bit bits[] = {
+      {(e.flags & od::flag::range_exceeds_field) != 0U, "range_exceeds_field"},
+      {(e.flags & od::flag::index_anomaly) != 0U, "index_anomaly"},
+      {(e.flags & od::flag::signedness_guess) != 0U, "signedness_guess"},
+      {e.scaled, "scaled"},
+      {e.def_nodeid, "default_nodeid"},
+      {e.low_nodeid, "low_nodeid"},
+      {e.high_nodeid, "high_nodeid"},
+      {e.param_nodeid, "parameter_nodeid"},
+  };
+  std::string o;
+  for (const bit &b : bits) {
+    if (!b.set) continue;
+    if (!o.empty()) o += " | ";
+    o += "od::flag::";
+    o += b.name;
+  }
+  return o;
+}
+
+/// `{...}` initialising the od::entry part.
+void emit_core(std::string &o, const entry &e) {
+  o += "{.index = 0x" + hex(e.index, 4);
   if (e.sub != 0U) o += ", .sub = " + std::to_string(e.sub);
   if (e.object != od::object_code::var)
     o += std::string(", .object = od::object_code::") + object_enum(e.object);
@@ -130,71 +160,73 @@ void emit_entry(std::string &o, const entry &e) {
     o += std::string(", .access_type = od::access::") + access_enum(e.access);
   if (e.pdo != od::pdo_mapping::no)
     o += ", .pdo = od::pdo_mapping::" + std::string(od::name(e.pdo));
-  if (e.flags != 0U) o += ", .flags = 0x" + hex(e.flags, 2);
+  if (const std::string f = flags_expression(e); !f.empty()) o += ", .flags = " + f;
   if (e.size != 0U) o += ", .size = " + std::to_string(e.size);
-  o += ", .name = ";
-  append_cpp_string(o, e.name);
-  if (e.low) {
-    o += ", .low = ";
-    o += number_literal(e.low);
-  }
-  if (e.high) {
-    o += ", .high = ";
-    o += number_literal(e.high);
-  }
-  if (e.def) {
-    o += ", .default_value = ";
-    o += number_literal(e.def);
-  }
-  if (e.def_nodeid) o += ", .default_nodeid = true";
+  if (e.low) o += ", .low = " + number_literal(e.low);
+  if (e.high) o += ", .high = " + number_literal(e.high);
+  if (e.def) o += ", .default_value = " + number_literal(e.def);
   if (!e.def_text.empty()) {
     o += ", .default_text = ";
     append_cpp_string(o, e.def_text);
   }
-  if (e.scaled || e.offset.mantissa != 0) {
-    o += ", .scale = {{" + std::to_string(e.scale.mantissa) + ", " +
-         std::to_string(e.scale.places) + "}, {" + std::to_string(e.offset.mantissa) + ", " +
-         std::to_string(e.offset.places) + "}}";
+  o += "}";
+}
+
+/// `{...}` initialising the od::entry_info part ("{}" when the entry has no descriptive column).
+void emit_info(std::string &o, const entry &e) {
+  o += "{";
+  bool first = true;
+  auto field = [&](const char *name) {
+    o += first ? "." : ", .";
+    o += name;
+    o += " = ";
+    first = false;
+  };
+  auto text = [&](const char *name, const std::string &v) {
+    if (v.empty()) return;
+    field(name);
+    append_cpp_string(o, v);
+  };
+  text("name", e.name);
+  text("unit", e.unit);
+  text("alt_name", e.alt_name);
+  text("section", e.section);
+  text("remark", e.remark);
+  text("acceptance", e.acceptance);
+  text("denotation", e.denotation);
+  if (e.pointer != od::no_pointer) {
+    field("pointer");
+    o += std::to_string(e.pointer);
   }
-  if (e.scaled) o += ", .scaled = true";
-  if (!e.unit.empty()) {
-    o += ", .unit = ";
-    append_cpp_string(o, e.unit);
+  if (e.bus != od::bus_manager::unspecified) {
+    field("bus");
+    o += e.bus == od::bus_manager::available ? "od::bus_manager::available"
+                                             : "od::bus_manager::not_available";
   }
-  if (!e.alt_name.empty()) {
-    o += ", .alt_name = ";
-    append_cpp_string(o, e.alt_name);
+  if (e.has_obj_flags && e.obj_flags != 0U) {
+    field("obj_flags");
+    o += "0x" + hex(e.obj_flags, 1);
   }
-  if (e.pointer != od::no_pointer) o += ", .pointer = " + std::to_string(e.pointer);
-  if (e.bus == od::bus_manager::available) o += ", .bus = od::bus_manager::available";
-  if (e.bus == od::bus_manager::not_available) o += ", .bus = od::bus_manager::not_available";
-  if (!e.acceptance.empty()) {
-    o += ", .acceptance = ";
-    append_cpp_string(o, e.acceptance);
-  }
-  if (!e.section.empty()) {
-    o += ", .section = ";
-    append_cpp_string(o, e.section);
-  }
-  if (!e.remark.empty()) {
-    o += ", .remark = ";
-    append_cpp_string(o, e.remark);
-  }
-  if (e.has_obj_flags && e.obj_flags != 0U) o += ", .obj_flags = 0x" + hex(e.obj_flags, 1);
   if (e.param) {
-    o += ", .parameter_value = ";
+    field("parameter_value");
     o += number_literal(e.param);
   }
-  if (e.param_nodeid) o += ", .parameter_nodeid = true";
-  if (!e.param_text.empty()) {
-    o += ", .parameter_text = ";
-    append_cpp_string(o, e.param_text);
+  text("parameter_text", e.param_text);
+  o += "}";
+}
+
+bool has_scale(const entry &e) {
+  return e.scaled || e.offset.mantissa != 0 || e.scale.mantissa != 1 || e.scale.places != 0;
+}
+
+/// `{{scale}, {offset}}`, or "{}" for the identity.
+void emit_scale(std::string &o, const entry &e) {
+  if (!has_scale(e)) {
+    o += "{}";
+    return;
   }
-  if (!e.denotation.empty()) {
-    o += ", .denotation = ";
-    append_cpp_string(o, e.denotation);
-  }
-  o += "},\n";
+  o += "{{" + std::to_string(e.scale.mantissa) + ", " + std::to_string(e.scale.places) + "}, {" +
+       std::to_string(e.offset.mantissa) + ", " + std::to_string(e.offset.places) + "}}";
 }
 
 std::string command_value_enum(od::command_value v) {
@@ -284,7 +316,8 @@ std::string emit_header(const dictionary &d) {
     o += "#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
          "<array>\n\n";
   } else {
-    o += "#include <fieldcodec/od/data_type.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
+    o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
+         "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
          "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n\n";
   }
@@ -299,12 +332,17 @@ std::string emit_header(const dictionary &d) {
     o += "/// [DeviceComissioning] NodeID\ninline constexpr std::uint8_t node_id = " +
          std::to_string(d.node_id) + ";\n\n";
   }
-  o += "inline constexpr std::array<od::entry, " + std::to_string(d.entries.size()) +
-       "> entries{{\n";
-  for (const auto &e : d.entries) emit_entry(o, e);
-  o += "}};\n\ninline constexpr od::dictionary dictionary{entries};\n"
-       "static_assert(dictionary.is_valid());\n\n";
-  // descriptors, one per object, in index order
+  // Names, assigned in index order (object, then its named sub-objects): a VAR object's single
+  // entry and every named sub-object become standalone od::descriptor constants, ARRAY/RECORD
+  // objects od::object views into the tables.
+  struct view {
+    std::string symbol;
+    const object_info *info;
+    std::size_t first, count;
+  };
+  std::vector<std::string> named(d.entries.size());
+  std::vector<bool> is_var(d.entries.size(), false);
+  std::vector<view> views;
   symbols sym;
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
@@ -316,26 +354,67 @@ std::string emit_header(const dictionary &d) {
     const bool single = info.code == od::object_code::var || info.code == od::object_code::domain ||
                         info.code == od::object_code::deftype || info.code == od::object_code::null;
     if (single && n == 1U) {
-      o += "inline constexpr const od::entry &" + s + " = entries[" + std::to_string(i) +
-           "]; // 0x" + hex(index, 4) + "\n";
+      named[i] = s;
+      is_var[i] = true;
     } else {
-      o += "inline constexpr od::object " + s + "{0x" + hex(index, 4) +
-           ", od::object_code::" + object_enum(info.code) + ", " + cpp_string(info.name) +
-           ", {entries.data() + " + std::to_string(i) + ", " + std::to_string(n) + "}};\n";
+      views.push_back({s, &info, i, n});
       // named sub-entries: every sub-object of a RECORD/DEFSTRUCT, explicit symbols of arrays
       for (std::size_t k = i; k < i + n; ++k) {
         const entry &e = d.entries[k];
-        const bool named = info.code != od::object_code::array || !e.symbol.empty();
-        if (!named) continue;
+        const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
+        if (!is_named) continue;
         std::string sub = !e.symbol.empty() ? e.symbol : s + "_" + make_identifier(e.name);
         if (e.symbol.empty() && make_identifier(e.name).empty()) {
           sub = s + "_sub" + std::to_string(e.sub);
         }
-        const std::string ss = sym.take(sub, "sub" + std::to_string(e.sub));
-        o += "inline constexpr const od::entry &" + ss + " = entries[" + std::to_string(k) + "];\n";
+        named[k] = sym.take(sub, "sub" + std::to_string(e.sub));
       }
     }
     i += n;
+  }
+  bool scales = false;
+  for (const auto &e : d.entries) scales = scales || has_scale(e);
+
+  const std::string size = std::to_string(d.entries.size());
+  auto table = [&](const char *type, const char *name,
+                   void (*literal)(std::string &, const entry &)) {
+    o += std::string("inline constexpr std::array<") + type + ", " + size + "> " + name + "{{\n";
+    for (const entry &e : d.entries) {
+      o += "    ";
+      literal(o, e);
+      o += ",\n";
+    }
+    o += "}};\n\n";
+  };
+  table("od::entry", "entries", emit_core);
+  table("od::entry_info", "infos", emit_info);
+  if (scales) table("scaling::linear", "scales", emit_scale);
+  o += std::string("inline constexpr od::dictionary dictionary{entries, infos") +
+       (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
+  o += "\n// VAR objects: standalone descriptors (copies, not references into the tables: firmware "
+       "that\n// names one keeps only that one).\n";
+  for (std::size_t k = 0; k < d.entries.size(); ++k) {
+    if (!is_var[k]) continue;
+    const std::string at = std::to_string(k);
+    o += "inline constexpr od::descriptor " + named[k] + "{entries[" + at + "], infos[" + at + "]";
+    if (scales) o += ", scales[" + at + "]";
+    o += "}; // 0x" + hex(d.entries[k].index, 4) + "\n";
+  }
+  if (!views.empty()) o += "\n// ARRAY and RECORD objects: views into the tables.\n";
+  for (const view &v : views) {
+    const std::string at = std::to_string(v.first);
+    const std::string n = std::to_string(v.count);
+    o += "inline constexpr od::object " + v.symbol + "{0x" + hex(v.info->index, 4) +
+         ", od::object_code::" + object_enum(v.info->code) + ", " + cpp_string(v.info->name) +
+         ", {entries.data() + " + at + ", " + n + "}, {infos.data() + " + at + ", " + n + "}";
+    if (scales) o += ", {scales.data() + " + at + ", " + n + "}";
+    o += "};\n";
+    // named sub-objects of the view: references into the table (`view[sub]` is the descriptor)
+    for (std::size_t k = v.first; k < v.first + v.count; ++k) {
+      if (named[k].empty()) continue;
+      o += "inline constexpr const od::entry &" + named[k] + " = entries[" + std::to_string(k) +
+           "];\n";
+    }
   }
   o += "\n} // namespace fieldcodec::dictionaries::" + d.stem + "\n// clang-format on\n";
   return o;

@@ -30,6 +30,8 @@ struct entry {
   std::string symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
   od::number low, high, def, param;
   bool def_nodeid = false, param_nodeid = false;
+  bool low_nodeid = false;
+  bool high_nodeid = false;
   std::string def_text, param_text, denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};

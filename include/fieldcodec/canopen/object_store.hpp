@@ -64,7 +64,8 @@ public:
           slot[i] = static_cast<std::uint8_t>(e.default_text[i]);
         }
       } else if (auto d = e.default_for(node)) {
-        (void)od::encode(e, d.value(), slot); // an out-of-limit default stays zero
+        // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
+        if (auto desc = dict_.describe(e)) (void)od::encode(desc.value(), d.value(), slot);
       }
       off += e.width();
     }
@@ -105,7 +106,9 @@ public:
     }
     if (data.size() > slot.size()) return abort_code::length_too_high;
     if (data.size() < slot.size()) return abort_code::length_too_low;
-    auto v = od::decode(*e, data, byte_order::little, od::limits::check);
+    auto desc = dict_.describe(*e); // a scaled entry's limits need its scale
+    if (!desc) return abort_code::general_error;
+    auto v = od::decode(desc.value(), data, byte_order::little, od::limits::check);
     if (!v) {
       if (v.error() != errc::out_of_range) return abort_code::invalid_value;
       return out_of_range_code(*e, data);
@@ -145,7 +148,8 @@ private:
 
   [[nodiscard]] static constexpr abort_code
   out_of_range_code(const od::entry &e, std::span<const std::uint8_t> data) noexcept {
-    if (e.type == od::data_type::boolean || e.scaled) return abort_code::invalid_value;
+    if (e.type == od::data_type::boolean || e.has(od::flag::scaled))
+      return abort_code::invalid_value;
     auto raw = od::decode(e, data, byte_order::little, od::limits::ignore);
     if (!raw) return abort_code::invalid_value;
     auto v = raw.value().to_decimal();

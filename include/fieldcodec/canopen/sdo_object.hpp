@@ -14,6 +14,7 @@
 #include <fieldcodec/od/value.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <span>
 
@@ -23,13 +24,16 @@ namespace fieldcodec::canopen::sdo {
 /// Errors: those of od::encode (out_of_range, overflow, type_mismatch, not_representable),
 /// access_denied (read-only or constant entry), too_long (more than 4 bytes: use the client),
 /// invalid_argument (node).
-template <od::value_type T>
-[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const od::entry &e,
+/// `e` is an od::entry or an od::descriptor (a scaled entry's limits need the descriptor);
+/// node-ID-relative limits are checked for `node`.
+template <class E, od::value_type T>
+requires std::derived_from<E, od::entry>
+[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const E &e,
                                                    T value) noexcept {
   if (!od::writable(e.access_type)) return errc::access_denied;
   if (od::fixed_size(e.type) > 4U || od::fixed_size(e.type) == 0U) return errc::too_long;
   std::array<std::uint8_t, 8> b{};
-  auto n = od::encode(e, value, b);
+  auto n = od::encode(e, value, b, byte_order::little, node);
   if (!n) return n.error();
   return expedited_download(node, e.index, e.sub,
                             std::span<const std::uint8_t>(b).first(n.value()));
