@@ -23,7 +23,7 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
-#include <fieldcodec/canopen/socketcan.hpp>
+#include <fieldcodec/host/socketcan.hpp>
 #include <fieldcodec/canopen/sync.hpp>
 
 #include <algorithm>
@@ -251,14 +251,14 @@ void check_sdo(const co::can_frame &f, const co::can_frame &canon) {
 /// the same identifier, RTR flag, length and data (F10, fixed: identifier bits 11..28 of a
 /// struct without CAN_EFF_FLAG are refused, not dropped).
 void check_socketcan(const co::can_frame &f, const co::can_frame &canon, const std::uint8_t *p) {
-  auto s = co::to_socketcan(f);
+  auto s = fieldcodec::host::to_socketcan(f);
   if (f.id > co::max_can_id) {
     FUZZ_CHECK(s.is(errc::invalid_argument));
   } else if (f.dlc > co::max_dlc) {
     FUZZ_CHECK(s.is(errc::bad_length));
   } else {
     FUZZ_CHECK(s.has_value());
-    auto back = co::from_socketcan(s.value());
+    auto back = fieldcodec::host::from_socketcan(s.value());
     FUZZ_CHECK(back.has_value() && back.value() == canon);
   }
   ::can_frame raw{};
@@ -266,11 +266,11 @@ void check_socketcan(const co::can_frame &f, const co::can_frame &canon, const s
                static_cast<canid_t>(p[3]) << 16U | static_cast<canid_t>(p[4]) << 24U;
   raw.can_dlc = static_cast<std::uint8_t>(p[2] >> 1U);
   for (std::size_t i = 0; i < 8; ++i) raw.data[i] = p[3 + i];
-  auto g = co::from_socketcan(raw);
+  auto g = fieldcodec::host::from_socketcan(raw);
   if (!g) return;
   FUZZ_CHECK((raw.can_id & (CAN_EFF_FLAG | CAN_ERR_FLAG)) == 0U && raw.can_dlc <= 8U);
   FUZZ_CHECK((raw.can_id & CAN_EFF_MASK & ~CAN_SFF_MASK) == 0U);
-  auto again = co::to_socketcan(g.value());
+  auto again = fieldcodec::host::to_socketcan(g.value());
   FUZZ_CHECK(again.has_value());
   FUZZ_CHECK(again.value().can_id == raw.can_id);
   FUZZ_CHECK(again.value().can_dlc == raw.can_dlc);
