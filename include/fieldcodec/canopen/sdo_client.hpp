@@ -123,6 +123,9 @@ public:
     if (phase_ == phase::block_upload_segments && p.value()[0] != 0x80U) {
       return block_upload_segment(p.value());
     }
+    if (phase_ == phase::block_upload_end && block_rx_.is_repeat(p.value())) {
+      return core_.make({}); // the last segment once more
+    }
     auto r = decode(p.value(), direction::to_client);
     if (!r) return abort_with(r.error(), abort_code::unknown_command);
     const message &m = r.value();

@@ -65,6 +65,9 @@ public:
     if (phase_ == phase::block_download_segments && p.value()[0] != 0x80U) {
       return block_download_segment(p.value());
     }
+    if (phase_ == phase::block_download_end && block_rx_.is_repeat(p.value())) {
+      return core_.make({}); // the last segment once more
+    }
     auto r = decode(p.value(), direction::to_server);
     if (!r) {
       const od::address a = detail::get_address(p.value());

@@ -248,38 +248,52 @@ public:
     std::size_t offset = 0;
     bool acknowledge = false;
   };
-  /// Take a segment frame's bytes. `m` is the decoded segment (decode_block_segment).
+  /// Take a segment frame's bytes. `m` is the decoded segment (decode_block_segment), `raw`
+  /// its 8 bytes. The rules (as the common C stacks apply them):
+  /// * the next sequence number is taken; the last one of the sub-block (or the last segment of
+  ///   the transfer) asks for the acknowledgement;
+  /// * a repeat of the segment just taken, and anything before the first segment of a
+  ///   sub-block, is ignored (leftovers of a burst that was already acknowledged);
+  /// * any other sequence number (a gap, a reordered frame) asks for the acknowledgement at
+  ///   once: the sender retransmits from the first segment missing.
+  /// A sub-block of one segment cannot tell a repeated frame from an equal next segment: the
+  /// frame that equals the segment just taken is ignored (the transfer then times out rather
+  /// than store a repeat twice). The CRC catches what these rules cannot (keep it on).
   [[nodiscard]] constexpr segment_result on_segment(const message &m, const payload &raw) noexcept {
     segment_result r;
     if (final_) return r; // a repeat after the last segment: nothing new
-    const bool in_sequence = m.sequence == sequence_ + 1U;
-    // The repeat of the previous sub-block's last segment (a duplicated frame) must not end
-    // the new sub-block early: it is recognised by its bytes.
-    if (!in_sequence && sequence_ == 0U && have_previous_ && raw == previous_) return r;
-    if (in_sequence) {
-      sequence_ = m.sequence;
-      previous_ = raw;
-      have_previous_ = true;
-      if (m.last) {
-        final_ = true;
-        for (std::size_t i = 0; i < 7U; ++i) last_[i] = m.data[i];
-      } else {
-        if (announced_ && count_ + 7U > *announced_) {
-          r.abort = abort_code::length_too_high;
-          return r;
-        }
-        if (count_ + 7U > capacity_) {
-          r.abort = abort_code::out_of_memory;
-          return r;
-        }
-        r.bytes = m.bytes();
-        r.offset = count_;
-        if (crc_enabled_) crc_ = crc::ccitt16(r.bytes, crc_);
-        count_ += 7U;
-      }
+    const bool in_sequence = m.sequence == sequence_ + 1U && !(have_previous_ && raw == previous_);
+    if (!in_sequence) {
+      if (sequence_ != 0U && m.sequence != sequence_) r.acknowledge = true;
+      return r;
     }
-    if (m.sequence == block_size_ || m.last) r.acknowledge = true;
+    sequence_ = m.sequence;
+    previous_ = raw;
+    have_previous_ = true;
+    if (m.last) {
+      final_ = true;
+      for (std::size_t i = 0; i < 7U; ++i) last_[i] = m.data[i];
+    } else {
+      if (announced_ && count_ + 7U > *announced_) {
+        r.abort = abort_code::length_too_high;
+        return r;
+      }
+      if (count_ + 7U > capacity_) {
+        r.abort = abort_code::out_of_memory;
+        return r;
+      }
+      r.bytes = m.bytes();
+      r.offset = count_;
+      if (crc_enabled_) crc_ = crc::ccitt16(r.bytes, crc_);
+      count_ += 7U;
+    }
+    r.acknowledge = m.sequence == block_size_ || m.last;
     return r;
+  }
+  /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
+  /// message is awaited, such a repeat is ignored instead of being read as a message.)
+  [[nodiscard]] constexpr bool is_repeat(const payload &raw) const noexcept {
+    return have_previous_ && raw == previous_;
   }
   /// The acknowledgement of the current sub-block, asking for `next_block_size` segments next;
   /// the next sub-block starts. Errors: none (out-of-range sizes are clamped to 1..127).
