@@ -306,14 +306,17 @@ inline constexpr command commands[] = {
 }
 
 constexpr void put_address(payload &p, od::address a) noexcept {
-  (void)store<std::uint16_t>(std::span(p).subspan(1, 2), a.index, byte_order::little);
+  const auto i = to_bytes<std::uint16_t>(a.index, byte_order::little);
+  p[1] = i[0];
+  p[2] = i[1];
   p[3] = a.sub;
 }
 [[nodiscard]] constexpr od::address get_address(const payload &p) noexcept {
   return {from_bytes<std::uint16_t>({p[1], p[2]}, byte_order::little), p[3]};
 }
 constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
-  (void)store<std::uint32_t>(std::span(p).subspan(4, 4), v, byte_order::little);
+  const auto b = to_bytes<std::uint32_t>(v, byte_order::little);
+  for (std::size_t i = 0; i < 4U; ++i) p[4U + i] = b[i];
 }
 [[nodiscard]] constexpr std::uint32_t get_u32(const payload &p) noexcept {
   return from_bytes<std::uint32_t>({p[4], p[5], p[6], p[7]}, byte_order::little);
@@ -389,7 +392,11 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   case detail::layout::block_end:
     if (m.unused > 7U) return errc::out_of_range;
     b0 |= static_cast<unsigned>(m.unused) << 2U;
-    (void)store<std::uint16_t>(std::span(p).subspan(1, 2), m.checksum, byte_order::little);
+    {
+      const auto crc_bytes = to_bytes<std::uint16_t>(m.checksum, byte_order::little);
+      p[1] = crc_bytes[0];
+      p[2] = crc_bytes[1];
+    }
     break;
   case detail::layout::command_only: break;
   }

@@ -60,10 +60,10 @@ public:
     begin(a, now);
     tx_ = data;
     if (!data.empty() && data.size() <= 4U) {
-      phase_ = phase::download_expedited;
+      expect(&client::download_expedited);
       return send(expedited_download(a, data).value());
     }
-    phase_ = phase::download_initiate;
+    expect(&client::download_initiate);
     return send(initiate_download(a, static_cast<std::uint32_t>(data.size())));
   }
 
@@ -73,7 +73,7 @@ public:
     FIELDCODEC_TRY_STATUS(can_start(0));
     begin(a, now);
     rx_ = buffer;
-    phase_ = phase::upload_initiate;
+    expect(&client::upload_initiate);
     return send(initiate_upload(a));
   }
 
@@ -87,7 +87,7 @@ public:
     begin(a, now);
     tx_ = data;
     options_ = o;
-    phase_ = phase::block_download_initiate;
+    expect(&client::block_download_initiate);
     return send(sdo::block_download_initiate(a, static_cast<std::uint32_t>(data.size()), true, o.crc));
   }
 
@@ -103,7 +103,7 @@ public:
     begin(a, now);
     rx_ = buffer;
     options_ = o;
-    phase_ = phase::block_upload_initiate;
+    expect(&client::block_upload_initiate);
     return send(p.value());
   }
 
@@ -120,11 +120,8 @@ public:
     auto p = payload_of(f);
     if (!p) return abort_with(p.error(), abort_code::general_error);
     core_.touch(now);
-    if (phase_ == phase::block_upload_segments && p.value()[0] != 0x80U) {
-      return block_upload_segment(p.value());
-    }
-    if (phase_ == phase::block_upload_end && block_rx_.is_repeat(p.value())) {
-      return core_.make({}); // the last segment once more
+    if (raw_ != nullptr) {
+      if (auto s = (this->*raw_)(p.value())) return *s;
     }
     auto r = decode(p.value(), direction::to_client);
     if (!r) return abort_with(r.error(), abort_code::unknown_command);
@@ -133,20 +130,7 @@ public:
       core_.fail(errc::aborted, m.abort);
       return core_.make({});
     }
-    switch (phase_) {
-    case phase::download_expedited: return download_expedited(m);
-    case phase::download_initiate: return download_initiate(m);
-    case phase::download_segment: return download_segment(m);
-    case phase::upload_initiate: return upload_initiate(m);
-    case phase::upload_segment: return upload_segment(m);
-    case phase::block_download_initiate: return block_download_initiate(m);
-    case phase::block_download_ack: return block_download_ack(m);
-    case phase::block_download_end: return block_download_end(m);
-    case phase::block_upload_initiate: return block_upload_initiate(m);
-    case phase::block_upload_segments: break; // handled above
-    case phase::block_upload_end: return block_upload_end(m);
-    }
-    return unexpected();
+    return (this->*handler_)(m);
   }
 
   /// Check the timeout: abort 0x05040000, error timeout.
@@ -183,19 +167,16 @@ public:
   }
 
 private:
-  enum class phase : std::uint8_t {
-    download_expedited,
-    download_initiate,
-    download_segment,
-    upload_initiate,
-    upload_segment,
-    block_download_initiate,
-    block_download_ack,
-    block_download_end,
-    block_upload_initiate,
-    block_upload_segments,
-    block_upload_end,
-  };
+  // Per-state transition functions: the running transfer's state is the function that takes
+  // the next message (`handler_`), and for block segments, which carry no command specifier,
+  // the function that sees the raw bytes first (`raw_`). Firmware that never starts a block
+  // transfer never references the block functions, so the linker drops them.
+  using handler = step (client::*)(const message &);
+  using raw_handler = std::optional<step> (client::*)(const payload &);
+  constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
+    handler_ = h;
+    raw_ = raw;
+  }
 
   [[nodiscard]] constexpr status can_start(std::size_t size) const noexcept {
     if (core_.busy()) return errc::bad_state;
@@ -246,7 +227,7 @@ private:
     return next_download_segment();
   }
   [[nodiscard]] constexpr step next_download_segment() noexcept {
-    phase_ = phase::download_segment;
+    expect(&client::download_segment);
     const auto chunk = tx_.subspan(seg_tx_.offset(), seg_tx_.next_length());
     return send(seg_tx_.next(message_type::download_segment_request, chunk));
   }
@@ -277,7 +258,7 @@ private:
     }
     seg_rx_.start(rx_.size(), m.size_indicated ? std::optional<std::uint32_t>(m.size)
                                                : std::nullopt);
-    phase_ = phase::upload_segment;
+    expect(&client::upload_segment);
     return send(upload_segment_request(seg_rx_.toggle()));
   }
   [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
@@ -317,7 +298,7 @@ private:
     return tx_.subspan(block_tx_.offset(), block_tx_.burst_bytes());
   }
   [[nodiscard]] constexpr step next_burst() noexcept {
-    phase_ = phase::block_download_ack;
+    expect(&client::block_download_ack);
     window_ = burst_window();
     return core_.make(block_tx_.burst(ch_.request_id, window_));
   }
@@ -327,7 +308,7 @@ private:
     count_ = block_tx_.acknowledged();
     if (r.abort != abort_code::none) return local_abort(r.abort);
     if (r.what == block_sender::next::burst) return next_burst();
-    phase_ = phase::block_download_end;
+    expect(&client::block_download_end);
     return send(block_tx_.end());
   }
   [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
@@ -341,7 +322,7 @@ private:
     if (m.type == message_type::initiate_upload_response) {
       // protocol switch: the server answers with a normal upload (only if we allowed it)
       if (options_.switch_threshold == 0U) return unexpected();
-      phase_ = phase::upload_initiate;
+      expect(&client::upload_initiate);
       return upload_initiate(m);
     }
     if (auto s = check_initiate(m, message_type::block_upload_initiate_response)) return *s;
@@ -351,10 +332,15 @@ private:
     block_rx_.start(rx_.size(),
                     m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt,
                     options_.crc && m.crc, options_.block_size);
-    phase_ = phase::block_upload_segments;
+    expect(&client::unexpected_message, &client::block_upload_segment);
     return send(block_upload_start());
   }
-  [[nodiscard]] constexpr step block_upload_segment(const payload &p) noexcept {
+  [[nodiscard]] constexpr step unexpected_message(const message &) noexcept {
+    return unexpected();
+  }
+  /// During the segments of a sub-block every frame but an abort is a segment.
+  [[nodiscard]] constexpr std::optional<step> block_upload_segment(const payload &p) noexcept {
+    if (p[0] == 0x80U) return std::nullopt; // an abort
     auto seg = decode_block_segment(p);
     if (!seg) return abort_with(errc::unexpected_frame, abort_code::invalid_sequence_number);
     const auto r = block_rx_.on_segment(seg.value(), p);
@@ -362,8 +348,15 @@ private:
     for (std::size_t i = 0; i < r.bytes.size(); ++i) rx_[r.offset + i] = r.bytes[i];
     count_ = block_rx_.count();
     if (!r.acknowledge) return core_.make({});
-    if (block_rx_.final_received()) phase_ = phase::block_upload_end;
+    if (block_rx_.final_received()) {
+      expect(&client::block_upload_end, &client::block_upload_repeat);
+    }
     return send(block_rx_.acknowledge(options_.block_size));
+  }
+  /// While the end is awaited: the last segment once more is ignored.
+  [[nodiscard]] constexpr std::optional<step> block_upload_repeat(const payload &p) noexcept {
+    if (block_rx_.is_repeat(p)) return core_.make({});
+    return std::nullopt;
   }
   [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {
     if (m.type != message_type::block_end) return unexpected();
@@ -377,7 +370,8 @@ private:
 
   channel ch_;
   machine_core core_;
-  phase phase_ = phase::upload_initiate;
+  handler handler_ = &client::unexpected_message;
+  raw_handler raw_ = nullptr;
   block_options options_{};
   std::size_t count_ = 0;
   std::span<const std::uint8_t> tx_{};

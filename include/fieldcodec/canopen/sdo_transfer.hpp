@@ -51,7 +51,7 @@ using step = canopen::step<transfer_state>;
 /// Segments needed for `size` bytes of a segmented or block transfer (at least one: a 0-byte
 /// transfer sends one empty last segment).
 [[nodiscard]] constexpr std::uint32_t segments_for(std::uint32_t size) noexcept {
-  return size == 0U ? 1U : static_cast<std::uint32_t>((std::uint64_t{size} + 6U) / 7U);
+  return size == 0U ? 1U : size / 7U + (size % 7U != 0U ? 1U : 0U);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -50,6 +50,7 @@ public:
     f.burst_ = {id, data, ends_transfer};
     f.size_ = count;
     f.kind_ = kind::burst;
+    f.make_ = &frames::segment; // only code that builds a burst links the segment encoder
     return f;
   }
 
@@ -63,7 +64,7 @@ public:
     switch (kind_) {
     case kind::one: return one_;
     case kind::list: return list_[i];
-    case kind::burst: return segment(i);
+    case kind::burst: return make_(*this, i);
     case kind::none: break;
     }
     return {};
@@ -107,21 +108,16 @@ private:
     bool ends_transfer = false;
   };
 
-  [[nodiscard]] constexpr can_frame segment(std::size_t i) const noexcept {
-    const std::size_t from = 7U * i;
-    const std::size_t n = from >= burst_.data.size()   ? 0U
-                          : burst_.data.size() - from > 7U ? 7U
-                                                           : burst_.data.size() - from;
-    const bool last = burst_.ends_transfer && i + 1U == size_;
+  [[nodiscard]] static constexpr can_frame segment(const frames &self, std::size_t i) noexcept {
+    const auto data = self.burst_.data;
+    const std::size_t from = 7U * i < data.size() ? 7U * i : data.size();
+    const std::size_t n = data.size() - from > 7U ? 7U : data.size() - from;
+    const bool last = self.burst_.ends_transfer && i + 1U == self.size_;
     can_frame f;
-    f.id = burst_.id;
+    f.id = self.burst_.id;
     f.dlc = 8;
     // cannot fail: sequence 1..127 and at most 7 bytes
-    f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U),
-                                       burst_.data.subspan(from < burst_.data.size()
-                                                               ? from
-                                                               : burst_.data.size(),
-                                                           n),
+    f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U), data.subspan(from, n),
                                        last)
                  .value_or(sdo::payload{});
     return f;
@@ -132,6 +128,7 @@ private:
   burst burst_{};
   std::size_t size_ = 0;
   kind kind_ = kind::none;
+  can_frame (*make_)(const frames &, std::size_t) = nullptr;
 };
 
 /// What one call into a machine produced: the frames to send, the state after the call, and
