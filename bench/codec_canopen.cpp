@@ -69,12 +69,11 @@ void fill_inputs() {
     w.value = static_cast<std::uint32_t>(r.next());
     const auto size = static_cast<std::size_t>(r.between(1, 4));
     const auto bytes = fieldcodec::to_bytes<std::uint32_t>(w.value, byte_order::little);
-    g_sdo_frames[i] =
-        sdo::channel::default_for(w.node)
-            .value()
-            .request(sdo::expedited_download({w.index, w.sub},
-                                             std::span<const std::uint8_t>(bytes).first(size)))
-            .value();
+    g_sdo_frames[i] = sdo::channel::default_for(w.node)
+                          .value()
+                          .request(sdo::expedited_download(
+                              {w.index, w.sub}, std::span<const std::uint8_t>(bytes).first(size)))
+                          .value();
     auto &v = g_rpdo[i];
     v.controlword = static_cast<std::uint16_t>(r.below(0x10000));
     v.target_position = static_cast<std::int32_t>(r.between(-2'000'000'000, 2'000'000'000));

@@ -23,8 +23,8 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
-#include <fieldcodec/host/socketcan.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/host/socketcan.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -192,8 +192,8 @@ void check_sdo(const co::can_frame &f, const co::can_frame &canon) {
   auto enc = sdo::encode(m);
   using t = sdo::message_type;
   const bool short_segment =
-      (m.type == t::download_segment_request || m.type == t::upload_segment_response) &&
-      !m.last && m.data_size != 7U;
+      (m.type == t::download_segment_request || m.type == t::upload_segment_response) && !m.last &&
+      m.data_size != 7U;
   if (short_segment) {
     FUZZ_CHECK(enc.is(errc::bad_length));
     return;

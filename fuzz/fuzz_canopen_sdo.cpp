@@ -190,8 +190,9 @@ void client_mode(reader &r) {
     FUZZ_CHECK(out.deadline.has_value() == c.busy());
     if (upload && channel.is_response(f)) {
       auto m = sdo::decode(f, sdo::direction::to_client);
-      if (m && (m.value().type == sdo::message_type::initiate_upload_response ||
-                m.value().type == sdo::message_type::block_upload_initiate_response) &&
+      if (m &&
+          (m.value().type == sdo::message_type::initiate_upload_response ||
+           m.value().type == sdo::message_type::block_upload_initiate_response) &&
           !m.value().expedited && m.value().size_indicated) {
         announced = m.value().size;
       }

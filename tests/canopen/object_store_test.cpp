@@ -20,11 +20,16 @@ using sdo::abort_code;
 
 namespace {
 constexpr od::entry entries[] = {
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::constant,
-     .size = 20, .default_text = "XENAX Xvi 75V8S"},
+    {.index = 0x1008,
+     .type = od::data_type::visible_string,
+     .access_type = od::access::constant,
+     .size = 20,
+     .default_text = "XENAX Xvi 75V8S"},
     {.index = 0x2000, .type = od::data_type::unsigned16, .default_value = od::num::u(0x1234)},
     {.index = 0x2001, .type = od::data_type::domain, .size = 300},
-    {.index = 0x2002, .type = od::data_type::integer8, .low = od::num::i(-5),
+    {.index = 0x2002,
+     .type = od::data_type::integer8,
+     .low = od::num::i(-5),
      .high = od::num::i(5)},
     {.index = 0x2003, .type = od::data_type::octet_string, .size = 4, .default_text = "too long"},
 };
@@ -50,7 +55,8 @@ struct recorder {
   std::vector<od::address> *seen;
   abort_code operator()(const od::entry &e, std::span<const std::uint8_t> v) const {
     seen->push_back({e.index, e.sub});
-    if (e.index == 0x2002 && v.size() == 1 && v[0] == 3) return abort_code::cannot_store_device_state;
+    if (e.index == 0x2002 && v.size() == 1 && v[0] == 3)
+      return abort_code::cannot_store_device_state;
     return abort_code::none;
   }
 };
@@ -150,8 +156,8 @@ TEST_CASE("store: the write hook sees every SDO write and may refuse it") {
   CHECK(seen[0] == od::address{0x2002, 0});
   talk(c.download({0x2002, 0}, three, 0).value());
   CHECK(c.state() == sdo::transfer_state::failed);
-  CHECK(c.error() == sdo::transfer_error{errc::aborted, abort_code::cannot_store_device_state,
-                                         {0x2002, 0}});
+  CHECK(c.error() ==
+        sdo::transfer_error{errc::aborted, abort_code::cannot_store_device_state, {0x2002, 0}});
   CHECK(s.value({0x2002, 0}).value()[0] == 2); // refused: the old value stays
   // a value the checks refuse never reaches the hook
   const std::array<std::uint8_t, 1> nine{9};

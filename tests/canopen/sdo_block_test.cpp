@@ -30,8 +30,11 @@ constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_cod
 constexpr od::entry block_entries[] = {
     {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::num::u(7)},
     {.index = 0x2000, .type = od::data_type::domain, .size = 5000},
-    {.index = 0x2001, .type = od::data_type::visible_string, .access_type = od::access::ro,
-     .size = 32, .default_text = "read only"},
+    {.index = 0x2001,
+     .type = od::data_type::visible_string,
+     .access_type = od::access::ro,
+     .size = 32,
+     .default_text = "read only"},
 };
 constexpr od::dictionary block_dict{block_entries};
 constexpr auto block_layout = sdo::make_layout<std::size(block_entries)>(block_dict);
@@ -63,8 +66,7 @@ struct bus {
   int faults_left = 0;
   std::size_t bursts = 0, segments = 0, faults = 0;
 
-  explicit bus(std::size_t buffer)
-      : server_buffer(buffer), server(5, store, server_buffer, 100) {
+  explicit bus(std::size_t buffer) : server_buffer(buffer), server(5, store, server_buffer, 100) {
     REQUIRE(store.init_defaults(5).has_value());
   }
 
@@ -164,8 +166,7 @@ TEST_CASE("block download and upload of 0 to 5000 bytes at every block size") {
       b.run(b.client.block_upload({0x2000, 0}, buf, b.now, o).value());
       REQUIRE(b.client.state() == transfer_state::done);
       CHECK(b.server.state() == transfer_state::done);
-      CHECK(std::vector<std::uint8_t>(b.client.received().begin(), b.client.received().end()) ==
-            v);
+      CHECK(std::vector<std::uint8_t>(b.client.received().begin(), b.client.received().end()) == v);
       transfers += 2;
     }
   }
@@ -216,8 +217,7 @@ TEST_CASE("block transfer recovers from lost, repeated and reordered segments") 
     }
   }
   MESSAGE("faulty block transfers: " << done << " completed, " << aborted
-                                     << " aborted on both sides, " << faults
-                                     << " faults injected");
+                                     << " aborted on both sides, " << faults << " faults injected");
   CHECK(done > aborted); // retransmission repairs most faults
   CHECK(faults > 1000);
 }

@@ -73,7 +73,7 @@ TEST_CASE("channels: predefined and from SDO parameter objects") {
   // 1200h sub 1 = 0x605, sub 2 = 0x585 (as a DCF writes them, $NODEID resolved)
   CHECK(sdo::channel::from_cob_ids(0x605, 0x585).value() == node5);
   CHECK(sdo::channel::from_cob_ids(0x640, 0x5C0).value() == sdo::channel{0x640, 0x5C0});
-  CHECK(sdo::channel::from_cob_ids(0x8000'0605U, 0x585) == errc::bad_state); // not valid
+  CHECK(sdo::channel::from_cob_ids(0x8000'0605U, 0x585) == errc::bad_state);    // not valid
   CHECK(sdo::channel::from_cob_ids(0x605, 0x2000'0585U) == errc::out_of_range); // 29 bit
   CHECK(sdo::channel::from_cob_ids(0x1605, 0x585) == errc::out_of_range);
   // frames on the channel
@@ -131,7 +131,7 @@ TEST_CASE("segmented messages") {
   CHECK(sdo::download_segment(false, seven, false).value() ==
         P({0x00, 'X', 'E', 'N', 'A', 'X', ' ', 'X'}));
   CHECK(sdo::download_segment(true, std::span(seven).first(3), true).value() ==
-        P({0x19, 'X', 'E', 'N'})); // t=1, n=4, c=1
+        P({0x19, 'X', 'E', 'N'}));                                    // t=1, n=4, c=1
   CHECK(sdo::download_segment(false, {}, true).value() == P({0x0F})); // n=7, c=1
   CHECK(sdo::download_segment(false, std::span(seven).first(3), false) == errc::bad_length);
   const std::array<std::uint8_t, 8> eight{};
@@ -174,9 +174,8 @@ TEST_CASE("abort messages and the abort code table") {
   CHECK(b == P({0x80, 0x00, 0x10, 0x01, 0x00, 0x00, 0x04, 0x05}));
   CHECK(sdo::decode(b, sdo::direction::to_server).value().abort == sdo::abort_code::timeout);
   // an abort code outside the CiA table is kept as it is and reported as unknown
-  const auto odd = sdo::decode(P({0x80, 0, 0x10, 0, 0x78, 0x56, 0x34, 0x12}),
-                               sdo::direction::to_client)
-                       .value();
+  const auto odd =
+      sdo::decode(P({0x80, 0, 0x10, 0, 0x78, 0x56, 0x34, 0x12}), sdo::direction::to_client).value();
   CHECK(static_cast<std::uint32_t>(odd.abort) == 0x12345678U);
   CHECK(!sdo::is_known(odd.abort));
   CHECK(sdo::to_string(odd.abort).empty());
@@ -234,8 +233,7 @@ TEST_CASE("block transfer messages") {
   // segments, acknowledgement, end
   const std::array<std::uint8_t, 7> seven{1, 2, 3, 4, 5, 6, 7};
   CHECK(sdo::encode_block_segment(1, seven, false).value() == P({0x01, 1, 2, 3, 4, 5, 6, 7}));
-  CHECK(sdo::encode_block_segment(127, std::span(seven).first(2), true).value() ==
-        P({0xFF, 1, 2}));
+  CHECK(sdo::encode_block_segment(127, std::span(seven).first(2), true).value() == P({0xFF, 1, 2}));
   CHECK(sdo::encode_block_segment(0, seven, false) == errc::out_of_range);
   CHECK(sdo::encode_block_segment(128, seven, false) == errc::out_of_range);
   CHECK(sdo::block_ack(5, 127).value() == P({0xA2, 5, 127}));
@@ -284,10 +282,8 @@ TEST_CASE("block transfer messages") {
 
 TEST_CASE("bad SDO frames") {
   using sdo::direction;
-  CHECK(sdo::decode(F(0x605, {0x40, 0x00, 0x18, 0x05}), direction::to_server) ==
-        errc::bad_length);
-  CHECK(sdo::decode(F(0x605, {0x40, 0, 0, 0, 0, 0, 0}), direction::to_server) ==
-        errc::bad_length);
+  CHECK(sdo::decode(F(0x605, {0x40, 0x00, 0x18, 0x05}), direction::to_server) == errc::bad_length);
+  CHECK(sdo::decode(F(0x605, {0x40, 0, 0, 0, 0, 0, 0}), direction::to_server) == errc::bad_length);
   CHECK(sdo::decode(F(0x585, {}), direction::to_client) == errc::bad_length);
   CHECK(sdo::decode(P({0xE0}), direction::to_server) == errc::unknown_command);
   CHECK(sdo::decode(P({0xFF}), direction::to_client) == errc::unknown_command);

@@ -290,7 +290,8 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
   std::array<std::uint8_t, 16> buf{};
   SUBCASE("toggle error in an upload") {
     sdo::client c(5);
-    CHECK(c.upload({0x1008, 0}, buf, 0).value().send[0] == F(0x605, {0x40, 0x08, 0x10, 0, 0, 0, 0, 0}));
+    CHECK(c.upload({0x1008, 0}, buf, 0).value().send[0] ==
+          F(0x605, {0x40, 0x08, 0x10, 0, 0, 0, 0, 0}));
     auto o = c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 10, 0, 0, 0}), 1);
     CHECK(o.send[0] == F(0x605, {0x60, 0, 0, 0, 0, 0, 0, 0}));
     o = c.on_frame(F(0x585, {0x00, 1, 2, 3, 4, 5, 6, 7}), 2);
@@ -368,7 +369,7 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     const auto v = pattern(20, 0);
     (void)c.download({0x2009, 0}, v, 0);
     auto o = c.on_frame(F(0x585, {0x60, 0x09, 0x20, 0, 0, 0, 0, 0}), 1);
-    CHECK(o.send[0].data[0] == 0x00);                           // first segment, toggle 0, 7 bytes
+    CHECK(o.send[0].data[0] == 0x00);                         // first segment, toggle 0, 7 bytes
     o = c.on_frame(F(0x585, {0x30, 0, 0, 0, 0, 0, 0, 0}), 2); // toggle 1: wrong
     CHECK(c.error()->error == errc::bad_toggle);
     sdo::client d(5);
@@ -383,7 +384,7 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     (void)c.upload({0x1000, 0}, buf, 0xFFFF'FFF0U); // wraps around
     CHECK(c.upload({0x1000, 0}, buf, 0) == errc::bad_state);
     CHECK(c.poll(0x0000'0050U).send.empty()); // 96 ms
-    auto o = c.poll(0x0000'0054U);     // 100 ms
+    auto o = c.poll(0x0000'0054U);            // 100 ms
     CHECK(c.error()->error == errc::timeout);
     CHECK(o.send[0] == F(0x605, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05}));
     (void)c.upload({0x1000, 0}, buf, 0);
@@ -419,8 +420,8 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
     CHECK(s.error()->error == errc::unknown_command);
     CHECK(s.error()->address == fieldcodec::od::address{0x2009, 0});
-    for (std::uint8_t cmd : {std::uint8_t{0xA1}, std::uint8_t{0xA2}, std::uint8_t{0xA3},
-                             std::uint8_t{0xC1}}) {
+    for (std::uint8_t cmd :
+         {std::uint8_t{0xA1}, std::uint8_t{0xA2}, std::uint8_t{0xA3}, std::uint8_t{0xC1}}) {
       CAPTURE(static_cast<int>(cmd));
       r = s.on_frame(F(0x605, {cmd, 1, 127, 0, 0, 0, 0, 0}), 0);
       CHECK(code_of(r) == A(0x05040001U));
@@ -428,7 +429,8 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
   }
   SUBCASE("segment toggle error") {
     CHECK(s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 14, 0, 0, 0}), 0).send[0].data[0] == 0x60);
-    CHECK(s.on_frame(F(0x605, {0x00, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0).send[0].data[0] == 0x20);
+    CHECK(s.on_frame(F(0x605, {0x00, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0).send[0].data[0] ==
+          0x20);
     auto r = s.on_frame(F(0x605, {0x01, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x00, 0x00, 0x03, 0x05}));
     CHECK(s.error()->error == errc::bad_toggle);
@@ -457,7 +459,8 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
     CHECK(s.on_frame(F(0x606, {0x40, 0, 0x10, 0, 0, 0, 0, 0}), 0).send.empty()); // other node
     CHECK(s.on_frame(F(0x605, {0x40, 0, 0x10}), 0).send.empty());                // short
     CHECK(s.error()->error == errc::bad_length);
-    CHECK(s.on_frame(F(0x605, {0x80, 0, 0x10, 0, 0, 0, 0, 0}), 0).send.empty()); // abort from client
+    CHECK(
+        s.on_frame(F(0x605, {0x80, 0, 0x10, 0, 0, 0, 0, 0}), 0).send.empty()); // abort from client
   }
   SUBCASE("client abort ends a segmented transfer") {
     (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);

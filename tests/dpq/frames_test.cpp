@@ -101,8 +101,8 @@ TEST_CASE("dpq frames: event timer of TPDO1 on node 5 = 100 ms (3.4)") {
   CHECK(dpq::write_raw_request(5, event_timer, 100).value() == req.value());
   // Reply as printed: 0x585 60 00 18 05 00 00 00 00.
   const auto reply = frame(0x585, {0x60, 0x00, 0x18, 0x05, 0x00, 0x00, 0x00, 0x00});
-  CHECK(co::sdo::channel::default_for(5).value().response(co::sdo::download_response({0x1800, 5})) ==
-        reply);
+  CHECK(co::sdo::channel::default_for(5).value().response(
+            co::sdo::download_response({0x1800, 5})) == reply);
   CHECK(dpq::write_response(5, event_timer, reply).has_value());
   // "The contents of the data bytes are arbitrary and must be ignored by the control."
   CHECK(dpq::write_response(5, event_timer,

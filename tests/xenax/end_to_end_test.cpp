@@ -79,9 +79,9 @@ struct simulated_xenax {
   void store_value(std::uint16_t index, std::int64_t v) {
     std::array<std::uint8_t, 8> b{};
     const auto n = store.value({index, 0}).value().size();
-    auto r = v < 0 ? fieldcodec::store_signed(b, n, v, byte_order::little)
-                   : fieldcodec::store_unsigned(b, n, static_cast<std::uint64_t>(v),
-                                                byte_order::little);
+    auto r =
+        v < 0 ? fieldcodec::store_signed(b, n, v, byte_order::little)
+              : fieldcodec::store_unsigned(b, n, static_cast<std::uint64_t>(v), byte_order::little);
     REQUIRE(r.has_value());
     REQUIRE(store.set({index, 0}, std::span(b).first(n)) == sdo::abort_code::none);
   }
@@ -132,7 +132,8 @@ struct simulated_xenax {
         mode_display() == static_cast<std::int8_t>(xenax::mode::profile_position)) {
       if (rising) { // new set-point: acknowledge, motion starts
         const auto target = static_cast<std::int32_t>(
-            fieldcodec::load_signed(store.value({0x607A, 0}).value(), 4, byte_order::little).value());
+            fieldcodec::load_signed(store.value({0x607A, 0}).value(), 4, byte_order::little)
+                .value());
         goal = (cw & xenax::cw::relative) != 0 ? position + target : target;
         mode_bits = xenax::sw::bit12;
       } else if (falling && mode_bits == xenax::sw::bit12) { // the move completes at once

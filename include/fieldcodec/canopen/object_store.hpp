@@ -40,14 +40,13 @@
 namespace fieldcodec::canopen::sdo {
 
 template <class S>
-concept object_store =
-    requires(S &s, const S &cs, od::address a, std::size_t offset, std::span<std::uint8_t> out,
-             std::span<const std::uint8_t> in, std::optional<std::uint32_t> size,
-             std::size_t &total, bool last) {
-      { cs.read(a, offset, out, total) } -> std::same_as<abort_code>;
-      { s.begin_write(a, size) } -> std::same_as<abort_code>;
-      { s.write(a, offset, in, last) } -> std::same_as<abort_code>;
-    };
+concept object_store = requires(S &s, const S &cs, od::address a, std::size_t offset,
+                                std::span<std::uint8_t> out, std::span<const std::uint8_t> in,
+                                std::optional<std::uint32_t> size, std::size_t &total, bool last) {
+  { cs.read(a, offset, out, total) } -> std::same_as<abort_code>;
+  { s.begin_write(a, size) } -> std::same_as<abort_code>;
+  { s.write(a, offset, in, last) } -> std::same_as<abort_code>;
+};
 
 // ---------------------------------------------------------------------------------------------
 // The layout of a dictionary's values in storage
@@ -115,8 +114,8 @@ class dictionary_store {
 public:
   template <std::size_t N>
   constexpr dictionary_store(od::dictionary dict, const store_layout<N> &layout,
-                             std::span<std::uint8_t> storage,
-                             std::span<std::uint8_t> staging = {}, OnWrite on_write = {}) noexcept
+                             std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
+                             OnWrite on_write = {}) noexcept
       : dict_(dict), offsets_(layout.offsets), storage_(storage), staging_(staging),
         on_write_(on_write) {}
 
@@ -189,8 +188,7 @@ public:
   }
 
   [[nodiscard]] constexpr abort_code write(od::address a, std::size_t offset,
-                                           std::span<const std::uint8_t> part,
-                                           bool last) noexcept {
+                                           std::span<const std::uint8_t> part, bool last) noexcept {
     const located l = locate(a);
     if (l.code != abort_code::none) return l.code;
     if (!od::writable(l.e->access_type)) return abort_code::write_read_only;
@@ -264,9 +262,10 @@ private:
     return l;
   }
 
-  [[nodiscard]] static constexpr std::size_t length_of(std::span<const std::uint8_t> slot) noexcept {
-    return static_cast<std::size_t>(load_unsigned(slot, length_prefix, byte_order::little)
-                                        .value_or(0));
+  [[nodiscard]] static constexpr std::size_t
+  length_of(std::span<const std::uint8_t> slot) noexcept {
+    return static_cast<std::size_t>(
+        load_unsigned(slot, length_prefix, byte_order::little).value_or(0));
   }
   static constexpr void set_length(std::span<std::uint8_t> slot, std::size_t n) noexcept {
     (void)store_unsigned(slot, length_prefix, n, byte_order::little);

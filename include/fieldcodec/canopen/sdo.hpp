@@ -117,8 +117,7 @@ inline constexpr abort_info abort_codes[] = {
     {abort_code::device_incompatible, errc::aborted,
      "general internal incompatibility in the device"},
     {abort_code::hardware_error, errc::aborted, "access failed: hardware error"},
-    {abort_code::length_mismatch, errc::type_mismatch,
-     "data type mismatch: length does not match"},
+    {abort_code::length_mismatch, errc::type_mismatch, "data type mismatch: length does not match"},
     {abort_code::length_too_high, errc::too_long, "data type mismatch: length too high"},
     {abort_code::length_too_low, errc::bad_length, "data type mismatch: length too low"},
     {abort_code::no_sub_index, errc::unknown_object, "sub-index does not exist"},
@@ -242,17 +241,17 @@ inline constexpr std::uint8_t toggle_bit = 0x10U;
 
 /// How the bytes after the command byte are laid out.
 enum class layout : std::uint8_t {
-  segment,         ///< t nnn c in byte 0, data in bytes 1..7
-  toggle,          ///< t in byte 0, nothing else
-  initiate,        ///< nn e s in byte 0, address, expedited data or size in bytes 4..7
-  address,         ///< address only
-  abort,           ///< address, abort code
-  block_initiate,  ///< c s in byte 0 (bits 2, 1), address, size
-  block_response,  ///< c in byte 0, address, block size in byte 4
-  block_upload,    ///< c in byte 0, address, block size in byte 4, threshold in byte 5
-  block_ack,       ///< sequence in byte 1, block size in byte 2
-  block_end,       ///< nnn in byte 0 (bits 4..2), CRC in bytes 1..2
-  command_only,    ///< nothing after the command byte
+  segment,        ///< t nnn c in byte 0, data in bytes 1..7
+  toggle,         ///< t in byte 0, nothing else
+  initiate,       ///< nn e s in byte 0, address, expedited data or size in bytes 4..7
+  address,        ///< address only
+  abort,          ///< address, abort code
+  block_initiate, ///< c s in byte 0 (bits 2, 1), address, size
+  block_response, ///< c in byte 0, address, block size in byte 4
+  block_upload,   ///< c in byte 0, address, block size in byte 4, threshold in byte 5
+  block_ack,      ///< sequence in byte 1, block size in byte 2
+  block_end,      ///< nnn in byte 0 (bits 4..2), CRC in bytes 1..2
+  command_only,   ///< nothing after the command byte
 };
 
 /// One command: it is the message `type` when byte 0 masked with `mask` equals `bits` in
@@ -508,9 +507,8 @@ namespace detail {
   m.size = size_indicated ? size : 0U;
   return encode(m);
 }
-[[nodiscard]] constexpr result<payload> segment(message_type t, bool toggle,
-                                                std::span<const std::uint8_t> bytes,
-                                                bool last) noexcept {
+[[nodiscard]] constexpr result<payload>
+segment(message_type t, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
   if (bytes.size() > 7U) return errc::too_long;
   message m;
   m.type = t;
@@ -543,8 +541,7 @@ expedited_download_unsized(od::address a, std::span<const std::uint8_t> bytes) n
 /// Initiate a segmented download of `size` bytes (0x21), or without size indication (0x20).
 [[nodiscard]] constexpr payload initiate_download(od::address a, std::uint32_t size,
                                                   bool size_indicated = true) noexcept {
-  return detail::initiate(message_type::initiate_download_request, a, size, size_indicated)
-      .value();
+  return detail::initiate(message_type::initiate_download_request, a, size, size_indicated).value();
 }
 /// A download segment: 0..7 bytes (exactly 7 unless last).
 /// Errors: too_long (> 7 bytes), bad_length (fewer than 7 in a non-last segment).
@@ -586,8 +583,7 @@ expedited_upload_response_unsized(od::address a, std::span<const std::uint8_t> b
 /// indication (0x40).
 [[nodiscard]] constexpr payload upload_response(od::address a, std::uint32_t size,
                                                 bool size_indicated = true) noexcept {
-  return detail::initiate(message_type::initiate_upload_response, a, size, size_indicated)
-      .value();
+  return detail::initiate(message_type::initiate_upload_response, a, size, size_indicated).value();
 }
 /// An upload segment: 0..7 bytes (exactly 7 unless last). Errors: too_long, bad_length.
 [[nodiscard]] constexpr result<payload>
@@ -662,9 +658,9 @@ block_download_initiate_response(od::address a, std::uint8_t block_size, bool cr
 }
 /// A segment of a sub-block: sequence number 1..127, up to 7 bytes (the rest zero), `last` for
 /// the last segment of the transfer. Errors: out_of_range (sequence), too_long.
-[[nodiscard]] constexpr result<payload>
-encode_block_segment(std::uint8_t sequence, std::span<const std::uint8_t> bytes,
-                     bool last) noexcept {
+[[nodiscard]] constexpr result<payload> encode_block_segment(std::uint8_t sequence,
+                                                             std::span<const std::uint8_t> bytes,
+                                                             bool last) noexcept {
   if (bytes.size() > 7U) return errc::too_long;
   message m;
   m.type = message_type::block_segment;

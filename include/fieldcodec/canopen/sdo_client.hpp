@@ -36,9 +36,9 @@ namespace fieldcodec::canopen::sdo {
 /// Options of a block transfer started by the client.
 struct block_options {
   std::uint8_t block_size = max_block_size; ///< upload: segments per sub-block the client takes
-  std::uint8_t switch_threshold = 0; ///< upload: the server may answer with a normal upload
-                                     ///< for objects of at most this many bytes (0: never)
-  bool crc = true;                   ///< ask for the CRC (used when the server supports it)
+  std::uint8_t switch_threshold = 0;        ///< upload: the server may answer with a normal upload
+                                            ///< for objects of at most this many bytes (0: never)
+  bool crc = true;                          ///< ask for the CRC (used when the server supports it)
 };
 
 class client {
@@ -88,7 +88,8 @@ public:
     tx_ = data;
     options_ = o;
     expect(&client::block_download_initiate);
-    return send(sdo::block_download_initiate(a, static_cast<std::uint32_t>(data.size()), true, o.crc));
+    return send(
+        sdo::block_download_initiate(a, static_cast<std::uint32_t>(data.size()), true, o.crc));
   }
 
   /// Start reading `a` into `buffer` with block transfer. The server may switch to a normal
@@ -256,8 +257,8 @@ private:
     if (m.size_indicated && m.size > rx_.size()) {
       return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
     }
-    seg_rx_.start(rx_.size(), m.size_indicated ? std::optional<std::uint32_t>(m.size)
-                                               : std::nullopt);
+    seg_rx_.start(rx_.size(),
+                  m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt);
     expect(&client::upload_segment);
     return send(upload_segment_request(seg_rx_.toggle()));
   }
@@ -335,9 +336,7 @@ private:
     expect(&client::unexpected_message, &client::block_upload_segment);
     return send(block_upload_start());
   }
-  [[nodiscard]] constexpr step unexpected_message(const message &) noexcept {
-    return unexpected();
-  }
+  [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
   /// During the segments of a sub-block every frame but an abort is a segment.
   [[nodiscard]] constexpr std::optional<step> block_upload_segment(const payload &p) noexcept {
     if (p[0] == 0x80U) return std::nullopt; // an abort

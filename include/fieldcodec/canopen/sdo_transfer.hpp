@@ -41,8 +41,8 @@ struct transfer_error {
   od::address address{};
 
   [[nodiscard]] constexpr bool is(errc e) const noexcept { return error == e; }
-  friend constexpr bool operator==(const transfer_error &, const transfer_error &) noexcept =
-      default;
+  friend constexpr bool operator==(const transfer_error &,
+                                   const transfer_error &) noexcept = default;
 };
 
 /// What every call into an SDO machine returns.

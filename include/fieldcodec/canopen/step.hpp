@@ -117,9 +117,9 @@ private:
     f.id = self.burst_.id;
     f.dlc = 8;
     // cannot fail: sequence 1..127 and at most 7 bytes
-    f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U), data.subspan(from, n),
-                                       last)
-                 .value_or(sdo::payload{});
+    f.data =
+        sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U), data.subspan(from, n), last)
+            .value_or(sdo::payload{});
     return f;
   }
 
