@@ -18,11 +18,9 @@ namespace fieldcodec::crc {
   // Bitwise on purpose: 8 shifts per byte cost less flash than a 512-byte table, and block
   // transfer moves at most a few hundred bytes per millisecond.
   for (const std::uint8_t b : data) {
-    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned>(b) << 8U));
-    for (int i = 0; i < 8; ++i) {
-      crc = (crc & 0x8000U) != 0U ? static_cast<std::uint16_t>((crc << 1U) ^ 0x1021U)
-                                  : static_cast<std::uint16_t>(crc << 1U);
-    }
+    unsigned r = static_cast<unsigned>(crc) ^ (static_cast<unsigned>(b) << 8U);
+    for (int i = 0; i < 8; ++i) r = (r & 0x8000U) != 0U ? (r << 1U) ^ 0x1021U : r << 1U;
+    crc = static_cast<std::uint16_t>(r & 0xFFFFU);
   }
   return crc;
 }
