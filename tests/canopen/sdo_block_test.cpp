@@ -182,6 +182,9 @@ TEST_CASE("block transfer recovers from lost, repeated and reordered segments") 
       for (std::size_t at = 0; at < 6; ++at) {
         for (std::size_t n : {0U, 5U, 20U, 100U, 1000U}) {
           for (bool with_crc : {true, false}) {
+            // With sub-blocks of one segment a repeated frame looks like the next segment
+            // (sequence number 1 both): only the CRC can find it (docs/canopen.md).
+            if (kind == fault_kind::repeat && bs == 1 && !with_crc) continue;
             CAPTURE(static_cast<int>(kind));
             CAPTURE(bs);
             CAPTURE(at);

@@ -256,13 +256,13 @@ public:
   ///   sub-block, is ignored (leftovers of a burst that was already acknowledged);
   /// * any other sequence number (a gap, a reordered frame) asks for the acknowledgement at
   ///   once: the sender retransmits from the first segment missing.
-  /// A sub-block of one segment cannot tell a repeated frame from an equal next segment: the
-  /// frame that equals the segment just taken is ignored (the transfer then times out rather
-  /// than store a repeat twice). The CRC catches what these rules cannot (keep it on).
+  /// With sub-blocks of one segment a repeated frame cannot be told from the next segment (both
+  /// carry sequence number 1): it is taken as new data, and only the CRC finds it. Keep the CRC
+  /// on over links that may repeat frames.
   [[nodiscard]] constexpr segment_result on_segment(const message &m, const payload &raw) noexcept {
     segment_result r;
     if (final_) return r; // a repeat after the last segment: nothing new
-    const bool in_sequence = m.sequence == sequence_ + 1U && !(have_previous_ && raw == previous_);
+    const bool in_sequence = m.sequence == sequence_ + 1U;
     if (!in_sequence) {
       if (sequence_ != 0U && m.sequence != sequence_) r.acknowledge = true;
       return r;
