@@ -123,6 +123,14 @@ private:
   std::set<std::string> used_;
 };
 
+/// A std::string_view literal, `"text"sv`: its length is known without the compiler counting
+/// the characters in constant evaluation, and there is no constructor overload to resolve (both
+/// are a measurable part of compiling a big dictionary). Embedded NULs are kept.
+void append_view(std::string &o, const std::string &v) {
+  append_cpp_string(o, v);
+  o += "sv";
+}
+
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
 std::string flags_expression(const entry &e) {
   struct bit {
@@ -167,7 +175,7 @@ void emit_core(std::string &o, const entry &e) {
   if (e.def) o += ", .default_value = " + number_literal(e.def);
   if (!e.def_text.empty()) {
     o += ", .default_text = ";
-    append_cpp_string(o, e.def_text);
+    append_view(o, e.def_text);
   }
   o += "}";
 }
@@ -185,7 +193,7 @@ void emit_info(std::string &o, const entry &e) {
   auto text = [&](const char *name, const std::string &v) {
     if (v.empty()) return;
     field(name);
-    append_cpp_string(o, v);
+    append_view(o, v);
   };
   text("name", e.name);
   text("unit", e.unit);
@@ -242,18 +250,19 @@ void emit_commands(std::string &o, const dictionary &d) {
   o += "inline constexpr std::array<od::command, " + std::to_string(d.commands.size()) +
        "> commands{{\n";
   for (const auto &c : d.commands) {
-    o += "    {.code = 0x" + hex(c.code, 4) + ", .name = " + cpp_string(c.name);
+    o += "    {.code = 0x" + hex(c.code, 4) + ", .name = ";
+    append_view(o, c.name);
     if (!c.section.empty()) {
       o += ", .section = ";
-      append_cpp_string(o, c.section);
+      append_view(o, c.section);
     }
     if (!c.title.empty()) {
       o += ", .title = ";
-      append_cpp_string(o, c.title);
+      append_view(o, c.title);
     }
     if (!c.parameter.empty()) {
       o += ", .parameter = ";
-      append_cpp_string(o, c.parameter);
+      append_view(o, c.parameter);
     }
     if (c.parameter_min) {
       o += ", .parameter_min = ";
@@ -267,21 +276,21 @@ void emit_commands(std::string &o, const dictionary &d) {
       o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
     if (!c.date.empty()) {
       o += ", .date = ";
-      append_cpp_string(o, c.date);
+      append_view(o, c.date);
     }
     if (c.reply_type != od::command_value::none)
       o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
     if (!c.reply.empty()) {
       o += ", .reply = ";
-      append_cpp_string(o, c.reply);
+      append_view(o, c.reply);
     }
     if (!c.modes.empty()) {
       o += ", .modes = ";
-      append_cpp_string(o, c.modes);
+      append_view(o, c.modes);
     }
     if (!c.remark.empty()) {
       o += ", .remark = ";
-      append_cpp_string(o, c.remark);
+      append_view(o, c.remark);
     }
     o += "},\n";
   }
@@ -314,14 +323,16 @@ std::string emit_header(const dictionary &d) {
   o += "// clang-format off\n#pragma once\n\n";
   if (d.is_command_table) {
     o += "#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
-         "<array>\n\n";
+         "<array>\n#include <string_view>\n\n";
   } else {
     o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-         "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n\n";
+         "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n"
+         "#include <string_view>\n\n";
   }
   o += "namespace fieldcodec::dictionaries::" + d.stem + " {\n\n";
+  o += "using namespace std::string_view_literals;\n\n";
   o += "inline constexpr const char *source_file = " + cpp_string(d.source_name) + ";\n\n";
   if (d.is_command_table) {
     emit_commands(o, d);
@@ -391,29 +402,32 @@ std::string emit_header(const dictionary &d) {
   if (scales) table("scaling::linear", "scales", emit_scale);
   o += std::string("inline constexpr od::dictionary dictionary{entries, infos") +
        (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
-  o += "\n// VAR objects: standalone descriptors (copies, not references into the tables: firmware "
-       "that\n// names one keeps only that one).\n";
-  for (std::size_t k = 0; k < d.entries.size(); ++k) {
-    if (!is_var[k]) continue;
+  // a standalone descriptor: a copy of table row k, not a reference into the tables
+  auto descriptor = [&](std::size_t k) {
     const std::string at = std::to_string(k);
     o += "inline constexpr od::descriptor " + named[k] + "{entries[" + at + "], infos[" + at + "]";
     if (scales) o += ", scales[" + at + "]";
-    o += "}; // 0x" + hex(d.entries[k].index, 4) + "\n";
+    o += "}; // 0x" + hex(d.entries[k].index, 4);
+    if (!is_var[k]) o += " sub " + std::to_string(d.entries[k].sub);
+    o += "\n";
+  };
+  o += "\n// VAR objects: standalone descriptors (firmware that names one keeps only that one).\n";
+  for (std::size_t k = 0; k < d.entries.size(); ++k) {
+    if (is_var[k]) descriptor(k);
   }
   if (!views.empty()) o += "\n// ARRAY and RECORD objects: views into the tables.\n";
   for (const view &v : views) {
     const std::string at = std::to_string(v.first);
     const std::string n = std::to_string(v.count);
     o += "inline constexpr od::object " + v.symbol + "{0x" + hex(v.info->index, 4) +
-         ", od::object_code::" + object_enum(v.info->code) + ", " + cpp_string(v.info->name) +
-         ", {entries.data() + " + at + ", " + n + "}, {infos.data() + " + at + ", " + n + "}";
+         ", od::object_code::" + object_enum(v.info->code) + ", ";
+    append_view(o, v.info->name);
+    o += ", {entries.data() + " + at + ", " + n + "}, {infos.data() + " + at + ", " + n + "}";
     if (scales) o += ", {scales.data() + " + at + ", " + n + "}";
     o += "};\n";
-    // named sub-objects of the view: references into the table (`view[sub]` is the descriptor)
+    // named sub-objects of the view: standalone descriptors too (as `view[sub]`)
     for (std::size_t k = v.first; k < v.first + v.count; ++k) {
-      if (named[k].empty()) continue;
-      o += "inline constexpr const od::entry &" + named[k] + " = entries[" + std::to_string(k) +
-           "];\n";
+      if (!named[k].empty()) descriptor(k);
     }
   }
   o += "\n} // namespace fieldcodec::dictionaries::" + d.stem + "\n// clang-format on\n";

@@ -17,6 +17,8 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string_view>
+#include <type_traits>
 
 namespace fc = fieldcodec;
 namespace od = fieldcodec::od;
@@ -77,8 +79,8 @@ static_assert(dict.is_valid());
 // Parallel tables must have one element per entry; a scaled entry needs a scale table.
 static_assert(!od::dictionary{entries, std::span(infos).first(5)}.is_valid());
 static_assert(!od::dictionary{entries, infos, std::span(scales).first(5)}.is_valid());
-static_assert(!od::dictionary{entries, infos}.is_valid());                 // scaled, no scales
-static_assert(od::dictionary{std::span(entries).first(4)}.is_valid());     // no infos: fine
+static_assert(!od::dictionary{entries, infos}.is_valid());             // scaled, no scales
+static_assert(od::dictionary{std::span(entries).first(4)}.is_valid()); // no infos: fine
 
 // Lookups by address and by (index, sub).
 static_assert(dict.find(od::address{0x1018, 4}) == &entries[2]);
@@ -167,7 +169,7 @@ TEST_CASE("od descriptor: values of an object's sub-object") {
   CHECK(od::decode(gain, 2, std::span<const std::uint8_t>(out).first(2)).error() ==
         errc::unknown_object);
   CHECK(od::encode(gain[0], 1001.0, out).error() == errc::out_of_range); // values are raw
-  CHECK(gain[0].to_raw(10.0).value() == 1000);                          // EU 10 → raw 1000
+  CHECK(gain[0].to_raw(10.0).value() == 1000);                           // EU 10 → raw 1000
 }
 
 #ifdef FIELDCODEC_HAVE_GENERATED
@@ -182,11 +184,24 @@ TEST_CASE("od descriptor: generated headers") {
   CHECK(xc::device_type.default_value == row->default_value);
   CHECK(xc::device_type.info.name == xc::dictionary.info(*row).name);
   CHECK(dpq::inj_p_limit_1.scale.scale.mantissa == 32767);
-  CHECK(dpq::inj_p_limit_1.info.unit == dpq::dictionary.info(*dpq::dictionary.find(0x2023, 0)).unit);
+  CHECK(dpq::inj_p_limit_1.info.unit ==
+        dpq::dictionary.info(*dpq::dictionary.find(0x2023, 0)).unit);
   // an ARRAY/RECORD object is a view: [sub] gives the descriptor
   CHECK(xc::identity_object.index == 0x1018);
-  CHECK(xc::identity_object[1].info.name == xc::dictionary.info(*xc::dictionary.find(0x1018, 1)).name);
+  CHECK(xc::identity_object[1].info.name ==
+        xc::dictionary.info(*xc::dictionary.find(0x1018, 1)).name);
   CHECK(xc::identity_object.at(0x7F).error() == errc::unknown_object);
   CHECK(xc::dictionary.object(0x1018).size() == xc::identity_object.size());
+  // named sub-objects of a RECORD are standalone descriptors too
+  static_assert(std::is_same_v<decltype(xc::identity_object_vendor_id), const od::descriptor>);
+  CHECK(xc::identity_object_vendor_id.sub == 1);
+  CHECK(xc::identity_object_vendor_id.info.name == xc::identity_object[1].info.name);
+  // every generated string has exactly its length (the "…"sv literals keep embedded NULs and
+  // never count the terminator)
+  for (const od::entry &e : xc::dictionary) {
+    const auto &i = xc::dictionary.info(e);
+    CHECK(i.name.find('\0') == std::string_view::npos);
+    CHECK(!i.name.empty());
+  }
 }
 #endif

@@ -64,17 +64,9 @@ void check_type(od::data_type t, std::size_t &accepted, std::size_t &refused) {
   const od::entry e{.type = t};
   const i128 tmin = std::numeric_limits<T>::min();
   const i128 tmax = std::numeric_limits<T>::max();
-  i128 candidates[] = {tmin,
-                       tmax,
-                       0,
-                       1,
-                       -1,
-                       type_min(t),
-                       type_min(t) - 1,
-                       type_max(t),
-                       type_max(t) + 1,
-                       tmin + 1,
-                       tmax - 1};
+  i128 candidates[] = {
+      tmin,     tmax,    0, 1, -1, type_min(t), type_min(t) - 1, type_max(t), type_max(t) + 1,
+      tmin + 1, tmax - 1};
   for (const i128 c : candidates) {
     if (c < tmin || c > tmax) continue; // not a value of T
     const T v = static_cast<T>(c);
@@ -158,9 +150,8 @@ TEST_CASE("od values: enumerations by their underlying type") {
   CHECK(od::decode<mode>(i8, ff).value() == mode::vendor);
   CHECK(od::decode<mode>(u8, ff).error() == errc::overflow); // 255 is no int8 value
   // limits apply to the value
-  const od::entry modes{.type = od::data_type::integer8,
-                        .low = od::signed_number(-1),
-                        .high = od::signed_number(10)};
+  const od::entry modes{
+      .type = od::data_type::integer8, .low = od::signed_number(-1), .high = od::signed_number(10)};
   CHECK(od::encode(modes, mode::homing, out).value() == 1);
   CHECK(od::check_limits(modes, od::signed_number(11)).error() == errc::out_of_range);
 }

@@ -13,17 +13,20 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace fieldcodec::dictionaries::xenax_ethercat {
+
+using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_ethercat.eds";
 
 inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(4325778U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "Servocontroller XENAX Xvi xxVx"},
-    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Module HW Vxxx.xxx"},
-    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Protocol SW Vxxx.xxx"},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "Servocontroller XENAX Xvi xxVx"sv},
+    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Module HW Vxxx.xxx"sv},
+    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Protocol SW Vxxx.xxx"sv},
     {.index = 0x1018, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(1U), .high = od::unsigned_number(4U), .default_value = od::unsigned_number(4U)},
     {.index = 0x1018, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
     {.index = 0x1018, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
@@ -338,7 +341,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(10000000), .default_value = od::signed_number(1000)},
     {.index = 0x5011, .type = od::data_type::visible_string},
     {.index = 0x5012, .type = od::data_type::visible_string},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "no error"},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "no error"sv},
     {.index = 0x5021, .type = od::data_type::visible_string},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
@@ -376,375 +379,374 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x60FE, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
-    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "http://www.jennyscience.ch"},
+    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "http://www.jennyscience.ch"sv},
 }};
 
 inline constexpr std::array<od::entry_info, 358> infos{{
-    {.name = "Device Type"},
-    {.name = "Error Register"},
-    {.name = "Manufacturer Device Name"},
-    {.name = "Manufacturer Hardware Version"},
-    {.name = "Manufacturer Software Version"},
-    {.name = "Nbr of Entries"},
-    {.name = "Vendor Id"},
-    {.name = "Product Code"},
-    {.name = "Revision Number"},
-    {.name = "Serial Number"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Target Position"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Target Position"},
-    {.name = "Digital Outputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Target Position"},
-    {.name = "Speed"},
-    {.name = "Acceleration"},
-    {.name = "Deceleration (reserved for future)"},
-    {.name = "S-Curve"},
-    {.name = "Following Position Error Window"},
-    {.name = "Target Position Error Window"},
-    {.name = "Digital Outputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Speed"},
-    {.name = "Reserved for future 2001"},
-    {.name = "Reserved for future 2003"},
-    {.name = "Digital Outputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Reserved for future 2002"},
-    {.name = "Digital Outputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Controlword"},
-    {.name = "Target Position"},
-    {.name = "Following position error window"},
-    {.name = "Target position error window"},
-    {.name = "I Force Max"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Actual Position"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Actual Position"},
-    {.name = "Digital Inputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Actual Position"},
-    {.name = "Actual Following position error"},
-    {.name = "Actual Current"},
-    {.name = "Digital Inputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Actual Position"},
-    {.name = "I Force Actual"},
-    {.name = "Digital Inputs"},
-    {.name = "Nbr of Entries"},
-    {.name = "Statusword"},
-    {.name = "Actual Position"},
-    {.name = "Actual Following position error"},
-    {.name = "Actual Current"},
-    {.name = "Process Status Register"},
-    {.name = "No of Used Sync Manager Channels"},
-    {.name = "Com Type Sync Manager 1"},
-    {.name = "Com Type Sync Manager 2"},
-    {.name = "Com Type Sync Manager 3"},
-    {.name = "Com Type Sync Manager 4"},
-    {.name = "Com Type Sync Manager 5"},
-    {.name = "Nbr of Entries"},
-    {.name = "Nbr of Entries"},
-    {.name = "Nbr of Assigned RxPDO"},
-    {.name = "PDO Mapping Index of Assigned RxPDOs"},
-    {.name = "Nbr of Assigned TxPDO"},
-    {.name = "PDO Mapping Index of Assigned TxPDOs"},
-    {.name = "S-Curve Profile"},
-    {.name = "Reserved 2001"},
-    {.name = "Reserved 2002"},
-    {.name = "Reserved 2003"},
-    {.name = "XENAX Error Number"},
-    {.name = "I_Force Actual"},
-    {.name = "Process Status Register"},
-    {.name = "PDO Cycle Time"},
-    {.name = "Motor Type"},
-    {.name = "Limit Force"},
-    {.name = "Force Actual Value"},
-    {.name = "Direct Commands"},
-    {.name = "NumOfEntries"},
-    {.name = "TS Tell Status"},
-    {.name = "TE Tell Error Number"},
-    {.name = "TP Tell Position"},
-    {.name = "TT Tell Temperature"},
-    {.name = "TOX Tell Output Hex"},
-    {.name = "TIX Tell Input Hex"},
-    {.name = "TMC Tell Motor Current"},
-    {.name = "TMT Tell Motion Time"},
-    {.name = "TCP Tell Captured Position 1"},
-    {.name = "TCP Tell Captured Position 2"},
-    {.name = "TCP Tell Captured Position 3"},
-    {.name = "TCP Tell Captured Position 4"},
-    {.name = "TCP Tell Captured Position 5"},
-    {.name = "TCP Tell Captured Position 6"},
-    {.name = "TCP Tell Captured Position 7"},
-    {.name = "TCP Tell Captured Position 8"},
-    {.name = "TH Tell Reference State"},
-    {.name = "VER Version of Firmware"},
-    {.name = "ACV Acceleration Variation (Jerk, scaled to 1000)"},
-    {.name = "I2TM Limit Value (scaled to 10)"},
-    {.name = "I2T Calculated Value (scaled to 10)"},
-    {.name = "IFPK I_Force Peak (FTM = 0) FPK Force Peak (FTM = 1,2)"},
-    {.name = "TESM Tell SMU Error"},
-    {.name = "DGMSO Detected Gantry Master Slave Offset"},
-    {.name = "SIFF Sector I_Force Curve Failed (FTM = 0) SFF Sector Force Curve Failed (FTM = 1,2) (binary notation, LSB = sector 1)"},
-    {.name = "IFPKn I_Force Peak Sector (FTM = 0) FPKn Force Peak Sector (FTM = 1,2) (select sector over Object 0x5003/050)"},
-    {.name = "FCV Force Calibration Valid"},
-    {.name = "TV Tell Velocity"},
-    {.name = "TPT Tell Process Time"},
-    {.name = "VERL Version of Bootloader"},
-    {.name = "TCPB Tell Capture Pos. Buffer 1"},
-    {.name = "TCPB Tell Capture Pos. Buffer 2"},
-    {.name = "TCPB Tell Capture Pos. Buffer 3"},
-    {.name = "TCPB Tell Capture Pos. Buffer 4"},
-    {.name = "TCPB Tell Capture Pos. Buffer 5"},
-    {.name = "TCPB Tell Capture Pos. Buffer 6"},
-    {.name = "TCPB Tell Capture Pos. Buffer 7"},
-    {.name = "TCPB Tell Capture Pos. Buffer 8"},
-    {.name = "TESMH Tell SMU Error History"},
-    {.name = "GR Gear Ratio"},
-    {.name = "TTPS Tell Temperature Power Stage (Xvi75V8S only)"},
-    {.name = "TVPSM Tell voltage power supply motor in [mV]"},
-    {.name = "LARES linear axis resolution in [inc/m]"},
-    {.name = "LAST linear axis stroke in [inc]"},
-    {.name = "TTGS Tell trajectory state"},
-    {.name = "NumOfEntries"},
-    {.name = "CO Clear Output Number"},
-    {.name = "EVT Event Activation"},
-    {.name = "G Go Immediately"},
-    {.name = "IX Start Index Number"},
-    {.name = "PG Start Program Number"},
-    {.name = "SO Set Output Number"},
-    {.name = "SOX Set Output Hex Mask"},
-    {.name = "TGD Set Trigger Position Downward"},
-    {.name = "TGU Set Trigger Position Upward"},
-    {.name = "ETI Enable Track Input"},
-    {.name = "DTI Disable Track Input"},
-    {.name = "PRF Start Profile Number"},
-    {.name = "CRDA Cogging Reference Drive Automatic"},
-    {.name = "DIF Drive I_Force"},
-    {.name = "CLIF Change Limit I_Force"},
-    {.name = "DF Drive Force (Xvi75V8S only)"},
-    {.name = "NumOfEntries"},
-    {.name = "AC Acceleration"},
-    {.name = "S-Curve Profile (in percent)"},
-    {.name = "SP Speed"},
-    {.name = "PO Position (absolute)"},
-    {.name = "WA Way (relative)"},
-    {.name = "DP Deviation Position"},
-    {.name = "DRHR Direction Reference"},
-    {.name = "DTP Deviation Target Position"},
-    {.name = "ED Emergency Deceleration"},
-    {.name = "ILAS Input Low Active Selective"},
-    {.name = "ILA Input Low Active"},
-    {.name = "IS Stop Current (Linear) Nominal Current (Rotative) scaled to 10mA"},
-    {.name = "SLPP Software Limit Position Positive"},
-    {.name = "SLPN Software Limit Position Negative"},
-    {.name = "MD Mode"},
-    {.name = "ML Mass Load (WebMotion: Payload / Inertia)"},
-    {.name = "BWC Bandwidth Current Controller (WebMotion: GAIN CUR)"},
-    {.name = "BWP Bandwidth Position Controller (WebMotion: GAIN POS)"},
-    {.name = "IR Run Current (Linear) Torque Current (Rotative) scaled to 10mA"},
-    {.name = "NIX Preselected Index Number"},
-    {.name = "AIX Acceleration of selected Index"},
-    {.name = "SIX Speed of selected Index"},
-    {.name = "DIX Distance of selected Index (depends on absolute or relative index definition)"},
-    {.name = "CI Card Identifier"},
-    {.name = "GSID Gantry Slave Identifier"},
-    {.name = "FQC Filter Quality Current"},
-    {.name = "FFC Filter Frequency Current"},
-    {.name = "ICP Increments per Puls"},
-    {.name = "INH Input Home Sensor"},
-    {.name = "OVRD Speed Override"},
-    {.name = "PWRT Phasing Rotative w/o HALL"},
-    {.name = "SOA Set Output Activity"},
-    {.name = "SOT Set Output Type"},
-    {.name = "SR Synchronous Ratio"},
-    {.name = "CAB CAN Baud Rate"},
-    {.name = "ROID Rotative Motor Identifier"},
-    {.name = "Reserved"},
-    {.name = "Reserved"},
-    {.name = "SIFS Sector I_Force Start (FTM = 0) SFS Sector Force Start (FTM = 1,2)"},
-    {.name = "SIFE Sector I_Force End (FTM = 0) SFE Sector Force End (FTM = 1,2)"},
-    {.name = "IFL I_Force Low"},
-    {.name = "IFH I_Force High"},
-    {.name = "MLPN Mechanical Limit Position Negative"},
-    {.name = "MLPP Mechanical Limit Position Positive"},
-    {.name = "PGMSO Preset Gantry Master Slave Offset"},
-    {.name = "BRKD Brake delay"},
-    {.name = "Reserved"},
-    {.name = "LIF Limit I_Force"},
-    {.name = "TYIX Type of Index"},
-    {.name = "NSEC Preselected Sector Number"},
-    {.name = "STCX Sector Transition Configuration (Hex Mask)"},
-    {.name = "NDIF Preselected Drive I_Force Number (FTM = 0) NDF Preselected Drive Force Number (FTM = 1,2)"},
-    {.name = "ADIF Acceleration of selected Drive I_Force (FTM = 0) ADF Acceleration of selected Drive Force (FTM = 1,2)"},
-    {.name = "SDIF Speed of selected Drive I_Force (FTM = 0) SDF Speed of selected Drive Force (FTM = 1,2)"},
-    {.name = "IDIF I_Force Limit of selected Drive I_Force"},
-    {.name = "DDIF Direction of selected Drive I_Force (FTM = 0) DDF Direction of selected Drive Force (FTM = 1,2)"},
-    {.name = "SSEC Select Sectors (binary notation, LSB = sector 1)"},
-    {.name = "SSO Set Sector Offset"},
-    {.name = "ENCPD Encoder Plausibility Checking Disable"},
-    {.name = "SPAD Set Point ACK disable"},
-    {.name = "RXZP ROTAX Z-Position"},
-    {.name = "DRH Dir Home"},
-    {.name = "DRZ Z-Mark"},
-    {.name = "FQS Filter Quality Speed"},
-    {.name = "FFS Filter Frequency Speed"},
-    {.name = "EBMD Enhanced Bandwidth Mode Disabled"},
-    {.name = "Reserved"},
-    {.name = "AIXD Acceleration of dynamically selected Index"},
-    {.name = "SIXD Speed of dynamically selected Index"},
-    {.name = "DIXD Distance of dynamically selected Index (depends on absolute or relative index definition)"},
-    {.name = "TYIXD Type of dynamically selected Index"},
-    {.name = "PPSD Pole Placement Stability Dynamics"},
-    {.name = "IFDCS I_Force Drift Compensation Setting"},
-    {.name = "Reserved"},
-    {.name = "SORF Swing Out Reduction Frequency"},
-    {.name = "SORD Swing Out Reduction Damping"},
-    {.name = "Reserved"},
-    {.name = "Reserved"},
-    {.name = "AVF Filter Frequency for Current Shaper"},
-    {.name = "AVD Damping Ratio for Current Shaper"},
-    {.name = "NOF Preselected Output Function"},
-    {.name = "TYOF Type of Output Function"},
-    {.name = "NIF Preselected Input Function"},
-    {.name = "TYIF Type of Input Function"},
-    {.name = "PAIF Parameter A of Input Function"},
-    {.name = "PBIF Parameter B of Input Function"},
-    {.name = "PCIF Parameter C of Input Function"},
-    {.name = "CLF Change Limit Force (Xvi75V8S only)"},
-    {.name = "FD Force of selected Drive Force (Xvi75V8S only)"},
-    {.name = "FH Force High (Xvi75V8S only)"},
-    {.name = "FL Force Low (Xvi75V8S only)"},
-    {.name = "FTM Forceteq Mode (Xvi75V8S only)"},
-    {.name = "SQBW Signateq Bandwidth (Xvi75V8S only)"},
-    {.name = "MM Motor Manufacturer (Xvi75V8S only)"},
-    {.name = "AREF Automatic Reference"},
-    {.name = "EGMSO Enable user defined gantry Master/Slave offset"},
-    {.name = "VMTAE Virtual multiturn for rotative motors with absolute encoder"},
-    {.name = "ENAR Enable absolute reference"},
-    {.name = "CTAB Correction Table State"},
-    {.name = "APSN number of program to auto start"},
-    {.name = "APSD Automatic program start delay[ms]"},
-    {.name = "PMHSD Profinet MC_Home support disable"},
-    {.name = "FCSM Force Calibration Storage mode"},
-    {.name = "SOD P402 Switch on at transition 3 disable"},
-    {.name = "GCME Gantry Coupled Mode Enable"},
-    {.name = "FBCM Force buffered CSP mode"},
-    {.name = "NumOfEntries"},
-    {.name = "POL Pole Pairs"},
-    {.name = "ENC Encoder Increments (Rotative, 1 turn of motor shaft)"},
-    {.name = "PHD Phase Direction"},
-    {.name = "PHO Phase Offset"},
-    {.name = "MAMO Slider Mass (LINAX / ELAX) Rotor Inertia (Rotative)"},
-    {.name = "FCM Force Constant of Motor"},
-    {.name = "LPH Inductance Phase-Phase"},
-    {.name = "RPH Resistance Phase-Phase"},
-    {.name = "FFDY Frictional Force Dynamic"},
-    {.name = "FFST Frictional Force Static"},
-    {.name = "DMLPP Detected Mechanical Limit Position Positive"},
-    {.name = "NumOfEntries"},
-    {.name = "VERS Version SMU"},
-    {.name = "SLS Timeout"},
-    {.name = "Speed Limit"},
-    {.name = "Stop Timeout"},
-    {.name = "Position Window"},
-    {.name = "SFTRD Input Configuration SMU"},
-    {.name = "TESM Tell SMU Error"},
-    {.name = "SMU Master Error Bitfeld"},
-    {.name = "SMU Slave Error Bitfeld"},
-    {.name = "SMU Master Info Bitfeld"},
-    {.name = "SMU Slave Info Bitfeld"},
-    {.name = "SPC Safety Parameter CRC"},
-    {.name = "SPCMAC Safety Parameter and MAC Adress CRC (Xvi75V8S only)"},
-    {.name = "NumOfEntries"},
-    {.name = "EGW Set Gateway Address"},
-    {.name = "EIP Set IP Address"},
-    {.name = "ENM Set Net Mask"},
-    {.name = "EMAC Read MAC Address 3 high Bytes"},
-    {.name = "EMAC Read MAC Address 3 low Bytes"},
-    {.name = "EPRT Set Port Number"},
-    {.name = "LICR Show Installed Licences"},
-    {.name = "SERB Set Baud Rate on Serial Interface"},
-    {.name = "WebMotion Version"},
-    {.name = "WebMotion Boot Version"},
-    {.name = "NumOfEntries"},
-    {.name = "SQVER Signateq Firmware Version"},
-    {.name = "SQBW Signateq Bandwidth"},
-    {.name = "SQSNF Signateq Sensor Nominal Force"},
-    {.name = "SQMRP Signateq Measurement Range"},
-    {.name = "Reserved"},
-    {.name = "SQSS Signateq Sensor Sensitivity"},
-    {.name = "SQSFT Signateq Sensor Force Type"},
-    {.name = "SQCM Signateq Calibration Mode"},
-    {.name = "SQFD Signateq Force Direction"},
-    {.name = "LFRMS Limit Force Reached Maximum Speed"},
-    {.name = "CLFO Clear force offset"},
-    {.name = "SQAC Signateq available calibrations"},
-    {.name = "BWFP Bandwidth for forceteq pro controller"},
-    {.name = "FTPES Forceteq Pro Elastic Spring Constant"},
-    {.name = "Signateq Sensor Model Type (SQSMT)"},
-    {.name = "Signateq Sensor Serial Number (SQSSN)"},
-    {.name = "Tell Error String (TES)"},
-    {.name = "Servo identification string (SID)"},
-    {.name = "Error Code"},
-    {.name = "Controlword"},
-    {.name = "Statusword"},
-    {.name = "Modes of Operation Requested"},
-    {.name = "Modes of Operation Display"},
-    {.name = "Position Actual Value"},
-    {.name = "Following Position Error Window"},
-    {.name = "Target Position Window"},
-    {.name = "Position Window Time"},
-    {.name = "Velocity Actual Value"},
-    {.name = "Limit I_Force"},
-    {.name = "Motor Current Actual Value"},
-    {.name = "Target Position"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Software Position Limit Left"},
-    {.name = "Software Position Limit Right"},
-    {.name = "Speed"},
-    {.name = "Acceleration"},
-    {.name = "Deceleration (reserved for future)"},
-    {.name = "Quick Stop Deceleration"},
-    {.name = "Reference Methods"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Reference-Speed searching external Reference sensor"},
-    {.name = "Z-Speed searching internal encoder Z-mark"},
-    {.name = "Velocity Offset"},
-    {.name = "Torque Offset"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Base value"},
-    {.name = "10^EXPONENT"},
-    {.name = "Actual Position Following Error"},
-    {.name = "Digital Inputs"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Output Bit"},
-    {.name = "Output Mask (not supported)"},
-    {.name = "Target Velocity"},
-    {.name = "Supported Modes of Operation"},
-    {.name = "Product Website Address"},
+    {.name = "Device Type"sv},
+    {.name = "Error Register"sv},
+    {.name = "Manufacturer Device Name"sv},
+    {.name = "Manufacturer Hardware Version"sv},
+    {.name = "Manufacturer Software Version"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Vendor Id"sv},
+    {.name = "Product Code"sv},
+    {.name = "Revision Number"sv},
+    {.name = "Serial Number"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Target Position"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Target Position"sv},
+    {.name = "Digital Outputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Target Position"sv},
+    {.name = "Speed"sv},
+    {.name = "Acceleration"sv},
+    {.name = "Deceleration (reserved for future)"sv},
+    {.name = "S-Curve"sv},
+    {.name = "Following Position Error Window"sv},
+    {.name = "Target Position Error Window"sv},
+    {.name = "Digital Outputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Speed"sv},
+    {.name = "Reserved for future 2001"sv},
+    {.name = "Reserved for future 2003"sv},
+    {.name = "Digital Outputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Reserved for future 2002"sv},
+    {.name = "Digital Outputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Controlword"sv},
+    {.name = "Target Position"sv},
+    {.name = "Following position error window"sv},
+    {.name = "Target position error window"sv},
+    {.name = "I Force Max"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Actual Position"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Actual Position"sv},
+    {.name = "Digital Inputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Actual Position"sv},
+    {.name = "Actual Following position error"sv},
+    {.name = "Actual Current"sv},
+    {.name = "Digital Inputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Actual Position"sv},
+    {.name = "I Force Actual"sv},
+    {.name = "Digital Inputs"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Statusword"sv},
+    {.name = "Actual Position"sv},
+    {.name = "Actual Following position error"sv},
+    {.name = "Actual Current"sv},
+    {.name = "Process Status Register"sv},
+    {.name = "No of Used Sync Manager Channels"sv},
+    {.name = "Com Type Sync Manager 1"sv},
+    {.name = "Com Type Sync Manager 2"sv},
+    {.name = "Com Type Sync Manager 3"sv},
+    {.name = "Com Type Sync Manager 4"sv},
+    {.name = "Com Type Sync Manager 5"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Nbr of Assigned RxPDO"sv},
+    {.name = "PDO Mapping Index of Assigned RxPDOs"sv},
+    {.name = "Nbr of Assigned TxPDO"sv},
+    {.name = "PDO Mapping Index of Assigned TxPDOs"sv},
+    {.name = "S-Curve Profile"sv},
+    {.name = "Reserved 2001"sv},
+    {.name = "Reserved 2002"sv},
+    {.name = "Reserved 2003"sv},
+    {.name = "XENAX Error Number"sv},
+    {.name = "I_Force Actual"sv},
+    {.name = "Process Status Register"sv},
+    {.name = "PDO Cycle Time"sv},
+    {.name = "Motor Type"sv},
+    {.name = "Limit Force"sv},
+    {.name = "Force Actual Value"sv},
+    {.name = "Direct Commands"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "TS Tell Status"sv},
+    {.name = "TE Tell Error Number"sv},
+    {.name = "TP Tell Position"sv},
+    {.name = "TT Tell Temperature"sv},
+    {.name = "TOX Tell Output Hex"sv},
+    {.name = "TIX Tell Input Hex"sv},
+    {.name = "TMC Tell Motor Current"sv},
+    {.name = "TMT Tell Motion Time"sv},
+    {.name = "TCP Tell Captured Position 1"sv},
+    {.name = "TCP Tell Captured Position 2"sv},
+    {.name = "TCP Tell Captured Position 3"sv},
+    {.name = "TCP Tell Captured Position 4"sv},
+    {.name = "TCP Tell Captured Position 5"sv},
+    {.name = "TCP Tell Captured Position 6"sv},
+    {.name = "TCP Tell Captured Position 7"sv},
+    {.name = "TCP Tell Captured Position 8"sv},
+    {.name = "TH Tell Reference State"sv},
+    {.name = "VER Version of Firmware"sv},
+    {.name = "ACV Acceleration Variation (Jerk, scaled to 1000)"sv},
+    {.name = "I2TM Limit Value (scaled to 10)"sv},
+    {.name = "I2T Calculated Value (scaled to 10)"sv},
+    {.name = "IFPK I_Force Peak (FTM = 0) FPK Force Peak (FTM = 1,2)"sv},
+    {.name = "TESM Tell SMU Error"sv},
+    {.name = "DGMSO Detected Gantry Master Slave Offset"sv},
+    {.name = "SIFF Sector I_Force Curve Failed (FTM = 0) SFF Sector Force Curve Failed (FTM = 1,2) (binary notation, LSB = sector 1)"sv},
+    {.name = "IFPKn I_Force Peak Sector (FTM = 0) FPKn Force Peak Sector (FTM = 1,2) (select sector over Object 0x5003/050)"sv},
+    {.name = "FCV Force Calibration Valid"sv},
+    {.name = "TV Tell Velocity"sv},
+    {.name = "TPT Tell Process Time"sv},
+    {.name = "VERL Version of Bootloader"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 1"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 2"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 3"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 4"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 5"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 6"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 7"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 8"sv},
+    {.name = "TESMH Tell SMU Error History"sv},
+    {.name = "GR Gear Ratio"sv},
+    {.name = "TTPS Tell Temperature Power Stage (Xvi75V8S only)"sv},
+    {.name = "TVPSM Tell voltage power supply motor in [mV]"sv},
+    {.name = "LARES linear axis resolution in [inc/m]"sv},
+    {.name = "LAST linear axis stroke in [inc]"sv},
+    {.name = "TTGS Tell trajectory state"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "CO Clear Output Number"sv},
+    {.name = "EVT Event Activation"sv},
+    {.name = "G Go Immediately"sv},
+    {.name = "IX Start Index Number"sv},
+    {.name = "PG Start Program Number"sv},
+    {.name = "SO Set Output Number"sv},
+    {.name = "SOX Set Output Hex Mask"sv},
+    {.name = "TGD Set Trigger Position Downward"sv},
+    {.name = "TGU Set Trigger Position Upward"sv},
+    {.name = "ETI Enable Track Input"sv},
+    {.name = "DTI Disable Track Input"sv},
+    {.name = "PRF Start Profile Number"sv},
+    {.name = "CRDA Cogging Reference Drive Automatic"sv},
+    {.name = "DIF Drive I_Force"sv},
+    {.name = "CLIF Change Limit I_Force"sv},
+    {.name = "DF Drive Force (Xvi75V8S only)"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "AC Acceleration"sv},
+    {.name = "S-Curve Profile (in percent)"sv},
+    {.name = "SP Speed"sv},
+    {.name = "PO Position (absolute)"sv},
+    {.name = "WA Way (relative)"sv},
+    {.name = "DP Deviation Position"sv},
+    {.name = "DRHR Direction Reference"sv},
+    {.name = "DTP Deviation Target Position"sv},
+    {.name = "ED Emergency Deceleration"sv},
+    {.name = "ILAS Input Low Active Selective"sv},
+    {.name = "ILA Input Low Active"sv},
+    {.name = "IS Stop Current (Linear) Nominal Current (Rotative) scaled to 10mA"sv},
+    {.name = "SLPP Software Limit Position Positive"sv},
+    {.name = "SLPN Software Limit Position Negative"sv},
+    {.name = "MD Mode"sv},
+    {.name = "ML Mass Load (WebMotion: Payload / Inertia)"sv},
+    {.name = "BWC Bandwidth Current Controller (WebMotion: GAIN CUR)"sv},
+    {.name = "BWP Bandwidth Position Controller (WebMotion: GAIN POS)"sv},
+    {.name = "IR Run Current (Linear) Torque Current (Rotative) scaled to 10mA"sv},
+    {.name = "NIX Preselected Index Number"sv},
+    {.name = "AIX Acceleration of selected Index"sv},
+    {.name = "SIX Speed of selected Index"sv},
+    {.name = "DIX Distance of selected Index (depends on absolute or relative index definition)"sv},
+    {.name = "CI Card Identifier"sv},
+    {.name = "GSID Gantry Slave Identifier"sv},
+    {.name = "FQC Filter Quality Current"sv},
+    {.name = "FFC Filter Frequency Current"sv},
+    {.name = "ICP Increments per Puls"sv},
+    {.name = "INH Input Home Sensor"sv},
+    {.name = "OVRD Speed Override"sv},
+    {.name = "PWRT Phasing Rotative w/o HALL"sv},
+    {.name = "SOA Set Output Activity"sv},
+    {.name = "SOT Set Output Type"sv},
+    {.name = "SR Synchronous Ratio"sv},
+    {.name = "CAB CAN Baud Rate"sv},
+    {.name = "ROID Rotative Motor Identifier"sv},
+    {.name = "Reserved"sv},
+    {.name = "Reserved"sv},
+    {.name = "SIFS Sector I_Force Start (FTM = 0) SFS Sector Force Start (FTM = 1,2)"sv},
+    {.name = "SIFE Sector I_Force End (FTM = 0) SFE Sector Force End (FTM = 1,2)"sv},
+    {.name = "IFL I_Force Low"sv},
+    {.name = "IFH I_Force High"sv},
+    {.name = "MLPN Mechanical Limit Position Negative"sv},
+    {.name = "MLPP Mechanical Limit Position Positive"sv},
+    {.name = "PGMSO Preset Gantry Master Slave Offset"sv},
+    {.name = "BRKD Brake delay"sv},
+    {.name = "Reserved"sv},
+    {.name = "LIF Limit I_Force"sv},
+    {.name = "TYIX Type of Index"sv},
+    {.name = "NSEC Preselected Sector Number"sv},
+    {.name = "STCX Sector Transition Configuration (Hex Mask)"sv},
+    {.name = "NDIF Preselected Drive I_Force Number (FTM = 0) NDF Preselected Drive Force Number (FTM = 1,2)"sv},
+    {.name = "ADIF Acceleration of selected Drive I_Force (FTM = 0) ADF Acceleration of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "SDIF Speed of selected Drive I_Force (FTM = 0) SDF Speed of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "IDIF I_Force Limit of selected Drive I_Force"sv},
+    {.name = "DDIF Direction of selected Drive I_Force (FTM = 0) DDF Direction of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "SSEC Select Sectors (binary notation, LSB = sector 1)"sv},
+    {.name = "SSO Set Sector Offset"sv},
+    {.name = "ENCPD Encoder Plausibility Checking Disable"sv},
+    {.name = "SPAD Set Point ACK disable"sv},
+    {.name = "RXZP ROTAX Z-Position"sv},
+    {.name = "DRH Dir Home"sv},
+    {.name = "DRZ Z-Mark"sv},
+    {.name = "FQS Filter Quality Speed"sv},
+    {.name = "FFS Filter Frequency Speed"sv},
+    {.name = "EBMD Enhanced Bandwidth Mode Disabled"sv},
+    {.name = "Reserved"sv},
+    {.name = "AIXD Acceleration of dynamically selected Index"sv},
+    {.name = "SIXD Speed of dynamically selected Index"sv},
+    {.name = "DIXD Distance of dynamically selected Index (depends on absolute or relative index definition)"sv},
+    {.name = "TYIXD Type of dynamically selected Index"sv},
+    {.name = "PPSD Pole Placement Stability Dynamics"sv},
+    {.name = "IFDCS I_Force Drift Compensation Setting"sv},
+    {.name = "Reserved"sv},
+    {.name = "SORF Swing Out Reduction Frequency"sv},
+    {.name = "SORD Swing Out Reduction Damping"sv},
+    {.name = "Reserved"sv},
+    {.name = "Reserved"sv},
+    {.name = "AVF Filter Frequency for Current Shaper"sv},
+    {.name = "AVD Damping Ratio for Current Shaper"sv},
+    {.name = "NOF Preselected Output Function"sv},
+    {.name = "TYOF Type of Output Function"sv},
+    {.name = "NIF Preselected Input Function"sv},
+    {.name = "TYIF Type of Input Function"sv},
+    {.name = "PAIF Parameter A of Input Function"sv},
+    {.name = "PBIF Parameter B of Input Function"sv},
+    {.name = "PCIF Parameter C of Input Function"sv},
+    {.name = "CLF Change Limit Force (Xvi75V8S only)"sv},
+    {.name = "FD Force of selected Drive Force (Xvi75V8S only)"sv},
+    {.name = "FH Force High (Xvi75V8S only)"sv},
+    {.name = "FL Force Low (Xvi75V8S only)"sv},
+    {.name = "FTM Forceteq Mode (Xvi75V8S only)"sv},
+    {.name = "SQBW Signateq Bandwidth (Xvi75V8S only)"sv},
+    {.name = "MM Motor Manufacturer (Xvi75V8S only)"sv},
+    {.name = "AREF Automatic Reference"sv},
+    {.name = "EGMSO Enable user defined gantry Master/Slave offset"sv},
+    {.name = "VMTAE Virtual multiturn for rotative motors with absolute encoder"sv},
+    {.name = "ENAR Enable absolute reference"sv},
+    {.name = "CTAB Correction Table State"sv},
+    {.name = "APSN number of program to auto start"sv},
+    {.name = "APSD Automatic program start delay[ms]"sv},
+    {.name = "PMHSD Profinet MC_Home support disable"sv},
+    {.name = "FCSM Force Calibration Storage mode"sv},
+    {.name = "SOD P402 Switch on at transition 3 disable"sv},
+    {.name = "GCME Gantry Coupled Mode Enable"sv},
+    {.name = "FBCM Force buffered CSP mode"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "POL Pole Pairs"sv},
+    {.name = "ENC Encoder Increments (Rotative, 1 turn of motor shaft)"sv},
+    {.name = "PHD Phase Direction"sv},
+    {.name = "PHO Phase Offset"sv},
+    {.name = "MAMO Slider Mass (LINAX / ELAX) Rotor Inertia (Rotative)"sv},
+    {.name = "FCM Force Constant of Motor"sv},
+    {.name = "LPH Inductance Phase-Phase"sv},
+    {.name = "RPH Resistance Phase-Phase"sv},
+    {.name = "FFDY Frictional Force Dynamic"sv},
+    {.name = "FFST Frictional Force Static"sv},
+    {.name = "DMLPP Detected Mechanical Limit Position Positive"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "VERS Version SMU"sv},
+    {.name = "SLS Timeout"sv},
+    {.name = "Speed Limit"sv},
+    {.name = "Stop Timeout"sv},
+    {.name = "Position Window"sv},
+    {.name = "SFTRD Input Configuration SMU"sv},
+    {.name = "TESM Tell SMU Error"sv},
+    {.name = "SMU Master Error Bitfeld"sv},
+    {.name = "SMU Slave Error Bitfeld"sv},
+    {.name = "SMU Master Info Bitfeld"sv},
+    {.name = "SMU Slave Info Bitfeld"sv},
+    {.name = "SPC Safety Parameter CRC"sv},
+    {.name = "SPCMAC Safety Parameter and MAC Adress CRC (Xvi75V8S only)"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "EGW Set Gateway Address"sv},
+    {.name = "EIP Set IP Address"sv},
+    {.name = "ENM Set Net Mask"sv},
+    {.name = "EMAC Read MAC Address 3 high Bytes"sv},
+    {.name = "EMAC Read MAC Address 3 low Bytes"sv},
+    {.name = "EPRT Set Port Number"sv},
+    {.name = "LICR Show Installed Licences"sv},
+    {.name = "SERB Set Baud Rate on Serial Interface"sv},
+    {.name = "WebMotion Version"sv},
+    {.name = "WebMotion Boot Version"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "SQVER Signateq Firmware Version"sv},
+    {.name = "SQBW Signateq Bandwidth"sv},
+    {.name = "SQSNF Signateq Sensor Nominal Force"sv},
+    {.name = "SQMRP Signateq Measurement Range"sv},
+    {.name = "Reserved"sv},
+    {.name = "SQSS Signateq Sensor Sensitivity"sv},
+    {.name = "SQSFT Signateq Sensor Force Type"sv},
+    {.name = "SQCM Signateq Calibration Mode"sv},
+    {.name = "SQFD Signateq Force Direction"sv},
+    {.name = "LFRMS Limit Force Reached Maximum Speed"sv},
+    {.name = "CLFO Clear force offset"sv},
+    {.name = "SQAC Signateq available calibrations"sv},
+    {.name = "BWFP Bandwidth for forceteq pro controller"sv},
+    {.name = "FTPES Forceteq Pro Elastic Spring Constant"sv},
+    {.name = "Signateq Sensor Model Type (SQSMT)"sv},
+    {.name = "Signateq Sensor Serial Number (SQSSN)"sv},
+    {.name = "Tell Error String (TES)"sv},
+    {.name = "Servo identification string (SID)"sv},
+    {.name = "Error Code"sv},
+    {.name = "Controlword"sv},
+    {.name = "Statusword"sv},
+    {.name = "Modes of Operation Requested"sv},
+    {.name = "Modes of Operation Display"sv},
+    {.name = "Position Actual Value"sv},
+    {.name = "Following Position Error Window"sv},
+    {.name = "Target Position Window"sv},
+    {.name = "Position Window Time"sv},
+    {.name = "Velocity Actual Value"sv},
+    {.name = "Limit I_Force"sv},
+    {.name = "Motor Current Actual Value"sv},
+    {.name = "Target Position"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Software Position Limit Left"sv},
+    {.name = "Software Position Limit Right"sv},
+    {.name = "Speed"sv},
+    {.name = "Acceleration"sv},
+    {.name = "Deceleration (reserved for future)"sv},
+    {.name = "Quick Stop Deceleration"sv},
+    {.name = "Reference Methods"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Reference-Speed searching external Reference sensor"sv},
+    {.name = "Z-Speed searching internal encoder Z-mark"sv},
+    {.name = "Velocity Offset"sv},
+    {.name = "Torque Offset"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Base value"sv},
+    {.name = "10^EXPONENT"sv},
+    {.name = "Actual Position Following Error"sv},
+    {.name = "Digital Inputs"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Output Bit"sv},
+    {.name = "Output Mask (not supported)"sv},
+    {.name = "Target Velocity"sv},
+    {.name = "Supported Modes of Operation"sv},
+    {.name = "Product Website Address"sv},
 }};
 
 inline constexpr od::dictionary dictionary{entries, infos};
 static_assert(dictionary.is_valid());
 
-// VAR objects: standalone descriptors (copies, not references into the tables: firmware that
-// names one keeps only that one).
+// VAR objects: standalone descriptors (firmware that names one keeps only that one).
 inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000
 inline constexpr od::descriptor error_register{entries[1], infos[1]}; // 0x1001
 inline constexpr od::descriptor manufacturer_device_name{entries[2], infos[2]}; // 0x1008
@@ -793,105 +795,105 @@ inline constexpr od::descriptor supported_modes_of_operation{entries[356], infos
 inline constexpr od::descriptor product_website_address{entries[357], infos[357]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object", {entries.data() + 5, 5}, {infos.data() + 5, 5}};
-inline constexpr const od::entry &identity_object_nbr_of_entries = entries[5];
-inline constexpr const od::entry &identity_object_vendor_id = entries[6];
-inline constexpr const od::entry &identity_object_product_code = entries[7];
-inline constexpr const od::entry &identity_object_revision_number = entries[8];
-inline constexpr const od::entry &identity_object_serial_number = entries[9];
-inline constexpr od::object receive_pdo_1{0x1600, od::object_code::record, "Receive PDO 1", {entries.data() + 10, 2}, {infos.data() + 10, 2}};
-inline constexpr const od::entry &receive_pdo_1_nbr_of_entries = entries[10];
-inline constexpr const od::entry &receive_pdo_1_controlword = entries[11];
-inline constexpr od::object receive_pdo_2{0x1601, od::object_code::record, "Receive PDO 2", {entries.data() + 12, 3}, {infos.data() + 12, 3}};
-inline constexpr const od::entry &receive_pdo_2_nbr_of_entries = entries[12];
-inline constexpr const od::entry &receive_pdo_2_controlword = entries[13];
-inline constexpr const od::entry &receive_pdo_2_target_position = entries[14];
-inline constexpr od::object receive_pdo_17{0x1611, od::object_code::record, "Receive PDO 17", {entries.data() + 15, 4}, {infos.data() + 15, 4}};
-inline constexpr const od::entry &receive_pdo_17_nbr_of_entries = entries[15];
-inline constexpr const od::entry &receive_pdo_17_controlword = entries[16];
-inline constexpr const od::entry &receive_pdo_17_target_position = entries[17];
-inline constexpr const od::entry &receive_pdo_17_digital_outputs = entries[18];
-inline constexpr od::object receive_pdo_18{0x1612, od::object_code::record, "Receive PDO 18", {entries.data() + 19, 10}, {infos.data() + 19, 10}};
-inline constexpr const od::entry &receive_pdo_18_nbr_of_entries = entries[19];
-inline constexpr const od::entry &receive_pdo_18_controlword = entries[20];
-inline constexpr const od::entry &receive_pdo_18_target_position = entries[21];
-inline constexpr const od::entry &receive_pdo_18_speed = entries[22];
-inline constexpr const od::entry &receive_pdo_18_acceleration = entries[23];
-inline constexpr const od::entry &receive_pdo_18_deceleration_reserved_for_future = entries[24];
-inline constexpr const od::entry &receive_pdo_18_s_curve = entries[25];
-inline constexpr const od::entry &receive_pdo_18_following_position_error_window = entries[26];
-inline constexpr const od::entry &receive_pdo_18_target_position_error_window = entries[27];
-inline constexpr const od::entry &receive_pdo_18_digital_outputs = entries[28];
-inline constexpr od::object receive_pdo_19_reserved_for_future{0x1613, od::object_code::record, "Receive PDO 19 (reserved for future)", {entries.data() + 29, 6}, {infos.data() + 29, 6}};
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_nbr_of_entries = entries[29];
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_controlword = entries[30];
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_speed = entries[31];
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_reserved_for_future_2001 = entries[32];
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_reserved_for_future_2003 = entries[33];
-inline constexpr const od::entry &receive_pdo_19_reserved_for_future_digital_outputs = entries[34];
-inline constexpr od::object receive_pdo_20_reserved_for_future{0x1614, od::object_code::record, "Receive PDO 20 (reserved for future)", {entries.data() + 35, 4}, {infos.data() + 35, 4}};
-inline constexpr const od::entry &receive_pdo_20_reserved_for_future_nbr_of_entries = entries[35];
-inline constexpr const od::entry &receive_pdo_20_reserved_for_future_controlword = entries[36];
-inline constexpr const od::entry &receive_pdo_20_reserved_for_future_reserved_for_future_2002 = entries[37];
-inline constexpr const od::entry &receive_pdo_20_reserved_for_future_digital_outputs = entries[38];
-inline constexpr od::object receive_pdo_21{0x1615, od::object_code::record, "Receive PDO 21", {entries.data() + 39, 6}, {infos.data() + 39, 6}};
-inline constexpr const od::entry &receive_pdo_21_nbr_of_entries = entries[39];
-inline constexpr const od::entry &receive_pdo_21_controlword = entries[40];
-inline constexpr const od::entry &receive_pdo_21_target_position = entries[41];
-inline constexpr const od::entry &receive_pdo_21_following_position_error_window = entries[42];
-inline constexpr const od::entry &receive_pdo_21_target_position_error_window = entries[43];
-inline constexpr const od::entry &receive_pdo_21_i_force_max = entries[44];
-inline constexpr od::object transmit_pdo_1{0x1A00, od::object_code::record, "Transmit PDO 1", {entries.data() + 45, 2}, {infos.data() + 45, 2}};
-inline constexpr const od::entry &transmit_pdo_1_nbr_of_entries = entries[45];
-inline constexpr const od::entry &transmit_pdo_1_statusword = entries[46];
-inline constexpr od::object transmit_pdo_2{0x1A01, od::object_code::record, "Transmit PDO 2", {entries.data() + 47, 3}, {infos.data() + 47, 3}};
-inline constexpr const od::entry &transmit_pdo_2_nbr_of_entries = entries[47];
-inline constexpr const od::entry &transmit_pdo_2_statusword = entries[48];
-inline constexpr const od::entry &transmit_pdo_2_actual_position = entries[49];
-inline constexpr od::object transmit_pdo_17{0x1A10, od::object_code::record, "Transmit PDO 17", {entries.data() + 50, 4}, {infos.data() + 50, 4}};
-inline constexpr const od::entry &transmit_pdo_17_nbr_of_entries = entries[50];
-inline constexpr const od::entry &transmit_pdo_17_statusword = entries[51];
-inline constexpr const od::entry &transmit_pdo_17_actual_position = entries[52];
-inline constexpr const od::entry &transmit_pdo_17_digital_inputs = entries[53];
-inline constexpr od::object transmit_pdo_18{0x1A11, od::object_code::record, "Transmit PDO 18", {entries.data() + 54, 6}, {infos.data() + 54, 6}};
-inline constexpr const od::entry &transmit_pdo_18_nbr_of_entries = entries[54];
-inline constexpr const od::entry &transmit_pdo_18_statusword = entries[55];
-inline constexpr const od::entry &transmit_pdo_18_actual_position = entries[56];
-inline constexpr const od::entry &transmit_pdo_18_actual_following_position_error = entries[57];
-inline constexpr const od::entry &transmit_pdo_18_actual_current = entries[58];
-inline constexpr const od::entry &transmit_pdo_18_digital_inputs = entries[59];
-inline constexpr od::object transmit_pdo_19_reserved_for_future{0x1A12, od::object_code::record, "Transmit PDO 19 (reserved for future)", {entries.data() + 60, 5}, {infos.data() + 60, 5}};
-inline constexpr const od::entry &transmit_pdo_19_reserved_for_future_nbr_of_entries = entries[60];
-inline constexpr const od::entry &transmit_pdo_19_reserved_for_future_statusword = entries[61];
-inline constexpr const od::entry &transmit_pdo_19_reserved_for_future_actual_position = entries[62];
-inline constexpr const od::entry &transmit_pdo_19_reserved_for_future_i_force_actual = entries[63];
-inline constexpr const od::entry &transmit_pdo_19_reserved_for_future_digital_inputs = entries[64];
-inline constexpr od::object transmit_pdo_21{0x1A13, od::object_code::record, "Transmit PDO 21", {entries.data() + 65, 6}, {infos.data() + 65, 6}};
-inline constexpr const od::entry &transmit_pdo_21_nbr_of_entries = entries[65];
-inline constexpr const od::entry &transmit_pdo_21_statusword = entries[66];
-inline constexpr const od::entry &transmit_pdo_21_actual_position = entries[67];
-inline constexpr const od::entry &transmit_pdo_21_actual_following_position_error = entries[68];
-inline constexpr const od::entry &transmit_pdo_21_actual_current = entries[69];
-inline constexpr const od::entry &transmit_pdo_21_process_status_register = entries[70];
-inline constexpr od::object sync_manager_communication_type{0x1C00, od::object_code::array, "Sync Manager Communication Type", {entries.data() + 71, 6}, {infos.data() + 71, 6}};
-inline constexpr od::object sync_manager_pdo_assignment_0{0x1C10, od::object_code::array, "Sync Manager PDO Assignment 0", {entries.data() + 77, 1}, {infos.data() + 77, 1}};
-inline constexpr od::object sync_manager_pdo_assignment_1{0x1C11, od::object_code::array, "Sync Manager PDO Assignment 1", {entries.data() + 78, 1}, {infos.data() + 78, 1}};
-inline constexpr od::object sync_manager_pdo_assignment_2{0x1C12, od::object_code::array, "Sync Manager PDO Assignment 2", {entries.data() + 79, 2}, {infos.data() + 79, 2}};
-inline constexpr od::object sync_manager_pdo_assignment_3{0x1C13, od::object_code::array, "Sync Manager PDO Assignment 3", {entries.data() + 81, 2}, {infos.data() + 81, 2}};
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter", {entries.data() + 95, 46}, {infos.data() + 95, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter", {entries.data() + 141, 17}, {infos.data() + 141, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter", {entries.data() + 158, 107}, {infos.data() + 158, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter", {entries.data() + 265, 12}, {infos.data() + 265, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter", {entries.data() + 277, 14}, {infos.data() + 277, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter", {entries.data() + 291, 11}, {infos.data() + 291, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter", {entries.data() + 302, 15}, {infos.data() + 302, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions", {entries.data() + 334, 3}, {infos.data() + 334, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds", {entries.data() + 342, 3}, {infos.data() + 342, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time", {entries.data() + 347, 3}, {infos.data() + 347, 3}};
-inline constexpr const od::entry &synchronous_cycle_time_highest_sub_index_value = entries[347];
-inline constexpr const od::entry &synchronous_cycle_time_base_value = entries[348];
-inline constexpr const od::entry &synchronous_cycle_time_n_10_exponent = entries[349];
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs", {entries.data() + 352, 3}, {infos.data() + 352, 3}};
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 5, 5}, {infos.data() + 5, 5}};
+inline constexpr od::descriptor identity_object_nbr_of_entries{entries[5], infos[5]}; // 0x1018 sub 0
+inline constexpr od::descriptor identity_object_vendor_id{entries[6], infos[6]}; // 0x1018 sub 1
+inline constexpr od::descriptor identity_object_product_code{entries[7], infos[7]}; // 0x1018 sub 2
+inline constexpr od::descriptor identity_object_revision_number{entries[8], infos[8]}; // 0x1018 sub 3
+inline constexpr od::descriptor identity_object_serial_number{entries[9], infos[9]}; // 0x1018 sub 4
+inline constexpr od::object receive_pdo_1{0x1600, od::object_code::record, "Receive PDO 1"sv, {entries.data() + 10, 2}, {infos.data() + 10, 2}};
+inline constexpr od::descriptor receive_pdo_1_nbr_of_entries{entries[10], infos[10]}; // 0x1600 sub 0
+inline constexpr od::descriptor receive_pdo_1_controlword{entries[11], infos[11]}; // 0x1600 sub 1
+inline constexpr od::object receive_pdo_2{0x1601, od::object_code::record, "Receive PDO 2"sv, {entries.data() + 12, 3}, {infos.data() + 12, 3}};
+inline constexpr od::descriptor receive_pdo_2_nbr_of_entries{entries[12], infos[12]}; // 0x1601 sub 0
+inline constexpr od::descriptor receive_pdo_2_controlword{entries[13], infos[13]}; // 0x1601 sub 1
+inline constexpr od::descriptor receive_pdo_2_target_position{entries[14], infos[14]}; // 0x1601 sub 2
+inline constexpr od::object receive_pdo_17{0x1611, od::object_code::record, "Receive PDO 17"sv, {entries.data() + 15, 4}, {infos.data() + 15, 4}};
+inline constexpr od::descriptor receive_pdo_17_nbr_of_entries{entries[15], infos[15]}; // 0x1611 sub 0
+inline constexpr od::descriptor receive_pdo_17_controlword{entries[16], infos[16]}; // 0x1611 sub 1
+inline constexpr od::descriptor receive_pdo_17_target_position{entries[17], infos[17]}; // 0x1611 sub 2
+inline constexpr od::descriptor receive_pdo_17_digital_outputs{entries[18], infos[18]}; // 0x1611 sub 3
+inline constexpr od::object receive_pdo_18{0x1612, od::object_code::record, "Receive PDO 18"sv, {entries.data() + 19, 10}, {infos.data() + 19, 10}};
+inline constexpr od::descriptor receive_pdo_18_nbr_of_entries{entries[19], infos[19]}; // 0x1612 sub 0
+inline constexpr od::descriptor receive_pdo_18_controlword{entries[20], infos[20]}; // 0x1612 sub 1
+inline constexpr od::descriptor receive_pdo_18_target_position{entries[21], infos[21]}; // 0x1612 sub 2
+inline constexpr od::descriptor receive_pdo_18_speed{entries[22], infos[22]}; // 0x1612 sub 3
+inline constexpr od::descriptor receive_pdo_18_acceleration{entries[23], infos[23]}; // 0x1612 sub 4
+inline constexpr od::descriptor receive_pdo_18_deceleration_reserved_for_future{entries[24], infos[24]}; // 0x1612 sub 5
+inline constexpr od::descriptor receive_pdo_18_s_curve{entries[25], infos[25]}; // 0x1612 sub 6
+inline constexpr od::descriptor receive_pdo_18_following_position_error_window{entries[26], infos[26]}; // 0x1612 sub 7
+inline constexpr od::descriptor receive_pdo_18_target_position_error_window{entries[27], infos[27]}; // 0x1612 sub 8
+inline constexpr od::descriptor receive_pdo_18_digital_outputs{entries[28], infos[28]}; // 0x1612 sub 9
+inline constexpr od::object receive_pdo_19_reserved_for_future{0x1613, od::object_code::record, "Receive PDO 19 (reserved for future)"sv, {entries.data() + 29, 6}, {infos.data() + 29, 6}};
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_nbr_of_entries{entries[29], infos[29]}; // 0x1613 sub 0
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_controlword{entries[30], infos[30]}; // 0x1613 sub 1
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_speed{entries[31], infos[31]}; // 0x1613 sub 2
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2001{entries[32], infos[32]}; // 0x1613 sub 3
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2003{entries[33], infos[33]}; // 0x1613 sub 4
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_digital_outputs{entries[34], infos[34]}; // 0x1613 sub 5
+inline constexpr od::object receive_pdo_20_reserved_for_future{0x1614, od::object_code::record, "Receive PDO 20 (reserved for future)"sv, {entries.data() + 35, 4}, {infos.data() + 35, 4}};
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_nbr_of_entries{entries[35], infos[35]}; // 0x1614 sub 0
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_controlword{entries[36], infos[36]}; // 0x1614 sub 1
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_reserved_for_future_2002{entries[37], infos[37]}; // 0x1614 sub 2
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_digital_outputs{entries[38], infos[38]}; // 0x1614 sub 3
+inline constexpr od::object receive_pdo_21{0x1615, od::object_code::record, "Receive PDO 21"sv, {entries.data() + 39, 6}, {infos.data() + 39, 6}};
+inline constexpr od::descriptor receive_pdo_21_nbr_of_entries{entries[39], infos[39]}; // 0x1615 sub 0
+inline constexpr od::descriptor receive_pdo_21_controlword{entries[40], infos[40]}; // 0x1615 sub 1
+inline constexpr od::descriptor receive_pdo_21_target_position{entries[41], infos[41]}; // 0x1615 sub 2
+inline constexpr od::descriptor receive_pdo_21_following_position_error_window{entries[42], infos[42]}; // 0x1615 sub 3
+inline constexpr od::descriptor receive_pdo_21_target_position_error_window{entries[43], infos[43]}; // 0x1615 sub 4
+inline constexpr od::descriptor receive_pdo_21_i_force_max{entries[44], infos[44]}; // 0x1615 sub 5
+inline constexpr od::object transmit_pdo_1{0x1A00, od::object_code::record, "Transmit PDO 1"sv, {entries.data() + 45, 2}, {infos.data() + 45, 2}};
+inline constexpr od::descriptor transmit_pdo_1_nbr_of_entries{entries[45], infos[45]}; // 0x1A00 sub 0
+inline constexpr od::descriptor transmit_pdo_1_statusword{entries[46], infos[46]}; // 0x1A00 sub 1
+inline constexpr od::object transmit_pdo_2{0x1A01, od::object_code::record, "Transmit PDO 2"sv, {entries.data() + 47, 3}, {infos.data() + 47, 3}};
+inline constexpr od::descriptor transmit_pdo_2_nbr_of_entries{entries[47], infos[47]}; // 0x1A01 sub 0
+inline constexpr od::descriptor transmit_pdo_2_statusword{entries[48], infos[48]}; // 0x1A01 sub 1
+inline constexpr od::descriptor transmit_pdo_2_actual_position{entries[49], infos[49]}; // 0x1A01 sub 2
+inline constexpr od::object transmit_pdo_17{0x1A10, od::object_code::record, "Transmit PDO 17"sv, {entries.data() + 50, 4}, {infos.data() + 50, 4}};
+inline constexpr od::descriptor transmit_pdo_17_nbr_of_entries{entries[50], infos[50]}; // 0x1A10 sub 0
+inline constexpr od::descriptor transmit_pdo_17_statusword{entries[51], infos[51]}; // 0x1A10 sub 1
+inline constexpr od::descriptor transmit_pdo_17_actual_position{entries[52], infos[52]}; // 0x1A10 sub 2
+inline constexpr od::descriptor transmit_pdo_17_digital_inputs{entries[53], infos[53]}; // 0x1A10 sub 3
+inline constexpr od::object transmit_pdo_18{0x1A11, od::object_code::record, "Transmit PDO 18"sv, {entries.data() + 54, 6}, {infos.data() + 54, 6}};
+inline constexpr od::descriptor transmit_pdo_18_nbr_of_entries{entries[54], infos[54]}; // 0x1A11 sub 0
+inline constexpr od::descriptor transmit_pdo_18_statusword{entries[55], infos[55]}; // 0x1A11 sub 1
+inline constexpr od::descriptor transmit_pdo_18_actual_position{entries[56], infos[56]}; // 0x1A11 sub 2
+inline constexpr od::descriptor transmit_pdo_18_actual_following_position_error{entries[57], infos[57]}; // 0x1A11 sub 3
+inline constexpr od::descriptor transmit_pdo_18_actual_current{entries[58], infos[58]}; // 0x1A11 sub 4
+inline constexpr od::descriptor transmit_pdo_18_digital_inputs{entries[59], infos[59]}; // 0x1A11 sub 5
+inline constexpr od::object transmit_pdo_19_reserved_for_future{0x1A12, od::object_code::record, "Transmit PDO 19 (reserved for future)"sv, {entries.data() + 60, 5}, {infos.data() + 60, 5}};
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_nbr_of_entries{entries[60], infos[60]}; // 0x1A12 sub 0
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_statusword{entries[61], infos[61]}; // 0x1A12 sub 1
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_actual_position{entries[62], infos[62]}; // 0x1A12 sub 2
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_i_force_actual{entries[63], infos[63]}; // 0x1A12 sub 3
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_digital_inputs{entries[64], infos[64]}; // 0x1A12 sub 4
+inline constexpr od::object transmit_pdo_21{0x1A13, od::object_code::record, "Transmit PDO 21"sv, {entries.data() + 65, 6}, {infos.data() + 65, 6}};
+inline constexpr od::descriptor transmit_pdo_21_nbr_of_entries{entries[65], infos[65]}; // 0x1A13 sub 0
+inline constexpr od::descriptor transmit_pdo_21_statusword{entries[66], infos[66]}; // 0x1A13 sub 1
+inline constexpr od::descriptor transmit_pdo_21_actual_position{entries[67], infos[67]}; // 0x1A13 sub 2
+inline constexpr od::descriptor transmit_pdo_21_actual_following_position_error{entries[68], infos[68]}; // 0x1A13 sub 3
+inline constexpr od::descriptor transmit_pdo_21_actual_current{entries[69], infos[69]}; // 0x1A13 sub 4
+inline constexpr od::descriptor transmit_pdo_21_process_status_register{entries[70], infos[70]}; // 0x1A13 sub 5
+inline constexpr od::object sync_manager_communication_type{0x1C00, od::object_code::array, "Sync Manager Communication Type"sv, {entries.data() + 71, 6}, {infos.data() + 71, 6}};
+inline constexpr od::object sync_manager_pdo_assignment_0{0x1C10, od::object_code::array, "Sync Manager PDO Assignment 0"sv, {entries.data() + 77, 1}, {infos.data() + 77, 1}};
+inline constexpr od::object sync_manager_pdo_assignment_1{0x1C11, od::object_code::array, "Sync Manager PDO Assignment 1"sv, {entries.data() + 78, 1}, {infos.data() + 78, 1}};
+inline constexpr od::object sync_manager_pdo_assignment_2{0x1C12, od::object_code::array, "Sync Manager PDO Assignment 2"sv, {entries.data() + 79, 2}, {infos.data() + 79, 2}};
+inline constexpr od::object sync_manager_pdo_assignment_3{0x1C13, od::object_code::array, "Sync Manager PDO Assignment 3"sv, {entries.data() + 81, 2}, {infos.data() + 81, 2}};
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 95, 46}, {infos.data() + 95, 46}};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 141, 17}, {infos.data() + 141, 17}};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 158, 107}, {infos.data() + 158, 107}};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 265, 12}, {infos.data() + 265, 12}};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 277, 14}, {infos.data() + 277, 14}};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 291, 11}, {infos.data() + 291, 11}};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 302, 15}, {infos.data() + 302, 15}};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 334, 3}, {infos.data() + 334, 3}};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 342, 3}, {infos.data() + 342, 3}};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 347, 3}, {infos.data() + 347, 3}};
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[347], infos[347]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[348], infos[348]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[349], infos[349]}; // 0x60C2 sub 2
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 352, 3}, {infos.data() + 352, 3}};
 
 } // namespace fieldcodec::dictionaries::xenax_ethercat
 // clang-format on

@@ -13,8 +13,11 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace fieldcodec::dictionaries::xenax_powerlink {
+
+using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_powerlink.eds";
 
@@ -22,9 +25,9 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(131474U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1006, .type = od::data_type::unsigned32, .low = od::unsigned_number(100U), .high = od::unsigned_number(100000U), .default_value = od::unsigned_number(1000U)},
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "Servocontroller XENAX Xvi xxVx"},
-    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Module HW Vxxx.xxx"},
-    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Protocol SW Vxxx.xxx"},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "Servocontroller XENAX Xvi xxVx"sv},
+    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Module HW Vxxx.xxx"sv},
+    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Protocol SW Vxxx.xxx"sv},
     {.index = 0x1018, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(1U), .high = od::unsigned_number(4U), .default_value = od::unsigned_number(4U)},
     {.index = 0x1018, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
     {.index = 0x1018, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
@@ -345,7 +348,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(10000000), .default_value = od::signed_number(1000)},
     {.index = 0x5011, .type = od::data_type::visible_string},
     {.index = 0x5012, .type = od::data_type::visible_string},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "no error"},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "no error"sv},
     {.index = 0x5021, .type = od::data_type::visible_string},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
@@ -382,381 +385,380 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x60FE, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
-    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "http://www.jennyscience.ch"},
+    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "http://www.jennyscience.ch"sv},
 }};
 
 inline constexpr std::array<od::entry_info, 364> infos{{
-    {.name = "Device Type"},
-    {.name = "Error Register"},
-    {.name = "NMT_CycleLen_U32"},
-    {.name = "Manufacturer Device Name"},
-    {.name = "Manufacturer Hardware Version"},
-    {.name = "Manufacturer Software Version"},
-    {.name = "Nbr of Entries"},
-    {.name = "Vendor Id"},
-    {.name = "Product Code"},
-    {.name = "Revision Number"},
-    {.name = "Serial Number"},
-    {.name = "Nbr of Entries"},
-    {.name = "ConfDate_U32"},
-    {.name = "ConfTime_U32"},
-    {.name = "ConfID_U32"},
-    {.name = "VerifyConfInvalid_U32"},
-    {.name = "Nbr of Entries"},
-    {.name = "InterfaceIndex_U16"},
-    {.name = "InterfaceDescription_VSTR"},
-    {.name = "InterfaceType_U8"},
-    {.name = "InterfaceMtu_U32"},
-    {.name = "InterfacePhysAddress_OSTR"},
-    {.name = "InterfaceName_VSTR"},
-    {.name = "InterfaceOperStatus_U8"},
-    {.name = "InterfaceAdminState_U8"},
-    {.name = "Valid_BOOL"},
-    {.name = "SDO_SequLayerTimeout_U32"},
-    {.name = "SDO_CmdLayerTimeout_U32"},
-    {.name = "Nbr of Entries"},
-    {.name = "NodeID_U8"},
-    {.name = "MappingVersion_U8"},
-    {.name = "Nbr of Entries"},
-    {.name = "ObjectMapping 1"},
-    {.name = "ObjectMapping 2"},
-    {.name = "ObjectMapping 3"},
-    {.name = "ObjectMapping 4"},
-    {.name = "ObjectMapping 5"},
-    {.name = "ObjectMapping 6"},
-    {.name = "ObjectMapping 7"},
-    {.name = "ObjectMapping 8"},
-    {.name = "Nbr of Entries"},
-    {.name = "NodeID_U8"},
-    {.name = "MappingVersion_U8"},
-    {.name = "Nbr of Entries"},
-    {.name = "ObjectMapping 1"},
-    {.name = "ObjectMapping 2"},
-    {.name = "ObjectMapping 3"},
-    {.name = "ObjectMapping 4"},
-    {.name = "ObjectMapping 5"},
-    {.name = "ObjectMapping 6"},
-    {.name = "ObjectMapping 7"},
-    {.name = "ObjectMapping 8"},
-    {.name = "NumberOfEntries"},
-    {.name = "CumulativeCnt_U32"},
-    {.name = "ThresholdCnt_U32"},
-    {.name = "Threshold_U32"},
-    {.name = "NumberOfEntries"},
-    {.name = "CumulativeCnt_U32"},
-    {.name = "ThresholdCnt_U32"},
-    {.name = "Threshold_U32"},
-    {.name = "DLL_CNLossOfSocTolerance_U32"},
-    {.name = "NumberOfEntries"},
-    {.name = "IfIndex_U16"},
-    {.name = "Addr_IPAD"},
-    {.name = "Netmask_IPAD"},
-    {.name = "ReasmMaxSize_U16"},
-    {.name = "DefaultGateway_IPAD"},
-    {.name = "NumberOfEntries"},
-    {.name = "Forwarding_BOOL"},
-    {.name = "DefaultTTL_U16"},
-    {.name = "ForwardDatagrams_U32"},
-    {.name = "NMT_FeatureFlags_U32"},
-    {.name = "NMT_EPLVersion_U8"},
-    {.name = "NMT_CurrNMTState_U8"},
-    {.name = "NumberOfEntries"},
-    {.name = "NodeID_U8"},
-    {.name = "NodeIDByHW_BOOL"},
-    {.name = "NumberOfEntries"},
-    {.name = "IsochrTxMaxPayload_U16"},
-    {.name = "IsochrRxMaxPayload_U16"},
-    {.name = "PResMaxLatency_U32"},
-    {.name = "PReqActPayloadLimit_U16"},
-    {.name = "PResActPayloadLimit_U16"},
-    {.name = "ASndMaxLatency_U32"},
-    {.name = "MultiplCycleCnt_U8"},
-    {.name = "AsyncMTUSize_U16"},
-    {.name = "Prescaler_U16"},
-    {.name = "NMT_CNBasicEthernetTimeout_U32"},
-    {.name = "NMT_HostName_VSTR"},
-    {.name = "NMT_ResetCmd_U8"},
-    {.name = "S-Curve Profile"},
-    {.name = "Reserved 2001"},
-    {.name = "Reserved 2002"},
-    {.name = "Reserved 2003"},
-    {.name = "XENAX Error Number"},
-    {.name = "I_Force Actual"},
-    {.name = "Process Status Register"},
-    {.name = "PDO Cycle Time"},
-    {.name = "Motor Type"},
-    {.name = "Limit Force"},
-    {.name = "Force Actual Value"},
-    {.name = "Direct Commands"},
-    {.name = "NumOfEntries"},
-    {.name = "TS Tell Status"},
-    {.name = "TE Tell Error Number"},
-    {.name = "TP Tell Position"},
-    {.name = "TT Tell Temperature"},
-    {.name = "TOX Tell Output Hex"},
-    {.name = "TIX Tell Input Hex"},
-    {.name = "TMC Tell Motor Current"},
-    {.name = "TMT Tell Motion Time"},
-    {.name = "TCP Tell Captured Position 1"},
-    {.name = "TCP Tell Captured Position 2"},
-    {.name = "TCP Tell Captured Position 3"},
-    {.name = "TCP Tell Captured Position 4"},
-    {.name = "TCP Tell Captured Position 5"},
-    {.name = "TCP Tell Captured Position 6"},
-    {.name = "TCP Tell Captured Position 7"},
-    {.name = "TCP Tell Captured Position 8"},
-    {.name = "TH Tell Reference State"},
-    {.name = "VER Version of Firmware"},
-    {.name = "ACV Acceleration Variation (Jerk, scaled to 1000)"},
-    {.name = "I2TM Limit Value (scaled to 10)"},
-    {.name = "I2T Calculated Value (scaled to 10)"},
-    {.name = "IFPK I_Force Peak (FTM = 0) FPK Force Peak (FTM = 1,2)"},
-    {.name = "TESM Tell SMU Error"},
-    {.name = "DGMSO Detected Gantry Master Slave Offset"},
-    {.name = "SIFF Sector I_Force Curve Failed (FTM = 0) SFF Sector Force Curve Failed (FTM = 1,2) (binary notation, LSB = sector 1)"},
-    {.name = "IFPKn I_Force Peak Sector (FTM = 0) FPKn Force Peak Sector (FTM = 1,2) (select sector over Object 0x5003/050)"},
-    {.name = "FCV Force Calibration Valid"},
-    {.name = "TV Tell Velocity"},
-    {.name = "TPT Tell Process Time"},
-    {.name = "VERL Version of Bootloader"},
-    {.name = "TCPB Tell Capture Pos. Buffer 1"},
-    {.name = "TCPB Tell Capture Pos. Buffer 2"},
-    {.name = "TCPB Tell Capture Pos. Buffer 3"},
-    {.name = "TCPB Tell Capture Pos. Buffer 4"},
-    {.name = "TCPB Tell Capture Pos. Buffer 5"},
-    {.name = "TCPB Tell Capture Pos. Buffer 6"},
-    {.name = "TCPB Tell Capture Pos. Buffer 7"},
-    {.name = "TCPB Tell Capture Pos. Buffer 8"},
-    {.name = "TESMH Tell SMU Error History"},
-    {.name = "GR Gear Ratio"},
-    {.name = "TTPS Tell Temperature Power Stage (Xvi75V8S only)"},
-    {.name = "TVPSM Tell voltage power supply motor in [mV]"},
-    {.name = "LARES linear axis resolution in [inc/m]"},
-    {.name = "LAST linear axis stroke in [inc]"},
-    {.name = "TTGS Tell trajectory state"},
-    {.name = "NumOfEntries"},
-    {.name = "CO Clear Output Number"},
-    {.name = "EVT Event Activation"},
-    {.name = "G Go Immediately"},
-    {.name = "IX Start Index Number"},
-    {.name = "PG Start Program Number"},
-    {.name = "SO Set Output Number"},
-    {.name = "SOX Set Output Hex Mask"},
-    {.name = "TGD Set Trigger Position Downward"},
-    {.name = "TGU Set Trigger Position Upward"},
-    {.name = "ETI Enable Track Input"},
-    {.name = "DTI Disable Track Input"},
-    {.name = "PRF Start Profile Number"},
-    {.name = "CRDA Cogging Reference Drive Automatic"},
-    {.name = "DIF Drive I_Force"},
-    {.name = "CLIF Change Limit I_Force"},
-    {.name = "DF Drive Force (Xvi75V8S only)"},
-    {.name = "NumOfEntries"},
-    {.name = "AC Acceleration"},
-    {.name = "S-Curve Profile (in percent)"},
-    {.name = "SP Speed"},
-    {.name = "PO Position (absolute)"},
-    {.name = "WA Way (relative)"},
-    {.name = "DP Deviation Position"},
-    {.name = "DRHR Direction Reference"},
-    {.name = "DTP Deviation Target Position"},
-    {.name = "ED Emergency Deceleration"},
-    {.name = "ILAS Input Low Active Selective"},
-    {.name = "ILA Input Low Active"},
-    {.name = "IS Stop Current (Linear) Nominal Current (Rotative) scaled to 10mA"},
-    {.name = "SLPP Software Limit Position Positive"},
-    {.name = "SLPN Software Limit Position Negative"},
-    {.name = "MD Mode"},
-    {.name = "ML Mass Load (WebMotion: Payload / Inertia)"},
-    {.name = "BWC Bandwidth Current Controller (WebMotion: GAIN CUR)"},
-    {.name = "BWP Bandwidth Position Controller (WebMotion: GAIN POS)"},
-    {.name = "IR Run Current (Linear) Torque Current (Rotative) scaled to 10mA"},
-    {.name = "NIX Preselected Index Number"},
-    {.name = "AIX Acceleration of selected Index"},
-    {.name = "SIX Speed of selected Index"},
-    {.name = "DIX Distance of selected Index (depends on absolute or relative index definition)"},
-    {.name = "CI Card Identifier"},
-    {.name = "GSID Gantry Slave Identifier"},
-    {.name = "FQC Filter Quality Current"},
-    {.name = "FFC Filter Frequency Current"},
-    {.name = "ICP Increments per Puls"},
-    {.name = "INH Input Home Sensor"},
-    {.name = "OVRD Speed Override"},
-    {.name = "PWRT Phasing Rotative w/o HALL"},
-    {.name = "SOA Set Output Activity"},
-    {.name = "SOT Set Output Type"},
-    {.name = "SR Synchronous Ratio"},
-    {.name = "CAB CAN Baud Rate"},
-    {.name = "ROID Rotative Motor Identifier"},
-    {.name = "Reserved"},
-    {.name = "Reserved"},
-    {.name = "SIFS Sector I_Force Start (FTM = 0) SFS Sector Force Start (FTM = 1,2)"},
-    {.name = "SIFE Sector I_Force End (FTM = 0) SFE Sector Force End (FTM = 1,2)"},
-    {.name = "IFL I_Force Low"},
-    {.name = "IFH I_Force High"},
-    {.name = "MLPN Mechanical Limit Position Negative"},
-    {.name = "MLPP Mechanical Limit Position Positive"},
-    {.name = "PGMSO Preset Gantry Master Slave Offset"},
-    {.name = "BRKD Brake delay"},
-    {.name = "Reserved"},
-    {.name = "LIF Limit I_Force"},
-    {.name = "TYIX Type of Index"},
-    {.name = "NSEC Preselected Sector Number"},
-    {.name = "STCX Sector Transition Configuration (Hex Mask)"},
-    {.name = "NDIF Preselected Drive I_Force Number (FTM = 0) NDF Preselected Drive Force Number (FTM = 1,2)"},
-    {.name = "ADIF Acceleration of selected Drive I_Force (FTM = 0) ADF Acceleration of selected Drive Force (FTM = 1,2)"},
-    {.name = "SDIF Speed of selected Drive I_Force (FTM = 0) SDF Speed of selected Drive Force (FTM = 1,2)"},
-    {.name = "IDIF I_Force Limit of selected Drive I_Force"},
-    {.name = "DDIF Direction of selected Drive I_Force (FTM = 0) DDF Direction of selected Drive Force (FTM = 1,2)"},
-    {.name = "SSEC Select Sectors (binary notation, LSB = sector 1)"},
-    {.name = "SSO Set Sector Offset"},
-    {.name = "ENCPD Encoder Plausibility Checking Disable"},
-    {.name = "SPAD Set Point ACK disable"},
-    {.name = "RXZP ROTAX Z-Position"},
-    {.name = "DRH Dir Home"},
-    {.name = "DRZ Z-Mark"},
-    {.name = "FQS Filter Quality Speed"},
-    {.name = "FFS Filter Frequency Speed"},
-    {.name = "EBMD Enhanced Bandwidth Mode Disabled"},
-    {.name = "Reserved"},
-    {.name = "AIXD Acceleration of dynamically selected Index"},
-    {.name = "SIXD Speed of dynamically selected Index"},
-    {.name = "DIXD Distance of dynamically selected Index (depends on absolute or relative index definition)"},
-    {.name = "TYIXD Type of dynamically selected Index"},
-    {.name = "PPSD Pole Placement Stability Dynamics"},
-    {.name = "IFDCS I_Force Drift Compensation Setting"},
-    {.name = "Reserved"},
-    {.name = "SORF Swing Out Reduction Frequency"},
-    {.name = "SORD Swing Out Reduction Damping"},
-    {.name = "Reserved"},
-    {.name = "Reserved"},
-    {.name = "AVF Filter Frequency for Current Shaper"},
-    {.name = "AVD Damping Ratio for Current Shaper"},
-    {.name = "NOF Preselected Output Function"},
-    {.name = "TYOF Type of Output Function"},
-    {.name = "NIF Preselected Input Function"},
-    {.name = "TYIF Type of Input Function"},
-    {.name = "PAIF Parameter A of Input Function"},
-    {.name = "PBIF Parameter B of Input Function"},
-    {.name = "PCIF Parameter C of Input Function"},
-    {.name = "CLF Change Limit Force (Xvi75V8S only)"},
-    {.name = "FD Force of selected Drive Force (Xvi75V8S only)"},
-    {.name = "FH Force High (Xvi75V8S only)"},
-    {.name = "FL Force Low (Xvi75V8S only)"},
-    {.name = "FTM Forceteq Mode (Xvi75V8S only)"},
-    {.name = "SQBW Signateq Bandwidth (Xvi75V8S only)"},
-    {.name = "MM Motor Manufacturer (Xvi75V8S only)"},
-    {.name = "AREF Automatic Reference"},
-    {.name = "EGMSO Enable user defined gantry Master/Slave offset"},
-    {.name = "VMTAE Virtual multiturn for rotative motors with absolute encoder"},
-    {.name = "ENAR Enable absolute reference"},
-    {.name = "CTAB Correction Table State"},
-    {.name = "APSN number of program to auto start"},
-    {.name = "APSD Automatic program start delay[ms]"},
-    {.name = "PMHSD Profinet MC_Home support disable"},
-    {.name = "FCSM Force Calibration Storage mode"},
-    {.name = "SOD P402 Switch on at transition 3 disable"},
-    {.name = "GCME Gantry Coupled Mode Enable"},
-    {.name = "FBCM Force buffered CSP mode"},
-    {.name = "NumOfEntries"},
-    {.name = "POL Pole Pairs"},
-    {.name = "ENC Encoder Increments (Rotative, 1 turn of motor shaft)"},
-    {.name = "PHD Phase Direction"},
-    {.name = "PHO Phase Offset"},
-    {.name = "MAMO Slider Mass (LINAX / ELAX) Rotor Inertia (Rotative)"},
-    {.name = "FCM Force Constant of Motor"},
-    {.name = "LPH Inductance Phase-Phase"},
-    {.name = "RPH Resistance Phase-Phase"},
-    {.name = "FFDY Frictional Force Dynamic"},
-    {.name = "FFST Frictional Force Static"},
-    {.name = "DMLPP Detected Mechanical Limit Position Positive"},
-    {.name = "NumOfEntries"},
-    {.name = "VERS Version SMU"},
-    {.name = "SLS Timeout"},
-    {.name = "Speed Limit"},
-    {.name = "Stop Timeout"},
-    {.name = "Position Window"},
-    {.name = "SFTRD Input Configuration SMU"},
-    {.name = "TESM Tell SMU Error"},
-    {.name = "SMU Master Error Bitfeld"},
-    {.name = "SMU Slave Error Bitfeld"},
-    {.name = "SMU Master Info Bitfeld"},
-    {.name = "SMU Slave Info Bitfeld"},
-    {.name = "SPC Safety Parameter CRC"},
-    {.name = "SPCMAC Safety Parameter and MAC Adress CRC (Xvi75V8S only)"},
-    {.name = "NumOfEntries"},
-    {.name = "EGW Set Gateway Address"},
-    {.name = "EIP Set IP Address"},
-    {.name = "ENM Set Net Mask"},
-    {.name = "EMAC Read MAC Address 3 high Bytes"},
-    {.name = "EMAC Read MAC Address 3 low Bytes"},
-    {.name = "EPRT Set Port Number"},
-    {.name = "LICR Show Installed Licences"},
-    {.name = "SERB Set Baud Rate on Serial Interface"},
-    {.name = "WebMotion Version"},
-    {.name = "WebMotion Boot Version"},
-    {.name = "NumOfEntries"},
-    {.name = "SQVER Signateq Firmware Version"},
-    {.name = "SQBW Signateq Bandwidth"},
-    {.name = "SQSNF Signateq Sensor Nominal Force"},
-    {.name = "SQMRP Signateq Measurement Range"},
-    {.name = "Reserved"},
-    {.name = "SQSS Signateq Sensor Sensitivity"},
-    {.name = "SQSFT Signateq Sensor Force Type"},
-    {.name = "SQCM Signateq Calibration Mode"},
-    {.name = "SQFD Signateq Force Direction"},
-    {.name = "LFRMS Limit Force Reached Maximum Speed"},
-    {.name = "CLFO Clear force offset"},
-    {.name = "SQAC Signateq available calibrations"},
-    {.name = "BWFP Bandwidth for forceteq pro controller"},
-    {.name = "FTPES Forceteq Pro Elastic Spring Constant"},
-    {.name = "Signateq Sensor Model Type (SQSMT)"},
-    {.name = "Signateq Sensor Serial Number (SQSSN)"},
-    {.name = "Tell Error String (TES)"},
-    {.name = "Servo identification string (SID)"},
-    {.name = "Error Code"},
-    {.name = "Controlword"},
-    {.name = "Statusword"},
-    {.name = "Modes of Operation Requested"},
-    {.name = "Modes of Operation Display"},
-    {.name = "Position Actual Value"},
-    {.name = "Following Position Error Window"},
-    {.name = "Target Position Window"},
-    {.name = "Position Window Time"},
-    {.name = "Velocity Actual Value"},
-    {.name = "Limit I_Force"},
-    {.name = "Motor Current Actual Value"},
-    {.name = "Target Position"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Software Position Limit Left"},
-    {.name = "Software Position Limit Right"},
-    {.name = "Speed"},
-    {.name = "Acceleration"},
-    {.name = "Quick Stop Deceleration"},
-    {.name = "Reference Methods"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Reference-Speed searching external Reference sensor"},
-    {.name = "Z-Speed searching internal encoder Z-mark"},
-    {.name = "Velocity Offset"},
-    {.name = "Torque Offset"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Base value"},
-    {.name = "10^EXPONENT"},
-    {.name = "Actual Position Following Error"},
-    {.name = "Digital Inputs"},
-    {.name = "Highest Sub-index Value"},
-    {.name = "Output Bit"},
-    {.name = "Output Mask (not supported)"},
-    {.name = "Target Velocity"},
-    {.name = "Supported Modes of Operation"},
-    {.name = "Product Website Address"},
+    {.name = "Device Type"sv},
+    {.name = "Error Register"sv},
+    {.name = "NMT_CycleLen_U32"sv},
+    {.name = "Manufacturer Device Name"sv},
+    {.name = "Manufacturer Hardware Version"sv},
+    {.name = "Manufacturer Software Version"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Vendor Id"sv},
+    {.name = "Product Code"sv},
+    {.name = "Revision Number"sv},
+    {.name = "Serial Number"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "ConfDate_U32"sv},
+    {.name = "ConfTime_U32"sv},
+    {.name = "ConfID_U32"sv},
+    {.name = "VerifyConfInvalid_U32"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "InterfaceIndex_U16"sv},
+    {.name = "InterfaceDescription_VSTR"sv},
+    {.name = "InterfaceType_U8"sv},
+    {.name = "InterfaceMtu_U32"sv},
+    {.name = "InterfacePhysAddress_OSTR"sv},
+    {.name = "InterfaceName_VSTR"sv},
+    {.name = "InterfaceOperStatus_U8"sv},
+    {.name = "InterfaceAdminState_U8"sv},
+    {.name = "Valid_BOOL"sv},
+    {.name = "SDO_SequLayerTimeout_U32"sv},
+    {.name = "SDO_CmdLayerTimeout_U32"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "NodeID_U8"sv},
+    {.name = "MappingVersion_U8"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "ObjectMapping 1"sv},
+    {.name = "ObjectMapping 2"sv},
+    {.name = "ObjectMapping 3"sv},
+    {.name = "ObjectMapping 4"sv},
+    {.name = "ObjectMapping 5"sv},
+    {.name = "ObjectMapping 6"sv},
+    {.name = "ObjectMapping 7"sv},
+    {.name = "ObjectMapping 8"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "NodeID_U8"sv},
+    {.name = "MappingVersion_U8"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "ObjectMapping 1"sv},
+    {.name = "ObjectMapping 2"sv},
+    {.name = "ObjectMapping 3"sv},
+    {.name = "ObjectMapping 4"sv},
+    {.name = "ObjectMapping 5"sv},
+    {.name = "ObjectMapping 6"sv},
+    {.name = "ObjectMapping 7"sv},
+    {.name = "ObjectMapping 8"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "CumulativeCnt_U32"sv},
+    {.name = "ThresholdCnt_U32"sv},
+    {.name = "Threshold_U32"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "CumulativeCnt_U32"sv},
+    {.name = "ThresholdCnt_U32"sv},
+    {.name = "Threshold_U32"sv},
+    {.name = "DLL_CNLossOfSocTolerance_U32"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "IfIndex_U16"sv},
+    {.name = "Addr_IPAD"sv},
+    {.name = "Netmask_IPAD"sv},
+    {.name = "ReasmMaxSize_U16"sv},
+    {.name = "DefaultGateway_IPAD"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "Forwarding_BOOL"sv},
+    {.name = "DefaultTTL_U16"sv},
+    {.name = "ForwardDatagrams_U32"sv},
+    {.name = "NMT_FeatureFlags_U32"sv},
+    {.name = "NMT_EPLVersion_U8"sv},
+    {.name = "NMT_CurrNMTState_U8"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "NodeID_U8"sv},
+    {.name = "NodeIDByHW_BOOL"sv},
+    {.name = "NumberOfEntries"sv},
+    {.name = "IsochrTxMaxPayload_U16"sv},
+    {.name = "IsochrRxMaxPayload_U16"sv},
+    {.name = "PResMaxLatency_U32"sv},
+    {.name = "PReqActPayloadLimit_U16"sv},
+    {.name = "PResActPayloadLimit_U16"sv},
+    {.name = "ASndMaxLatency_U32"sv},
+    {.name = "MultiplCycleCnt_U8"sv},
+    {.name = "AsyncMTUSize_U16"sv},
+    {.name = "Prescaler_U16"sv},
+    {.name = "NMT_CNBasicEthernetTimeout_U32"sv},
+    {.name = "NMT_HostName_VSTR"sv},
+    {.name = "NMT_ResetCmd_U8"sv},
+    {.name = "S-Curve Profile"sv},
+    {.name = "Reserved 2001"sv},
+    {.name = "Reserved 2002"sv},
+    {.name = "Reserved 2003"sv},
+    {.name = "XENAX Error Number"sv},
+    {.name = "I_Force Actual"sv},
+    {.name = "Process Status Register"sv},
+    {.name = "PDO Cycle Time"sv},
+    {.name = "Motor Type"sv},
+    {.name = "Limit Force"sv},
+    {.name = "Force Actual Value"sv},
+    {.name = "Direct Commands"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "TS Tell Status"sv},
+    {.name = "TE Tell Error Number"sv},
+    {.name = "TP Tell Position"sv},
+    {.name = "TT Tell Temperature"sv},
+    {.name = "TOX Tell Output Hex"sv},
+    {.name = "TIX Tell Input Hex"sv},
+    {.name = "TMC Tell Motor Current"sv},
+    {.name = "TMT Tell Motion Time"sv},
+    {.name = "TCP Tell Captured Position 1"sv},
+    {.name = "TCP Tell Captured Position 2"sv},
+    {.name = "TCP Tell Captured Position 3"sv},
+    {.name = "TCP Tell Captured Position 4"sv},
+    {.name = "TCP Tell Captured Position 5"sv},
+    {.name = "TCP Tell Captured Position 6"sv},
+    {.name = "TCP Tell Captured Position 7"sv},
+    {.name = "TCP Tell Captured Position 8"sv},
+    {.name = "TH Tell Reference State"sv},
+    {.name = "VER Version of Firmware"sv},
+    {.name = "ACV Acceleration Variation (Jerk, scaled to 1000)"sv},
+    {.name = "I2TM Limit Value (scaled to 10)"sv},
+    {.name = "I2T Calculated Value (scaled to 10)"sv},
+    {.name = "IFPK I_Force Peak (FTM = 0) FPK Force Peak (FTM = 1,2)"sv},
+    {.name = "TESM Tell SMU Error"sv},
+    {.name = "DGMSO Detected Gantry Master Slave Offset"sv},
+    {.name = "SIFF Sector I_Force Curve Failed (FTM = 0) SFF Sector Force Curve Failed (FTM = 1,2) (binary notation, LSB = sector 1)"sv},
+    {.name = "IFPKn I_Force Peak Sector (FTM = 0) FPKn Force Peak Sector (FTM = 1,2) (select sector over Object 0x5003/050)"sv},
+    {.name = "FCV Force Calibration Valid"sv},
+    {.name = "TV Tell Velocity"sv},
+    {.name = "TPT Tell Process Time"sv},
+    {.name = "VERL Version of Bootloader"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 1"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 2"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 3"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 4"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 5"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 6"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 7"sv},
+    {.name = "TCPB Tell Capture Pos. Buffer 8"sv},
+    {.name = "TESMH Tell SMU Error History"sv},
+    {.name = "GR Gear Ratio"sv},
+    {.name = "TTPS Tell Temperature Power Stage (Xvi75V8S only)"sv},
+    {.name = "TVPSM Tell voltage power supply motor in [mV]"sv},
+    {.name = "LARES linear axis resolution in [inc/m]"sv},
+    {.name = "LAST linear axis stroke in [inc]"sv},
+    {.name = "TTGS Tell trajectory state"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "CO Clear Output Number"sv},
+    {.name = "EVT Event Activation"sv},
+    {.name = "G Go Immediately"sv},
+    {.name = "IX Start Index Number"sv},
+    {.name = "PG Start Program Number"sv},
+    {.name = "SO Set Output Number"sv},
+    {.name = "SOX Set Output Hex Mask"sv},
+    {.name = "TGD Set Trigger Position Downward"sv},
+    {.name = "TGU Set Trigger Position Upward"sv},
+    {.name = "ETI Enable Track Input"sv},
+    {.name = "DTI Disable Track Input"sv},
+    {.name = "PRF Start Profile Number"sv},
+    {.name = "CRDA Cogging Reference Drive Automatic"sv},
+    {.name = "DIF Drive I_Force"sv},
+    {.name = "CLIF Change Limit I_Force"sv},
+    {.name = "DF Drive Force (Xvi75V8S only)"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "AC Acceleration"sv},
+    {.name = "S-Curve Profile (in percent)"sv},
+    {.name = "SP Speed"sv},
+    {.name = "PO Position (absolute)"sv},
+    {.name = "WA Way (relative)"sv},
+    {.name = "DP Deviation Position"sv},
+    {.name = "DRHR Direction Reference"sv},
+    {.name = "DTP Deviation Target Position"sv},
+    {.name = "ED Emergency Deceleration"sv},
+    {.name = "ILAS Input Low Active Selective"sv},
+    {.name = "ILA Input Low Active"sv},
+    {.name = "IS Stop Current (Linear) Nominal Current (Rotative) scaled to 10mA"sv},
+    {.name = "SLPP Software Limit Position Positive"sv},
+    {.name = "SLPN Software Limit Position Negative"sv},
+    {.name = "MD Mode"sv},
+    {.name = "ML Mass Load (WebMotion: Payload / Inertia)"sv},
+    {.name = "BWC Bandwidth Current Controller (WebMotion: GAIN CUR)"sv},
+    {.name = "BWP Bandwidth Position Controller (WebMotion: GAIN POS)"sv},
+    {.name = "IR Run Current (Linear) Torque Current (Rotative) scaled to 10mA"sv},
+    {.name = "NIX Preselected Index Number"sv},
+    {.name = "AIX Acceleration of selected Index"sv},
+    {.name = "SIX Speed of selected Index"sv},
+    {.name = "DIX Distance of selected Index (depends on absolute or relative index definition)"sv},
+    {.name = "CI Card Identifier"sv},
+    {.name = "GSID Gantry Slave Identifier"sv},
+    {.name = "FQC Filter Quality Current"sv},
+    {.name = "FFC Filter Frequency Current"sv},
+    {.name = "ICP Increments per Puls"sv},
+    {.name = "INH Input Home Sensor"sv},
+    {.name = "OVRD Speed Override"sv},
+    {.name = "PWRT Phasing Rotative w/o HALL"sv},
+    {.name = "SOA Set Output Activity"sv},
+    {.name = "SOT Set Output Type"sv},
+    {.name = "SR Synchronous Ratio"sv},
+    {.name = "CAB CAN Baud Rate"sv},
+    {.name = "ROID Rotative Motor Identifier"sv},
+    {.name = "Reserved"sv},
+    {.name = "Reserved"sv},
+    {.name = "SIFS Sector I_Force Start (FTM = 0) SFS Sector Force Start (FTM = 1,2)"sv},
+    {.name = "SIFE Sector I_Force End (FTM = 0) SFE Sector Force End (FTM = 1,2)"sv},
+    {.name = "IFL I_Force Low"sv},
+    {.name = "IFH I_Force High"sv},
+    {.name = "MLPN Mechanical Limit Position Negative"sv},
+    {.name = "MLPP Mechanical Limit Position Positive"sv},
+    {.name = "PGMSO Preset Gantry Master Slave Offset"sv},
+    {.name = "BRKD Brake delay"sv},
+    {.name = "Reserved"sv},
+    {.name = "LIF Limit I_Force"sv},
+    {.name = "TYIX Type of Index"sv},
+    {.name = "NSEC Preselected Sector Number"sv},
+    {.name = "STCX Sector Transition Configuration (Hex Mask)"sv},
+    {.name = "NDIF Preselected Drive I_Force Number (FTM = 0) NDF Preselected Drive Force Number (FTM = 1,2)"sv},
+    {.name = "ADIF Acceleration of selected Drive I_Force (FTM = 0) ADF Acceleration of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "SDIF Speed of selected Drive I_Force (FTM = 0) SDF Speed of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "IDIF I_Force Limit of selected Drive I_Force"sv},
+    {.name = "DDIF Direction of selected Drive I_Force (FTM = 0) DDF Direction of selected Drive Force (FTM = 1,2)"sv},
+    {.name = "SSEC Select Sectors (binary notation, LSB = sector 1)"sv},
+    {.name = "SSO Set Sector Offset"sv},
+    {.name = "ENCPD Encoder Plausibility Checking Disable"sv},
+    {.name = "SPAD Set Point ACK disable"sv},
+    {.name = "RXZP ROTAX Z-Position"sv},
+    {.name = "DRH Dir Home"sv},
+    {.name = "DRZ Z-Mark"sv},
+    {.name = "FQS Filter Quality Speed"sv},
+    {.name = "FFS Filter Frequency Speed"sv},
+    {.name = "EBMD Enhanced Bandwidth Mode Disabled"sv},
+    {.name = "Reserved"sv},
+    {.name = "AIXD Acceleration of dynamically selected Index"sv},
+    {.name = "SIXD Speed of dynamically selected Index"sv},
+    {.name = "DIXD Distance of dynamically selected Index (depends on absolute or relative index definition)"sv},
+    {.name = "TYIXD Type of dynamically selected Index"sv},
+    {.name = "PPSD Pole Placement Stability Dynamics"sv},
+    {.name = "IFDCS I_Force Drift Compensation Setting"sv},
+    {.name = "Reserved"sv},
+    {.name = "SORF Swing Out Reduction Frequency"sv},
+    {.name = "SORD Swing Out Reduction Damping"sv},
+    {.name = "Reserved"sv},
+    {.name = "Reserved"sv},
+    {.name = "AVF Filter Frequency for Current Shaper"sv},
+    {.name = "AVD Damping Ratio for Current Shaper"sv},
+    {.name = "NOF Preselected Output Function"sv},
+    {.name = "TYOF Type of Output Function"sv},
+    {.name = "NIF Preselected Input Function"sv},
+    {.name = "TYIF Type of Input Function"sv},
+    {.name = "PAIF Parameter A of Input Function"sv},
+    {.name = "PBIF Parameter B of Input Function"sv},
+    {.name = "PCIF Parameter C of Input Function"sv},
+    {.name = "CLF Change Limit Force (Xvi75V8S only)"sv},
+    {.name = "FD Force of selected Drive Force (Xvi75V8S only)"sv},
+    {.name = "FH Force High (Xvi75V8S only)"sv},
+    {.name = "FL Force Low (Xvi75V8S only)"sv},
+    {.name = "FTM Forceteq Mode (Xvi75V8S only)"sv},
+    {.name = "SQBW Signateq Bandwidth (Xvi75V8S only)"sv},
+    {.name = "MM Motor Manufacturer (Xvi75V8S only)"sv},
+    {.name = "AREF Automatic Reference"sv},
+    {.name = "EGMSO Enable user defined gantry Master/Slave offset"sv},
+    {.name = "VMTAE Virtual multiturn for rotative motors with absolute encoder"sv},
+    {.name = "ENAR Enable absolute reference"sv},
+    {.name = "CTAB Correction Table State"sv},
+    {.name = "APSN number of program to auto start"sv},
+    {.name = "APSD Automatic program start delay[ms]"sv},
+    {.name = "PMHSD Profinet MC_Home support disable"sv},
+    {.name = "FCSM Force Calibration Storage mode"sv},
+    {.name = "SOD P402 Switch on at transition 3 disable"sv},
+    {.name = "GCME Gantry Coupled Mode Enable"sv},
+    {.name = "FBCM Force buffered CSP mode"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "POL Pole Pairs"sv},
+    {.name = "ENC Encoder Increments (Rotative, 1 turn of motor shaft)"sv},
+    {.name = "PHD Phase Direction"sv},
+    {.name = "PHO Phase Offset"sv},
+    {.name = "MAMO Slider Mass (LINAX / ELAX) Rotor Inertia (Rotative)"sv},
+    {.name = "FCM Force Constant of Motor"sv},
+    {.name = "LPH Inductance Phase-Phase"sv},
+    {.name = "RPH Resistance Phase-Phase"sv},
+    {.name = "FFDY Frictional Force Dynamic"sv},
+    {.name = "FFST Frictional Force Static"sv},
+    {.name = "DMLPP Detected Mechanical Limit Position Positive"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "VERS Version SMU"sv},
+    {.name = "SLS Timeout"sv},
+    {.name = "Speed Limit"sv},
+    {.name = "Stop Timeout"sv},
+    {.name = "Position Window"sv},
+    {.name = "SFTRD Input Configuration SMU"sv},
+    {.name = "TESM Tell SMU Error"sv},
+    {.name = "SMU Master Error Bitfeld"sv},
+    {.name = "SMU Slave Error Bitfeld"sv},
+    {.name = "SMU Master Info Bitfeld"sv},
+    {.name = "SMU Slave Info Bitfeld"sv},
+    {.name = "SPC Safety Parameter CRC"sv},
+    {.name = "SPCMAC Safety Parameter and MAC Adress CRC (Xvi75V8S only)"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "EGW Set Gateway Address"sv},
+    {.name = "EIP Set IP Address"sv},
+    {.name = "ENM Set Net Mask"sv},
+    {.name = "EMAC Read MAC Address 3 high Bytes"sv},
+    {.name = "EMAC Read MAC Address 3 low Bytes"sv},
+    {.name = "EPRT Set Port Number"sv},
+    {.name = "LICR Show Installed Licences"sv},
+    {.name = "SERB Set Baud Rate on Serial Interface"sv},
+    {.name = "WebMotion Version"sv},
+    {.name = "WebMotion Boot Version"sv},
+    {.name = "NumOfEntries"sv},
+    {.name = "SQVER Signateq Firmware Version"sv},
+    {.name = "SQBW Signateq Bandwidth"sv},
+    {.name = "SQSNF Signateq Sensor Nominal Force"sv},
+    {.name = "SQMRP Signateq Measurement Range"sv},
+    {.name = "Reserved"sv},
+    {.name = "SQSS Signateq Sensor Sensitivity"sv},
+    {.name = "SQSFT Signateq Sensor Force Type"sv},
+    {.name = "SQCM Signateq Calibration Mode"sv},
+    {.name = "SQFD Signateq Force Direction"sv},
+    {.name = "LFRMS Limit Force Reached Maximum Speed"sv},
+    {.name = "CLFO Clear force offset"sv},
+    {.name = "SQAC Signateq available calibrations"sv},
+    {.name = "BWFP Bandwidth for forceteq pro controller"sv},
+    {.name = "FTPES Forceteq Pro Elastic Spring Constant"sv},
+    {.name = "Signateq Sensor Model Type (SQSMT)"sv},
+    {.name = "Signateq Sensor Serial Number (SQSSN)"sv},
+    {.name = "Tell Error String (TES)"sv},
+    {.name = "Servo identification string (SID)"sv},
+    {.name = "Error Code"sv},
+    {.name = "Controlword"sv},
+    {.name = "Statusword"sv},
+    {.name = "Modes of Operation Requested"sv},
+    {.name = "Modes of Operation Display"sv},
+    {.name = "Position Actual Value"sv},
+    {.name = "Following Position Error Window"sv},
+    {.name = "Target Position Window"sv},
+    {.name = "Position Window Time"sv},
+    {.name = "Velocity Actual Value"sv},
+    {.name = "Limit I_Force"sv},
+    {.name = "Motor Current Actual Value"sv},
+    {.name = "Target Position"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Software Position Limit Left"sv},
+    {.name = "Software Position Limit Right"sv},
+    {.name = "Speed"sv},
+    {.name = "Acceleration"sv},
+    {.name = "Quick Stop Deceleration"sv},
+    {.name = "Reference Methods"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Reference-Speed searching external Reference sensor"sv},
+    {.name = "Z-Speed searching internal encoder Z-mark"sv},
+    {.name = "Velocity Offset"sv},
+    {.name = "Torque Offset"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Base value"sv},
+    {.name = "10^EXPONENT"sv},
+    {.name = "Actual Position Following Error"sv},
+    {.name = "Digital Inputs"sv},
+    {.name = "Highest Sub-index Value"sv},
+    {.name = "Output Bit"sv},
+    {.name = "Output Mask (not supported)"sv},
+    {.name = "Target Velocity"sv},
+    {.name = "Supported Modes of Operation"sv},
+    {.name = "Product Website Address"sv},
 }};
 
 inline constexpr od::dictionary dictionary{entries, infos};
 static_assert(dictionary.is_valid());
 
-// VAR objects: standalone descriptors (copies, not references into the tables: firmware that
-// names one keeps only that one).
+// VAR objects: standalone descriptors (firmware that names one keeps only that one).
 inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000
 inline constexpr od::descriptor error_register{entries[1], infos[1]}; // 0x1001
 inline constexpr od::descriptor nmt_cyclelen_u32{entries[2], infos[2]}; // 0x1006
@@ -814,108 +816,108 @@ inline constexpr od::descriptor supported_modes_of_operation{entries[362], infos
 inline constexpr od::descriptor product_website_address{entries[363], infos[363]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object", {entries.data() + 6, 5}, {infos.data() + 6, 5}};
-inline constexpr const od::entry &identity_object_nbr_of_entries = entries[6];
-inline constexpr const od::entry &identity_object_vendor_id = entries[7];
-inline constexpr const od::entry &identity_object_product_code = entries[8];
-inline constexpr const od::entry &identity_object_revision_number = entries[9];
-inline constexpr const od::entry &identity_object_serial_number = entries[10];
-inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration", {entries.data() + 11, 5}, {infos.data() + 11, 5}};
-inline constexpr const od::entry &cfm_verifyconfiguration_nbr_of_entries = entries[11];
-inline constexpr const od::entry &cfm_verifyconfiguration_confdate_u32 = entries[12];
-inline constexpr const od::entry &cfm_verifyconfiguration_conftime_u32 = entries[13];
-inline constexpr const od::entry &cfm_verifyconfiguration_confid_u32 = entries[14];
-inline constexpr const od::entry &cfm_verifyconfiguration_verifyconfinvalid_u32 = entries[15];
-inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC", {entries.data() + 16, 10}, {infos.data() + 16, 10}};
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_nbr_of_entries = entries[16];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceindex_u16 = entries[17];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacedescription_vstr = entries[18];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacetype_u8 = entries[19];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacemtu_u32 = entries[20];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacephysaddress_ostr = entries[21];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfacename_vstr = entries[22];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceoperstatus_u8 = entries[23];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_interfaceadminstate_u8 = entries[24];
-inline constexpr const od::entry &nmt_interfacegroup_0h_rec_valid_bool = entries[25];
-inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC", {entries.data() + 28, 3}, {infos.data() + 28, 3}};
-inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nbr_of_entries = entries[28];
-inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nodeid_u8 = entries[29];
-inline constexpr const od::entry &pdo_rxcommparam_00h_rec_mappingversion_u8 = entries[30];
-inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::record, "PDO_RxMappParam_00h_AU64", {entries.data() + 31, 9}, {infos.data() + 31, 9}};
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_nbr_of_entries = entries[31];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_1 = entries[32];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_2 = entries[33];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_3 = entries[34];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_4 = entries[35];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_5 = entries[36];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_6 = entries[37];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_7 = entries[38];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_8 = entries[39];
-inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC", {entries.data() + 40, 3}, {infos.data() + 40, 3}};
-inline constexpr const od::entry &pdo_txcommparam_00h_rec_nbr_of_entries = entries[40];
-inline constexpr const od::entry &pdo_txcommparam_00h_rec_nodeid_u8 = entries[41];
-inline constexpr const od::entry &pdo_txcommparam_00h_rec_mappingversion_u8 = entries[42];
-inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::record, "PDO_TxMappParam_00h_AU64", {entries.data() + 43, 9}, {infos.data() + 43, 9}};
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_nbr_of_entries = entries[43];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_1 = entries[44];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_2 = entries[45];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_3 = entries[46];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_4 = entries[47];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_5 = entries[48];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_6 = entries[49];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_7 = entries[50];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_8 = entries[51];
-inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC", {entries.data() + 52, 4}, {infos.data() + 52, 4}};
-inline constexpr const od::entry &dll_cnlosssoc_rec_numberofentries = entries[52];
-inline constexpr const od::entry &dll_cnlosssoc_rec_cumulativecnt_u32 = entries[53];
-inline constexpr const od::entry &dll_cnlosssoc_rec_thresholdcnt_u32 = entries[54];
-inline constexpr const od::entry &dll_cnlosssoc_rec_threshold_u32 = entries[55];
-inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC", {entries.data() + 56, 4}, {infos.data() + 56, 4}};
-inline constexpr const od::entry &dll_cncrcerror_rec_numberofentries = entries[56];
-inline constexpr const od::entry &dll_cncrcerror_rec_cumulativecnt_u32 = entries[57];
-inline constexpr const od::entry &dll_cncrcerror_rec_thresholdcnt_u32 = entries[58];
-inline constexpr const od::entry &dll_cncrcerror_rec_threshold_u32 = entries[59];
-inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC", {entries.data() + 61, 6}, {infos.data() + 61, 6}};
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_numberofentries = entries[61];
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_ifindex_u16 = entries[62];
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_addr_ipad = entries[63];
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_netmask_ipad = entries[64];
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_reasmmaxsize_u16 = entries[65];
-inline constexpr const od::entry &nwl_ipaddrtable_0h_rec_defaultgateway_ipad = entries[66];
-inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC", {entries.data() + 67, 4}, {infos.data() + 67, 4}};
-inline constexpr const od::entry &nwl_ipgroup_rec_numberofentries = entries[67];
-inline constexpr const od::entry &nwl_ipgroup_rec_forwarding_bool = entries[68];
-inline constexpr const od::entry &nwl_ipgroup_rec_defaultttl_u16 = entries[69];
-inline constexpr const od::entry &nwl_ipgroup_rec_forwarddatagrams_u32 = entries[70];
-inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC", {entries.data() + 74, 3}, {infos.data() + 74, 3}};
-inline constexpr const od::entry &nmt_eplnodeid_rec_numberofentries = entries[74];
-inline constexpr const od::entry &nmt_eplnodeid_rec_nodeid_u8 = entries[75];
-inline constexpr const od::entry &nmt_eplnodeid_rec_nodeidbyhw_bool = entries[76];
-inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC", {entries.data() + 77, 10}, {infos.data() + 77, 10}};
-inline constexpr const od::entry &nmt_cycletiming_rec_numberofentries = entries[77];
-inline constexpr const od::entry &nmt_cycletiming_rec_isochrtxmaxpayload_u16 = entries[78];
-inline constexpr const od::entry &nmt_cycletiming_rec_isochrrxmaxpayload_u16 = entries[79];
-inline constexpr const od::entry &nmt_cycletiming_rec_presmaxlatency_u32 = entries[80];
-inline constexpr const od::entry &nmt_cycletiming_rec_preqactpayloadlimit_u16 = entries[81];
-inline constexpr const od::entry &nmt_cycletiming_rec_presactpayloadlimit_u16 = entries[82];
-inline constexpr const od::entry &nmt_cycletiming_rec_asndmaxlatency_u32 = entries[83];
-inline constexpr const od::entry &nmt_cycletiming_rec_multiplcyclecnt_u8 = entries[84];
-inline constexpr const od::entry &nmt_cycletiming_rec_asyncmtusize_u16 = entries[85];
-inline constexpr const od::entry &nmt_cycletiming_rec_prescaler_u16 = entries[86];
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter", {entries.data() + 102, 46}, {infos.data() + 102, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter", {entries.data() + 148, 17}, {infos.data() + 148, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter", {entries.data() + 165, 107}, {infos.data() + 165, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter", {entries.data() + 272, 12}, {infos.data() + 272, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter", {entries.data() + 284, 14}, {infos.data() + 284, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter", {entries.data() + 298, 11}, {infos.data() + 298, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter", {entries.data() + 309, 15}, {infos.data() + 309, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions", {entries.data() + 341, 3}, {infos.data() + 341, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds", {entries.data() + 348, 3}, {infos.data() + 348, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time", {entries.data() + 353, 3}, {infos.data() + 353, 3}};
-inline constexpr const od::entry &synchronous_cycle_time_highest_sub_index_value = entries[353];
-inline constexpr const od::entry &synchronous_cycle_time_base_value = entries[354];
-inline constexpr const od::entry &synchronous_cycle_time_n_10_exponent = entries[355];
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs", {entries.data() + 358, 3}, {infos.data() + 358, 3}};
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 6, 5}, {infos.data() + 6, 5}};
+inline constexpr od::descriptor identity_object_nbr_of_entries{entries[6], infos[6]}; // 0x1018 sub 0
+inline constexpr od::descriptor identity_object_vendor_id{entries[7], infos[7]}; // 0x1018 sub 1
+inline constexpr od::descriptor identity_object_product_code{entries[8], infos[8]}; // 0x1018 sub 2
+inline constexpr od::descriptor identity_object_revision_number{entries[9], infos[9]}; // 0x1018 sub 3
+inline constexpr od::descriptor identity_object_serial_number{entries[10], infos[10]}; // 0x1018 sub 4
+inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration"sv, {entries.data() + 11, 5}, {infos.data() + 11, 5}};
+inline constexpr od::descriptor cfm_verifyconfiguration_nbr_of_entries{entries[11], infos[11]}; // 0x1020 sub 0
+inline constexpr od::descriptor cfm_verifyconfiguration_confdate_u32{entries[12], infos[12]}; // 0x1020 sub 1
+inline constexpr od::descriptor cfm_verifyconfiguration_conftime_u32{entries[13], infos[13]}; // 0x1020 sub 2
+inline constexpr od::descriptor cfm_verifyconfiguration_confid_u32{entries[14], infos[14]}; // 0x1020 sub 3
+inline constexpr od::descriptor cfm_verifyconfiguration_verifyconfinvalid_u32{entries[15], infos[15]}; // 0x1020 sub 4
+inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC"sv, {entries.data() + 16, 10}, {infos.data() + 16, 10}};
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_nbr_of_entries{entries[16], infos[16]}; // 0x1030 sub 0
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceindex_u16{entries[17], infos[17]}; // 0x1030 sub 1
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacedescription_vstr{entries[18], infos[18]}; // 0x1030 sub 2
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacetype_u8{entries[19], infos[19]}; // 0x1030 sub 3
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacemtu_u32{entries[20], infos[20]}; // 0x1030 sub 4
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacephysaddress_ostr{entries[21], infos[21]}; // 0x1030 sub 5
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacename_vstr{entries[22], infos[22]}; // 0x1030 sub 6
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceoperstatus_u8{entries[23], infos[23]}; // 0x1030 sub 7
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceadminstate_u8{entries[24], infos[24]}; // 0x1030 sub 8
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_valid_bool{entries[25], infos[25]}; // 0x1030 sub 9
+inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC"sv, {entries.data() + 28, 3}, {infos.data() + 28, 3}};
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nbr_of_entries{entries[28], infos[28]}; // 0x1400 sub 0
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nodeid_u8{entries[29], infos[29]}; // 0x1400 sub 1
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_mappingversion_u8{entries[30], infos[30]}; // 0x1400 sub 2
+inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::record, "PDO_RxMappParam_00h_AU64"sv, {entries.data() + 31, 9}, {infos.data() + 31, 9}};
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_nbr_of_entries{entries[31], infos[31]}; // 0x1600 sub 0
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_1{entries[32], infos[32]}; // 0x1600 sub 1
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_2{entries[33], infos[33]}; // 0x1600 sub 2
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_3{entries[34], infos[34]}; // 0x1600 sub 3
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_4{entries[35], infos[35]}; // 0x1600 sub 4
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_5{entries[36], infos[36]}; // 0x1600 sub 5
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_6{entries[37], infos[37]}; // 0x1600 sub 6
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_7{entries[38], infos[38]}; // 0x1600 sub 7
+inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_8{entries[39], infos[39]}; // 0x1600 sub 8
+inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC"sv, {entries.data() + 40, 3}, {infos.data() + 40, 3}};
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_nbr_of_entries{entries[40], infos[40]}; // 0x1800 sub 0
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_nodeid_u8{entries[41], infos[41]}; // 0x1800 sub 1
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_mappingversion_u8{entries[42], infos[42]}; // 0x1800 sub 2
+inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::record, "PDO_TxMappParam_00h_AU64"sv, {entries.data() + 43, 9}, {infos.data() + 43, 9}};
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_nbr_of_entries{entries[43], infos[43]}; // 0x1A00 sub 0
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_1{entries[44], infos[44]}; // 0x1A00 sub 1
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_2{entries[45], infos[45]}; // 0x1A00 sub 2
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_3{entries[46], infos[46]}; // 0x1A00 sub 3
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_4{entries[47], infos[47]}; // 0x1A00 sub 4
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_5{entries[48], infos[48]}; // 0x1A00 sub 5
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_6{entries[49], infos[49]}; // 0x1A00 sub 6
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_7{entries[50], infos[50]}; // 0x1A00 sub 7
+inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_8{entries[51], infos[51]}; // 0x1A00 sub 8
+inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC"sv, {entries.data() + 52, 4}, {infos.data() + 52, 4}};
+inline constexpr od::descriptor dll_cnlosssoc_rec_numberofentries{entries[52], infos[52]}; // 0x1C0B sub 0
+inline constexpr od::descriptor dll_cnlosssoc_rec_cumulativecnt_u32{entries[53], infos[53]}; // 0x1C0B sub 1
+inline constexpr od::descriptor dll_cnlosssoc_rec_thresholdcnt_u32{entries[54], infos[54]}; // 0x1C0B sub 2
+inline constexpr od::descriptor dll_cnlosssoc_rec_threshold_u32{entries[55], infos[55]}; // 0x1C0B sub 3
+inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC"sv, {entries.data() + 56, 4}, {infos.data() + 56, 4}};
+inline constexpr od::descriptor dll_cncrcerror_rec_numberofentries{entries[56], infos[56]}; // 0x1C0F sub 0
+inline constexpr od::descriptor dll_cncrcerror_rec_cumulativecnt_u32{entries[57], infos[57]}; // 0x1C0F sub 1
+inline constexpr od::descriptor dll_cncrcerror_rec_thresholdcnt_u32{entries[58], infos[58]}; // 0x1C0F sub 2
+inline constexpr od::descriptor dll_cncrcerror_rec_threshold_u32{entries[59], infos[59]}; // 0x1C0F sub 3
+inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC"sv, {entries.data() + 61, 6}, {infos.data() + 61, 6}};
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_numberofentries{entries[61], infos[61]}; // 0x1E40 sub 0
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_ifindex_u16{entries[62], infos[62]}; // 0x1E40 sub 1
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_addr_ipad{entries[63], infos[63]}; // 0x1E40 sub 2
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_netmask_ipad{entries[64], infos[64]}; // 0x1E40 sub 3
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_reasmmaxsize_u16{entries[65], infos[65]}; // 0x1E40 sub 4
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_defaultgateway_ipad{entries[66], infos[66]}; // 0x1E40 sub 5
+inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC"sv, {entries.data() + 67, 4}, {infos.data() + 67, 4}};
+inline constexpr od::descriptor nwl_ipgroup_rec_numberofentries{entries[67], infos[67]}; // 0x1E4A sub 0
+inline constexpr od::descriptor nwl_ipgroup_rec_forwarding_bool{entries[68], infos[68]}; // 0x1E4A sub 1
+inline constexpr od::descriptor nwl_ipgroup_rec_defaultttl_u16{entries[69], infos[69]}; // 0x1E4A sub 2
+inline constexpr od::descriptor nwl_ipgroup_rec_forwarddatagrams_u32{entries[70], infos[70]}; // 0x1E4A sub 3
+inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC"sv, {entries.data() + 74, 3}, {infos.data() + 74, 3}};
+inline constexpr od::descriptor nmt_eplnodeid_rec_numberofentries{entries[74], infos[74]}; // 0x1F93 sub 0
+inline constexpr od::descriptor nmt_eplnodeid_rec_nodeid_u8{entries[75], infos[75]}; // 0x1F93 sub 1
+inline constexpr od::descriptor nmt_eplnodeid_rec_nodeidbyhw_bool{entries[76], infos[76]}; // 0x1F93 sub 2
+inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC"sv, {entries.data() + 77, 10}, {infos.data() + 77, 10}};
+inline constexpr od::descriptor nmt_cycletiming_rec_numberofentries{entries[77], infos[77]}; // 0x1F98 sub 0
+inline constexpr od::descriptor nmt_cycletiming_rec_isochrtxmaxpayload_u16{entries[78], infos[78]}; // 0x1F98 sub 1
+inline constexpr od::descriptor nmt_cycletiming_rec_isochrrxmaxpayload_u16{entries[79], infos[79]}; // 0x1F98 sub 2
+inline constexpr od::descriptor nmt_cycletiming_rec_presmaxlatency_u32{entries[80], infos[80]}; // 0x1F98 sub 3
+inline constexpr od::descriptor nmt_cycletiming_rec_preqactpayloadlimit_u16{entries[81], infos[81]}; // 0x1F98 sub 4
+inline constexpr od::descriptor nmt_cycletiming_rec_presactpayloadlimit_u16{entries[82], infos[82]}; // 0x1F98 sub 5
+inline constexpr od::descriptor nmt_cycletiming_rec_asndmaxlatency_u32{entries[83], infos[83]}; // 0x1F98 sub 6
+inline constexpr od::descriptor nmt_cycletiming_rec_multiplcyclecnt_u8{entries[84], infos[84]}; // 0x1F98 sub 7
+inline constexpr od::descriptor nmt_cycletiming_rec_asyncmtusize_u16{entries[85], infos[85]}; // 0x1F98 sub 8
+inline constexpr od::descriptor nmt_cycletiming_rec_prescaler_u16{entries[86], infos[86]}; // 0x1F98 sub 9
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 102, 46}, {infos.data() + 102, 46}};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 148, 17}, {infos.data() + 148, 17}};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 165, 107}, {infos.data() + 165, 107}};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 272, 12}, {infos.data() + 272, 12}};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 284, 14}, {infos.data() + 284, 14}};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 298, 11}, {infos.data() + 298, 11}};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 309, 15}, {infos.data() + 309, 15}};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 341, 3}, {infos.data() + 341, 3}};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 348, 3}, {infos.data() + 348, 3}};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 353, 3}, {infos.data() + 353, 3}};
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[353], infos[353]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[354], infos[354]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[355], infos[355]}; // 0x60C2 sub 2
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 358, 3}, {infos.data() + 358, 3}};
 
 } // namespace fieldcodec::dictionaries::xenax_powerlink
 // clang-format on
