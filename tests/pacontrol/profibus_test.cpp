@@ -73,7 +73,7 @@ TEST_CASE("pacontrol CMD: Interbus example 4.2.4 decodes") {
   auto printed = pb::decode_cmd_reply(hex("44 20 20 00 00 01 02 00").span());
   REQUIRE(printed);
   CHECK_FALSE(printed->end_of_processing);
-  CHECK(printed->error_number == 0x0200);
+  CHECK(printed->command_error_number == 0x0200);
   CHECK(pb::date_as_float(printed->date).value() == 640.5F);
 }
 
@@ -87,13 +87,13 @@ TEST_CASE("pacontrol CMD: fields at their limits and bad input") {
   CHECK(pb::decode_cmd_reply(hex("80 00 00 00 80 FF FF FF").span()).value() == full);
   CHECK(pb::encode_cmd_reply({0, false, 0, false, false, false, 0x2000}).error() == errc::overflow);
   // Unused bits 14-8 of word 2 are ignored.
-  CHECK(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->status == 0x1F);
-  CHECK_FALSE(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->pac_error);
+  CHECK(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->operating_status == 0x1F);
+  CHECK_FALSE(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->controller_error);
   // Command error 19 (unknown command) with RF 1 and KF 1: word 3 = C0 13.
   auto err = pb::decode_cmd_reply(hex("00 00 00 00 00 01 C0 13").span());
   REQUIRE(err);
   CHECK(err->command_error);
-  CHECK(err->error_number == 19);
+  CHECK(err->command_error_number == 19);
   CHECK(pb::decode_cmd_reply(hex("00 00 00 00 00 01 C0").span()).error() == errc::truncated);
   CHECK(pb::decode_cmd_request(hex("").span()).error() == errc::truncated);
   CHECK(pb::date_from_float(std::numeric_limits<float>::quiet_NaN()).error() ==
@@ -255,9 +255,9 @@ TEST_CASE("pacontrol axis status, active-low limit switches") {
   REQUIRE(lim);
   CHECK(lim->positive_limit_actuated());
   CHECK_FALSE(lim->negative_limit_actuated());
-  CHECK(lim->has(as::axis_error | as::cmd_error | as::fault));
-  CHECK(lim->cmd_error == 43);
-  CHECK(lim->axis_error == 529);
+  CHECK(lim->has(as::axis_error | as::command_error | as::fault));
+  CHECK(lim->command_error_number == 43);
+  CHECK(lim->axis_error_number == 529);
   CHECK(lim->position == 5552.0F);
   CHECK(same(pb::encode_axis_status(lim.value(), position_format::milli_integer).value(),
              hex("00 00 C3 41 00 2B 02 11 00 54 B7 80")));

@@ -61,16 +61,18 @@ static_assert(pac::float_to_decimal(-inf_f, float_style::master).error() ==
               errc::not_representable);
 
 // Typed values.
-static_assert(pac::value::of_int(-5).as_int().value() == -5);
+static_assert(pac::value::of_int(-5).value().as_int().value() == -5);
 static_assert(pac::value::of_float(5552.0F).value().as_int().error() == errc::type_mismatch);
 static_assert(pac::value::of_float(5552.0F).value().as_float() == 5552.0F);
 static_assert(pac::value::of_float(nan_f).error() == errc::not_representable);
 static_assert(pac::value::of_real(decimal{1, 19}).error() == errc::invalid_argument);
-static_assert(pac::validate(pac::value{pac::data_type::integer, decimal{1, 1}}).error() ==
+static_assert(pac::validate(pac::value{fc::od::command_value::integer, decimal{1, 1}}).error() ==
               errc::type_mismatch);
-static_assert(pac::validate(pac::value{pac::data_type::integer, decimal{-2147483649, 0}}).error() ==
-              errc::overflow);
-static_assert(pac::validate(pac::value{static_cast<pac::data_type>(2), decimal{}}).error() ==
+static_assert(pac::validate(pac::value{fc::od::command_value::integer, decimal{-2147483649, 0}})
+                  .error() == errc::overflow);
+static_assert(pac::validate(pac::value{fc::od::command_value::none, decimal{}}).error() ==
+              errc::invalid_argument);
+static_assert(pac::validate(pac::value{static_cast<fc::od::command_value>(3), decimal{}}).error() ==
               errc::invalid_argument);
 
 // --- IEEE-754 examples that the manual prints correctly.

@@ -60,13 +60,13 @@ struct cmd_request {
 
 /// PA-CONTROL → master.
 struct cmd_reply {
-  std::uint32_t date = 0;         ///< acknowledgement date
-  bool pac_error = false;         ///< FE: read the number with command 1909
-  std::uint8_t status = 0;        ///< operating status (codes.hpp)
-  bool receive_flag = false;      ///< RF: copy of the SEND flag once the command was seen
-  bool command_error = false;     ///< KF
-  bool end_of_processing = false; ///< BF
-  std::uint16_t error_number = 0; ///< command error number (QUIT), 0 … 0x1FFF
+  std::uint32_t date = 0;                 ///< acknowledgement date
+  bool controller_error = false;          ///< FE: a PA-CONTROL error is pending (read it: 1909)
+  std::uint8_t operating_status = 0;      ///< operating status (codes.hpp)
+  bool receive_flag = false;              ///< RF: copy of the SEND flag once the command was seen
+  bool command_error = false;             ///< KF: the command failed
+  bool end_of_processing = false;         ///< BF
+  std::uint16_t command_error_number = 0; ///< why it failed (QUIT), 0 … 0x1FFF
 
   friend constexpr bool operator==(const cmd_reply &, const cmd_reply &) noexcept = default;
 };
@@ -100,15 +100,16 @@ decode_cmd_request(std::span<const std::uint8_t> in) noexcept {
 /// Errors: overflow (error number above 0x1FFF).
 [[nodiscard]] constexpr result<std::array<std::uint8_t, cmd_size>>
 encode_cmd_reply(const cmd_reply &r) noexcept {
-  if (r.error_number > max_command_error) return errc::overflow;
+  if (r.command_error_number > max_command_error) return errc::overflow;
   std::array<std::uint8_t, cmd_size> out{};
   byte_writer w(out);
   FIELDCODEC_TRY_STATUS(w.write<std::uint32_t>(r.date, byte_order::big));
-  const auto word2 = static_cast<std::uint16_t>((r.pac_error ? 0x8000U : 0U) | r.status);
+  const auto word2 =
+      static_cast<std::uint16_t>((r.controller_error ? 0x8000U : 0U) | r.operating_status);
   FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(word2, byte_order::big));
   const auto word3 = static_cast<std::uint16_t>(
       (r.receive_flag ? 0x8000U : 0U) | (r.command_error ? 0x4000U : 0U) |
-      (r.end_of_processing ? 0x2000U : 0U) | r.error_number);
+      (r.end_of_processing ? 0x2000U : 0U) | r.command_error_number);
   FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(word3, byte_order::big));
   return out;
 }
@@ -137,7 +138,7 @@ enum class cmd_progress : std::uint8_t {
   waiting, ///< SF ≠ RF: the PA-CONTROL has not seen the command yet
   running, ///< SF = RF, no error, end of processing 0
   done,    ///< SF = RF, no error, end of processing 1: the reply date is the result
-  failed,  ///< SF = RF, command error: error_number says why
+  failed,  ///< SF = RF, command error: command_error_number says why
 };
 
 /// Non-blocking bookkeeping of the SEND / RECEIVE flags for one master.
