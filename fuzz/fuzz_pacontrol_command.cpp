@@ -18,6 +18,10 @@
 //   unchanged (nothing wraps), encodes, and the RS232 frame decodes to the same request; the
 //   Profibus command date of a float command is the float's bit pattern. An integer date
 //   widened beyond int32 is refused.
+// * A 32-bit date that decode_extended_axis_status accepts encodes back to itself, and it is
+//   refused exactly when an upper byte is not 0/1 or the motion byte is not 0, 1, 2, 4, 8;
+//   element_word::containing(parameter, date) accepts exactly elements 1-1024 and 16-bit words
+//   and reads every bit of the date.
 // * The table's packed bounds agree with the helpers: a parameter of 0800/1800/1801/1802 passes
 //   the table exactly when decode_axis_parameter accepts it, a date of 0AA3 exactly when
 //   decode_element_condition accepts it, and both re-encode to the same number.
@@ -25,7 +29,9 @@
 
 #include <fieldcodec/core/ieee754.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/pacontrol/axis_motion.hpp>
 #include <fieldcodec/pacontrol/command.hpp>
+#include <fieldcodec/pacontrol/elements.hpp>
 #include <fieldcodec/pacontrol/profibus_cmd.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
@@ -154,6 +160,28 @@ void check_request(const od::command &cmd, std::int64_t parameter, std::uint32_t
   }
 }
 
+/// The decoders of numbers inside acknowledgement dates: what decodes encodes back.
+void check_reply_numbers(std::uint32_t date, std::int64_t element) {
+  if (auto st = pac::decode_extended_axis_status(date)) {
+    FUZZ_CHECK(pac::encode_extended_axis_status(st.value()) == date);
+  } else {
+    const std::uint32_t hi = date >> 8U;
+    FUZZ_CHECK((hi & 0xFEFEFEU) != 0U || !pac::decode_axis_motion(date & 0xFFU));
+  }
+  if (auto m = pac::decode_axis_motion(date)) {
+    FUZZ_CHECK(static_cast<std::uint32_t>(m.value()) == date);
+  }
+  auto w = pac::element_word::containing(element, date);
+  FUZZ_CHECK(w.has_value() == (element >= 1 && element <= 1024 && date <= 0xFFFFU));
+  if (w) {
+    FUZZ_CHECK(w.value().first() <= element && element < w.value().first() + 16);
+    for (std::int64_t e = w.value().first(); e < w.value().first() + 16; ++e) {
+      const auto bit = static_cast<unsigned>(e - w.value().first());
+      FUZZ_CHECK(w.value().test(e).value() == (((date >> bit) & 1U) != 0U));
+    }
+  }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
@@ -168,5 +196,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
                     static_cast<std::uint32_t>(data[6]) << 8U | data[7];
   check_reply(cmd, date);
   check_request(cmd, parameter, date, data[8]);
+  check_reply_numbers(date, parameter);
   return 0;
 }

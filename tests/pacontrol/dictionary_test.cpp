@@ -86,7 +86,7 @@ TEST_CASE("pacontrol command table: every command builds with its own type only"
     auto d = pac::serial::decode_frame(std::span<const std::uint8_t>(buf.data(), n.value()));
     REQUIRE(d);
     CHECK(d.value().req == r.value());
-    CHECK(d.value().req.date.type == pac::request_type(c));
+    CHECK(d.value().req.date.type == pac::request_date_type(c));
     if (auto hi = c.parameter_max.to_int64(); hi && hi.value() < 65535) {
       CHECK(pac::make_request(c, hi.value() + 1).error() ==
             (c.date_type == command_value::none ? errc::out_of_range : errc::type_mismatch));

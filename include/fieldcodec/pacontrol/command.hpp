@@ -43,7 +43,7 @@ concept parameter_argument = integer_argument<T> || std::same_as<T, axis_paramet
 
 /// TYP_PAR_2 of a request for `cmd`: the date's type, for a command without a date the type
 /// of its reply, integer when it has neither.
-[[nodiscard]] constexpr od::command_value request_type(const od::command &cmd) noexcept {
+[[nodiscard]] constexpr od::command_value request_date_type(const od::command &cmd) noexcept {
   const auto t = cmd.date_type != od::command_value::none ? cmd.date_type : cmd.reply_type;
   return t == od::command_value::none ? od::command_value::integer : t;
 }
@@ -100,7 +100,7 @@ template <parameter_argument P = std::uint16_t>
 [[nodiscard]] constexpr result<serial::request> make_request(const od::command &cmd,
                                                              P parameter = P{}) noexcept {
   return detail::build(cmd, od::command_value::none, parameter, [&]() -> result<value> {
-    return value{request_type(cmd), decimal{0, 0}};
+    return value{request_date_type(cmd), decimal{0, 0}};
   });
 }
 
