@@ -135,7 +135,8 @@ TEST_CASE("docs/pacontrol.md, RS232: the frame written and an acknowledgement re
   CHECK(doc_rs232::write_move(small) == 0);
   // The device's answer of 3.4.3 (done at 5552.000), with noise before it.
   doc_rs232::on_byte(0x55);
-  for (const auto b : pactest::frame("0;1;31;0;1;5552.000", "35").span()) doc_rs232::on_byte(b);
+  const auto answer = pactest::frame("0;1;31;0;1;5552.000", "35");
+  for (const auto b : answer.span()) doc_rs232::on_byte(b);
   CHECK(doc_rs232::last_ack.end_of_processing);
   CHECK(doc_rs232::last_ack.operating_status == 31);
   CHECK(doc_rs232::last_ack.date == pac::value::of_float(5552.0F).value());
