@@ -101,7 +101,15 @@ TEST_CASE("pacontrol CMD: fields at their limits and bad input") {
   CHECK(pb::date_from_float(-std::numeric_limits<float>::infinity()).error() ==
         errc::not_representable);
   CHECK(pb::date_as_float(0x7FC00000U).error() == errc::not_representable);
-  CHECK(pb::date_from_int(-1) == 0xFFFFFFFFU);
+  CHECK(pb::date_from_int(-1).value() == 0xFFFFFFFFU);
+  CHECK(pb::date_from_int(std::int64_t{1} << 31).error() == errc::overflow);
+  CHECK(pb::date_from_int(-2147483648LL).value() == 0x80000000U);
+  CHECK(pb::date_from_float(640.0).value() == 0x44200000U); // a double: its nearest float
+  CHECK(pb::date_from_float(1.0e39).error() == errc::not_representable);
+  CHECK(pb::raw_date(0xFFFFFFFFU).value() == 0xFFFFFFFFU);
+  CHECK(pb::raw_date(-1).value() == 0xFFFFFFFFU);
+  CHECK(pb::raw_date(std::int64_t{1} << 32).error() == errc::overflow);
+  CHECK(pb::raw_date(-(std::int64_t{1} << 31) - 1).error() == errc::overflow);
   CHECK(pb::date_as_int(0x80000000U) == std::numeric_limits<std::int32_t>::min());
 }
 
@@ -139,6 +147,12 @@ TEST_CASE("pacontrol CMD: handshake (acknowledgement mechanism 2.4)") {
   const pb::cmd_reply unknown{0, false, 31, false, true, false, 19};
   CHECK(hs.update(unknown) == pb::cmd_progress::failed);
   CHECK(hs.start(0x8000, 0, 0).error() == errc::overflow);
+  // Any integer types, checked, never wrapped; a refused start does not toggle.
+  CHECK(hs.start(-1, 0, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, 65536, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, -1, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, 2, std::int64_t{1} << 32).error() == errc::overflow);
+  CHECK(hs.stage(0x1906U, std::uint8_t{2}, -1).value().date == 0xFFFFFFFFU);
   CHECK(hs.send_flag() == false);
 }
 

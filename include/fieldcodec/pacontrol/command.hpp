@@ -185,9 +185,7 @@ make_request(const od::command &cmd, P parameter, const element_condition &date)
 /// Errors: those of validate(), not_representable (beyond float range).
 [[nodiscard]] constexpr result<std::uint32_t> cmd_date(const value &date) noexcept {
   FIELDCODEC_TRY_STATUS(validate(date));
-  if (date.type == od::command_value::integer) {
-    return profibus::date_from_int(date.as_int().value());
-  }
+  if (date.type == od::command_value::integer) return profibus::date_from_int(date.number.mantissa);
   return profibus::date_from_float(date.as_float());
 }
 
