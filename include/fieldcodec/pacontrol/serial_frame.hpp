@@ -15,6 +15,7 @@
 #include <fieldcodec/core/checksum.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/command.hpp>
 #include <fieldcodec/pacontrol/value.hpp>
 
 #include <array>
