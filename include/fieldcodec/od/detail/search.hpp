@@ -16,7 +16,7 @@ template <class T, class Key, class KeyOf>
   std::size_t lo = 0;
   std::size_t hi = s.size();
   while (lo < hi) {
-    const std::size_t mid = lo + (hi - lo) / 2U;
+    const std::size_t mid = (lo + hi) / 2U; // spans hold far fewer than SIZE_MAX / 2 elements
     if (key_of(s[mid]) < key) {
       lo = mid + 1U;
     } else {
