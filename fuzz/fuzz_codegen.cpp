@@ -72,7 +72,7 @@ bool same_entry(const gen::entry &a, const gen::entry &b) {
          a.access == b.access &&
          (a.pdo == fieldcodec::od::pdo_mapping::no) == (b.pdo == fieldcodec::od::pdo_mapping::no) &&
          (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high))) &&
-         same_number(a.def, b.def) && a.def_nodeid == b.def_nodeid;
+         same_number(a.default_value, b.default_value) && a.default_nodeid == b.default_nodeid;
 }
 
 void round_trip(const gen::dictionary &d, bool from_csv) {

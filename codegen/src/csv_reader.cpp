@@ -233,7 +233,7 @@ public:
         it->second.name = e.name;
         it->second.symbol = e.symbol;
         it->second.line = e.line;
-        it->second.list = e.index >= 0x2000U && e.index < 0x6000U ? 2 : 1;
+        it->second.list = default_list(e.index);
       }
       for (auto &[index, info] : dict_.objects) {
         std::uint8_t n = 0;
@@ -462,22 +462,22 @@ private:
     if (!csv_number(r, "low", e.low) || !csv_number(r, "high", e.high)) return;
     if (const field *f = get(r, "default"); f != nullptr && !f->text.empty()) {
       if (od::is_byte_string(e.type)) {
-        e.def_text = f->text;
+        e.default_text = f->text;
       } else {
         const std::string up = to_upper(f->text);
         if (up.starts_with("$NODEID")) {
           std::string rest = f->text.substr(7);
           std::string_view t = trim(rest);
-          e.def_nodeid = true;
+          e.default_nodeid = true;
           if (t.empty()) {
-            e.def = od::num::u(0);
+            e.default_value = od::num::u(0);
           } else if (t.front() == '+') {
             const int_parse p = parse_int(t.substr(1));
             if (!p.ok) {
               bad(*f, "default", p.error);
               return;
             }
-            e.def = p.value;
+            e.default_value = p.value;
           } else {
             bad(*f, "default", "expected '$NODEID+<number>', got '" + f->text + "'");
             return;
@@ -488,8 +488,8 @@ private:
             bad(*f, "default", "expected a real number, got '" + f->text + "'");
             return;
           }
-          e.def = od::num::f(*d);
-        } else if (!csv_number(r, "default", e.def)) {
+          e.default_value = od::num::f(*d);
+        } else if (!csv_number(r, "default", e.default_value)) {
           return;
         }
       }

@@ -549,12 +549,12 @@ private:
     };
     bool dummy = false;
     std::string dummy_text;
-    value_key("DEFAULTVALUE", e.def, e.def_nodeid, e.def_text);
-    value_key("PARAMETERVALUE", e.param, e.param_nodeid, e.param_text);
+    value_key("DEFAULTVALUE", e.default_value, e.default_nodeid, e.default_text);
+    value_key("PARAMETERVALUE", e.parameter_value, e.parameter_nodeid, e.parameter_text);
     value_key("LOWLIMIT", e.low, dummy, dummy_text);
     value_key("HIGHLIMIT", e.high, dummy, dummy_text);
     if (const ini_key *k = s.find("DENOTATION")) e.denotation = k->value;
-    if (!e.param_text.empty() || e.param.has_value() || !e.denotation.empty()) dict_.is_dcf = true;
+    if (!e.parameter_text.empty() || e.parameter_value.has_value() || !e.denotation.empty()) dict_.is_dcf = true;
     return ok;
   }
 
@@ -727,7 +727,7 @@ private:
     sub0.type_code = 0x0005;
     sub0.type = od::data_type::unsigned8;
     sub0.access = od::access::ro;
-    sub0.def = od::num::u(compact);
+    sub0.default_value = od::num::u(compact);
     std::map<std::uint32_t, std::string> names;
     std::map<std::uint32_t, const ini_key *> values;
     if (auto it = names_.find(index); it != names_.end()) {
@@ -763,18 +763,18 @@ private:
     for (std::uint32_t i = 1; i <= compact; ++i) {
       entry e = proto;
       e.sub = static_cast<std::uint8_t>(i);
-      e.param = {};
-      e.param_nodeid = false;
-      e.param_text.clear();
+      e.parameter_value = {};
+      e.parameter_nodeid = false;
+      e.parameter_text.clear();
       e.denotation.clear();
       auto n = names.find(i);
       e.name = n != names.end() ? n->second : proto.name + std::to_string(i);
       if (auto v = values.find(i); v != values.end()) {
         const ini_section &vs = *values_.find(index)->second;
         if (od::is_byte_string(e.type)) {
-          e.param_text = v->second->value;
+          e.parameter_text = v->second->value;
         } else if (!v->second->value.empty()) {
-          parse_number_value(vs, *v->second, e.type, e.param, e.param_nodeid);
+          parse_number_value(vs, *v->second, e.type, e.parameter_value, e.parameter_nodeid);
         }
       }
       dict_.entries.push_back(std::move(e));
@@ -783,8 +783,10 @@ private:
   }
 
   void object_lists() {
-    const std::pair<const char *, int> lists[] = {
-        {"MANDATORYOBJECTS", 0}, {"OPTIONALOBJECTS", 1}, {"MANUFACTUREROBJECTS", 2}};
+    const std::pair<const char *, object_list> lists[] = {
+        {"MANDATORYOBJECTS", object_list::mandatory},
+        {"OPTIONALOBJECTS", object_list::optional},
+        {"MANUFACTUREROBJECTS", object_list::manufacturer}};
     std::set<std::uint16_t> listed;
     bool any_list = false;
     for (const auto &[name, which] : lists) {
@@ -822,7 +824,7 @@ private:
                           "] is not listed in [MandatoryObjects], "
                           "[OptionalObjects] or [ManufacturerObjects]");
         if (auto it = dict_.objects.find(index); it != dict_.objects.end()) {
-          it->second.list = index >= 0x2000U && index < 0x6000U ? 2 : 1;
+          it->second.list = default_list(index);
         }
       }
     }

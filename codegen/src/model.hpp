@@ -15,22 +15,37 @@
 
 namespace fieldcodec::gen {
 
+/// Where an EDS lists an object: [MandatoryObjects], [OptionalObjects], [ManufacturerObjects].
+enum class object_list : std::uint8_t { mandatory, optional, manufacturer };
+
 /// One sub-object as read from an EDS/DCF or a CSV object table.
 struct entry {
   std::uint16_t index = 0;
   std::uint8_t sub = 0;
+  /// Sub-indices this entry stands for: sub .. sub + count - 1. 1 for every entry except a run of
+  /// CompactSubObj sub-objects kept compact (--keep-compact): those are alike in everything but
+  /// their names, sub-index i is named `name` followed by i in decimal ("TPDO 1 mapping5").
+  std::uint16_t count = 1;
   od::object_code object = od::object_code::var;
   std::uint16_t type_code = 0;                ///< data type as written (may be > 0x1B)
   od::data_type type = od::data_type::domain; ///< type_code if a basic type, DOMAIN otherwise
   od::access access = od::access::ro;
   od::pdo_mapping pdo = od::pdo_mapping::no;
   std::uint8_t flags = 0;
+  /// Capacity in bytes of a VISIBLE_STRING / OCTET_STRING / UNICODE_STRING / DOMAIN value (0: no
+  /// capacity known; docs/generator.md "String and DOMAIN capacity"); 0 for every other type.
   std::uint32_t size = 0;
   std::string name;
   std::string symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
-  od::number low, high, def, param;
-  bool def_nodeid = false, param_nodeid = false;
-  std::string def_text, param_text, denotation;
+  od::number low, high, default_value, parameter_value;
+  bool low_nodeid = false;       ///< low is "$NODEID + low"
+  bool high_nodeid = false;      ///< high is "$NODEID + high"
+  bool default_nodeid = false;   ///< default_value is "$NODEID + default_value"
+  bool parameter_nodeid = false; ///< parameter_value (DCF ParameterValue) is "$NODEID + ..."
+  /// Default / DCF ParameterValue of a byte-string entry: the value's bytes as a store holds them
+  /// (an EDS OCTET_STRING / DOMAIN written as hex digits is decoded, a UNICODE_STRING is UTF-16LE).
+  std::string default_text, parameter_text;
+  std::string denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};
   std::string unit, alt_name, acceptance, section, remark;
@@ -51,9 +66,15 @@ struct object_info {
   std::uint8_t compact_sub = 0; ///< EDS CompactSubObj (0: not compact)
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
-  int list = 0; ///< 0 mandatory, 1 optional, 2 manufacturer
+  object_list list = object_list::mandatory;
   int line = 0;
 };
+
+/// The list an object not listed anywhere belongs in: manufacturer-specific 2000h..5FFFh, optional
+/// otherwise.
+[[nodiscard]] constexpr object_list default_list(std::uint16_t index) noexcept {
+  return index >= 0x2000U && index < 0x6000U ? object_list::manufacturer : object_list::optional;
+}
 
 /// One row of a command table.
 struct command {

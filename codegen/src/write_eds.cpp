@@ -90,9 +90,9 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   o += "DataType=0x" + hex(type, 4) + "\n";
   o += "AccessType=" + std::string(od::name(e.access)) + "\n";
   if (od::is_byte_string(e.type)) {
-    if (!e.def_text.empty()) o += "DefaultValue=" + eds_text(e.def_text) + "\n";
-  } else if (e.def || e.def_nodeid) {
-    o += "DefaultValue=" + entry_number(e, e.def, e.def_nodeid) + "\n";
+    if (!e.default_text.empty()) o += "DefaultValue=" + eds_text(e.default_text) + "\n";
+  } else if (e.default_value || e.default_nodeid) {
+    o += "DefaultValue=" + entry_number(e, e.default_value, e.default_nodeid) + "\n";
   }
   if (!od::is_byte_string(e.type)) { // limits of a string are not expressible in an EDS
     if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
@@ -102,9 +102,9 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   if (e.has_obj_flags) o += "ObjFlags=0x" + hex(e.obj_flags, 1) + "\n";
   if (dcf) {
     if (od::is_byte_string(e.type)) {
-      if (!e.param_text.empty()) o += "ParameterValue=" + eds_text(e.param_text) + "\n";
-    } else if (e.param || e.param_nodeid) {
-      o += "ParameterValue=" + entry_number(e, e.param, e.param_nodeid) + "\n";
+      if (!e.parameter_text.empty()) o += "ParameterValue=" + eds_text(e.parameter_text) + "\n";
+    } else if (e.parameter_value || e.parameter_nodeid) {
+      o += "ParameterValue=" + entry_number(e, e.parameter_value, e.parameter_nodeid) + "\n";
     }
     if (!e.denotation.empty()) o += "Denotation=" + eds_text(e.denotation) + "\n";
   }
@@ -120,7 +120,7 @@ void add_mandatory_objects(dictionary &d) {
     info.index = index;
     info.code = code;
     info.name = name;
-    info.list = 0;
+    info.list = object_list::mandatory;
     info.sub_number = code == od::object_code::var ? 0 : static_cast<std::uint8_t>(subs.size());
     d.objects[index] = info;
     for (auto &e : subs) {
@@ -135,7 +135,7 @@ void add_mandatory_objects(dictionary &d) {
     e.type = t;
     e.type_code = static_cast<std::uint16_t>(t);
     e.access = od::access::ro;
-    e.def = def;
+    e.default_value = def;
     return e;
   };
   add(0x1000, od::object_code::var, "Device type",
@@ -200,13 +200,16 @@ std::string write_eds(const dictionary &d) {
     o += "\n[DeviceComissioning]\nNodeID=" + std::to_string(d.node_id) + "\n";
     if (!d.node_name.empty()) o += "NodeName=" + d.node_name + "\n";
   }
-  const char *list_names[] = {"MandatoryObjects", "OptionalObjects", "ManufacturerObjects"};
-  for (int l = 0; l < 3; ++l) {
+  const std::pair<const char *, object_list> lists[] = {
+      {"MandatoryObjects", object_list::mandatory},
+      {"OptionalObjects", object_list::optional},
+      {"ManufacturerObjects", object_list::manufacturer}};
+  for (const auto &[list_name, list] : lists) {
     std::vector<std::uint16_t> idx;
     for (const auto &[index, info] : d.objects) {
-      if (index >= 0x1000U && info.list == l) idx.push_back(index);
+      if (index >= 0x1000U && info.list == list) idx.push_back(index);
     }
-    o += std::string("\n[") + list_names[l] + "]\nSupportedObjects=" + std::to_string(idx.size()) +
+    o += std::string("\n[") + list_name + "]\nSupportedObjects=" + std::to_string(idx.size()) +
          "\n";
     for (std::size_t i = 0; i < idx.size(); ++i) {
       o += std::to_string(i + 1U) + "=0x" + hex(idx[i], 4) + "\n";

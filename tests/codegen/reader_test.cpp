@@ -60,12 +60,12 @@ void same_eds_content(const gen::dictionary &a, const gen::dictionary &b, bool l
     CHECK(x.access == y.access);
     CHECK((x.pdo == od::pdo_mapping::no) == (y.pdo == od::pdo_mapping::no));
     CHECK(x.name == y.name);
-    CHECK(x.def == y.def);
-    CHECK(x.def_nodeid == y.def_nodeid);
-    CHECK(x.def_text == y.def_text);
-    CHECK(x.param == y.param);
-    CHECK(x.param_nodeid == y.param_nodeid);
-    CHECK(x.param_text == y.param_text);
+    CHECK(x.default_value == y.default_value);
+    CHECK(x.default_nodeid == y.default_nodeid);
+    CHECK(x.default_text == y.default_text);
+    CHECK(x.parameter_value == y.parameter_value);
+    CHECK(x.parameter_nodeid == y.parameter_nodeid);
+    CHECK(x.parameter_text == y.parameter_text);
     CHECK(x.denotation == y.denotation);
     CHECK(x.obj_flags == y.obj_flags);
     if (limits) {
@@ -117,31 +117,31 @@ TEST_CASE("eds: every quirk of quirks.eds (CRLF, Latin-1, case, CompactSubObj, $
   CHECK(err->type == od::data_type::unsigned8);
   CHECK(err->access == od::access::ro);
   // $NODEID in either operand order and any case
-  CHECK(find(d, 0x1014, 0)->def == od::num::u(0x80));
-  CHECK(find(d, 0x1014, 0)->def_nodeid);
+  CHECK(find(d, 0x1014, 0)->default_value == od::num::u(0x80));
+  CHECK(find(d, 0x1014, 0)->default_nodeid);
   CHECK(find(d, 0x1014, 0)->obj_flags == 1U);
-  CHECK(find(d, 0x1400, 1)->def == od::num::u(0x200));
-  CHECK(find(d, 0x1400, 1)->def_nodeid);
-  CHECK(find(d, 0x2006, 0)->def == od::num::u(384));
+  CHECK(find(d, 0x1400, 1)->default_value == od::num::u(0x200));
+  CHECK(find(d, 0x1400, 1)->default_nodeid);
+  CHECK(find(d, 0x2006, 0)->default_value == od::num::u(384));
   // sub-index gaps (SubNumber counts sub-objects), [1018Sub4], hex sub-index [1600subA]
   CHECK(find(d, 0x1018, 4) != nullptr);
   CHECK(find(d, 0x1018, 2) == nullptr);
-  CHECK(find(d, 0x1600, 10)->def == od::num::u(0x60400010));
+  CHECK(find(d, 0x1600, 10)->default_value == od::num::u(0x60400010));
   // CompactSubObj with a partial [1A00Name]
-  CHECK(find(d, 0x1A00, 0)->def == od::num::u(3));
+  CHECK(find(d, 0x1A00, 0)->default_value == od::num::u(3));
   CHECK(find(d, 0x1A00, 1)->name == "First mapped");
   CHECK(find(d, 0x1A00, 2)->name == "TPDO 1 mapping2");
   CHECK(find(d, 0x1A00, 3)->name == "Third mapped");
   // numbers: octal, negative hex, two's complement bit patterns of signed types
-  CHECK(find(d, 0x2002, 0)->def == od::num::i(8));
+  CHECK(find(d, 0x2002, 0)->default_value == od::num::i(8));
   CHECK(find(d, 0x2001, 0)->low == od::num::i(-16));
   CHECK(find(d, 0x2003, 0)->low == od::num::i(-2147483647 - 1));
-  CHECK(find(d, 0x2003, 0)->def == od::num::i(-1));
-  CHECK(find(d, 0x2014, 0)->def == od::num::i(INT64_MIN));
-  CHECK(find(d, 0x201A, 0)->def == od::num::u(UINT64_MAX));
+  CHECK(find(d, 0x2003, 0)->default_value == od::num::i(-1));
+  CHECK(find(d, 0x2014, 0)->default_value == od::num::i(INT64_MIN));
+  CHECK(find(d, 0x201A, 0)->default_value == od::num::u(UINT64_MAX));
   CHECK(find(d, 0x2007, 0)->low == od::num::f(-1000.0));
-  CHECK(find(d, 0x2008, 0)->def_text == "Quirk; not a comment");
-  CHECK(find(d, 0x200C, 0)->def == od::to_number({.ms = 1000, .days = 1}));
+  CHECK(find(d, 0x2008, 0)->default_text == "Quirk; not a comment");
+  CHECK(find(d, 0x200C, 0)->default_value == od::to_number({.ms = 1000, .days = 1}));
   CHECK(find(d, 0x200D, 0)->object == od::object_code::domain);
   CHECK(find(d, 0x0002, 0)->object == od::object_code::deftype);
   // Latin-1 converted to UTF-8
@@ -165,10 +165,10 @@ TEST_CASE("dcf: ParameterValue, Denotation, [DeviceCommissioning], [xxxxValue]")
   const auto &d = *o.dict;
   CHECK(d.is_dcf);
   CHECK(d.node_id == 5);
-  CHECK(find(d, 0x2100, 1)->param == od::num::i(-1000));
-  CHECK(find(d, 0x2100, 2)->param == od::num::i(1000));
-  CHECK(find(d, 0x2100, 2)->param_nodeid);
-  CHECK(find(d, 0x2101, 0)->param_text == "X axis, left");
+  CHECK(find(d, 0x2100, 1)->parameter_value == od::num::i(-1000));
+  CHECK(find(d, 0x2100, 2)->parameter_value == od::num::i(1000));
+  CHECK(find(d, 0x2100, 2)->parameter_nodeid);
+  CHECK(find(d, 0x2101, 0)->parameter_text == "X axis, left");
   CHECK(find(d, 0x2101, 0)->denotation == "Left X axis \xE2\x80\x94 5");
 }
 
