@@ -2,8 +2,8 @@
 // reader of fieldcodec-gen). The generator is a host tool whose reader is a library target
 // (fieldcodec_codegen) that the fuzz build does not configure (FIELDCODEC_BUILD_CODEGEN=OFF),
 // so the harness compiles the reader and writer sources into itself (a unity build of
-// text.cpp, eds_reader.cpp, csv_reader.cpp and write_eds.cpp; read_file.cpp, emit_header.cpp
-// and main.cpp are not needed).
+// text.cpp, checks.cpp, eds_reader.cpp, csv_reader.cpp, options.cpp and write_eds.cpp;
+// read_file.cpp, emit_header.cpp and main.cpp are not needed).
 //
 // Byte 0 bit 0 selects the reader (0 EDS/DCF, 1 CSV); the rest is the file's text.
 //
@@ -20,8 +20,10 @@
 
 #include "../codegen/src/text.cpp"
 
+#include "../codegen/src/checks.cpp"
 #include "../codegen/src/csv_reader.cpp"
 #include "../codegen/src/eds_reader.cpp"
+#include "../codegen/src/options.cpp"
 #include "../codegen/src/write_eds.cpp"
 
 #include <algorithm>

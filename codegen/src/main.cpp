@@ -1,5 +1,6 @@
 // fieldcodec-gen — turns EDS/DCF files and CSV tables into constexpr C++ headers, and writes
 // EDS. Exit status: 0 success, 1 input errors (or --check found a difference), 2 usage errors.
+#include "options.hpp"
 #include "readers.hpp"
 #include "text.hpp"
 
@@ -24,14 +25,26 @@ options:
                       the input's file name, e.g. dpq_parameters)
       --check         do not write; exit 1 when an output file differs from what
                       would be written (drift check)
+      --only RANGES   keep only the objects in RANGES, e.g. 0x1000-0x1FFF,0x6000-0x67FF
+                      (indices in hex with 0x; a single index such as 0x1018 is a range)
+      --string-capacity BYTES
+                      capacity of every string / DOMAIN entry without a declared size:
+                      at least BYTES (the default's length when it is longer)
+      --string-capacity INDEX[:SUB]=BYTES
+                      capacity of the string / DOMAIN entries of one object (or one
+                      sub-index), e.g. 0x5011=30 or 0x2121:2=64; overrides the file
+      --compact-arrays
+                      keep runs of alike ARRAY sub-objects (CompactSubObj) as one
+                      entry each instead of one entry per sub-index
       --strict        treat warnings as errors
   -q, --quiet         do not print warnings
   -h, --help          show this text
       --version       show the version
 
 Without -o or --eds the input is only checked. Diagnostics are printed as
-file:line:column: error|warning: message. Exit status: 0 success, 1 errors in
-the input (or a difference under --check), 2 usage errors.
+file:line:column: error|warning: message, in line order, followed by a count
+("2 errors, 1 warning"). Exit status: 0 success, 1 errors in the input (or a
+difference under --check), 2 usage errors.
 )";
 
 int usage_error(const std::string &msg) {
@@ -84,6 +97,7 @@ int main(int argc, char **argv) {
   bool check = false;
   bool strict = false;
   bool quiet = false;
+  fieldcodec::gen::generator_options opts;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](std::string &dst) -> bool {
@@ -109,6 +123,22 @@ int main(int argc, char **argv) {
           name == "detail") {
         return usage_error("--name '" + name + "' is not a C++ identifier");
       }
+    } else if (a == "--only") {
+      std::string ranges;
+      if (!value(ranges)) return usage_error("option --only needs index ranges");
+      if (!opts.only_text.empty()) return usage_error("option --only is given twice");
+      if (auto e = fieldcodec::gen::parse_index_ranges(ranges, opts.only); !e.empty()) {
+        return usage_error("--only '" + ranges + "': " + e);
+      }
+      opts.only_text = ranges;
+    } else if (a == "--string-capacity") {
+      std::string cap;
+      if (!value(cap)) return usage_error("option --string-capacity needs a capacity");
+      if (auto e = fieldcodec::gen::parse_string_capacity(cap, opts); !e.empty()) {
+        return usage_error("--string-capacity '" + cap + "': " + e);
+      }
+    } else if (a == "--compact-arrays") {
+      opts.compact_arrays = true;
     } else if (a == "--check") {
       check = true;
     } else if (a == "--strict") {
@@ -128,11 +158,20 @@ int main(int argc, char **argv) {
   fieldcodec::gen::diagnostics diag;
   diag.strict = strict;
   auto dict = fieldcodec::gen::read_file(input, diag);
-  for (const auto &d : diag.all()) {
-    if (quiet && d.sev == fieldcodec::gen::severity::warning) continue;
-    std::cerr << fieldcodec::gen::diagnostics::format(d) << '\n';
+  if (dict && !diag.has_errors()) {
+    if (dict->is_command_table && (!opts.only.empty() || opts.compact_arrays ||
+                                   opts.string_capacity || !opts.capacities.empty())) {
+      return usage_error("--only, --string-capacity and --compact-arrays apply to object "
+                         "dictionaries, not to the command table '" +
+                         input + "'");
+    }
+    (void)fieldcodec::gen::apply_options(*dict, opts, input, diag);
   }
-  if (diag.too_many()) std::cerr << input << ": error: too many errors, stopped\n";
+  // in line order, then where reading stopped, then the count
+  diag.print(std::cerr, !quiet);
+  if (diag.error_count() != 0U || (!quiet && diag.warning_count() != 0U)) {
+    std::cerr << input << ": " << diag.summary() << '\n';
+  }
   if (!dict || diag.has_errors()) return 1;
   if (!name.empty()) dict->stem = name;
   int rc = 0;

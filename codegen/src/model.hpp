@@ -15,6 +15,9 @@
 
 namespace fieldcodec::gen {
 
+/// Keys of a section as written (name, value), in file order.
+using key_list = std::vector<std::pair<std::string, std::string>>;
+
 /// Where an EDS lists an object: [MandatoryObjects], [OptionalObjects], [ManufacturerObjects].
 enum class object_list : std::uint8_t { mandatory, optional, manufacturer };
 
@@ -35,6 +38,7 @@ struct entry {
   /// Capacity in bytes of a VISIBLE_STRING / OCTET_STRING / UNICODE_STRING / DOMAIN value (0: no
   /// capacity known; docs/generator.md "String and DOMAIN capacity"); 0 for every other type.
   std::uint32_t size = 0;
+  bool size_declared = false; ///< `size` is given by the file (CSV `bytes`, EDS `Size=`)
   std::string name;
   std::string symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
   od::number low, high, default_value, parameter_value;
@@ -53,6 +57,9 @@ struct entry {
   od::bus_manager bus = od::bus_manager::unspecified;
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
+  /// Keys of the EDS section the reader does not interpret (UploadFile, SRDOMapping, a vendor's
+  /// Unit, ...): not in the header, written back unchanged by the EDS writer.
+  key_list other_keys;
   int line = 0; ///< source line (diagnostics)
 };
 
@@ -67,7 +74,16 @@ struct object_info {
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
   object_list list = object_list::mandatory;
+  std::vector<std::uint16_t> object_links; ///< DCF/EDS [xxxxObjectLinks], in file order
+  key_list other_keys; ///< keys of a container's object section the reader does not interpret
   int line = 0;
+};
+
+/// A section of an EDS the reader keeps but does not interpret ([Tools], [M1ModuleInfo], a
+/// vendor's own section, ...): written back unchanged by the EDS writer.
+struct other_section {
+  std::string name;
+  key_list keys;
 };
 
 /// The list an object not listed anywhere belongs in: manufacturer-specific 2000h..5FFFh, optional
@@ -95,8 +111,10 @@ struct dictionary {
   std::map<std::uint16_t, object_info> objects;
   std::vector<command> commands; ///< sorted by code
   // EDS header sections, kept for writing EDS (key, value in file order)
-  std::vector<std::pair<std::string, std::string>> file_info, device_info, dummy_usage;
+  key_list file_info, device_info, dummy_usage;
+  key_list commissioning; ///< [DeviceComissioning] as read (NodeID, NodeName, Baudrate, ...)
   std::vector<std::string> comments;
+  std::vector<other_section> other_sections; ///< in file order
   bool is_dcf = false;
   int node_id = -1; ///< [DeviceComissioning] NodeID, -1 when absent
   std::string node_name;

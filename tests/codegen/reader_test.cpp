@@ -102,9 +102,12 @@ TEST_CASE("eds: every quirk of quirks.eds (CRLF, Latin-1, case, CompactSubObj, $
   auto o = read("codegen/fixtures/quirks.eds");
   CHECK(o.diags == std::vector<std::string>{
                        "codegen/fixtures/quirks.eds:72:2: warning: unknown section "
-                       "[Vendor_Private_Stuff] ignored",
+                       "[Vendor_Private_Stuff] not interpreted (kept in the EDS export)",
                        "codegen/fixtures/quirks.eds:408:10: warning: data type 0x0040 of [3000] is "
-                       "not a basic type (0x0001..0x001B); its value is kept as DOMAIN"});
+                       "not a basic type (0x0001..0x001B); its value is kept as DOMAIN",
+                       "codegen/fixtures/quirks.eds:179: warning: TPDO 1 has a mapping parameter "
+                       "0x1A00 but no communication parameter 0x1800 (CiA 301: a PDO has both; "
+                       "masters that configure the PDO fail on it)"});
   REQUIRE(o.dict);
   const auto &d = *o.dict;
   CHECK(d.entries.size() == 42);
@@ -236,8 +239,8 @@ TEST_CASE("eds/csv: malformed files get exact diagnostics") {
        true,
        {m + "missing_sections.eds:1:1: warning: missing section [FileInfo]",
         m + "missing_sections.eds:1:1: warning: missing section [DeviceInfo]",
-        m + "missing_sections.eds:4:3: warning: object 0x1001 listed in [MandatoryObjects] has no "
-            "section [1001]"}},
+        m + "missing_sections.eds:4:3: warning: object '0x1001' listed in [MandatoryObjects] has "
+            "no section [1001]"}},
       {"no_key_value.eds",
        false,
        {m + "no_key_value.eds:19:1: error: expected 'key=value', got 'this line has no equals "
