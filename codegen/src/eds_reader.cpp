@@ -199,13 +199,13 @@ public:
     dict_.entries.reserve(sections_.size());
     header_sections();
     objects();
-    if (!diag_.too_many()) object_lists();
+    if (diag_.too_many()) return std::nullopt;
+    object_lists();
+    check_pdo_pairs(dict_, file_, diag_);
     if (diag_.has_errors()) return std::nullopt;
     std::sort(dict_.entries.begin(), dict_.entries.end(), [](const entry &a, const entry &b) {
       return a.index != b.index ? a.index < b.index : a.sub < b.sub;
     });
-    check_pdo_pairs(dict_, file_, diag_);
-    if (diag_.has_errors()) return std::nullopt; // --strict
     return std::move(dict_);
   }
 

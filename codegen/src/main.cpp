@@ -175,7 +175,17 @@ int main(int argc, char **argv) {
   if (!dict || diag.has_errors()) return 1;
   if (!name.empty()) dict->stem = name;
   int rc = 0;
-  if (!header_out.empty()) rc |= output(header_out, fieldcodec::gen::emit_header(*dict), check);
+  if (!header_out.empty()) {
+    // The emitter writes one od::entry per sub-index: the runs of --compact-arrays are expanded
+    // for it until od::entry can describe a run (docs/generator.md, "--compact-arrays").
+    fieldcodec::gen::dictionary for_header;
+    if (opts.compact_arrays) {
+      for_header = *dict;
+      fieldcodec::gen::expand_runs(for_header);
+    }
+    rc |= output(header_out, fieldcodec::gen::emit_header(opts.compact_arrays ? for_header : *dict),
+                 check);
+  }
   if (!eds_out.empty()) {
     if (dict->is_command_table) {
       std::cerr << input << ": error: a command table cannot be written as EDS\n";
