@@ -327,8 +327,15 @@ private:
     const std::string s = (neg ? "-" : "") + std::string(digits);
     const int_parse p = parse_int(s);
     if (!p.ok || p.suffix) {
-      bad(f, column, p.ok ? "expected a number, got '" + std::string(t) + "'" : p.error,
-          offset + (p.ok ? 0U : p.error_pos + skipped));
+      std::string what = "expected a number, got '" + std::string(t) + "'";
+      if (!p.ok) { // quote the text as written, with the leading zeros parse_int did not see
+        what = p.error;
+        const std::string parsed = "'" + s + "'";
+        if (const auto at = what.find(parsed); at != std::string::npos) {
+          what.replace(at, parsed.size(), "'" + std::string(t) + "'");
+        }
+      }
+      bad(f, column, what, offset + (p.ok ? 0U : p.error_pos + skipped));
       return false;
     }
     out = p.value;

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace fieldcodec::gen {
@@ -21,9 +22,103 @@ namespace {
 std::string operator+(std::string a, std::string_view b) { return a.append(b); }
 std::string operator+(const char *a, std::string_view b) { return std::string(a).append(b); }
 
+// [xxxx], [xxxxsubyy], and the per-sub-index sections of CompactSubObj objects and links.
+enum class section_kind { other, object, sub, names, values, denotations, object_links };
+
+// The keys the reader knows, found once per line (a section is searched by number, not text).
+enum class key : std::uint8_t {
+  other,
+  // interpreted in object and sub-object sections
+  parameter_name,
+  object_type,
+  data_type,
+  access_type,
+  default_value,
+  pdo_mapping,
+  low_limit,
+  high_limit,
+  sub_number,
+  compact_sub_obj,
+  obj_flags,
+  parameter_value,
+  denotation,
+  size,
+  // CiA 306 keys of object sections kept for the EDS export without being interpreted
+  upload_file,
+  download_file,
+  count,
+  srdo_mapping,
+  inverted_srad,
+  param_refd,
+  refuse_read_on_scan,
+  refuse_write_on_download,
+  // keys of other sections
+  node_id,
+  node_name,
+  supported_objects,
+  nr_of_entries,
+  object_links,
+};
+
+constexpr std::pair<std::string_view, key> key_names[] = {
+    {"PARAMETERNAME", key::parameter_name},
+    {"OBJECTTYPE", key::object_type},
+    {"DATATYPE", key::data_type},
+    {"ACCESSTYPE", key::access_type},
+    {"DEFAULTVALUE", key::default_value},
+    {"PDOMAPPING", key::pdo_mapping},
+    {"LOWLIMIT", key::low_limit},
+    {"HIGHLIMIT", key::high_limit},
+    {"SUBNUMBER", key::sub_number},
+    {"COMPACTSUBOBJ", key::compact_sub_obj},
+    {"OBJFLAGS", key::obj_flags},
+    {"PARAMETERVALUE", key::parameter_value},
+    {"DENOTATION", key::denotation},
+    {"SIZE", key::size},
+    {"UPLOADFILE", key::upload_file},
+    {"DOWNLOADFILE", key::download_file},
+    {"COUNT", key::count},
+    {"SRDOMAPPING", key::srdo_mapping},
+    {"INVERTEDSRAD", key::inverted_srad},
+    {"PARAMREFD", key::param_refd},
+    {"REFUSEREADONSCAN", key::refuse_read_on_scan},
+    {"REFUSEWRITEONDOWNLOAD", key::refuse_write_on_download},
+    {"NODEID", key::node_id},
+    {"NODENAME", key::node_name},
+    {"SUPPORTEDOBJECTS", key::supported_objects},
+    {"NROFENTRIES", key::nr_of_entries},
+    {"OBJECTLINKS", key::object_links},
+};
+
+// Runs for every line of a file: candidates are told apart by length, first and last letter
+// before their text is compared.
+key key_of(std::string_view upper) noexcept {
+  if (upper.empty()) return key::other;
+  for (const auto &[name, id] : key_names) {
+    if (name.size() != upper.size() || name.front() != upper.front() ||
+        name.back() != upper.back()) {
+      continue;
+    }
+    std::size_t i = 1;
+    while (i < name.size() && name[i] == upper[i]) ++i;
+    if (i == name.size()) return id;
+  }
+  return key::other;
+}
+
+// Keys of object and sub-object sections the reader interprets.
+bool interpreted_key(key k) noexcept { return k >= key::parameter_name && k <= key::size; }
+
+// Keys of CiA 306 (and its DCF and safety extensions) the reader does not interpret: kept for
+// the EDS export without a warning.
+bool known_other_key(key k) noexcept {
+  return k >= key::upload_file && k <= key::refuse_write_on_download;
+}
+
 struct ini_key {
   std::string_view name;  // as written (trimmed), points into the reader's text
-  std::string upper;      // upper case, for lookup
+  std::string upper;      // upper case
+  key id = key::other;    // the key when the reader knows it
   std::string_view value; // trimmed
   int line = 0;
   int value_col = 0;
@@ -33,18 +128,42 @@ struct ini_section {
   std::string name;
   std::string upper;
   int line = 0;
+  section_kind kind = section_kind::other; // set when the sections are indexed
   std::vector<ini_key> keys;
 
-  [[nodiscard]] const ini_key *find(std::string_view upper_key) const {
+  /// The last occurrence of a known key.
+  [[nodiscard]] const ini_key *find(key id) const {
     for (auto it = keys.rbegin(); it != keys.rend(); ++it) {
-      if (it->upper == upper_key) return &*it;
+      if (it->id == id) return &*it;
     }
     return nullptr;
   }
-};
+  /// The first occurrence of the key `id` / `upper_name` (known or not). Object lists and
+  /// comments have hundreds of keys: past a few, the names of unknown keys are looked up in a
+  /// set instead of compared one by one.
+  [[nodiscard]] const ini_key *find(key id, const std::string &upper_name) {
+    if (id == key::other && keys.size() >= 16U) {
+      if (others.empty()) {
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+          if (keys[i].id == key::other) others.emplace(keys[i].upper, i);
+        }
+      }
+      auto it = others.find(upper_name);
+      return it == others.end() ? nullptr : &keys[it->second];
+    }
+    for (const auto &x : keys) {
+      if (x.id == id && (id != key::other || x.upper == upper_name)) return &x;
+    }
+    return nullptr;
+  }
+  /// Appends a key (keeps the set of unknown names, once there is one, up to date).
+  void add(ini_key k) {
+    if (!others.empty() && k.id == key::other) others.emplace(k.upper, keys.size());
+    keys.push_back(std::move(k));
+  }
 
-// [xxxx], [xxxxsubyy], and the per-sub-index sections of CompactSubObj objects and links.
-enum class section_kind { other, object, sub, names, values, denotations, object_links };
+  std::unordered_map<std::string, std::size_t> others; // upper-case name -> first position
+};
 
 struct classified {
   section_kind kind = section_kind::other;
@@ -126,24 +245,6 @@ bool interpreted_section(const std::string &u) {
   return names.count(u) != 0U;
 }
 
-// Keys of object and sub-object sections the reader interprets.
-bool interpreted_key(const std::string &u) {
-  static const std::set<std::string> names{
-      "PARAMETERNAME", "OBJECTTYPE",     "DATATYPE",   "ACCESSTYPE", "DEFAULTVALUE",
-      "PDOMAPPING",    "LOWLIMIT",       "HIGHLIMIT",  "SUBNUMBER",  "COMPACTSUBOBJ",
-      "OBJFLAGS",      "PARAMETERVALUE", "DENOTATION", "SIZE"};
-  return names.count(u) != 0U;
-}
-
-// Keys of CiA 306 (and its DCF and safety extensions) the reader does not interpret: kept for the
-// EDS export without a warning.
-bool known_other_key(const std::string &u) {
-  static const std::set<std::string> names{"UPLOADFILE",       "DOWNLOADFILE",         "COUNT",
-                                           "SRDOMAPPING",      "INVERTEDSRAD",         "PARAMREFD",
-                                           "REFUSEREADONSCAN", "REFUSEWRITEONDOWNLOAD"};
-  return names.count(u) != 0U;
-}
-
 bool fits(od::data_type t, od::number n) {
   if (t == od::data_type::boolean) {
     auto u = n.to_uint64();
@@ -171,16 +272,17 @@ std::optional<od::number> plus_node(od::number n, std::uint8_t node) {
 
 // The value keys of an entry: where a key's number, node-ID flag and text go.
 struct value_slot {
-  const char *key;
+  key id;
   od::number entry::*number;
   bool entry::*nodeid;
   std::string entry::*text; // nullptr: a limit (byte strings have none)
 };
 constexpr value_slot value_slots[] = {
-    {"DEFAULTVALUE", &entry::default_value, &entry::default_nodeid, &entry::default_text},
-    {"PARAMETERVALUE", &entry::parameter_value, &entry::parameter_nodeid, &entry::parameter_text},
-    {"LOWLIMIT", &entry::low, &entry::low_nodeid, nullptr},
-    {"HIGHLIMIT", &entry::high, &entry::high_nodeid, nullptr},
+    {key::default_value, &entry::default_value, &entry::default_nodeid, &entry::default_text},
+    {key::parameter_value, &entry::parameter_value, &entry::parameter_nodeid,
+     &entry::parameter_text},
+    {key::low_limit, &entry::low, &entry::low_nodeid, nullptr},
+    {key::high_limit, &entry::high, &entry::high_nodeid, nullptr},
 };
 
 class eds_reader {
@@ -282,7 +384,7 @@ private:
       diag_.error(file_, line_no, static_cast<int>(lead) + 2, "expected a section name");
       return nullptr;
     }
-    sections_.push_back({name, to_upper(name), line_no, {}});
+    sections_.push_back({name, to_upper(name), line_no, section_kind::other, {}, {}});
     sections_.back().keys.reserve(8);
     return &sections_.back();
   }
@@ -302,26 +404,28 @@ private:
       }
       return; // keys of a section whose header was bad: already reported
     }
-    const std::string_view key = trim(line.substr(0, eq));
+    const std::string_view name = trim(line.substr(0, eq));
     std::size_t vstart = eq + 1U;
     while (vstart < line.size() && (line[vstart] == ' ' || line[vstart] == '\t')) ++vstart;
-    if (key.empty()) {
+    if (name.empty()) {
       diag_.error(file_, line_no, static_cast<int>(lead) + 1, "expected a key before '='");
       return;
     }
-    std::string upper = to_upper(key);
-    if (const ini_key *first = current->find(upper)) {
+    std::string upper = to_upper(name);
+    const key id = key_of(upper);
+    if (const ini_key *first = current->find(id, upper)) {
       diag_.warning(file_, line_no, static_cast<int>(lead) + 1,
-                    "key '" + key + "' appears again in [" + current->name + "] (first at line " +
+                    "key '" + name + "' appears again in [" + current->name + "] (first at line " +
                         std::to_string(first->line) + "); the last value is used");
     }
-    current->keys.push_back(
-        {key, std::move(upper), trim(line.substr(eq + 1U)), line_no, static_cast<int>(vstart) + 1});
+    current->add({name, std::move(upper), id, trim(line.substr(eq + 1U)), line_no,
+                  static_cast<int>(vstart) + 1});
   }
 
   void index_sections() {
     for (auto &s : sections_) {
       const classified c = classify(s.upper);
+      s.kind = c.kind;
       switch (c.kind) {
       case section_kind::object: {
         auto [it, fresh] = objects_.emplace(c.index, &s);
@@ -352,7 +456,7 @@ private:
           diag_.warning(file_, s.line, 2,
                         "section [" + s.name + "] appears again (first at line " +
                             std::to_string(it->second->line) + "); keys are merged");
-          for (auto &k : s.keys) it->second->keys.push_back(k);
+          for (auto &k : s.keys) it->second->add(k);
         }
         break;
       }
@@ -385,7 +489,7 @@ private:
     }
     commissioning();
     for (const auto &s : sections_) {
-      if (classify(s.upper).kind != section_kind::other || interpreted_section(s.upper)) continue;
+      if (s.kind != section_kind::other || interpreted_section(s.upper)) continue;
       if (others_.find(s.upper)->second != &s) continue; // merged into the first one
       if (!known_other_section(s.upper)) {
         diag_.warning(file_, s.line, 2,
@@ -404,7 +508,7 @@ private:
     if (dc == nullptr) return;
     dict_.is_dcf = true;
     copy_keys(dc, dict_.commissioning);
-    if (const ini_key *k = dc->find("NODEID"); k != nullptr && !k->value.empty()) {
+    if (const ini_key *k = dc->find(key::node_id); k != nullptr && !k->value.empty()) {
       const std::string_view v = value_of(*dc, *k);
       const int_parse p = parse_int(v);
       auto id = p.value.to_int64();
@@ -415,7 +519,7 @@ private:
         dict_.node_id = static_cast<int>(id.value());
       }
     }
-    if (const ini_key *k = dc->find("NODENAME")) dict_.node_name = k->value;
+    if (const ini_key *k = dc->find(key::node_name)) dict_.node_name = k->value;
   }
 
   // ---- values ----------------------------------------------------------------------------
@@ -565,11 +669,10 @@ private:
     const ini_key *key = nullptr;
     std::string_view text; ///< the value without its comment
   };
-  counted count_key(const ini_section &s, const char *key, std::uint32_t max,
-                    std::uint32_t absent = 0) {
+  counted count_key(const ini_section &s, key id, std::uint32_t max, std::uint32_t absent = 0) {
     counted c;
     c.value = absent;
-    c.key = s.find(key);
+    c.key = s.find(id);
     if (c.key == nullptr || c.key->value.empty()) return c;
     c.text = value_of(s, *c.key);
     if (c.text.empty()) return c;
@@ -599,8 +702,8 @@ private:
   // export); unknown ones are reported.
   void other_keys(const ini_section &s, key_list &out) {
     for (const auto &k : s.keys) {
-      if (interpreted_key(k.upper)) continue;
-      if (!known_other_key(k.upper)) unknown_key(s, k);
+      if (interpreted_key(k.id)) continue;
+      if (!known_other_key(k.id)) unknown_key(s, k);
       out.emplace_back(k.name, k.value);
     }
   }
@@ -610,23 +713,23 @@ private:
   // or DefaultValue there describes no entry).
   void container_keys(const ini_section &s, key_list &out) {
     for (const auto &k : s.keys) {
-      if (k.upper == "PARAMETERNAME" || k.upper == "OBJECTTYPE" || k.upper == "SUBNUMBER" ||
-          k.upper == "COMPACTSUBOBJ" || k.upper == "OBJFLAGS") {
+      if (k.id == key::parameter_name || k.id == key::object_type || k.id == key::sub_number ||
+          k.id == key::compact_sub_obj || k.id == key::obj_flags) {
         continue;
       }
-      if (!interpreted_key(k.upper) && !known_other_key(k.upper)) unknown_key(s, k);
+      if (!interpreted_key(k.id) && !known_other_key(k.id)) unknown_key(s, k);
       out.emplace_back(k.name, k.value);
     }
   }
 
   std::string parameter_name(const ini_section &s) {
-    if (const ini_key *k = s.find("PARAMETERNAME")) return std::string(k->value);
+    if (const ini_key *k = s.find(key::parameter_name)) return std::string(k->value);
     diag_.warning(file_, s.line, 2, "missing ParameterName in [" + s.name + "]");
     return s.name;
   }
 
   bool data_type_key(const ini_section &s, entry &e) {
-    const ini_key *k = s.find("DATATYPE");
+    const ini_key *k = s.find(key::data_type);
     if (k == nullptr || k->value.empty()) {
       diag_.error(file_, s.line, 2, "missing DataType in [" + s.name + "]");
       return false;
@@ -651,7 +754,7 @@ private:
   }
 
   bool access_key(const ini_section &s, entry &e) {
-    const ini_key *k = s.find("ACCESSTYPE");
+    const ini_key *k = s.find(key::access_type);
     if (k == nullptr || k->value.empty()) {
       diag_.warning(file_, s.line, 2, "missing AccessType in [" + s.name + "]; taken as ro");
       e.access = od::access::ro;
@@ -667,7 +770,7 @@ private:
   }
 
   bool pdo_mapping_key(const ini_section &s, entry &e) {
-    const ini_key *k = s.find("PDOMAPPING");
+    const ini_key *k = s.find(key::pdo_mapping);
     if (k == nullptr || k->value.empty()) return true;
     const std::string_view v = value_of(s, *k);
     const int_parse p = parse_int(v);
@@ -681,7 +784,7 @@ private:
   }
 
   bool obj_flags_key(const ini_section &s, std::uint32_t &flags, bool &present) {
-    const counted c = count_key(s, "OBJFLAGS", 0xFFFF'FFFFU);
+    const counted c = count_key(s, key::obj_flags, 0xFFFF'FFFFU);
     flags = c.value;
     present = c.present;
     return c.ok;
@@ -690,7 +793,7 @@ private:
   // Size=<bytes>: the capacity of a byte string (fieldcodec's extension, docs/dictionary-
   // formats.md); for any other type it must agree with the type's size.
   bool size_key(const ini_section &s, entry &e) {
-    const counted c = count_key(s, "SIZE", 0xFFFF'FFFFU);
+    const counted c = count_key(s, key::size, 0xFFFF'FFFFU);
     if (!c.ok || !c.present) return c.ok;
     const ini_key *k = c.key;
     const std::string_view v = c.text;
@@ -756,9 +859,9 @@ private:
     }
     if (longest <= e.size) return true;
     const bool dflt = e.default_text.size() == longest;
-    const ini_key *k = dflt               ? s.find("DEFAULTVALUE")
+    const ini_key *k = dflt               ? s.find(key::default_value)
                        : value != nullptr ? value
-                                          : s.find("PARAMETERVALUE");
+                                          : s.find(key::parameter_value);
     diag_.error(file_, k != nullptr ? k->line : s.line, k != nullptr ? k->value_col : 2,
                 (k != nullptr ? std::string(k->name) : std::string("the value")) + " of [" +
                     s.name + "] is " + std::to_string(longest) +
@@ -778,11 +881,11 @@ private:
     if (typed) { // the values and the size are read as the data type says
       ok = size_key(s, e) && ok;
       for (const auto &slot : value_slots) {
-        if (const ini_key *k = s.find(slot.key)) ok = value_key(s, *k, slot, e) && ok;
+        if (const ini_key *k = s.find(slot.id)) ok = value_key(s, *k, slot, e) && ok;
       }
       ok = capacity(s, e) && ok;
     }
-    if (const ini_key *k = s.find("DENOTATION")) e.denotation = k->value;
+    if (const ini_key *k = s.find(key::denotation)) e.denotation = k->value;
     if (!e.parameter_text.empty() || e.parameter_value.has_value() || !e.denotation.empty()) {
       dict_.is_dcf = true;
     }
@@ -815,7 +918,7 @@ private:
   }
 
   bool object_code_key(const ini_section &s, object_info &info) {
-    const counted c = count_key(s, "OBJECTTYPE", 0xFF, 7); // no ObjectType: a VAR
+    const counted c = count_key(s, key::object_type, 0xFF, 7); // no ObjectType: a VAR
     if (!c.ok) return false;
     // 0x0 (NULL) is refused like the other undefined codes: it has no data type, so the writer
     // could not write it back readably (fuzz F11).
@@ -836,8 +939,8 @@ private:
     info.line = s.line;
     if (!object_code_key(s, info)) return;
     info.name = parameter_name(s);
-    const counted sub_count = count_key(s, "SUBNUMBER", 0xFF);
-    const counted compact_count = count_key(s, "COMPACTSUBOBJ", 0xFE);
+    const counted sub_count = count_key(s, key::sub_number, 0xFF);
+    const counted compact_count = count_key(s, key::compact_sub_obj, 0xFE);
     if (!sub_count.ok || !compact_count.ok) return;
     const std::uint32_t sub_number = sub_count.value;
     const std::uint32_t compact = compact_count.value;
@@ -922,7 +1025,7 @@ private:
                     "missing SubNumber in [" + s.name + "]; " + std::to_string(count) +
                         " sub-object sections found");
     } else if (count < sub_number) {
-      const ini_key *k = s.find("SUBNUMBER");
+      const ini_key *k = s.find(key::sub_number);
       diag_.warning(file_, k->line, k->value_col,
                     "[" + s.name + "] has SubNumber=" + std::to_string(sub_number) + " but " +
                         std::to_string(count) + " sub-object section" + (count == 1U ? "" : "s"));
@@ -951,7 +1054,7 @@ private:
     auto it = sections.find(index);
     if (it == sections.end()) return out;
     for (const auto &k : it->second->keys) {
-      if (k.upper == "NROFENTRIES") continue;
+      if (k.id == key::nr_of_entries) continue;
       const int_parse p = parse_int(k.name);
       auto n = p.value.to_uint64();
       if (!p.ok || !n || n.value() < 1U || n.value() > compact) {
@@ -985,8 +1088,8 @@ private:
     info.has_obj_flags = proto.has_obj_flags;
     info.other_keys = std::move(proto.other_keys);
     proto.other_keys.clear();
-    for (const char *key : {"PARAMETERVALUE", "DENOTATION"}) {
-      if (const ini_key *k = s.find(key)) info.other_keys.emplace_back(k->name, k->value);
+    for (const key id : {key::parameter_value, key::denotation}) {
+      if (const ini_key *k = s.find(id)) info.other_keys.emplace_back(k->name, k->value);
     }
     proto.parameter_value = {};
     proto.parameter_nodeid = false;
@@ -1035,7 +1138,7 @@ private:
     if (it == links_.end()) return;
     const ini_section &s = *it->second;
     for (const auto &k : s.keys) {
-      if (k.upper == "OBJECTLINKS") continue;
+      if (k.id == key::object_links) continue;
       const std::string_view v = value_of(s, k);
       const int_parse p = parse_int(v);
       auto n = p.value.to_uint64();
@@ -1060,7 +1163,7 @@ private:
       if (s == nullptr) continue;
       any_list = true;
       for (const auto &k : s->keys) {
-        if (k.upper == "SUPPORTEDOBJECTS") continue;
+        if (k.id == key::supported_objects) continue;
         const std::string_view v = value_of(*s, k);
         const int_parse p = parse_int(v);
         auto n = p.value.to_uint64();

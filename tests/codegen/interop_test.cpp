@@ -424,6 +424,12 @@ TEST_CASE("issue 12.8: diagnostics in line order, where reading stopped, the cou
   CHECK(os.str().ends_with(limited.stop_message() + "\n"));
 }
 
+TEST_CASE("issue 12.8: CSV diagnostics quote a number as written") {
+  auto r = read_csv_text("index,name,data_type,low\n0x2000,x,UNSIGNED8,0089x\n");
+  CHECK(r.diags == std::vector<std::string>{"t.csv:2:24: error: expected a digit, got 'x' in "
+                                            "'0089x' in column 'low'"});
+}
+
 // ---- 9: the export keeps what the reader read -----------------------------------------------
 
 TEST_CASE("issue 12.9: DCF sections and keys the reader does not interpret survive the export") {
@@ -480,4 +486,24 @@ TEST_CASE("issue 12.9: per-sub-index sections of objects without CompactSubObj a
                            "ignored",
                        "t.eds:" + std::to_string(line_of(text, "[2000Name]")) +
                            ":2: warning: section [2000Name] ignored: [2000] has no CompactSubObj"});
+}
+
+TEST_CASE("a key given twice in a section is reported; the last value is used") {
+  std::string list = "[OptionalObjects]\nSupportedObjects=1\n";
+  for (int i = 1; i <= 20; ++i) list += std::to_string(i) + "=0x2000\n"; // 20 keys: the set
+  list += "7=0x2000\n";
+  const std::string text = "[FileInfo]\nFileName=t.eds\n\n[DeviceInfo]\nVendorName=T\n\n" + list +
+                           "\n[2000]\nParameterName=x\nObjectType=0x7\nDataType=0x0005\n"
+                           "AccessType=rw\nDefaultValue=1\ndefaultvalue=2\nPDOMapping=0\n";
+  auto r = read_eds_text(text);
+  REQUIRE(r.dict);
+  CHECK(find_entry(*r.dict, 0x2000, 0)->default_value == od::num::u(2));
+  CHECK(r.diags ==
+        std::vector<std::string>{
+            "t.eds:" + std::to_string(line_of(text, "7=0x2000\n\n")) +
+                ":1: warning: key '7' appears again in [OptionalObjects] (first at line " +
+                std::to_string(line_of(text, "7=0x2000")) + "); the last value is used",
+            "t.eds:" + std::to_string(line_of(text, "defaultvalue=2")) +
+                ":1: warning: key 'defaultvalue' appears again in [2000] (first at line " +
+                std::to_string(line_of(text, "DefaultValue=1")) + "); the last value is used"});
 }
