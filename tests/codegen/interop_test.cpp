@@ -359,6 +359,25 @@ TEST_CASE("issue 12.6: PDO parameters without their partner are reported, in EDS
                        "configure the PDO fail on it)"});
 }
 
+TEST_CASE("issue 12.6: EtherCAT (CoE) mapping objects need no communication objects") {
+  auto record = [](const char *index, const char *name) {
+    return std::string("[") + index + "]\nParameterName=" + name +
+           "\nObjectType=0x9\nSubNumber=1\n\n[" + index +
+           "sub0]\nParameterName=n\nObjectType=0x7\nDataType=0x0005\nAccessType=ro\n"
+           "DefaultValue=0\nPDOMapping=0\n\n";
+  };
+  // 1C13h (TxPDO assignment) makes it a CoE dictionary: 1A00h alone is fine, 1400h alone is not
+  const std::string text = eds_file(record("1400", "RPDO 1") + record("1A00", "TPDO 1 mapping") +
+                                    record("1C13", "TxPDO assign"));
+  auto r = read_eds_text(text);
+  REQUIRE(r.dict);
+  CHECK(r.diags == std::vector<std::string>{
+                       "t.eds:" + std::to_string(line_of(text, "[1400]")) +
+                       ": warning: RPDO 1 has a communication parameter 0x1400 but no mapping "
+                       "parameter 0x1600 (CiA 301: a PDO has both; masters that configure the "
+                       "PDO fail on it)"});
+}
+
 // ---- 7: comments after a value -------------------------------------------------------------
 
 TEST_CASE("issue 12.7: a comment after a value is ignored with a warning (an error if strict)") {
