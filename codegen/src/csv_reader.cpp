@@ -397,12 +397,21 @@ private:
     return true;
   }
 
+  // A field that an EDS export writes as a value: one line (an EDS value cannot hold a line
+  // break, so the export could not be read back).
+  bool one_line(const field &f, const std::string &column) {
+    if (f.text.find_first_of("\r\n") == std::string::npos) return true;
+    bad(f, column, "expected one line, got a line break");
+    return false;
+  }
+
   bool name_columns(const row &r, entry &e) {
     e.name = text(r, "name");
     if (e.name.empty()) {
       bad(*get(r, "name"), "name", "expected a name, got nothing");
       return false;
     }
+    if (!one_line(*get(r, "name"), "name")) return false;
     e.alt_name = text(r, "alt_name");
     e.symbol = text(r, "symbol");
     if (!e.symbol.empty() && !is_identifier(e.symbol)) {
@@ -524,6 +533,7 @@ private:
     if (!od::is_byte_string(e.type)) {
       return number_column(r, "default", e, e.default_value, e.default_nodeid);
     }
+    if (!one_line(*f, "default")) return false;
     if (auto bytes = byte_string_value(e.type, f->text)) {
       e.default_text = std::move(*bytes);
     } else {

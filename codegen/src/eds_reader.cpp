@@ -446,10 +446,10 @@ private:
         }
         break;
       }
-      case section_kind::names: names_[c.index] = &s; break;
-      case section_kind::values: values_[c.index] = &s; break;
-      case section_kind::denotations: denotations_[c.index] = &s; break;
-      case section_kind::object_links: links_[c.index] = &s; break;
+      case section_kind::names: per_object(names_, c.index, s); break;
+      case section_kind::values: per_object(values_, c.index, s); break;
+      case section_kind::denotations: per_object(denotations_, c.index, s); break;
+      case section_kind::object_links: per_object(links_, c.index, s); break;
       case section_kind::other: {
         auto [it, fresh] = others_.emplace(s.upper, &s);
         if (!fresh) {
@@ -461,6 +461,17 @@ private:
         break;
       }
       }
+    }
+  }
+
+  // [xxxxName], [xxxxValue], [xxxxDenotation], [xxxxObjectLinks]: one per object.
+  void per_object(std::map<std::uint16_t, const ini_section *> &sections, std::uint16_t index,
+                  const ini_section &s) {
+    auto [it, fresh] = sections.emplace(index, &s);
+    if (!fresh) {
+      diag_.error(file_, s.line, 2,
+                  "duplicate section [" + s.name + "] (first defined at line " +
+                      std::to_string(it->second->line) + ")");
     }
   }
 

@@ -526,3 +526,26 @@ TEST_CASE("a key given twice in a section is reported; the last value is used") 
                 ":1: warning: key 'defaultvalue' appears again in [2000] (first at line " +
                 std::to_string(line_of(text, "DefaultValue=1")) + "); the last value is used"});
 }
+
+TEST_CASE("a per-sub-index section given twice is an error, not silently replaced") {
+  const std::string text =
+      eds_file("[2000]\nParameterName=Map\nObjectType=0x8\nDataType=0x0007\nAccessType=rw\n"
+               "PDOMapping=0\nCompactSubObj=2\n\n[2000Name]\n1=a\n\n[2000name]\n1=b\n");
+  auto r = read_eds_text(text);
+  CHECK_FALSE(r.dict);
+  CHECK(r.diags ==
+        std::vector<std::string>{"t.eds:" + std::to_string(line_of(text, "[2000name]")) +
+                                 ":2: error: duplicate section [2000name] (first defined at line " +
+                                 std::to_string(line_of(text, "[2000Name]")) + ")"});
+}
+
+TEST_CASE("CSV names and string defaults are one line (an EDS value cannot hold a line break)") {
+  auto r = read_csv_text("index,name,data_type,bytes,default\n"
+                         "0x2000,\"a\nb\",UNSIGNED8,,\n"
+                         "0x2001,c,VISIBLE_STRING,8,\"x\ny\"\n");
+  CHECK_FALSE(r.dict);
+  CHECK(r.diags ==
+        std::vector<std::string>{
+            "t.csv:2:8: error: expected one line, got a line break in column 'name'",
+            "t.csv:4:27: error: expected one line, got a line break in column 'default'"});
+}
