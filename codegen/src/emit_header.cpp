@@ -149,7 +149,7 @@ void emit_entry(std::string &o, const entry &e) {
   if (e.default_nodeid) o += ", .default_nodeid = true";
   if (!e.default_text.empty()) {
     o += ", .default_text = ";
-    append_cpp_string(o, e.default_text);
+    append_cpp_value_text(o, e.type, e.default_text);
   }
   if (e.scaled || e.offset.mantissa != 0) {
     o += ", .scale = {{" + std::to_string(e.scale.mantissa) + ", " +
@@ -188,7 +188,7 @@ void emit_entry(std::string &o, const entry &e) {
   if (e.parameter_nodeid) o += ", .parameter_nodeid = true";
   if (!e.parameter_text.empty()) {
     o += ", .parameter_text = ";
-    append_cpp_string(o, e.parameter_text);
+    append_cpp_value_text(o, e.type, e.parameter_text);
   }
   if (!e.denotation.empty()) {
     o += ", .denotation = ";

@@ -566,6 +566,27 @@ void append_cpp_string(std::string &out, std::string_view s) {
   out += '"';
 }
 
+void append_cpp_value_text(std::string &out, od::data_type type, std::string_view bytes) {
+  if (type == od::data_type::visible_string) {
+    append_cpp_string(out, bytes);
+    return;
+  }
+  out += "std::string_view{\"";
+  for (const char ch : bytes) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20U && c < 0x7FU && c != '"' && c != '\\' && c != '?') {
+      out += static_cast<char>(c);
+    } else {
+      constexpr char digits[] = "01234567";
+      out += '\\';
+      out += digits[(c >> 6U) & 7U];
+      out += digits[(c >> 3U) & 7U];
+      out += digits[c & 7U];
+    }
+  }
+  out += "\", " + std::to_string(bytes.size()) + "}";
+}
+
 std::string hex(std::uint64_t v, int digits) {
   static constexpr char h[] = "0123456789ABCDEF";
   std::string s;

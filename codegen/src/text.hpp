@@ -76,6 +76,12 @@ struct nodeid_expr {
 [[nodiscard]] std::string cpp_string(std::string_view s);
 void append_cpp_string(std::string &out, std::string_view s);
 
+/// The value of a byte-string entry as C++: VISIBLE_STRING text as a string literal; the bytes
+/// of an OCTET_STRING / UNICODE_STRING / DOMAIN (any byte, NUL included) as
+/// `std::string_view{"\310=\273", 3}`, every byte outside printable ASCII as a 3-digit octal
+/// escape.
+void append_cpp_value_text(std::string &out, od::data_type type, std::string_view bytes);
+
 [[nodiscard]] std::string hex(std::uint64_t v, int digits);
 
 } // namespace fieldcodec::gen

@@ -549,3 +549,15 @@ TEST_CASE("CSV names and string defaults are one line (an EDS value cannot hold 
             "t.csv:2:8: error: expected one line, got a line break in column 'name'",
             "t.csv:4:27: error: expected one line, got a line break in column 'default'"});
 }
+
+TEST_CASE("issue 12.1: byte-string values are emitted as C++ that keeps every byte") {
+  std::string o;
+  gen::append_cpp_value_text(o, od::data_type::octet_string, std::string("\xC8=\0\"?", 5));
+  CHECK(o == "std::string_view{\"\\310=\\000\\042\\077\", 5}");
+  o.clear();
+  gen::append_cpp_value_text(o, od::data_type::visible_string,
+                             "Gr\xC3\xB6\xC3\x9F"
+                             "e");
+  CHECK(o == "\"Gr\xC3\xB6\xC3\x9F"
+             "e\""); // UTF-8 text stays text
+}
