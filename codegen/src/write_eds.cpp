@@ -176,20 +176,12 @@ void add_mandatory_objects(dictionary &d) {
   });
 }
 
-std::string write_eds(const dictionary &dict) {
-  // runs of alike sub-objects (--compact-arrays) are written one section per sub-object
-  const bool runs = std::any_of(dict.entries.begin(), dict.entries.end(),
-                                [](const entry &e) { return e.count > 1U; });
-  dictionary expanded;
-  if (runs) {
-    expanded = dict;
-    expand_runs(expanded);
-  }
-  const dictionary &d = runs ? expanded : dict;
-  std::string o;
-  o.reserve(d.entries.size() * 120U + 2048U);
-  auto copy_or = [&](const std::vector<std::pair<std::string, std::string>> &kv,
-                     const std::vector<std::pair<std::string, std::string>> &fallback) {
+namespace {
+
+// [FileInfo], [DeviceInfo] (as read; CSV tables get a minimal set naming the source),
+// [DummyUsage], [Comments], [DeviceComissioning].
+void header_sections(std::string &o, const dictionary &d) {
+  auto copy_or = [&](const key_list &kv, const key_list &fallback) {
     for (const auto &[k, v] : kv.empty() ? fallback : kv) o += k + "=" + v + "\n";
   };
   o += "[FileInfo]\n";
@@ -235,6 +227,9 @@ std::string write_eds(const dictionary &dict) {
     o += "\n[DeviceComissioning]\nNodeID=" + std::to_string(d.node_id) + "\n";
     if (!d.node_name.empty()) o += "NodeName=" + d.node_name + "\n";
   }
+}
+
+void object_lists(std::string &o, const dictionary &d) {
   const std::pair<const char *, object_list> lists[] = {
       {"MandatoryObjects", object_list::mandatory},
       {"OptionalObjects", object_list::optional},
@@ -250,43 +245,63 @@ std::string write_eds(const dictionary &dict) {
       o += std::to_string(i + 1U) + "=0x" + hex(idx[i], 4) + "\n";
     }
   }
+}
+
+// One object: its section, its sub-object sections (entries[first, first + n)), its links.
+void object_sections(std::string &o, const dictionary &d, std::uint16_t index,
+                     const object_info &info, std::size_t first, std::size_t n) {
+  const bool single_code = info.code == od::object_code::var ||
+                           info.code == od::object_code::domain ||
+                           info.code == od::object_code::deftype;
+  o += "\n[" + hex(index, 4) + "]\n";
+  if (single_code && n == 1U && d.entries[first].sub == 0U) {
+    var_keys(o, d.entries[first], d.is_dcf);
+  } else {
+    o += "ParameterName=" + eds_text(info.name) + "\n";
+    // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
+    // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
+    // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).
+    const auto code = single_code ? od::object_code::record : info.code;
+    o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
+    if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
+    o += "SubNumber=" + std::to_string(n) + "\n";
+    other_keys(o, info.other_keys);
+    for (std::size_t k = first; k < first + n; ++k) {
+      o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].sub, 1) + "]\n";
+      var_keys(o, d.entries[k], d.is_dcf);
+    }
+  }
+  if (!info.object_links.empty()) {
+    o += "\n[" + hex(index, 4) +
+         "ObjectLinks]\nObjectLinks=" + std::to_string(info.object_links.size()) + "\n";
+    for (std::size_t k = 0; k < info.object_links.size(); ++k) {
+      o += std::to_string(k + 1U) + "=0x" + hex(info.object_links[k], 4) + "\n";
+    }
+  }
+}
+
+} // namespace
+
+std::string write_eds(const dictionary &dict) {
+  // runs of alike sub-objects (--compact-arrays) are written one section per sub-object
+  const bool runs = std::any_of(dict.entries.begin(), dict.entries.end(),
+                                [](const entry &e) { return e.count > 1U; });
+  dictionary expanded;
+  if (runs) {
+    expanded = dict;
+    expand_runs(expanded);
+  }
+  const dictionary &d = runs ? expanded : dict;
+  std::string o;
+  o.reserve(d.entries.size() * 120U + 2048U);
+  header_sections(o, d);
+  object_lists(o, d);
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
     while (i < d.entries.size() && d.entries[i].index < index) ++i;
     std::size_t n = 0;
     while (i + n < d.entries.size() && d.entries[i + n].index == index) ++n;
-    const bool single =
-        (info.code == od::object_code::var || info.code == od::object_code::domain ||
-         info.code == od::object_code::deftype) &&
-        n == 1U && d.entries[i].sub == 0U;
-    o += "\n[" + hex(index, 4) + "]\n";
-    if (single) {
-      var_keys(o, d.entries[i], d.is_dcf);
-    } else {
-      o += "ParameterName=" + eds_text(info.name) + "\n";
-      // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
-      // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
-      // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).
-      const bool single_code = info.code == od::object_code::var ||
-                               info.code == od::object_code::domain ||
-                               info.code == od::object_code::deftype;
-      const auto code = single_code ? od::object_code::record : info.code;
-      o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
-      if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
-      o += "SubNumber=" + std::to_string(n) + "\n";
-      other_keys(o, info.other_keys);
-      for (std::size_t k = i; k < i + n; ++k) {
-        o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].sub, 1) + "]\n";
-        var_keys(o, d.entries[k], d.is_dcf);
-      }
-    }
-    if (!info.object_links.empty()) {
-      o += "\n[" + hex(index, 4) +
-           "ObjectLinks]\nObjectLinks=" + std::to_string(info.object_links.size()) + "\n";
-      for (std::size_t k = 0; k < info.object_links.size(); ++k) {
-        o += std::to_string(k + 1U) + "=0x" + hex(info.object_links[k], 4) + "\n";
-      }
-    }
+    object_sections(o, d, index, info, i, n);
     i += n;
   }
   for (const auto &s : d.other_sections) {
