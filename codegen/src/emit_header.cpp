@@ -131,6 +131,16 @@ void append_view(std::string &o, const std::string &v) {
   o += "sv";
 }
 
+/// The value of a byte-string entry: a visible string as `"text"sv`, other bytes (OCTET_STRING,
+/// UNICODE_STRING, DOMAIN) with every byte escaped and the length written out.
+void append_value_view(std::string &o, od::data_type type, const std::string &bytes) {
+  if (type == od::data_type::visible_string) {
+    append_view(o, bytes);
+  } else {
+    append_cpp_value_text(o, type, bytes);
+  }
+}
+
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
 std::string flags_expression(const entry &e) {
   struct bit {
@@ -142,10 +152,10 @@ std::string flags_expression(const entry &e) {
       {(e.flags & od::flag::index_anomaly) != 0U, "index_anomaly"},
       {(e.flags & od::flag::signedness_guess) != 0U, "signedness_guess"},
       {e.scaled, "scaled"},
-      {e.def_nodeid, "default_nodeid"},
+      {e.default_nodeid, "default_nodeid"},
       {e.low_nodeid, "low_nodeid"},
       {e.high_nodeid, "high_nodeid"},
-      {e.param_nodeid, "parameter_nodeid"},
+      {e.parameter_nodeid, "parameter_nodeid"},
   };
   std::string o;
   for (const bit &b : bits) {
@@ -172,10 +182,10 @@ void emit_core(std::string &o, const entry &e) {
   if (e.size != 0U) o += ", .size = " + std::to_string(e.size);
   if (e.low) o += ", .low = " + number_literal(e.low);
   if (e.high) o += ", .high = " + number_literal(e.high);
-  if (e.def) o += ", .default_value = " + number_literal(e.def);
-  if (!e.def_text.empty()) {
+  if (e.default_value) o += ", .default_value = " + number_literal(e.default_value);
+  if (!e.default_text.empty()) {
     o += ", .default_text = ";
-    append_view(o, e.def_text);
+    append_value_view(o, e.type, e.default_text);
   }
   o += "}";
 }
@@ -215,11 +225,14 @@ void emit_info(std::string &o, const entry &e) {
     field("obj_flags");
     o += "0x" + hex(e.obj_flags, 1);
   }
-  if (e.param) {
+  if (e.parameter_value) {
     field("parameter_value");
-    o += number_literal(e.param);
+    o += number_literal(e.parameter_value);
   }
-  text("parameter_text", e.param_text);
+  if (!e.parameter_text.empty()) {
+    field("parameter_text");
+    append_value_view(o, e.type, e.parameter_text);
+  }
   o += "}";
 }
 

@@ -1406,7 +1406,7 @@ inline constexpr std::array<od::entry, 1479> entries{{
     {.index = 0x5FF2, .type = od::data_type::unsigned8, .flags = od::flag::scaled, .low = od::signed_number(1), .high = od::signed_number(250)},
     {.index = 0x5FF3, .type = od::data_type::unsigned8, .access_type = od::access::wo, .flags = od::flag::scaled, .low = od::signed_number(1), .high = od::signed_number(250)},
     {.index = 0x5FF4, .type = od::data_type::unsigned8, .access_type = od::access::wo, .pdo = od::pdo_mapping::rx, .flags = od::flag::scaled, .low = od::signed_number(1), .high = od::signed_number(250)},
-    {.index = 0x5FF5, .type = od::data_type::octet_string, .size = 2, .default_text = "0"sv},
+    {.index = 0x5FF5, .type = od::data_type::octet_string, .size = 2, .default_text = std::string_view{"\000\000", 2}},
     {.index = 0x5FF6, .sub = 1, .object = od::object_code::array, .type = od::data_type::boolean, .access_type = od::access::wo},
     {.index = 0x5FF6, .sub = 2, .object = od::object_code::array, .type = od::data_type::boolean, .access_type = od::access::wo},
     {.index = 0x5FF6, .sub = 3, .object = od::object_code::array, .type = od::data_type::boolean, .access_type = od::access::wo},

@@ -24,9 +24,9 @@ inline constexpr const char *source_file = "xenax_ethercat.eds";
 inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(4325778U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "Servocontroller XENAX Xvi xxVx"sv},
-    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Module HW Vxxx.xxx"sv},
-    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "BUS Protocol SW Vxxx.xxx"sv},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 30, .default_text = "Servocontroller XENAX Xvi xxVx"sv},
+    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 22, .default_text = "BUS Module HW Vxxx.xxx"sv},
+    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 24, .default_text = "BUS Protocol SW Vxxx.xxx"sv},
     {.index = 0x1018, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(1U), .high = od::unsigned_number(4U), .default_value = od::unsigned_number(4U)},
     {.index = 0x1018, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
     {.index = 0x1018, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U)},
@@ -341,7 +341,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(10000000), .default_value = od::signed_number(1000)},
     {.index = 0x5011, .type = od::data_type::visible_string},
     {.index = 0x5012, .type = od::data_type::visible_string},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "no error"sv},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 8, .default_text = "no error"sv},
     {.index = 0x5021, .type = od::data_type::visible_string},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
@@ -379,7 +379,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x60FE, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
-    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .default_text = "http://www.jennyscience.ch"sv},
+    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .default_text = "http://www.jennyscience.ch"sv},
 }};
 
 inline constexpr std::array<od::entry_info, 358> infos{{
