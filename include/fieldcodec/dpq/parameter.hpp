@@ -97,9 +97,10 @@ struct payload {
 /// overflow (does not fit the field).
 [[nodiscard]] constexpr result<payload> raw_to_bytes(const od::descriptor &d,
                                                      std::int64_t raw) noexcept {
-  if (!od::is_integer(d.type)) return errc::type_mismatch;
   payload p;
-  auto n = od::encode(d, od::signed_number(raw), std::span<std::uint8_t>(p.bytes));
+  auto n = od::detail::encode_integer(d, &d.scale, od::detail::from_int64(raw),
+                                      std::span<std::uint8_t>(p.bytes), byte_order::little,
+                                      od::any_node);
   if (!n) return n.error();
   p.size = static_cast<std::uint8_t>(n.value());
   return p;

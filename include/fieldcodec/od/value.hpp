@@ -177,6 +177,29 @@ struct wide_int {
   return d;
 }
 
+/// The integer part of encode: limits, field, bytes. `e` must have an integer type (the DPQ's
+/// raw values take this path directly, without the REAL and TIME code of encode).
+[[nodiscard]] constexpr result<std::size_t>
+encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
+               std::span<std::uint8_t> out, byte_order order, std::uint8_t node) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (!is_integer(e.type)) return errc::type_mismatch;
+  if (out.size() < w) return errc::buffer_too_small;
+  FIELDCODEC_TRY_STATUS(check_int_limits(e, scale, x, node));
+  if (is_signed_integer(e.type)) {
+    if (!x.negative && x.mag > static_cast<std::uint64_t>(signed_max(w))) return errc::overflow;
+    if (x.negative && x.mag > std::uint64_t{0} - static_cast<std::uint64_t>(signed_min(w))) {
+      return errc::overflow;
+    }
+    const std::uint64_t bits = x.negative ? std::uint64_t{0} - x.mag : x.mag;
+    FIELDCODEC_TRY_STATUS(store_signed(out, w, static_cast<std::int64_t>(bits), order));
+    return w;
+  }
+  if (x.negative) return errc::overflow;
+  FIELDCODEC_TRY_STATUS(store_unsigned(out, w, x.mag, order));
+  return w;
+}
+
 /// encode for an entry whose scale is `scale` (nullptr: not known).
 [[nodiscard]] constexpr result<std::size_t> encode(const entry &e, const scaling::linear *scale,
                                                    number v, std::span<std::uint8_t> out,
@@ -214,19 +237,7 @@ struct wide_int {
     out[0] = static_cast<std::uint8_t>(x.mag);
     return std::size_t{1};
   }
-  FIELDCODEC_TRY_STATUS(check_int_limits(e, scale, x, node));
-  if (is_signed_integer(e.type)) {
-    if (!x.negative && x.mag > static_cast<std::uint64_t>(signed_max(w))) return errc::overflow;
-    if (x.negative && x.mag > std::uint64_t{0} - static_cast<std::uint64_t>(signed_min(w))) {
-      return errc::overflow;
-    }
-    const std::uint64_t bits = x.negative ? std::uint64_t{0} - x.mag : x.mag;
-    FIELDCODEC_TRY_STATUS(store_signed(out, w, static_cast<std::int64_t>(bits), order));
-    return w;
-  }
-  if (x.negative) return errc::overflow;
-  FIELDCODEC_TRY_STATUS(store_unsigned(out, w, x.mag, order));
-  return w;
+  return encode_integer(e, scale, x, out, order, node);
 }
 
 /// decode for an entry whose scale is `scale` (nullptr: not known).
