@@ -43,61 +43,11 @@ std::string number_literal(const od::number &n) {
 
 std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(v, digits)); }
 
-const char *data_type_enum(od::data_type t) {
-  switch (t) {
-  case od::data_type::boolean: return "boolean";
-  case od::data_type::integer8: return "integer8";
-  case od::data_type::integer16: return "integer16";
-  case od::data_type::integer24: return "integer24";
-  case od::data_type::integer32: return "integer32";
-  case od::data_type::integer40: return "integer40";
-  case od::data_type::integer48: return "integer48";
-  case od::data_type::integer56: return "integer56";
-  case od::data_type::integer64: return "integer64";
-  case od::data_type::unsigned8: return "unsigned8";
-  case od::data_type::unsigned16: return "unsigned16";
-  case od::data_type::unsigned24: return "unsigned24";
-  case od::data_type::unsigned32: return "unsigned32";
-  case od::data_type::unsigned40: return "unsigned40";
-  case od::data_type::unsigned48: return "unsigned48";
-  case od::data_type::unsigned56: return "unsigned56";
-  case od::data_type::unsigned64: return "unsigned64";
-  case od::data_type::real32: return "real32";
-  case od::data_type::real64: return "real64";
-  case od::data_type::visible_string: return "visible_string";
-  case od::data_type::octet_string: return "octet_string";
-  case od::data_type::unicode_string: return "unicode_string";
-  case od::data_type::time_of_day: return "time_of_day";
-  case od::data_type::time_difference: return "time_difference";
-  case od::data_type::domain: return "domain";
-  }
-  return "domain";
-}
-
-const char *object_enum(od::object_code c) {
-  switch (c) {
-  case od::object_code::null: return "null";
-  case od::object_code::domain: return "domain";
-  case od::object_code::deftype: return "deftype";
-  case od::object_code::defstruct: return "defstruct";
-  case od::object_code::var: return "var";
-  case od::object_code::array: return "array";
-  case od::object_code::record: return "record";
-  }
-  return "var";
-}
-
-const char *access_enum(od::access a) {
-  switch (a) {
-  case od::access::ro: return "ro";
-  case od::access::wo: return "wo";
-  case od::access::rw: return "rw";
-  case od::access::rwr: return "rwr";
-  case od::access::rww: return "rww";
-  case od::access::constant: return "constant";
-  }
-  return "rw";
-}
+// The enumerators' C++ names come from od/data_type.hpp's tables (one table per idea, shared by
+// the readers, the EDS writer and this emitter).
+std::string data_type_enum(od::data_type t) { return std::string(od::info(t).identifier); }
+std::string object_enum(od::object_code c) { return std::string(od::info(c).identifier); }
+std::string access_enum(od::access a) { return std::string(od::info(a).identifier); }
 
 /// Assigns unique identifiers in a deterministic order.
 class symbols {
