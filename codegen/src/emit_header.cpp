@@ -16,38 +16,76 @@ namespace fieldcodec::gen {
 
 namespace {
 
-std::string number_literal(const od::number &n) {
+// Appenders that write straight into the header (no temporary strings: the emitter runs once
+// per entry and table).
+template <class Int>
+void append_int(std::string &o, Int v) {
+  std::array<char, 24> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  o.append(buf.data(), r.ptr);
+}
+/// Upper-case hex with at least `digits` digits.
+void append_hex(std::string &o, std::uint64_t v, int digits) {
+  std::array<char, 16> buf{};
+  int n = 0;
+  while (v != 0U || n < digits) {
+    buf[static_cast<std::size_t>(15 - n)] = "0123456789ABCDEF"[v & 0xFU];
+    v >>= 4U;
+    ++n;
+  }
+  o.append(buf.data() + 16 - n, static_cast<std::size_t>(n));
+}
+
+void append_number(std::string &o, const od::number &n) {
   switch (n.kind) {
-  case od::number_kind::none: return "{}";
+  case od::number_kind::none: o += "{}"; return;
   case od::number_kind::signed_: {
     const auto v = static_cast<std::int64_t>(n.bits);
-    if (v == std::numeric_limits<std::int64_t>::min())
-      return "od::signed_number(-9223372036854775807 - 1)";
-    return "od::signed_number(" + std::to_string(v) + ")";
+    if (v == std::numeric_limits<std::int64_t>::min()) {
+      o += "od::signed_number(-9223372036854775807 - 1)";
+      return;
+    }
+    o += "od::signed_number(";
+    append_int(o, v);
+    o += ')';
+    return;
   }
-  case od::number_kind::unsigned_: return "od::unsigned_number(" + std::to_string(n.bits) + "U)";
+  case od::number_kind::unsigned_:
+    o += "od::unsigned_number(";
+    append_int(o, n.bits);
+    o += "U)";
+    return;
   case od::number_kind::real: {
     std::array<char, 64> buf{};
     const double d = n.to_double();
     auto [p, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), d);
-    std::string s(buf.data(), p);
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return "od::real_number(" + s + ")";
+    std::string_view t(buf.data(), static_cast<std::size_t>(p - buf.data()));
+    o += "od::real_number(";
+    o += t;
+    if (t.find_first_of(".e") == std::string_view::npos) o += ".0";
+    o += ')';
+    return;
   }
   case od::number_kind::decimal_:
-    return "od::decimal_number(" + std::to_string(static_cast<std::int64_t>(n.bits)) + ", " +
-           std::to_string(n.places) + ")";
+    o += "od::decimal_number(";
+    append_int(o, static_cast<std::int64_t>(n.bits));
+    o += ", ";
+    append_int(o, n.places);
+    o += ')';
+    return;
   }
-  return "{}";
+  o += "{}";
+}
+std::string number_literal(const od::number &n) {
+  std::string o;
+  append_number(o, n);
+  return o;
 }
 
 std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(v, digits)); }
 
-// The enumerators' C++ names come from od/data_type.hpp's tables (one table per idea, shared by
-// the readers, the EDS writer and this emitter).
-std::string data_type_enum(od::data_type t) { return std::string(od::info(t).identifier); }
-std::string object_enum(od::object_code c) { return std::string(od::info(c).identifier); }
-std::string access_enum(od::access a) { return std::string(od::info(a).identifier); }
+// The enumerators' C++ names come from od/data_type.hpp's tables (od::info(…).identifier: one
+// table per idea, shared by the readers, the EDS writer and this emitter).
 
 /// Assigns unique identifiers in a deterministic order.
 class symbols {
@@ -92,7 +130,7 @@ void append_value_view(std::string &o, od::data_type type, const std::string &by
 }
 
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
-std::string flags_expression(const entry &e) {
+void append_flags(std::string &o, const entry &e) {
   struct bit {
     bool set;
     const char *name;
@@ -107,37 +145,59 @@ std::string flags_expression(const entry &e) {
       {e.high_nodeid, "high_nodeid"},
       {e.parameter_nodeid, "parameter_nodeid"},
   };
-  std::string o;
+  bool first = true;
   for (const bit &b : bits) {
     if (!b.set) continue;
-    if (!o.empty()) o += " | ";
-    o += "od::flag::";
+    o += first ? ", .flags = od::flag::" : " | od::flag::";
     o += b.name;
+    first = false;
   }
-  return o;
 }
 
 /// `{...}` initialising the od::entry part.
 void emit_core(std::string &o, const entry &e) {
-  o += "{.index = 0x" + hex(e.index, 4);
-  if (e.sub != 0U) o += ", .sub = " + std::to_string(e.sub);
-  if (e.object != od::object_code::var)
-    o += std::string(", .object = od::object_code::") + object_enum(e.object);
-  o += std::string(", .type = od::data_type::") + data_type_enum(e.type);
-  if (e.access != od::access::rw)
-    o += std::string(", .access_type = od::access::") + access_enum(e.access);
-  if (e.pdo != od::pdo_mapping::no)
-    o += ", .pdo = od::pdo_mapping::" + std::string(od::name(e.pdo));
-  if (const std::string f = flags_expression(e); !f.empty()) o += ", .flags = " + f;
-  if (e.size != 0U) o += ", .size = " + std::to_string(e.size);
-  if (e.low) o += ", .low = " + number_literal(e.low);
-  if (e.high) o += ", .high = " + number_literal(e.high);
-  if (e.default_value) o += ", .default_value = " + number_literal(e.default_value);
+  o += "{.index = 0x";
+  append_hex(o, e.index, 4);
+  if (e.sub != 0U) {
+    o += ", .sub = ";
+    append_int(o, e.sub);
+  }
+  if (e.object != od::object_code::var) {
+    o += ", .object = od::object_code::";
+    o += od::info(e.object).identifier;
+  }
+  o += ", .type = od::data_type::";
+  o += od::info(e.type).identifier;
+  if (e.access != od::access::rw) {
+    o += ", .access_type = od::access::";
+    o += od::info(e.access).identifier;
+  }
+  if (e.pdo != od::pdo_mapping::no) {
+    o += ", .pdo = od::pdo_mapping::";
+    o += od::name(e.pdo);
+  }
+  append_flags(o, e);
+  if (e.size != 0U) {
+    o += ", .size = ";
+    append_int(o, e.size);
+  }
+  if (e.low) {
+    o += ", .low = ";
+    append_number(o, e.low);
+  }
+  if (e.high) {
+    o += ", .high = ";
+    append_number(o, e.high);
+  }
+  if (e.default_value) {
+    o += ", .default_value = ";
+    append_number(o, e.default_value);
+  }
   if (!e.default_text.empty()) {
     o += ", .default_text = ";
     append_value_view(o, e.type, e.default_text);
   }
-  o += "}";
+  o += '}';
 }
 
 /// `{...}` initialising the od::entry_info part ("{}" when the entry has no descriptive column).
@@ -164,7 +224,7 @@ void emit_info(std::string &o, const entry &e) {
   text("denotation", e.denotation);
   if (e.pointer != od::no_pointer) {
     field("pointer");
-    o += std::to_string(e.pointer);
+    append_int(o, e.pointer);
   }
   if (e.bus != od::bus_manager::unspecified) {
     field("bus");
@@ -173,11 +233,12 @@ void emit_info(std::string &o, const entry &e) {
   }
   if (e.has_obj_flags && e.obj_flags != 0U) {
     field("obj_flags");
-    o += "0x" + hex(e.obj_flags, 1);
+    o += "0x";
+    append_hex(o, e.obj_flags, 1);
   }
   if (e.parameter_value) {
     field("parameter_value");
-    o += number_literal(e.parameter_value);
+    append_number(o, e.parameter_value);
   }
   if (!e.parameter_text.empty()) {
     field("parameter_text");
@@ -196,8 +257,15 @@ void emit_scale(std::string &o, const entry &e) {
     o += "{}";
     return;
   }
-  o += "{{" + std::to_string(e.scale.mantissa) + ", " + std::to_string(e.scale.places) + "}, {" +
-       std::to_string(e.offset.mantissa) + ", " + std::to_string(e.offset.places) + "}}";
+  o += "{{";
+  append_int(o, e.scale.mantissa);
+  o += ", ";
+  append_int(o, e.scale.places);
+  o += "}, {";
+  append_int(o, e.offset.mantissa);
+  o += ", ";
+  append_int(o, e.offset.places);
+  o += "}}";
 }
 
 std::string command_value_enum(od::command_value v) {
@@ -380,7 +448,9 @@ std::string emit_header(const dictionary &d) {
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
     const std::string at = std::to_string(k);
-    o += "inline constexpr od::descriptor " + named[k] + "{entries[" + at + "], infos[" + at + "]";
+    o += "inline constexpr od::descriptor ";
+    o += named[k];
+    o += "{entries[" + at + "], infos[" + at + "]";
     if (scales) o += ", scales[" + at + "]";
     o += "}; // 0x" + hex(d.entries[k].index, 4);
     if (!is_var[k]) o += " sub " + std::to_string(d.entries[k].sub);
@@ -395,7 +465,7 @@ std::string emit_header(const dictionary &d) {
     const std::string at = std::to_string(v.first);
     const std::string n = std::to_string(v.count);
     o += "inline constexpr od::object " + v.symbol + "{0x" + hex(v.info->index, 4) +
-         ", od::object_code::" + object_enum(v.info->code) + ", ";
+         ", od::object_code::" + std::string(od::info(v.info->code).identifier) + ", ";
     append_view(o, v.info->name);
     o += ", {entries.data() + " + at + ", " + n + "}, {infos.data() + " + at + ", " + n + "}";
     if (scales) o += ", {scales.data() + " + at + ", " + n + "}";
