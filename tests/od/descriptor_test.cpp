@@ -205,3 +205,23 @@ TEST_CASE("od descriptor: generated headers") {
   }
 }
 #endif
+
+TEST_CASE("od descriptor: a negative scale turns the engineering limits around") {
+  // 0..10 EU at scale −1 is raw −10..0; with only the low end, raw ≤ 0
+  const od::descriptor both{{.type = od::data_type::integer16,
+                             .flags = od::flag::scaled,
+                             .low = od::signed_number(0),
+                             .high = od::signed_number(10)},
+                            {},
+                            {{-1, 0}, {0, 0}}};
+  std::array<std::uint8_t, 2> out{};
+  CHECK(od::encode(both, -10, out).value() == 2);
+  CHECK(od::encode(both, 0, out).value() == 2);
+  CHECK(od::encode(both, 1, out).error() == errc::out_of_range);
+  CHECK(od::encode(both, -11, out).error() == errc::out_of_range);
+  CHECK(both.to_raw(fc::decimal{10, 0}).value() == -10);
+  od::descriptor low_only = both;
+  low_only.high = {};
+  CHECK(od::encode(low_only, -30000, out).value() == 2);
+  CHECK(od::encode(low_only, 1, out).error() == errc::out_of_range);
+}
