@@ -204,6 +204,39 @@ static_assert(read_object(0x2000) ==
 static_assert(read_object(0x2000) !=
               result<int, transfer_error>(transfer_error{errc::aborted, 0x0602'0001U, 0x2000, 0}));
 
+// ---- comparison never converts into a result ----------------------------------------------------
+namespace {
+/// Holds the left side of a comparison, as a test framework's expression decomposer does
+/// (doctest's Expression_lhs): the result becomes an associated class of the wrapper.
+template <class R>
+struct lhs_wrapper {
+  const R &lhs;
+  template <class X>
+  constexpr bool operator==(const X &x) const {
+    return lhs == x;
+  }
+};
+template <class A, class B>
+concept equality_with = requires(const A &a, const B &b) {
+  a == b;
+};
+} // namespace
+static_assert(lhs_wrapper<result<long>>{result<long>(5)} == result<long>(5));
+static_assert(lhs_wrapper<result<long>>{result<long>(5)} == 5L);
+static_assert(lhs_wrapper<result<long>>{result<long>(errc::timeout)} == errc::timeout);
+/// Only names a result as a template argument (so result's friends are found by lookup).
+template <class R>
+struct tag_of {};
+// A plain long is never turned into a result<long> to be compared (through such a conversion,
+// a long compared with the wrapper above recursed forever under clang).
+static_assert(!equality_with<long, tag_of<result<long>>>);
+static_assert(!equality_with<tag_of<result<long>>, long>);
+static_assert(!equality_with<long, errc>);
+static_assert(5 == half(10)); // reversed value comparison
+static_assert(equality_with<result<int>, int>);
+static_assert(!equality_with<result<int>, result<long>>); // different results do not compare
+static_assert(!equality_with<result<int, text_error>, errc>);
+
 // ---- reading the wrong side does not compile in a constant expression ---------------------------
 template <int N>
 struct probe {};

@@ -390,6 +390,17 @@ template <class T, class E, class G>
 concept error_from =
     !std::is_same_v<std::remove_cvref_t<G>, E> && !is_result_v<std::remove_cvref_t<G>> &&
     !is_tag_v<G> && std::is_convertible_v<G, E> && !std::is_convertible_v<G, T>;
+
+template <class R, class Self>
+concept exactly = std::is_same_v<R, Self>;
+
+// What a result<T, E> compares with as a value: anything T compares with, except results and
+// errors.
+template <class U, class T, class E>
+concept value_comparable = !is_result_v<U> && !std::is_same_v<U, errc> && !std::is_same_v<U, E> &&
+                           requires(const T &t, const U &u) {
+  { t == u } -> std::convertible_to<bool>;
+};
 } // namespace detail
 
 /// A T or an error E. See the top of this file.
@@ -550,20 +561,22 @@ public:
   }
 
   // ---- comparison --------------------------------------------------------------------------
-  friend constexpr bool operator==(const result &a, const result &b) {
+  // Templates over the exact result type: nothing converts into a result to be compared (a T
+  // would, and `t == x` could then call these again).
+  /// Both hold equal values or equal errors.
+  template <detail::exactly<result> R>
+  friend constexpr bool operator==(const R &a, const R &b) {
     if (a.s_.has_ != b.s_.has_) return false;
     return a.s_.has_ ? static_cast<bool>(detail::value_of(a.s_) == detail::value_of(b.s_))
                      : static_cast<bool>(detail::error_of(a.s_) == detail::error_of(b.s_));
   }
   /// Holds an error whose errc is `e`.
-  friend constexpr bool operator==(const result &a, errc e) noexcept requires carries_errc<E> {
-    return a.is(e);
-  }
+  template <detail::exactly<result> R>
+  requires carries_errc<E>
+  friend constexpr bool operator==(const R &a, errc e) noexcept { return a.is(e); }
   /// Holds a value equal to `v`.
-  template <class U>
-  requires(!detail::is_result_v<U> && !std::is_same_v<U, errc> &&
-           !std::is_same_v<U, E>) friend constexpr bool
-  operator==(const result &a, const U &v) {
+  template <detail::exactly<result> R, detail::value_comparable<T, E> U>
+  friend constexpr bool operator==(const R &a, const U &v) {
     return a.s_.has_ && static_cast<bool>(detail::value_of(a.s_) == v);
   }
 
@@ -704,13 +717,14 @@ public:
     return transform_error_(std::move(*this), std::forward<F>(f));
   }
 
-  friend constexpr bool operator==(const result &a, const result &b) {
+  template <detail::exactly<result> R>
+  friend constexpr bool operator==(const R &a, const R &b) {
     if (a.s_.has_ != b.s_.has_) return false;
     return a.s_.has_ || static_cast<bool>(detail::error_of(a.s_) == detail::error_of(b.s_));
   }
-  friend constexpr bool operator==(const result &a, errc e) noexcept requires carries_errc<E> {
-    return a.is(e);
-  }
+  template <detail::exactly<result> R>
+  requires carries_errc<E>
+  friend constexpr bool operator==(const R &a, errc e) noexcept { return a.is(e); }
 
 private:
   template <class Self, class F>
