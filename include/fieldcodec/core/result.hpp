@@ -142,35 +142,26 @@ inline constexpr int storage_kind = plain_members_v<T, E> ? 0 : (trivial_union_v
 template <class T, class E, int Kind = storage_kind<T, E>>
 struct result_storage;
 
-// Value and error of layout 0, in a struct of their own with the flag after it, as in the
-// first result<T>. A flat {T, E, bool} is smaller for some T (16 instead of 24 bytes for
-// std::int64_t) but measured 1 to 3 instructions more per call in bench/ (callgrind:
+// Layout 0 places the flag where the first result<T> had it: after a {T, E} pair, at the
+// pair's alignment. Packing it right after E instead (16 instead of 24 bytes for
+// std::int64_t) measured 1 to 3 instructions more per call in bench/ (callgrind:
 // compax/decode_bcd_position 91 instead of 88, scaling/to_raw 0.001 units 28 instead of 27).
-template <class T, class E>
-struct value_and_error {
-  template <class... A>
-  constexpr explicit value_and_error(std::in_place_t, A &&...a) noexcept(
-      std::conjunction_v<std::is_nothrow_constructible<T, A...>,
-                         std::is_nothrow_default_constructible<E>>)
-      : value_(std::forward<A>(a)...), error_() {}
-  template <class... A>
-  constexpr explicit value_and_error(unexpect_t, A &&...a) noexcept(
-      std::conjunction_v<std::is_nothrow_constructible<E, A...>,
-                         std::is_nothrow_default_constructible<T>>)
-      : value_(), error_(std::forward<A>(a)...) {}
-  T value_;
-  E error_;
-};
-
 template <class T, class E>
 struct result_storage<T, E, 0> {
   static constexpr int layout = 0;
-  template <class Tag, class... A>
-  constexpr explicit result_storage(Tag tag, A &&...a) noexcept(
-      std::is_nothrow_constructible_v<value_and_error<T, E>, Tag, A...>)
-      : m_(tag, std::forward<A>(a)...), has_(std::is_same_v<Tag, std::in_place_t>) {}
-  value_and_error<T, E> m_;
-  bool has_;
+  template <class... A>
+  constexpr explicit result_storage(std::in_place_t, A &&...a) noexcept(
+      std::conjunction_v<std::is_nothrow_constructible<T, A...>,
+                         std::is_nothrow_default_constructible<E>>)
+      : value_(std::forward<A>(a)...), error_(), has_(true) {}
+  template <class... A>
+  constexpr explicit result_storage(unexpect_t, A &&...a) noexcept(
+      std::conjunction_v<std::is_nothrow_constructible<E, A...>,
+                         std::is_nothrow_default_constructible<T>>)
+      : value_(), error_(std::forward<A>(a)...), has_(false) {}
+  T value_;
+  E error_;
+  alignas(alignof(T) > alignof(E) ? alignof(T) : alignof(E)) bool has_;
 };
 
 // result<void, E>: no value member at all (status stays two bytes).
@@ -308,10 +299,7 @@ struct result_storage<T, E, 2> {
 // The value and the error of a storage, with the storage's value category (T&, const T&, T&&).
 template <class S>
 [[nodiscard]] constexpr decltype(auto) value_of(S &&s) noexcept {
-  constexpr int layout = std::remove_cvref_t<S>::layout;
-  if constexpr (layout == 0) {
-    return (std::forward<S>(s).m_.value_);
-  } else if constexpr (layout == 2) {
+  if constexpr (std::remove_cvref_t<S>::layout == 2) {
     return (std::forward<S>(s).u_.value_);
   } else {
     return (std::forward<S>(s).value_);
@@ -319,10 +307,7 @@ template <class S>
 }
 template <class S>
 [[nodiscard]] constexpr decltype(auto) error_of(S &&s) noexcept {
-  constexpr int layout = std::remove_cvref_t<S>::layout;
-  if constexpr (layout == 0) {
-    return (std::forward<S>(s).m_.error_);
-  } else if constexpr (layout == 2) {
+  if constexpr (std::remove_cvref_t<S>::layout == 2) {
     return (std::forward<S>(s).u_.error_);
   } else {
     return (std::forward<S>(s).error_);
@@ -411,6 +396,12 @@ concept error_from =
     !std::is_same_v<std::remove_cvref_t<G>, E> && !is_result_v<std::remove_cvref_t<G>> &&
     !is_tag_v<G> && std::is_convertible_v<G, E> && !std::is_convertible_v<G, T>;
 
+// Errors that are cheap to copy (errc, a small struct with context) are taken and given out by
+// value, as plain errc always was: one constructor and one error() per result type, which
+// keeps firmware small (GCC -Os emits the functions it does not inline once per overload).
+template <class E>
+inline constexpr bool by_value_v = std::is_trivially_copyable_v<E>;
+
 template <class R, class Self>
 concept exactly = std::is_same_v<R, Self>;
 
@@ -437,6 +428,11 @@ class [[nodiscard]] result : private detail::ctor_control_for<T, E>,
   static_assert(!detail::is_tag_v<T> && !detail::is_result_v<std::remove_cv_t<T>>,
                 "result<T>: T cannot be a tag or a result");
 
+  // Layout 2 keeps its members in a named union, the others as plain members. The accessors
+  // name the member directly: a helper function in between kept GCC -Os from passing a status
+  // to an out-of-line error() in registers (IPA-SRA), ~100 bytes more in the firmware example.
+  static constexpr bool owning_ = detail::storage_kind<T, E> == 2;
+
 public:
   using value_type = T;
   using error_type = E;
@@ -458,9 +454,12 @@ public:
                             A &&...a) noexcept(std::is_nothrow_constructible_v<T, A...>)
       : s_(std::in_place, std::forward<A>(a)...) {}
 
-  constexpr result(const E &e) noexcept(std::is_nothrow_copy_constructible_v<E>)
+  constexpr result(E e) noexcept requires detail::by_value_v<E> : s_(unexpect, e) {}
+  constexpr result(const E &e) noexcept(std::is_nothrow_copy_constructible_v<E>) requires(
+      !detail::by_value_v<E>)
       : s_(unexpect, e) {}
-  constexpr result(E &&e) noexcept(std::is_nothrow_move_constructible_v<E>)
+  constexpr result(E &&e) noexcept(std::is_nothrow_move_constructible_v<E>) requires(
+      !detail::by_value_v<E>)
       : s_(unexpect, std::move(e)) {}
   template <class G>
   requires detail::error_from<T, E, G>
@@ -477,16 +476,25 @@ public:
   /// The value. Traps (or fails to compile in a constant expression) on an error.
   [[nodiscard]] constexpr const T &value() const &noexcept {
     if (!s_.has_) detail::bad_result_access();
-    return detail::value_of(s_);
+    if constexpr (owning_)
+      return s_.u_.value_;
+    else
+      return s_.value_;
   }
   [[nodiscard]] constexpr T &value() &noexcept {
     if (!s_.has_) detail::bad_result_access();
-    return detail::value_of(s_);
+    if constexpr (owning_)
+      return s_.u_.value_;
+    else
+      return s_.value_;
   }
   /// From a temporary: the value moved out (by value, so it cannot dangle).
   [[nodiscard]] constexpr T value() &&noexcept(std::is_nothrow_move_constructible_v<T>) {
     if (!s_.has_) detail::bad_result_access();
-    return detail::value_of(std::move(s_));
+    if constexpr (owning_)
+      return std::move(s_.u_.value_);
+    else
+      return std::move(s_.value_);
   }
   [[nodiscard]] constexpr const T &operator*() const &noexcept { return value(); }
   [[nodiscard]] constexpr T &operator*() &noexcept { return value(); }
@@ -499,30 +507,59 @@ public:
   [[nodiscard]] constexpr T *operator->() noexcept { return __builtin_addressof(value()); }
 
   /// The error. Traps (or fails to compile in a constant expression) on a value.
-  [[nodiscard]] constexpr const E &error() const &noexcept {
+  [[nodiscard]] constexpr E error() const &noexcept requires detail::by_value_v<E> {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(s_);
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
   }
-  [[nodiscard]] constexpr E &error() &noexcept {
+  [[nodiscard]] constexpr const E &error() const &noexcept requires(!detail::by_value_v<E>) {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(s_);
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
   }
-  [[nodiscard]] constexpr E error() &&noexcept(std::is_nothrow_move_constructible_v<E>) {
+  [[nodiscard]] constexpr E &error() &noexcept requires(!detail::by_value_v<E>) {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(std::move(s_));
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
+  }
+  [[nodiscard]] constexpr E
+  error() &&noexcept(std::is_nothrow_move_constructible_v<E>) requires(!detail::by_value_v<E>) {
+    if (s_.has_) detail::bad_result_access();
+    if constexpr (owning_)
+      return std::move(s_.u_.error_);
+    else
+      return std::move(s_.error_);
   }
 
   /// The value, or `fallback` on an error.
   [[nodiscard]] constexpr T value_or(T fallback) const & {
-    return s_.has_ ? detail::value_of(s_) : std::move(fallback);
+    if (!s_.has_) return fallback;
+    if constexpr (owning_)
+      return s_.u_.value_;
+    else
+      return s_.value_;
   }
   [[nodiscard]] constexpr T value_or(T fallback) && {
-    return s_.has_ ? detail::value_of(std::move(s_)) : std::move(fallback);
+    if (!s_.has_) return fallback;
+    if constexpr (owning_)
+      return std::move(s_.u_.value_);
+    else
+      return std::move(s_.value_);
   }
 
   /// True when this holds an error whose errc is `e` (E is errc or carries one).
   [[nodiscard]] constexpr bool is(errc e) const noexcept requires carries_errc<E> {
-    return !s_.has_ && errc_of(detail::error_of(s_)) == e;
+    if (s_.has_) return false;
+    if constexpr (owning_)
+      return errc_of(s_.u_.error_) == e;
+    else
+      return errc_of(s_.error_) == e;
   }
 
   // ---- monadic operations (like std::expected) ---------------------------------------------
@@ -653,6 +690,8 @@ class [[nodiscard]] result<void, E> : private detail::ctor_control_for<detail::u
   static_assert(std::is_object_v<E> && !std::is_array_v<E> && !std::is_const_v<E>,
                 "result<void, E>: E is a plain value type");
 
+  static constexpr bool owning_ = detail::storage_kind<detail::unit, E> == 2;
+
 public:
   using value_type = void;
   using error_type = E;
@@ -663,9 +702,12 @@ public:
   constexpr result() noexcept(std::is_nothrow_default_constructible_v<E>) : s_(std::in_place) {}
   constexpr explicit result(std::in_place_t) noexcept(std::is_nothrow_default_constructible_v<E>)
       : s_(std::in_place) {}
-  constexpr result(const E &e) noexcept(std::is_nothrow_copy_constructible_v<E>)
+  constexpr result(E e) noexcept requires detail::by_value_v<E> : s_(unexpect, e) {}
+  constexpr result(const E &e) noexcept(std::is_nothrow_copy_constructible_v<E>) requires(
+      !detail::by_value_v<E>)
       : s_(unexpect, e) {}
-  constexpr result(E &&e) noexcept(std::is_nothrow_move_constructible_v<E>)
+  constexpr result(E &&e) noexcept(std::is_nothrow_move_constructible_v<E>) requires(
+      !detail::by_value_v<E>)
       : s_(unexpect, std::move(e)) {}
   template <class G>
   requires detail::error_from<detail::unit, E, G>
@@ -683,21 +725,42 @@ public:
   }
   constexpr void operator*() const noexcept { value(); }
 
-  [[nodiscard]] constexpr const E &error() const &noexcept {
+  [[nodiscard]] constexpr E error() const &noexcept requires detail::by_value_v<E> {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(s_);
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
   }
-  [[nodiscard]] constexpr E &error() &noexcept {
+  [[nodiscard]] constexpr const E &error() const &noexcept requires(!detail::by_value_v<E>) {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(s_);
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
   }
-  [[nodiscard]] constexpr E error() &&noexcept(std::is_nothrow_move_constructible_v<E>) {
+  [[nodiscard]] constexpr E &error() &noexcept requires(!detail::by_value_v<E>) {
     if (s_.has_) detail::bad_result_access();
-    return detail::error_of(std::move(s_));
+    if constexpr (owning_)
+      return s_.u_.error_;
+    else
+      return s_.error_;
+  }
+  [[nodiscard]] constexpr E
+  error() &&noexcept(std::is_nothrow_move_constructible_v<E>) requires(!detail::by_value_v<E>) {
+    if (s_.has_) detail::bad_result_access();
+    if constexpr (owning_)
+      return std::move(s_.u_.error_);
+    else
+      return std::move(s_.error_);
   }
 
   [[nodiscard]] constexpr bool is(errc e) const noexcept requires carries_errc<E> {
-    return !s_.has_ && errc_of(detail::error_of(s_)) == e;
+    if (s_.has_) return false;
+    if constexpr (owning_)
+      return errc_of(s_.u_.error_) == e;
+    else
+      return errc_of(s_.error_) == e;
   }
 
   /// result<U, E> with U = f(); an error passes through unchanged.
