@@ -49,13 +49,15 @@ void canopen_cycle(master &m) {
   // SDO: set profile position mode (6060h = 1) once, then serve responses.
   if (m.sdo.state() == co::sdo::transfer_state::idle) {
     const std::array<std::uint8_t, 1> mode{1};
-    if (auto f = m.sdo.download(0x6060, 0, mode, fw::tick)) send_can(f.value());
+    if (auto s = m.sdo.download({0x6060, 0}, mode, fw::tick)) {
+      for (const auto &f : s.value().send) send_can(f);
+    }
   }
   co::can_frame in{};
   in.id = static_cast<std::uint16_t>(0x580U + 1U);
   in.dlc = 8;
   in.data = fw::receive<8>();
-  if (auto o = m.sdo.on_frame(in, fw::tick); o.send) send_can(*o.send);
+  for (const auto &f : m.sdo.on_frame(in, fw::tick).send) send_can(f);
 
   // TPDO in → statusword → next controlword towards "operation enabled" → RPDO out.
   const auto tpdo = fw::receive<6>(8);
@@ -82,14 +84,16 @@ void compax_cycle() {
 void pacontrol_cycle(master &m) {
   // Move axis 2 to an absolute position (cmd 0A87), then feed received bytes to the decoder.
   std::array<std::uint8_t, serial::max_frame_size> tx{};
-  auto date = fieldcodec::pacontrol::value::of_int(static_cast<std::int32_t>(fw::rx_register[3]));
+  auto date =
+      fieldcodec::pacontrol::value::of_int(static_cast<std::int32_t>(fw::rx_register[3])).value();
   if (auto n = serial::encode_request({0x0A87, 2, date}, tx)) {
     fw::transmit(std::span(tx).first(n.value()));
   }
   for (int i = 0; i < 16; ++i) {
     auto r = m.pa_rx.push(fw::rx_register[40 + i]);
     if (r && r.value() == serial::frame_kind::acknowledgement) {
-      fw::tx_register[1] = static_cast<std::uint8_t>(m.pa_rx.acknowledgement().quit);
+      fw::tx_register[1] =
+          static_cast<std::uint8_t>(m.pa_rx.acknowledgement().command_error_number);
     }
   }
 }
