@@ -112,6 +112,22 @@ TEST_CASE("dpq parameter: range that exceeds the field (Decompres.: Limit-)") {
   CHECK(payload_is(p, {0x01, 0x80, 0, 0}, 2)); // −99.99 × 327.7 = −32766.723 → −32767 = 0x8001
 }
 
+TEST_CASE("dpq parameter: every kind of engineering value, each as the number it is") {
+  // decimal, double, float (its shortest decimal) and integers give the same raw value
+  const auto want = dpq::to_bytes(inj_p_limit_1, decimal{4, 0});
+  REQUIRE(want.has_value());
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4.0) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4.0F) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, std::uint16_t{4}) == want);
+  CHECK(dpq::write_bytes(inj_p_limit_1, 4U) == want);
+  // 90.73 as a PLC REAL: 29729.4991 → 29729 (widened to double first it would be 29730)
+  CHECK(inj_p_limit_1.to_raw(90.73F).value() == 29729);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 90.73F).value().bytes[0] == (29729 & 0xFF));
+  static_assert(!dpq::engineering_value<bool>);
+  static_assert(dpq::engineering_value<float> && dpq::engineering_value<long long>);
+}
+
 TEST_CASE("dpq parameter: types and fields") {
   const od::descriptor text{{.index = 0x1008, .type = od::data_type::visible_string, .size = 8}};
   CHECK(text.to_raw(1.0).error() == errc::type_mismatch);

@@ -225,3 +225,27 @@ TEST_CASE("od values: node-ID-relative limits (LowLimit=$NODEID+0x600)") {
   CHECK(d.to_raw(fc::decimal{0x67F, 0}).value() == 0x67F);
   CHECK(d.to_raw(fc::decimal{0x680, 0}).error() == errc::out_of_range);
 }
+
+TEST_CASE("od values: floats are read as the floats they are (issue 13)") {
+  // A PLC REAL of 90.73 at scale 327.67: 90.73 × 327.67 = 29729.4991 → 29729. Widening the float
+  // to double first would read 90.7300033569336 and give 29730.
+  const od::descriptor pct{
+      {.type = od::data_type::unsigned16, .flags = od::flag::scaled}, {}, {{32767, 2}, {0, 0}}};
+  CHECK(pct.to_raw(90.73F).value() == 29729);
+  CHECK(pct.to_raw(static_cast<double>(90.73F)).value() == 29730); // what widening gives
+  CHECK(pct.to_raw(90.73).value() == 29729);
+  CHECK(pct.to_raw(std::numeric_limits<float>::quiet_NaN()).error() == errc::not_representable);
+  // integers of any type, exactly
+  CHECK(pct.to_raw(2).value() == 655); // 655.34 → 655
+  CHECK(pct.to_raw(std::uint8_t{2}).value() == 655);
+  CHECK(pct.to_raw(std::numeric_limits<std::uint64_t>::max()).error() == errc::not_representable);
+  // od::encode: a float for an integer entry is its shortest decimal, and must be an integer
+  std::array<std::uint8_t, 8> out{};
+  const od::entry u16{.type = od::data_type::unsigned16};
+  CHECK(od::encode(u16, 2.0F, out).value() == 2);
+  CHECK(od::encode(u16, 0.1F, out).error() == errc::not_representable);
+  // a float for a REAL64 is the double nearest its shortest decimal (90.73, not 90.73000336…)
+  const od::entry r64{.type = od::data_type::real64};
+  REQUIRE(od::encode(r64, 90.73F, out).value() == 8);
+  CHECK(od::decode<double>(r64, out).value() == 90.73);
+}

@@ -20,10 +20,11 @@
 // card must never see a negative number where a positive one was meant (the warning at the end
 // of manual section 3.3).
 //
-// Binary floating-point inputs (`double`): the double is first read as the decimal it stands
-// for with 15 significant digits (core decimal_from_double), and that decimal is converted
-// exactly. So 1.001 × 500 gives 500.5 → 501, what a person computing by hand gets. On the wire
-// every DPQ value is a 2- or 4-byte integer, least significant byte first (manual chapter 3,
+// Binary floating-point inputs: a double is first read as the decimal it stands for with 15
+// significant digits (core decimal_from_double), a float as its shortest round-trip decimal
+// (decimal_from_float), and that decimal is converted exactly. So 1.001 × 500 gives 500.5 →
+// 501, what a person computing by hand gets, and a PLC REAL 90.73 at 327.67 gives 29729. On the
+// wire every DPQ value is a 2- or 4-byte integer, least significant byte first (manual chapter 3,
 // "Intel format"); padding to the 4 data bytes of an expedited SDO is the SDO layer's job.
 #pragma once
 
@@ -106,25 +107,24 @@ struct payload {
   return p;
 }
 
+/// An engineering value `descriptor::to_raw` takes: a decimal, a double, a float or an integer
+/// of any type, each read as the number it is (not bool).
+template <class EU>
+concept engineering_value = requires(const od::descriptor &d, EU eu) {
+  d.to_raw(eu);
+};
+
 /// EU → bytes: d.to_raw(eu), then raw_to_bytes. Errors: those of both.
-[[nodiscard]] constexpr result<payload> to_bytes(const od::descriptor &d, decimal eu) noexcept {
-  auto raw = d.to_raw(eu);
-  if (!raw) return raw.error();
-  return raw_to_bytes(d, raw.value());
-}
-[[nodiscard]] constexpr result<payload> to_bytes(const od::descriptor &d, double eu) noexcept {
-  auto raw = d.to_raw(eu);
-  if (!raw) return raw.error();
-  return raw_to_bytes(d, raw.value());
+template <engineering_value EU>
+[[nodiscard]] constexpr result<payload> to_bytes(const od::descriptor &d, EU eu) noexcept {
+  FIELDCODEC_TRY(const std::int64_t raw, d.to_raw(eu));
+  return raw_to_bytes(d, raw);
 }
 
 /// The same for a value that is about to be written: also refuses a read-only parameter.
 /// Errors: access_denied, and those of to_bytes.
-[[nodiscard]] constexpr result<payload> write_bytes(const od::descriptor &d, decimal eu) noexcept {
-  if (!od::writable(d.access_type)) return errc::access_denied;
-  return to_bytes(d, eu);
-}
-[[nodiscard]] constexpr result<payload> write_bytes(const od::descriptor &d, double eu) noexcept {
+template <engineering_value EU>
+[[nodiscard]] constexpr result<payload> write_bytes(const od::descriptor &d, EU eu) noexcept {
   if (!od::writable(d.access_type)) return errc::access_denied;
   return to_bytes(d, eu);
 }

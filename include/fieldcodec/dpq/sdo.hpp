@@ -47,16 +47,12 @@ write_raw_request(std::uint8_t node, const od::descriptor &e, std::int64_t raw) 
   return detail::download_frame(node, e, p.value().span());
 }
 
-/// Expedited download of an engineering value. Errors: access_denied, out_of_range, overflow,
-/// not_representable, type_mismatch, invalid_argument (node).
+/// Expedited download of an engineering value (decimal, double, float or integer: see
+/// dpq::engineering_value). Errors: access_denied, out_of_range, overflow, not_representable,
+/// type_mismatch, invalid_argument (node).
+template <engineering_value EU>
 [[nodiscard]] constexpr result<canopen::can_frame>
-write_request(std::uint8_t node, const od::descriptor &e, decimal eu) noexcept {
-  auto p = write_bytes(e, eu);
-  if (!p) return p.error();
-  return detail::download_frame(node, e, p.value().span());
-}
-[[nodiscard]] constexpr result<canopen::can_frame>
-write_request(std::uint8_t node, const od::descriptor &e, double eu) noexcept {
+write_request(std::uint8_t node, const od::descriptor &e, EU eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
   return detail::download_frame(node, e, p.value().span());

@@ -4,13 +4,15 @@
 // firmware that names one parameter keeps only that constant, not the dictionary's tables.
 //
 //   namespace p = fieldcodec::dictionaries::dpq_parameters;
-//   p::inj_p_limit_1.to_raw(4.0)               → 1311            (EU → raw: range, rounding, field)
+//   p::inj_p_limit_1.to_raw(4.0)               → 1311            (EU → raw: range, rounding, field;
+//                                                                  decimal, double, float, integer)
 //   p::inj_p_limit_1.to_eu(1311)               → 4.000976…       (raw → EU as a double)
 //   p::inj_p_limit_1.to_eu_decimal(1311, 3)    → 4.001           (raw → EU, exact decimal)
 //   p::inj_p_limit_1.info.unit                 → "bar"
 //
 // This is the one scaling surface of the library: `to_raw` takes an engineering value (exact
-// decimal or double), `to_eu` always answers a double, `to_eu_decimal` always an exact decimal
+// decimal, double, float or any integer, each read as the number it is), `to_eu` always answers
+// a double, `to_eu_decimal` always an exact decimal
 // rounded half away from zero; the arithmetic is core/scaling's.
 #pragma once
 
@@ -20,6 +22,7 @@
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/number.hpp>
 
+#include <concepts>
 #include <cstdint>
 
 namespace fieldcodec::od {
@@ -52,10 +55,26 @@ struct descriptor : entry {
   /// The same from a double, read as the decimal it stands for with 15 significant digits
   /// (core decimal_from_double). Errors: also not_representable (NaN, infinity).
   [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu) const noexcept {
-    auto d = decimal_from_double(eu);
-    if (!d) return d.error();
-    return to_raw(d.value());
+    FIELDCODEC_TRY(const decimal d, decimal_from_double(eu));
+    return to_raw(d);
   }
+  /// The same from a float (a PLC REAL), read as its shortest round-trip decimal, never widened
+  /// to double first: 90.73f at scale 327.67 is 29729.4991 → 29729 (core decimal_from_float).
+  /// Errors: also not_representable (NaN, infinity).
+  [[nodiscard]] constexpr result<std::int64_t> to_raw(float eu) const noexcept {
+    FIELDCODEC_TRY(const decimal d, decimal_from_float(eu));
+    return to_raw(d);
+  }
+  /// The same from an integer of any type, exactly. Errors: also not_representable (an
+  /// unsigned value above INT64_MAX).
+  template <std::integral I>
+  requires(!std::same_as<I, bool>)
+      [[nodiscard]] constexpr result<std::int64_t> to_raw(I eu) const noexcept {
+    FIELDCODEC_TRY(const decimal d, decimal_from_integer(eu));
+    return to_raw(d);
+  }
+  /// A bool is not an engineering value.
+  result<std::int64_t> to_raw(bool) const = delete;
 
   /// Raw → engineering units as a double: raw / scale + offset.
   [[nodiscard]] constexpr double to_eu(std::int64_t raw) const noexcept {

@@ -79,18 +79,17 @@ struct number {
     return static_cast<std::uint64_t>(v.value());
   }
 
-  /// The value as a double (nearest). NaN for none.
+  /// The value as a double (nearest; a decimal is mantissa / 10^places in one division). NaN for
+  /// none.
   [[nodiscard]] constexpr double to_double() const noexcept {
     switch (kind) {
     case number_kind::none: return std::numeric_limits<double>::quiet_NaN();
     case number_kind::signed_: return static_cast<double>(static_cast<std::int64_t>(bits));
     case number_kind::unsigned_: return static_cast<double>(bits);
     case number_kind::real: return std::bit_cast<double>(bits);
-    case number_kind::decimal_: {
-      double v = static_cast<double>(static_cast<std::int64_t>(bits));
-      for (unsigned i = 0; i < places; ++i) v /= 10.0;
-      return v;
-    }
+    case number_kind::decimal_: // one division: correctly rounded for |mantissa| ≤ 2^53
+      return static_cast<double>(static_cast<std::int64_t>(bits)) /
+             fieldcodec::detail::pow10_double(places);
     }
     return std::numeric_limits<double>::quiet_NaN();
   }

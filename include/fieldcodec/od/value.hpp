@@ -379,18 +379,24 @@ concept value_type =
 
 /// The number a typed value stands for, for entry `e`. Integers (and enumerations) are taken
 /// exactly, whatever their width and signedness: the field check of encode refuses what does
-/// not fit, nothing wraps. A floating-point value for an integer entry is read as the decimal it
-/// stands for (15 significant digits for a double); for a REAL entry it is taken as it is.
+/// not fit, nothing wraps. A double is read as the decimal it stands for (15 significant
+/// digits) unless the entry is REAL; a float is its own bits for a REAL32 and its shortest
+/// round-trip decimal otherwise (a REAL64 gets the double nearest that decimal).
 /// Errors: not_representable (NaN, infinity).
 template <value_type T>
 [[nodiscard]] constexpr result<number> to_number(const entry &e, T v) noexcept {
   if constexpr (std::is_enum_v<T>) {
     return to_number(e, static_cast<std::underlying_type_t<T>>(v));
-  } else if constexpr (std::floating_point<T>) {
-    if (is_real(e.type)) return real_number(static_cast<double>(v));
-    auto d = decimal_from_double(static_cast<double>(v));
-    if (!d) return d.error();
-    return decimal_number(d.value());
+  } else if constexpr (std::same_as<T, float>) {
+    // a float is the float it is: its own bits for REAL32, otherwise its shortest round-trip
+    // decimal (90.73f is 90.73, not the 90.7300033569336 widening to double gives)
+    if (e.type == data_type::real32) return real_number(static_cast<double>(v));
+    FIELDCODEC_TRY(const decimal d, decimal_from_float(v));
+    return decimal_number(d);
+  } else if constexpr (std::same_as<T, double>) {
+    if (is_real(e.type)) return real_number(v);
+    FIELDCODEC_TRY(const decimal d, decimal_from_double(v));
+    return decimal_number(d);
   } else if constexpr (std::is_signed_v<T>) {
     return signed_number(static_cast<std::int64_t>(v));
   } else {
