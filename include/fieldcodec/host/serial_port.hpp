@@ -21,6 +21,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -257,12 +259,26 @@ private:
       return fail(errc::bad_state, e, "not a serial port");
     }
     apply(s, t);
+    if (is_pseudo_terminal()) {
+      // A pseudo-terminal has no line: Linux forces 8 data bits without parity on it, and some
+      // kernels refuse a later request for anything else (EINVAL). Ask for what it does.
+      t.c_cflag = (t.c_cflag & ~static_cast<tcflag_t>(CSIZE | PARENB | PARODD)) | CS8;
+      t.c_iflag &= ~static_cast<tcflag_t>(INPCK);
+    }
     if (::tcsetattr(fd_, TCSANOW, &t) != 0) {
       const int e = errno;
       close();
       return fail(errc::bad_state, e, "line settings refused");
     }
     return {};
+  }
+
+  /// A Unix 98 pseudo-terminal slave (device major 136..143).
+  [[nodiscard]] bool is_pseudo_terminal() const noexcept {
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0 || !S_ISCHR(st.st_mode)) return false;
+    const unsigned major = ::major(st.st_rdev);
+    return major >= 136U && major <= 143U;
   }
 
   errc fail(errc code, int sys_errno, std::string_view what) {
