@@ -116,6 +116,8 @@ options:
                       f32 f64 bool str hex (default: raw bytes)
   --timeout MS        SDO timeout (default 1000)
   --block             use block transfer
+  --switch-threshold N  with --block: let the node answer with a normal upload for
+                      objects of at most N bytes (0..127, default 0: never)
   --json              print a JSON object
 )";
 
@@ -513,7 +515,9 @@ struct sdo_target {
 int sdo_common(const std::vector<std::string> &args, context &c, bool write, options &o,
                sdo_target &t, host::sdo_options &so) {
   std::string error;
-  if (!parse_options(args, 2, join({"--dict", "--type", "--timeout"}, transport_values),
+  if (!parse_options(args, 2,
+                     join({"--dict", "--type", "--timeout", "--switch-threshold"},
+                          transport_values),
                      join({"--block", "--json"}, transport_flags), o, error)) {
     return c.usage(error);
   }
@@ -537,6 +541,11 @@ int sdo_common(const std::vector<std::string> &args, context &c, bool write, opt
   }
   so.timeout = std::chrono::milliseconds(timeout);
   so.block = o.has("--block");
+  if (o.given("--switch-threshold")) {
+    std::uint64_t pst = 0;
+    if (!parse_uint(o.get("--switch-threshold"), 127, pst)) return c.usage("bad --switch-threshold");
+    so.block_options.switch_threshold = static_cast<std::uint8_t>(pst);
+  }
   if (o.given("--dict")) {
     t.dict = node_dictionary::load(o.get("--dict"), t.node, error);
     if (!t.dict) return c.fail(exit_dictionary, error);
