@@ -138,6 +138,9 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
   CHECK(lines[0].substr(lines[0].find(' ')) == " 705 HEARTBEAT node 5: operational");
   CHECK(lines[1].substr(lines[1].find(' ')) ==
         " 185 TPDO1     node 5: Statusword = 0x0637 (operation enabled, target reached)");
+  std::string untimed;
+  for (const auto l : lines) untimed += "<time>" + std::string(l.substr(l.find(' '))) + "\n";
+  t::check_golden("monitor.txt", untimed);
 
   // dump: every readable object into a DCF, a progress line, refused objects listed
   r = t::run_cli({"dump", "5", "--dict", xenax_eds, "--slcan", port, "--progress"});
@@ -148,6 +151,7 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
   const auto at = r.out.find("[1000]\nParameterName=Device Type\n");
   REQUIRE(at != std::string::npos);
   CHECK(r.out.find("ParameterValue=0x20192\n", at) < r.out.find("[1001]", at));
+  t::check_golden("dump.dcf", r.out);
   CHECK(r.err.find("\rreading 1/") != std::string::npos);
   CHECK(r.err.find("\rread ") != std::string::npos);
   // the DCF reads back with the generator's reader, through decode --dict
