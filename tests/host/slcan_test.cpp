@@ -80,7 +80,7 @@ TEST_CASE("slcan bus over a pseudo-terminal: open, SDO read and write, NMT") {
   CHECK(bus.name() == node.path());
 
   // expedited upload
-  host::sdo_session s(bus, 5, {.timeout = 500ms});
+  host::sdo_session s(bus, 5, {.timeout = 2000ms});
   auto v = s.read({0x1018, 1});
   REQUIRE(v);
   CHECK(std::vector<std::uint8_t>(v.value().begin(), v.value().end()) ==
@@ -94,7 +94,7 @@ TEST_CASE("slcan bus over a pseudo-terminal: open, SDO read and write, NMT") {
   REQUIRE_MESSAGE(s.write({0x6040, 0}, hb), s.last_error().what);
   CHECK(node.value({0x6040, 0}) == std::vector<std::uint8_t>{0xE8, 0x03});
   // block upload
-  host::sdo_session b(bus, 5, {.timeout = 500ms, .block = true});
+  host::sdo_session b(bus, 5, {.timeout = 2000ms, .block = true});
   v = b.read({0x1008, 0});
   REQUIRE(v);
   CHECK(std::string(v.value().begin(), v.value().end()) == "Servocontroller XENAX Xvi xxVx");
@@ -102,22 +102,22 @@ TEST_CASE("slcan bus over a pseudo-terminal: open, SDO read and write, NMT") {
 
   // the one-shot forms
   std::array<std::uint8_t, 8> buf{};
-  auto n = host::sdo_read(bus, 5, {0x1018, 1}, buf, 500ms);
+  auto n = host::sdo_read(bus, 5, {0x1018, 1}, buf, 2000ms);
   REQUIRE(n);
   CHECK(n.value() == 4);
   CHECK(buf[3] == 0x12);
-  CHECK(host::sdo_write(bus, 5, {0x6040, 0}, hb, 500ms));
+  CHECK(host::sdo_write(bus, 5, {0x6040, 0}, hb, 2000ms));
 
   // aborts name node, object, code and text
   host::sdo_error why;
-  CHECK(host::sdo_read(bus, 5, {0x1234, 0}, buf, 500ms, &why) == errc::aborted);
+  CHECK(host::sdo_read(bus, 5, {0x1234, 0}, buf, 2000ms, &why) == errc::aborted);
   CHECK(why.transfer.abort == co::sdo::abort_code::no_object);
   CHECK(why.what == "node 5, 1234h:00: SDO abort 06020000h: object not in the object dictionary");
-  CHECK(host::sdo_write(bus, 5, {0x1018, 1}, hb, 500ms, &why) == errc::aborted);
+  CHECK(host::sdo_write(bus, 5, {0x1018, 1}, hb, 2000ms, &why) == errc::aborted);
   CHECK(why.what == "node 5, 1018h:01: SDO abort 06010002h: write to a read-only object");
   // a buffer too small: the client aborts the upload
   std::array<std::uint8_t, 4> small{};
-  CHECK(host::sdo_read(bus, 5, {0x1008, 0}, small, 500ms, &why) == errc::buffer_too_small);
+  CHECK(host::sdo_read(bus, 5, {0x1008, 0}, small, 2000ms, &why) == errc::buffer_too_small);
   CHECK(why.what == "node 5, 1008h:00: output buffer too small (sent SDO abort 05040005h: out "
                     "of memory)");
   // nobody answers node 6: timeout
@@ -134,17 +134,17 @@ TEST_CASE("slcan bus over a pseudo-terminal: open, SDO read and write, NMT") {
   // frames from the bus arrive with a time; extended frames are skipped by receive()
   node.inject_text("T123456781AB\r");
   node.inject(co::make_frame(0x705, {0x05}).value());
-  auto r = bus.receive(500ms);
+  auto r = bus.receive(2000ms);
   REQUIRE(r);
   CHECK(r.value().frame == co::make_frame(0x705, {0x05}).value());
   CHECK(r.value().time.known());
   // a bad line from the adapter is an error with the line quoted
   node.inject_text("t70\r");
-  CHECK(bus.receive(500ms) == errc::truncated);
+  CHECK(bus.receive(2000ms) == errc::truncated);
   CHECK(bus.last_error().what == node.path() + ": bad line from the adapter: t70");
   // BEL from the adapter
   node.inject_text("\a");
-  CHECK(bus.receive(500ms) == errc::bad_state);
+  CHECK(bus.receive(2000ms) == errc::bad_state);
   CHECK(bus.receive(50ms) == errc::timeout);
 
   const auto commands = node.commands();
@@ -176,6 +176,6 @@ TEST_CASE("slcan bus: open failures name the port and the command") {
     // a peer that does not answer commands: open without checking answers
     REQUIRE(bus.open(silent.path(), 500000, {.check_answers = false}));
     std::array<std::uint8_t, 8> buf{};
-    CHECK(host::sdo_read(bus, 5, {0x1000, 0}, buf, 500ms).value() == 4);
+    CHECK(host::sdo_read(bus, 5, {0x1000, 0}, buf, 2000ms).value() == 4);
   }
 }

@@ -189,7 +189,11 @@ namespace detail {
   if (!r.time.known()) return format_frame(r);
   std::string frac = std::to_string(r.time.fraction);
   if (frac.size() < r.time.digits) frac.insert(0, r.time.digits - frac.size(), '0');
-  std::string out = "(" + std::to_string(r.time.seconds) + "." + frac + ") ";
+  std::string out(1, '(');
+  out += std::to_string(r.time.seconds);
+  out += '.';
+  out += frac;
+  out += ") ";
   out += r.iface.empty() ? std::string_view("-") : r.iface.view();
   out += ' ';
   out += format_frame(r);
