@@ -101,30 +101,36 @@ TEST_CASE("slcan bus over a pseudo-terminal: open, SDO read and write, NMT") {
   REQUIRE(b.write({0x6040, 0}, hb));
 
   // the one-shot forms
-  std::array<std::uint8_t, 8> buf{};
-  auto n = host::sdo_read(bus, 5, {0x1018, 1}, buf, 2000ms);
-  REQUIRE(n);
-  CHECK(n.value() == 4);
-  CHECK(buf[3] == 0x12);
+  auto bytes = host::sdo_read(bus, 5, {0x1018, 1}, 2000ms);
+  REQUIRE(bytes);
+  CHECK(bytes.value() == std::vector<std::uint8_t>{0x78, 0x56, 0x34, 0x12});
   CHECK(host::sdo_write(bus, 5, {0x6040, 0}, hb, 2000ms));
 
   // aborts name node, object, code and text
-  host::sdo_error why;
-  CHECK(host::sdo_read(bus, 5, {0x1234, 0}, buf, 2000ms, &why) == errc::aborted);
-  CHECK(why.transfer.abort == co::sdo::abort_code::no_object);
-  CHECK(why.what == "node 5, 1234h:00: SDO abort 06020000h: object not in the object dictionary");
-  CHECK(host::sdo_write(bus, 5, {0x1018, 1}, hb, 2000ms, &why) == errc::aborted);
-  CHECK(why.what == "node 5, 1018h:01: SDO abort 06010002h: write to a read-only object");
+  auto why = host::sdo_read(bus, 5, {0x1234, 0}, 2000ms);
+  REQUIRE_FALSE(why);
+  CHECK(why == errc::aborted);
+  CHECK(why.error().code == errc::aborted);
+  CHECK(why.error().abort == co::sdo::abort_code::no_object);
+  CHECK(why.error().address == fieldcodec::od::address{0x1234, 0});
+  CHECK_FALSE(why.error().bus_failed);
+  CHECK(why.error().what ==
+        "node 5, 1234h:00: SDO abort 06020000h: object not in the object dictionary");
+  auto w = host::sdo_write(bus, 5, {0x1018, 1}, hb, 2000ms);
+  CHECK(w == errc::aborted);
+  CHECK(w.error().what == "node 5, 1018h:01: SDO abort 06010002h: write to a read-only object");
   // a buffer too small: the client aborts the upload
-  std::array<std::uint8_t, 4> small{};
-  CHECK(host::sdo_read(bus, 5, {0x1008, 0}, small, 2000ms, &why) == errc::buffer_too_small);
-  CHECK(why.what == "node 5, 1008h:00: output buffer too small (sent SDO abort 05040005h: out "
-                    "of memory)");
+  host::sdo_session small(bus, 5, {.timeout = 2000ms, .max_size = 4});
+  CHECK(small.read({0x1008, 0}) == errc::buffer_too_small);
+  CHECK(small.last_error().what == "node 5, 1008h:00: output buffer too small (sent SDO abort "
+                                   "05040005h: out of memory)");
   // nobody answers node 6: timeout
-  CHECK(host::sdo_read(bus, 6, {0x1018, 1}, buf, 100ms, &why) == errc::timeout);
-  CHECK(why.what == "node 6, 1018h:01: timeout (sent SDO abort 05040000h: SDO protocol timed out)");
+  why = host::sdo_read(bus, 6, {0x1018, 1}, 100ms);
+  CHECK(why == errc::timeout);
+  CHECK(why.error().what ==
+        "node 6, 1018h:01: timeout (sent SDO abort 05040000h: SDO protocol timed out)");
   // node-ID 0 cannot start
-  CHECK(host::sdo_read(bus, 0, {0x1018, 1}, buf, 100ms, &why) == errc::invalid_argument);
+  CHECK(host::sdo_read(bus, 0, {0x1018, 1}, 100ms) == errc::invalid_argument);
 
   // NMT goes out as a frame
   REQUIRE(bus.send(co::nmt::encode(co::nmt::command::start, 5).value()));
@@ -175,7 +181,6 @@ TEST_CASE("slcan bus: open failures name the port and the command") {
     CHECK(bus.last_error().what == silent.path() + ": no answer to 'S6' (is it an slcan adapter?)");
     // a peer that does not answer commands: open without checking answers
     REQUIRE(bus.open(silent.path(), 500000, {.check_answers = false}));
-    std::array<std::uint8_t, 8> buf{};
-    CHECK(host::sdo_read(bus, 5, {0x1000, 0}, buf, 2000ms).value() == 4);
+    CHECK(host::sdo_read(bus, 5, {0x1000, 0}, 2000ms).value().size() == 4);
   }
 }

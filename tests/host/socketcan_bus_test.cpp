@@ -72,9 +72,8 @@ TEST_CASE("SocketCAN bus over vcan: send, receive, filters, timeout") {
   REQUIRE(r);
   CHECK(r.value().frame == answer);
   // an SDO read that nobody answers times out with the node named
-  std::array<std::uint8_t, 4> buf{};
-  host::sdo_error why;
-  CHECK(host::sdo_read(a, 9, {0x1018, 1}, buf, 100ms, &why) == errc::timeout);
-  CHECK(why.what.find("node 9, 1018h:01: timeout") == 0);
+  const auto why = host::sdo_read(a, 9, {0x1018, 1}, 100ms);
+  CHECK(why == errc::timeout);
+  CHECK(why.error().what.find("node 9, 1018h:01: timeout") == 0);
 }
 #endif

@@ -2,15 +2,13 @@
 // non-blocking canopen::sdo::client machine.
 //
 //   host::socketcan_bus bus;  bus.open("can0");
-//   host::sdo_session node5(bus, 5);                      // 0x605 / 0x585, 1 s timeout
-//   auto v = node5.read({0x1018, 1});                      // result<span>: the bytes read
-//   if (!v) print(node5.last_error().what);  // "node 5, 1018h:01: SDO abort 06020000h: object
-//                                            //  not in the object dictionary"
-//   node5.write({0x1017, 0}, bytes);                       // status
+//   auto v = host::sdo_read(bus, 5, {0x1018, 1}, 500ms);  // result<vector<uint8_t>, sdo_error>
+//   if (!v) print(v.error().what);   // "node 5, 1018h:01: SDO abort 06020000h: object not in
+//                                    //  the object dictionary"
+//   host::sdo_write(bus, 5, {0x6040, 0}, bytes, 500ms);  // result<void, sdo_error>
 //
-//   // one-shot forms
-//   std::array<std::uint8_t, 64> buf;
-//   auto n = host::sdo_read(bus, 5, {0x1018, 1}, buf, std::chrono::milliseconds(500));
+//   host::sdo_session node5(bus, 5);                      // several transfers, options, one
+//   auto w = node5.read({0x1008, 0});                      // buffer: result<span, sdo_error>
 //
 // The session owns the buffer of its uploads (sdo_options::max_size bytes); frames that are not
 // its SDO responses are ignored while it waits (a busy bus is fine), error frames are ignored
@@ -43,13 +41,18 @@ struct sdo_options {
   std::size_t max_size = 1U << 20U; ///< largest value an upload takes (bytes)
 };
 
-/// Why a blocking transfer failed.
+/// Why a blocking transfer failed: an error with context (docs/contributing.md, "Errors").
 struct sdo_error {
-  /// The machine's error: {errc, abort code, address}. errc::aborted: the server aborted with
-  /// `abort`; otherwise the client found the problem (and sent `abort`) or the bus failed.
-  canopen::sdo::transfer_error transfer{};
-  bool bus_failed = false; ///< the bus failed (bus-off, read/write error): see `what`
-  std::string what;        ///< one line naming node, object, abort code and its text
+  /// aborted: the server aborted with `abort`; bad_state with bus_failed: the bus failed (see
+  /// `what`); otherwise the client found the problem (timeout, bad_toggle, buffer_too_small, …)
+  /// and sent `abort`; invalid_argument: the transfer could not start (node-ID not 1..127).
+  errc code = errc::aborted;
+  canopen::sdo::abort_code abort = canopen::sdo::abort_code::none;
+  od::address address{};
+  bool bus_failed = false;
+  std::string what; ///< one line naming node, object, abort code and its text
+  sdo_error() = default;
+  sdo_error(errc e) : code(e) {} // NOLINT: plain errors propagate into it
 };
 
 /// "1018h:01".
@@ -77,24 +80,25 @@ public:
       : bus_(&bus), node_(node), options_(o),
         client_(node, static_cast<std::uint32_t>(o.timeout.count())) {}
 
-  /// Read `a`. The bytes stay valid until the next call. Errors: the errc of last_error()
-  /// (aborted, timeout, buffer_too_small, bad_toggle, …; invalid_argument for a node-ID
-  /// outside 1..127; bad_state when the bus failed).
-  result<std::span<const std::uint8_t>> read(od::address a) {
+  /// Read `a`. The bytes stay valid until the next call. Errors (sdo_error::code): aborted,
+  /// timeout, buffer_too_small, bad_toggle, unexpected_frame, …; invalid_argument for a
+  /// node-ID outside 1..127; bad_state when the bus failed. last_error() keeps the same.
+  result<std::span<const std::uint8_t>, sdo_error> read(od::address a) {
     buffer_.resize(options_.max_size);
     const std::uint32_t t0 = now();
     auto s = options_.block ? client_.block_upload(a, buffer_, t0, options_.block_options)
                             : client_.upload(a, buffer_, t0);
-    if (auto st = run(a, s); !st) return st.error();
+    if (!run(a, s)) return error_;
     return client_.received();
   }
 
   /// Write `data` to `a`. Errors: as read.
-  status write(od::address a, std::span<const std::uint8_t> data) {
+  result<void, sdo_error> write(od::address a, std::span<const std::uint8_t> data) {
     const std::uint32_t t0 = now();
     auto s = options_.block ? client_.block_download(a, data, t0, options_.block_options)
                             : client_.download(a, data, t0);
-    return run(a, s);
+    if (!run(a, s)) return error_;
+    return {};
   }
 
   [[nodiscard]] const sdo_error &last_error() const noexcept { return error_; }
@@ -108,19 +112,20 @@ private:
                                           .count());
   }
 
-  status send_all(const canopen::sdo::step &s) {
+  bool send_all(const canopen::sdo::step &s) {
     for (const canopen::can_frame &f : s.send) {
-      if (auto r = bus_->send(f); !r) return r;
+      if (!bus_->send(f)) return false;
     }
-    return {};
+    return true;
   }
 
-  status run(od::address a, const result<canopen::sdo::step> &started) {
+  /// Runs the transfer; false when it failed (error_ says why).
+  bool run(od::address a, const result<canopen::sdo::step> &started) {
     error_ = {};
     if (!started) return fail_local(a, started.error(), "cannot start the transfer");
     canopen::sdo::step s = started.value();
     for (;;) {
-      if (auto r = send_all(s); !r) return fail_bus(a);
+      if (!send_all(s)) return fail_bus(a);
       if (!client_.busy()) break;
       const std::uint32_t t = now();
       std::int64_t wait = options_.timeout.count();
@@ -145,9 +150,11 @@ private:
       (void)client_.cancel(); // nothing more can be sent or received
       return fail_bus(a);
     }
-    if (client_.state() == canopen::sdo::transfer_state::done) return {};
+    if (client_.state() == canopen::sdo::transfer_state::done) return true;
     const auto e = client_.error().value_or(canopen::sdo::transfer_error{});
-    error_.transfer = e;
+    error_.code = e.error;
+    error_.abort = e.abort;
+    error_.address = a;
     error_.what = prefix(a);
     if (e.error == errc::aborted) {
       error_.what += describe_abort(e.abort);
@@ -157,22 +164,24 @@ private:
         error_.what += " (sent " + describe_abort(e.abort) + ")";
       }
     }
-    return e.error;
+    return false;
   }
 
   std::string prefix(od::address a) const {
     return "node " + std::to_string(node_) + ", " + format_address(a) + ": ";
   }
-  errc fail_local(od::address a, errc e, std::string_view what) {
-    error_.transfer = {e, canopen::sdo::abort_code::none, a};
+  bool fail_local(od::address a, errc e, std::string_view what) {
+    error_.code = e;
+    error_.address = a;
     error_.what = prefix(a) + std::string(what) + ": " + std::string(to_string(e));
-    return e;
+    return false;
   }
-  errc fail_bus(od::address a) {
-    error_.transfer = {errc::bad_state, canopen::sdo::abort_code::none, a};
+  bool fail_bus(od::address a) {
+    error_.code = errc::bad_state;
+    error_.address = a;
     error_.bus_failed = true;
     error_.what = prefix(a) + bus_->last_error().what;
-    return errc::bad_state;
+    return false;
   }
 
   can_bus *bus_;
@@ -184,35 +193,27 @@ private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// Read `a` of `node` into `out`; returns the number of bytes. `why` (optional) receives the
-/// context of a failure. Errors: those of sdo_session::read; buffer_too_small (the value is
-/// larger than `out`).
-inline result<std::size_t> sdo_read(can_bus &bus, std::uint8_t node, od::address a,
-                                    std::span<std::uint8_t> out, std::chrono::milliseconds timeout,
-                                    sdo_error *why = nullptr) {
+/// Read `a` of `node`: its bytes, or why not (sdo_error: code, abort code, address, one line).
+/// Errors: those of sdo_session::read.
+inline result<std::vector<std::uint8_t>, sdo_error>
+sdo_read(can_bus &bus, std::uint8_t node, od::address a,
+         std::chrono::milliseconds timeout = std::chrono::milliseconds(1000)) {
   sdo_options o;
   o.timeout = timeout;
-  o.max_size = out.size();
   sdo_session s(bus, node, o);
   auto r = s.read(a);
-  if (!r) {
-    if (why != nullptr) *why = s.last_error();
-    return r.error();
-  }
-  for (std::size_t i = 0; i < r.value().size(); ++i) out[i] = r.value()[i];
-  return r.value().size();
+  if (!r) return r.error();
+  return std::vector<std::uint8_t>(r.value().begin(), r.value().end());
 }
 
 /// Write `data` to `a` of `node`. Errors: those of sdo_session::write.
-inline status sdo_write(can_bus &bus, std::uint8_t node, od::address a,
-                        std::span<const std::uint8_t> data, std::chrono::milliseconds timeout,
-                        sdo_error *why = nullptr) {
+inline result<void, sdo_error>
+sdo_write(can_bus &bus, std::uint8_t node, od::address a, std::span<const std::uint8_t> data,
+          std::chrono::milliseconds timeout = std::chrono::milliseconds(1000)) {
   sdo_options o;
   o.timeout = timeout;
   sdo_session s(bus, node, o);
-  auto r = s.write(a, data);
-  if (!r && why != nullptr) *why = s.last_error();
-  return r;
+  return s.write(a, data);
 }
 
 } // namespace fieldcodec::host
