@@ -92,7 +92,8 @@ exit status: 0, or 4 when some input could not be decoded, 3 unreadable file,
 5 unreadable dictionary.
 )";
 
-constexpr const char *monitor_help = R"(usage: fieldcodec monitor (--can IFACE | --slcan PORT) [OPTIONS]
+constexpr const char *monitor_help =
+    R"(usage: fieldcodec monitor (--can IFACE | --slcan PORT) [OPTIONS]
 
 Decodes the live traffic of an interface, as 'decode' does for a log, until
 interrupted (Ctrl-C), or after --count frames or --duration seconds.
@@ -104,7 +105,8 @@ options:
   --log FILE          also write the frames to FILE as a candump log
 )";
 
-constexpr const char *sdo_read_help = R"(usage: fieldcodec sdo read NODE INDEX[:SUB] (--can IFACE | --slcan PORT) [OPTIONS]
+constexpr const char *sdo_read_help =
+    R"(usage: fieldcodec sdo read NODE INDEX[:SUB] (--can IFACE | --slcan PORT) [OPTIONS]
 
 Reads one object of node NODE (1..127) with an SDO upload and prints it:
   1018h:01 Identity Object: Vendor Id = 0x0000012E
@@ -121,7 +123,8 @@ options:
   --json              print a JSON object
 )";
 
-constexpr const char *sdo_write_help = R"(usage: fieldcodec sdo write NODE INDEX[:SUB] VALUE (--can IFACE | --slcan PORT) [OPTIONS]
+constexpr const char *sdo_write_help =
+    R"(usage: fieldcodec sdo write NODE INDEX[:SUB] VALUE (--can IFACE | --slcan PORT) [OPTIONS]
 
 Writes VALUE to one object of node NODE with an SDO download. VALUE is read in the
 object's type: integers in decimal or 0x hex (in engineering units when the
@@ -142,7 +145,8 @@ Sends an NMT command to NODE (1..127) or to all nodes (NODE = all or 0).
 COMMAND: start, stop, pre-operational, reset-node, reset-communication.
 )";
 
-constexpr const char *dump_help = R"(usage: fieldcodec dump NODE --dict FILE (--can IFACE | --slcan PORT) [OPTIONS]
+constexpr const char *dump_help =
+    R"(usage: fieldcodec dump NODE --dict FILE (--can IFACE | --slcan PORT) [OPTIONS]
 
 Reads every readable object of the dictionary from node NODE and writes a DCF:
 the dictionary with the values found as ParameterValue. Objects the node refuses
@@ -157,7 +161,8 @@ options:
   --quiet             no progress line
 )";
 
-constexpr const char *pacontrol_send_help = R"(usage: fieldcodec pacontrol send PORT COMMAND [PARAMETER [DATE]] [OPTIONS]
+constexpr const char *pacontrol_send_help =
+    R"(usage: fieldcodec pacontrol send PORT COMMAND [PARAMETER [DATE]] [OPTIONS]
 
 Sends one command to a PA-CONTROL over its RS232 command interface and prints
 the acknowledgement. COMMAND is a name of the command table (cmd_get_int_reg) or
@@ -399,8 +404,8 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     print_lines(lines, json, c.out);
     for (const auto &l : lines) {
       problems = problems || l.function == "MALFORMED" || l.function == "NOISE" ||
-                 l.function == "TRUNCATED" || (l.problem && l.json.text().find("bad checksum") !=
-                                                               std::string::npos);
+                 l.function == "TRUNCATED" ||
+                 (l.problem && l.json.text().find("bad checksum") != std::string::npos);
     }
     return problems ? exit_input : exit_ok;
   }
@@ -440,10 +445,9 @@ extern "C" void on_interrupt(int) { interrupted = 1; }
 int cmd_monitor(const std::vector<std::string> &args, context c) {
   options o;
   std::string error;
-  if (!parse_options(args, 1,
-                     join({"--dict", "--device", "--count", "--duration", "--log"},
-                          transport_values),
-                     join({"--json", "--sdo-frames"}, transport_flags), o, error)) {
+  if (!parse_options(
+          args, 1, join({"--dict", "--device", "--count", "--duration", "--log"}, transport_values),
+          join({"--json", "--sdo-frames"}, transport_flags), o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -515,10 +519,9 @@ struct sdo_target {
 int sdo_common(const std::vector<std::string> &args, context &c, bool write, options &o,
                sdo_target &t, host::sdo_options &so) {
   std::string error;
-  if (!parse_options(args, 2,
-                     join({"--dict", "--type", "--timeout", "--switch-threshold"},
-                          transport_values),
-                     join({"--block", "--json"}, transport_flags), o, error)) {
+  if (!parse_options(
+          args, 2, join({"--dict", "--type", "--timeout", "--switch-threshold"}, transport_values),
+          join({"--block", "--json"}, transport_flags), o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -543,7 +546,8 @@ int sdo_common(const std::vector<std::string> &args, context &c, bool write, opt
   so.block = o.has("--block");
   if (o.given("--switch-threshold")) {
     std::uint64_t pst = 0;
-    if (!parse_uint(o.get("--switch-threshold"), 127, pst)) return c.usage("bad --switch-threshold");
+    if (!parse_uint(o.get("--switch-threshold"), 127, pst))
+      return c.usage("bad --switch-threshold");
     so.block_options.switch_threshold = static_cast<std::uint8_t>(pst);
   }
   if (o.given("--dict")) {
@@ -586,12 +590,12 @@ int cmd_sdo_read(const std::vector<std::string> &args, context c) {
     typed_desc.core.index = t.a.index;
     typed_desc.core.sub = t.a.sub;
     static const std::map<std::string, od::data_type> types = {
-        {"u8", od::data_type::unsigned8},   {"u16", od::data_type::unsigned16},
-        {"u32", od::data_type::unsigned32}, {"u64", od::data_type::unsigned64},
-        {"i8", od::data_type::integer8},    {"i16", od::data_type::integer16},
-        {"i32", od::data_type::integer32},  {"i64", od::data_type::integer64},
-        {"f32", od::data_type::real32},     {"f64", od::data_type::real64},
-        {"bool", od::data_type::boolean},   {"str", od::data_type::visible_string},
+        {"u8", od::data_type::unsigned8},    {"u16", od::data_type::unsigned16},
+        {"u32", od::data_type::unsigned32},  {"u64", od::data_type::unsigned64},
+        {"i8", od::data_type::integer8},     {"i16", od::data_type::integer16},
+        {"i32", od::data_type::integer32},   {"i64", od::data_type::integer64},
+        {"f32", od::data_type::real32},      {"f64", od::data_type::real64},
+        {"bool", od::data_type::boolean},    {"str", od::data_type::visible_string},
         {"hex", od::data_type::octet_string}};
     typed_desc.core.type = types.at(type);
     d = &typed_desc;
@@ -659,7 +663,8 @@ int cmd_nmt(const std::vector<std::string> &args, context c) {
                    "' (start, stop, pre-operational, reset-node, reset-communication)");
   }
   std::uint8_t node = 0;
-  if (!parse_node(o.positional[1], true, node)) return c.usage("bad node '" + o.positional[1] + "'");
+  if (!parse_node(o.positional[1], true, node))
+    return c.usage("bad node '" + o.positional[1] + "'");
   int code = exit_ok;
   auto bus = open_bus(o, c, code);
   if (!bus) return code;
@@ -685,7 +690,8 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
   }
   if (o.positional.size() != 1U) return c.usage("expected NODE");
   std::uint8_t node = 0;
-  if (!parse_node(o.positional[0], false, node)) return c.usage("bad node '" + o.positional[0] + "'");
+  if (!parse_node(o.positional[0], false, node))
+    return c.usage("bad node '" + o.positional[0] + "'");
   if (!o.given("--dict")) return c.usage("dump needs the node's dictionary (--dict FILE)");
   std::uint64_t timeout = 1000;
   if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
@@ -701,8 +707,7 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
   so.block = o.has("--block");
   host::sdo_session s(*bus, node, so);
   gen::dictionary model = dict->model();
-  const bool progress =
-      !o.has("--quiet") && (o.has("--progress") || ::isatty(STDERR_FILENO) != 0);
+  const bool progress = !o.has("--quiet") && (o.has("--progress") || ::isatty(STDERR_FILENO) != 0);
   std::size_t readable = 0;
   for (const auto &e : model.entries) readable += od::readable(e.access) ? e.count : 0U;
   std::size_t done = 0;
@@ -769,8 +774,7 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   namespace cmds = dictionaries::pacontrol_commands;
   options o;
   std::string error;
-  if (!parse_options(args, 2,
-                     {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout"},
+  if (!parse_options(args, 2, {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout"},
                      {"--rts-cts", "--json"}, o, error)) {
     return c.usage(error);
   }
@@ -823,7 +827,8 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
     }
     if (cmd == nullptr) {
       std::uint64_t code = 0;
-      if (parse_uint("0x" + name, 0xFFFF, code)) cmd = cmds::table.find(static_cast<std::uint16_t>(code));
+      if (parse_uint("0x" + name, 0xFFFF, code))
+        cmd = cmds::table.find(static_cast<std::uint16_t>(code));
     }
     if (cmd == nullptr) return c.usage("unknown PA-CONTROL command '" + name + "'");
     std::uint64_t par = 0;
@@ -841,8 +846,8 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
         if (!val) return c.usage("bad date '" + date + "'");
         r = pacontrol::make_request(*cmd, p, val.value());
       } else {
-        if (dec.value().places != 0U) return c.usage("the date of " + std::string(cmd->name) +
-                                                     " is an integer");
+        if (dec.value().places != 0U)
+          return c.usage("the date of " + std::string(cmd->name) + " is an integer");
         r = pacontrol::make_request(*cmd, p, dec.value().mantissa);
       }
     } else {
@@ -911,7 +916,8 @@ int run(const std::vector<std::string> &args, std::istream &in, std::ostream &ou
                            : std::string(pacontrol_send_help));
       return exit_ok;
     }
-    return c.usage(cmd == "sdo" ? "expected 'sdo read' or 'sdo write'" : "expected 'pacontrol send'");
+    return c.usage(cmd == "sdo" ? "expected 'sdo read' or 'sdo write'"
+                                : "expected 'pacontrol send'");
   }
   err << "fieldcodec: unknown command '" << cmd << "' (try 'fieldcodec --help')\n";
   return exit_usage;

@@ -71,8 +71,8 @@ std::string_view emcy_code_text(std::uint16_t c) {
 }
 
 std::string register_text(std::uint8_t r) {
-  static constexpr std::string_view bits[] = {"generic",     "current",        "voltage",
-                                              "temperature", "communication",  "device profile",
+  static constexpr std::string_view bits[] = {"generic",     "current",       "voltage",
+                                              "temperature", "communication", "device profile",
                                               "reserved",    "manufacturer"};
   std::string s;
   for (unsigned i = 0; i < 8U; ++i) {
@@ -111,8 +111,8 @@ std::string abort_text(sdo::abort_code c) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "%08Xh", static_cast<unsigned>(c));
   const std::string_view t = sdo::to_string(c);
-  return std::string(buf) + " " + (t.empty() ? std::string("(not a CiA 301 abort code)")
-                                             : std::string(t));
+  return std::string(buf) + " " +
+         (t.empty() ? std::string("(not a CiA 301 abort code)") : std::string(t));
 }
 
 /// A PDO's number 1..512 and direction from its communication or mapping parameter index.
@@ -167,12 +167,19 @@ std::string render_json(const decoded_line &l) {
 
 can_decoder::can_decoder(std::map<std::uint8_t, node_dictionary> dicts,
                          std::map<std::uint8_t, device_family> families, options o)
-    : dicts_(std::move(dicts)), families_(std::move(families)), options_(o) {}
+    : dicts_(std::move(dicts)), families_(std::move(families)), options_(o) {
+  std::vector<std::uint8_t> given;
+  for (const auto &[n, d] : dicts_) {
+    if (n != 0U) given.push_back(n);
+  }
+  for (const std::uint8_t n : given) (void)node(n); // their PDOs are known from the start
+}
 
 can_decoder::node_state &can_decoder::node(std::uint8_t n) {
   auto it = nodes_.find(n);
   if (it != nodes_.end()) return it->second;
   node_state &s = nodes_[n];
+  pdo_dirty_ = true;
   auto d = dicts_.find(n);
   if (d == dicts_.end()) {
     auto all = dicts_.find(0);
@@ -217,6 +224,7 @@ void can_decoder::apply_write(std::uint8_t n, od::address a, std::span<const std
   const auto p = pdo_param_of(a.index);
   if (!p || bytes.empty() || bytes.size() > 4U) return;
   node_state &s = node(n);
+  pdo_dirty_ = true;
   pdo_config &c = p->rpdo ? s.rpdo[p->n] : s.tpdo[p->n];
   const auto v = static_cast<std::uint32_t>(
       load_unsigned(bytes, static_cast<unsigned>(bytes.size()), byte_order::little).value_or(0));
@@ -256,7 +264,8 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
     l.problem = true;
     const auto e = host::decode_error(r).value();
     l.text = host::describe(e);
-    l.json.str("error", l.text).boolean("bus_off", e.is_bus_off())
+    l.json.str("error", l.text)
+        .boolean("bus_off", e.is_bus_off())
         .boolean("error_passive", e.is_error_passive());
     out.push_back(std::move(l));
     return;
@@ -338,8 +347,8 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
     const std::string cls(canopen::emcy::to_string(canopen::emcy::classify(m.error_code)));
     char code[8];
     std::snprintf(code, sizeof code, "%04Xh", static_cast<unsigned>(m.error_code));
-    const bool no_error = canopen::emcy::classify(m.error_code) ==
-                          canopen::emcy::error_class::no_error;
+    const bool no_error =
+        canopen::emcy::classify(m.error_code) == canopen::emcy::error_class::no_error;
     l.text = std::string(code) + " " +
              (what.empty() ? cls : (no_error ? what : what + " (" + cls + ")"));
     char reg[8];
@@ -387,8 +396,9 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
       // a node guarding response: toggle bit 7
       l.function = "GUARD";
       const std::uint8_t t = static_cast<std::uint8_t>(b >> 7U);
-      l.text = "guarding response: " + (st.empty() ? std::string("unknown state") : std::string(st)) +
-               ", toggle " + std::to_string(t);
+      l.text =
+          "guarding response: " + (st.empty() ? std::string("unknown state") : std::string(st)) +
+          ", toggle " + std::to_string(t);
       if (s.last_toggle != 2 && s.last_toggle == t) {
         l.text += " (toggle did not alternate)";
         l.problem = true;
@@ -416,7 +426,8 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
     } else {
       l.function = std::string(canopen::to_string(info.fn));
       l.node = info.node;
-      l.text = f.rtr ? "remote request" : (data.empty() ? std::string("(no data)") : hex_bytes(data));
+      l.text =
+          f.rtr ? "remote request" : (data.empty() ? std::string("(no data)") : hex_bytes(data));
       if (!f.rtr) l.text += " (mapping unknown)";
     }
     break;
@@ -426,22 +437,35 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
 
 bool can_decoder::on_pdo(const host::frame_record &r, decoded_line l,
                          std::vector<decoded_line> &out) {
-  // the PDO whose valid COB-ID is this identifier, of any node seen or configured
-  for (std::uint8_t n = 1; n <= 127; ++n) {
-    if (nodes_.find(n) == nodes_.end() && dicts_.find(n) == dicts_.end() && dicts_.find(0) == dicts_.end()) {
-      // nodes never seen: only their predefined PDO 1..4 can match, checked below
-      const auto info = canopen::classify(static_cast<std::uint16_t>(r.id)).value();
-      if (info.node != n) continue;
-    }
-    node_state &s = node(n);
-    for (int dir = 0; dir < 2; ++dir) {
-      auto &table = dir == 0 ? s.tpdo : s.rpdo;
-      for (std::size_t k = 0; k < table.size(); ++k) {
-        const pdo_config &c = table[k];
-        if ((c.cob_id & 0x80000000U) != 0U || (c.cob_id & 0x1FFFFFFFU) != r.id ||
-            (c.cob_id & 0x20000000U) != 0U) {
-          continue;
+  // the PDO whose valid COB-ID is this identifier, of any node seen or configured; a node
+  // not seen yet has the predefined PDO 1..4 (or those of the dictionary for every node)
+  if (r.extended || r.id > 0x7FFU) return false;
+  const auto info = canopen::classify(static_cast<std::uint16_t>(r.id)).value();
+  if (info.node != 0U) (void)node(info.node);
+  if (pdo_dirty_) {
+    pdo_index_.clear();
+    for (auto &[n, st] : nodes_) {
+      for (int dir = 0; dir < 2; ++dir) {
+        const auto &table = dir == 0 ? st.tpdo : st.rpdo;
+        for (std::size_t k = 0; k < table.size(); ++k) {
+          const std::uint32_t id = table[k].cob_id;
+          if ((id & 0xA0000000U) != 0U) continue; // not valid, or 29-bit
+          pdo_index_.emplace(id & 0x7FFU, pdo_ref{n, dir, k});
         }
+      }
+    }
+    pdo_dirty_ = false;
+  }
+  const auto found = pdo_index_.find(r.id);
+  if (found == pdo_index_.end()) return false;
+  {
+    {
+      const std::uint8_t n = found->second.node;
+      const int dir = found->second.dir;
+      const std::size_t k = found->second.k;
+      node_state &s = node(n);
+      {
+        const pdo_config &c = (dir == 0 ? s.tpdo : s.rpdo)[k];
         l.function = std::string(dir == 0 ? "TPDO" : "RPDO") + std::to_string(k + 1U);
         l.node = n;
         if (r.rtr) {
@@ -474,12 +498,13 @@ bool can_decoder::on_pdo(const host::frame_record &r, decoded_line l,
           offset += e.bits;
           if (e.index >= 1U && e.index <= 7U) continue; // dummy entry
           std::array<std::uint8_t, 8> bytes{};
-          for (std::size_t b = 0; b < 8U; ++b) bytes[b] = static_cast<std::uint8_t>(raw >> (8U * b));
+          for (std::size_t b = 0; b < 8U; ++b)
+            bytes[b] = static_cast<std::uint8_t>(raw >> (8U * b));
           const od::address a{e.index, e.sub};
           const object_desc *d = desc(n, a);
           const std::size_t nbytes = (e.bits + 7U) / 8U;
-          auto v = format_value(d, a, std::span<const std::uint8_t>(bytes.data(), nbytes),
-                                s.family, s.values);
+          auto v = format_value(d, a, std::span<const std::uint8_t>(bytes.data(), nbytes), s.family,
+                                s.values);
           if (!text.empty()) text += ", ";
           text += (d != nullptr ? d->name : address_text(a)) + " = " + v.text;
           json_object item;
@@ -558,8 +583,8 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
   auto m = sdo::decode(p, to_server ? sdo::direction::to_server : sdo::direction::to_client);
   if (!m) {
     l.problem = true;
-    l.text = std::string(side) + ": unknown command specifier " + hex(p[0], 2) + ": " +
-             hex_bytes(data);
+    l.text =
+        std::string(side) + ": unknown command specifier " + hex(p[0], 2) + ": " + hex_bytes(data);
     l.json.str("error", to_string(m.error()));
     out.push_back(std::move(l));
     if (t.k != sdo_track::kind::none) t.problem += "unknown command specifier";
@@ -658,9 +683,7 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
     }
     if (!t.last_sent) return;
     break;
-  case sdo::message_type::initiate_upload_request:
-    start(K::upload);
-    return;
+  case sdo::message_type::initiate_upload_request: start(K::upload); return;
   case sdo::message_type::initiate_upload_response:
     if ((t.k != K::upload && t.k != K::block_upload) || t.a != msg.address) {
       return unexpected("upload response");
@@ -746,8 +769,8 @@ void can_decoder::sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool a
   const bool write = t.k == K::download || t.k == K::block_download;
   const bool block = t.k == K::block_download || t.k == K::block_upload;
   const object_desc *d = desc(n, t.a);
-  std::string head = t.k == K::none ? std::string("transfer of ")
-                                    : std::string(write ? "write " : "read ");
+  std::string head =
+      t.k == K::none ? std::string("transfer of ") : std::string(write ? "write " : "read ");
   head += address_text(t.a);
   if (d != nullptr) head += " " + d->name;
   json_object j;

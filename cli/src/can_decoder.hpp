@@ -108,6 +108,15 @@ private:
   std::map<std::uint8_t, device_family> families_;
   options options_;
   std::map<std::uint8_t, node_state> nodes_;
+  /// Valid PDO COB-IDs → node, direction (0 TPDO, 1 RPDO), number; rebuilt when a node appears
+  /// or a PDO parameter is written.
+  struct pdo_ref {
+    std::uint8_t node;
+    int dir;
+    std::size_t k;
+  };
+  std::map<std::uint32_t, pdo_ref> pdo_index_;
+  bool pdo_dirty_ = true;
   std::map<std::uint8_t, sdo_track> sdo_;
 };
 

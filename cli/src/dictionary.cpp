@@ -18,8 +18,8 @@ std::string_view to_string(device_family f) {
 }
 
 bool parse_family(std::string_view s, device_family &out) {
-  for (auto f : {device_family::generic, device_family::ds402, device_family::xenax,
-                 device_family::dpq}) {
+  for (auto f :
+       {device_family::generic, device_family::ds402, device_family::xenax, device_family::dpq}) {
     if (s == to_string(f)) {
       out = f;
       return true;
@@ -33,15 +33,15 @@ namespace {
 // in mA; 2009h and 200Ah in mN; 2007h in µs; 6068h in ms; positions in encoder increments,
 // speeds in inc/s, accelerations in inc/s².
 constexpr unit_rule xenax_rules[] = {
-    {0x6073, -1, "mA", {10, 0}},     {0x5003, 0x0C, "mA", {10, 0}}, {0x5003, 0x13, "mA", {10, 0}},
-    {0x2005, -1, "mA", {1, 0}},      {0x6078, -1, "mA", {1, 0}},    {0x2009, -1, "mN", {1, 0}},
-    {0x200A, -1, "mN", {1, 0}},      {0x2007, -1, "µs", {1, 0}},    {0x6068, -1, "ms", {1, 0}},
-    {0x6062, -1, "inc", {1, 0}},     {0x6063, -1, "inc", {1, 0}},   {0x6064, -1, "inc", {1, 0}},
-    {0x6065, -1, "inc", {1, 0}},     {0x6067, -1, "inc", {1, 0}},   {0x607A, -1, "inc", {1, 0}},
-    {0x607C, -1, "inc", {1, 0}},     {0x607D, -1, "inc", {1, 0}},   {0x60F4, -1, "inc", {1, 0}},
-    {0x606C, -1, "inc/s", {1, 0}},   {0x6081, -1, "inc/s", {1, 0}}, {0x60FF, -1, "inc/s", {1, 0}},
-    {0x60B1, -1, "inc/s", {1, 0}},   {0x6099, -1, "inc/s", {1, 0}}, {0x6083, -1, "inc/s²", {1, 0}},
-    {0x6084, -1, "inc/s²", {1, 0}},  {0x6085, -1, "inc/s²", {1, 0}}, {0x609A, -1, "inc/s²", {1, 0}},
+    {0x6073, -1, "mA", {10, 0}},    {0x5003, 0x0C, "mA", {10, 0}},  {0x5003, 0x13, "mA", {10, 0}},
+    {0x2005, -1, "mA", {1, 0}},     {0x6078, -1, "mA", {1, 0}},     {0x2009, -1, "mN", {1, 0}},
+    {0x200A, -1, "mN", {1, 0}},     {0x2007, -1, "µs", {1, 0}},     {0x6068, -1, "ms", {1, 0}},
+    {0x6062, -1, "inc", {1, 0}},    {0x6063, -1, "inc", {1, 0}},    {0x6064, -1, "inc", {1, 0}},
+    {0x6065, -1, "inc", {1, 0}},    {0x6067, -1, "inc", {1, 0}},    {0x607A, -1, "inc", {1, 0}},
+    {0x607C, -1, "inc", {1, 0}},    {0x607D, -1, "inc", {1, 0}},    {0x60F4, -1, "inc", {1, 0}},
+    {0x606C, -1, "inc/s", {1, 0}},  {0x6081, -1, "inc/s", {1, 0}},  {0x60FF, -1, "inc/s", {1, 0}},
+    {0x60B1, -1, "inc/s", {1, 0}},  {0x6099, -1, "inc/s", {1, 0}},  {0x6083, -1, "inc/s²", {1, 0}},
+    {0x6084, -1, "inc/s²", {1, 0}}, {0x6085, -1, "inc/s²", {1, 0}}, {0x609A, -1, "inc/s²", {1, 0}},
 };
 
 bool has_key_value(const gen::key_list &keys, std::string_view key, std::string_view needle) {

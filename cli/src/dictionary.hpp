@@ -31,9 +31,9 @@ enum class device_family : std::uint8_t {
 
 /// One sub-object as the decoder uses it.
 struct object_desc {
-  od::entry core{};       ///< index, sub, object code, type, access, PDO mapping, size
-  std::string name;       ///< "Identity Object: Vendor Id" for a sub-object of a record
-  std::string unit;       ///< engineering unit ("bar", "mA", "inc"), empty when none
+  od::entry core{}; ///< index, sub, object code, type, access, PDO mapping, size
+  std::string name; ///< "Identity Object: Vendor Id" for a sub-object of a record
+  std::string unit; ///< engineering unit ("bar", "mA", "inc"), empty when none
   std::optional<scaling::linear> scale; ///< EU = raw / scale + offset (DPQ)
   /// A unit factor the device manual gives (XENAX 6073h: 10 mA per raw step): EU = raw × factor
   std::optional<decimal> factor;

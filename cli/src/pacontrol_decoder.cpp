@@ -67,8 +67,8 @@ std::string check_text(const frame_parts &p, bool request, bool ok) {
   const unsigned with_etx = ser::compute_check(body, ser::check_rule::body_and_etx);
   if (p.check == "0") return "check 0 (not checked)";
   if (ok) {
-    const bool manual_rule = request ? std::to_string(plain) == p.check
-                                     : std::to_string(with_etx) == p.check;
+    const bool manual_rule =
+        request ? std::to_string(plain) == p.check : std::to_string(with_etx) == p.check;
     return "check " + p.check + " ok" +
            (manual_rule ? std::string() : std::string(" (the other rule)"));
   }

@@ -20,8 +20,7 @@ namespace fieldcodec::cli {
 namespace {
 
 bool is_drive(device_family f) {
-  return f == device_family::ds402 || f == device_family::xenax ||
-         f == device_family::generic;
+  return f == device_family::ds402 || f == device_family::xenax || f == device_family::generic;
 }
 
 /// Integer types shown in hex: identifiers and bit fields of the communication area.
@@ -155,8 +154,8 @@ formatted_value format_value(const object_desc *d, od::address a,
         v.text += " (raw " + std::to_string(raw) + ")";
         v.json.dec("value", eu.value()).num("raw", raw);
       } else {
-        v.text = std::to_string(raw) + " (raw, scaling failed: " +
-                 std::string(to_string(eu.error())) + ")";
+        v.text = std::to_string(raw) +
+                 " (raw, scaling failed: " + std::string(to_string(eu.error())) + ")";
         v.json.num("raw", raw);
       }
     } else if (d->factor) {
@@ -166,8 +165,8 @@ formatted_value format_value(const object_desc *d, od::address a,
     } else if (shows_hex(e)) {
       v.text = hex(uraw, static_cast<int>(2U * width));
       v.json.unum("value", uraw);
-      const bool mapping = (e.index >= 0x1600U && e.index <= 0x17FFU) ||
-                           (e.index >= 0x1A00U && e.index <= 0x1BFFU);
+      const bool mapping =
+          (e.index >= 0x1600U && e.index <= 0x17FFU) || (e.index >= 0x1A00U && e.index <= 0x1BFFU);
       if (mapping && e.sub >= 1U && e.type == od::data_type::unsigned32 && uraw != 0U) {
         const od::address m{static_cast<std::uint16_t>(uraw >> 16U),
                             static_cast<std::uint8_t>(uraw >> 8U)};
@@ -204,11 +203,11 @@ parsed_value parse_value(const object_desc *d, std::string_view type_hint, std::
       od::data_type type;
     };
     static constexpr hint hints[] = {
-        {"u8", od::data_type::unsigned8},   {"u16", od::data_type::unsigned16},
-        {"u32", od::data_type::unsigned32}, {"u64", od::data_type::unsigned64},
-        {"i8", od::data_type::integer8},    {"i16", od::data_type::integer16},
-        {"i32", od::data_type::integer32},  {"i64", od::data_type::integer64},
-        {"f32", od::data_type::real32},     {"f64", od::data_type::real64},
+        {"u8", od::data_type::unsigned8},       {"u16", od::data_type::unsigned16},
+        {"u32", od::data_type::unsigned32},     {"u64", od::data_type::unsigned64},
+        {"i8", od::data_type::integer8},        {"i16", od::data_type::integer16},
+        {"i32", od::data_type::integer32},      {"i64", od::data_type::integer64},
+        {"f32", od::data_type::real32},         {"f64", od::data_type::real64},
         {"str", od::data_type::visible_string}, {"hex", od::data_type::octet_string},
         {"bool", od::data_type::boolean}};
     bool found = false;
@@ -270,8 +269,8 @@ parsed_value parse_value(const object_desc *d, std::string_view type_hint, std::
   } else {
     auto dec = parse_decimal(text);
     if (!dec) {
-      out.error = "not a number: '" + std::string(text) + "' (" +
-                  std::string(to_string(dec.error())) + ")";
+      out.error =
+          "not a number: '" + std::string(text) + "' (" + std::string(to_string(dec.error())) + ")";
       return out;
     }
     if (d != nullptr && d->scale && od::is_integer(e.type)) {

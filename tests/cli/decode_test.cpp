@@ -30,10 +30,12 @@ using fieldcodec::to_bytes;
 
 namespace {
 
-constexpr auto xenax_layout = sdo::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
-    fieldcodec::dictionaries::xenax_canopen::dictionary);
-constexpr auto dpq_layout = sdo::make_layout<fieldcodec::dictionaries::dpq_parameters::entries.size()>(
-    fieldcodec::dictionaries::dpq_parameters::dictionary);
+constexpr auto xenax_layout =
+    sdo::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
+        fieldcodec::dictionaries::xenax_canopen::dictionary);
+constexpr auto dpq_layout =
+    sdo::make_layout<fieldcodec::dictionaries::dpq_parameters::entries.size()>(
+        fieldcodec::dictionaries::dpq_parameters::dictionary);
 
 template <class T>
 std::vector<std::uint8_t> le(T v) {
@@ -43,9 +45,8 @@ std::vector<std::uint8_t> le(T v) {
 
 /// A XENAX node 5 behind an SDO server, and a client talking to it; every frame logged.
 struct xenax_bus {
-  std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(
-          fieldcodec::dictionaries::xenax_canopen::dictionary));
+  std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(
+      sdo::dictionary_store<>::storage_size(fieldcodec::dictionaries::xenax_canopen::dictionary));
   std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(1024);
   sdo::dictionary_store<> store{fieldcodec::dictionaries::xenax_canopen::dictionary, xenax_layout,
                                 storage, staging};
@@ -135,21 +136,21 @@ TEST_CASE("decode: NMT, SYNC, TIME, EMCY, heartbeat, guarding, errors, malformed
 TEST_CASE("decode: SDO transfers of a XENAX drive with its EDS, PDOs, CiA 402") {
   xenax_bus bus;
   bus.log.line("# XENAX node 5, SDO client and server of fieldcodec");
-  bus.read({0x1018, 1});            // expedited upload
-  bus.read({0x1008, 0});            // segmented upload
-  bus.block_read({0x1008, 0});      // block upload
-  bus.write({0x6060, 0}, {0x01});   // modes of operation: profile position
+  bus.read({0x1018, 1});                             // expedited upload
+  bus.read({0x1008, 0});                             // segmented upload
+  bus.block_read({0x1008, 0});                       // block upload
+  bus.write({0x6060, 0}, {0x01});                    // modes of operation: profile position
   bus.write({0x6040, 0}, le<std::uint16_t>(0x0006)); // shutdown
   bus.write({0x6040, 0}, le<std::uint16_t>(0x0007)); // switch on
   bus.write({0x6040, 0}, le<std::uint16_t>(0x000F)); // enable operation
   (void)bus.store.set({0x6041, 0}, le<std::uint16_t>(0x0637));
-  bus.read({0x6041, 0});                                // operation enabled
-  bus.write({0x6073, 0}, le<std::uint16_t>(150));       // 1.5 A in 10 mA steps
-  bus.write({0x607A, 0}, le<std::int32_t>(-20000));     // target position, increments
+  bus.read({0x6041, 0});                            // operation enabled
+  bus.write({0x6073, 0}, le<std::uint16_t>(150));   // 1.5 A in 10 mA steps
+  bus.write({0x607A, 0}, le<std::int32_t>(-20000)); // target position, increments
   bus.block_write({0x607A, 0}, le<std::int32_t>(20000));
-  bus.read({0x1234, 0});                               // no such object: abort
-  bus.write({0x1018, 1}, le<std::uint32_t>(1));        // read-only: abort
-  bus.write({0x6081, 0}, le<std::uint32_t>(1));        // below the low limit (10): abort
+  bus.read({0x1234, 0});                        // no such object: abort
+  bus.write({0x1018, 1}, le<std::uint32_t>(1)); // read-only: abort
+  bus.write({0x6081, 0}, le<std::uint32_t>(1)); // below the low limit (10): abort
   // TPDO2 mapped by the log's own SDO writes: statusword + position actual value
   bus.write({0x1A01, 0}, {0x00});
   bus.write({0x1A01, 1}, le<std::uint32_t>(0x60410010));
@@ -212,8 +213,8 @@ TEST_CASE("decode: DPQ parameters in engineering units, DPQ EMCY codes") {
   t::exchange(log, client, server, client.upload({0x2C69, 0}, rx, 0));
   log.add(co::emcy::encode(
       3, {static_cast<std::uint16_t>(fieldcodec::dpq::emcy_code::pressure_monitor), 0x81, {}}));
-  log.add(co::emcy::encode(3, {static_cast<std::uint16_t>(fieldcodec::dpq::emcy_code::no_error),
-                               0x00, {}}));
+  log.add(co::emcy::encode(
+      3, {static_cast<std::uint16_t>(fieldcodec::dpq::emcy_code::no_error), 0x00, {}}));
   // Analog Vel Max in mm/s: raw 16383 at 327.67 raw per mm/s
   const auto vmax = le<std::uint32_t>(16383);
   t::exchange(log, client, server, client.download({0x2C69, 0}, vmax, 0));
@@ -260,11 +261,18 @@ TEST_CASE("decode: PA-CONTROL captures, raw and hex") {
                                  pa::serial::check_rule::body, pa::serial::check_mode::unchecked),
       b);
   // a wrong check, noise, a frame cut short by the next, and a capture that ends in a frame
-  capture += std::string("\x01\x02" "1906;12;0;0\x03" "99\x04", 17);
+  capture += std::string("\x01\x02"
+                         "1906;12;0;0\x03"
+                         "99\x04",
+                         17);
   capture += "xyz";
-  capture += std::string("\x01\x02" "1906;1", 8);
+  capture += std::string("\x01\x02"
+                         "1906;1",
+                         8);
   put(pa::serial::encode_request(pa::make_request(cmds::cmd_get_int_reg, 1).value(), b), b);
-  capture += std::string("\x01\x02" "0;1;31", 8);
+  capture += std::string("\x01\x02"
+                         "0;1;31",
+                         8);
   t::check_golden("pacontrol.bin", capture);
   auto r = t::run_cli({"decode", "--pacontrol"}, capture);
   CHECK(r.code == 4);

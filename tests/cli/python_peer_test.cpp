@@ -76,8 +76,8 @@ public:
     env.push_back(const_cast<char *>(pp.c_str()));
     for (char **e = environ; *e != nullptr; ++e) env.push_back(*e);
     env.push_back(nullptr);
-    const char *argv[] = {"/usr/bin/python3", "cli/canopen_peer.py", port.c_str(), eds.c_str(), "5",
-                          nullptr};
+    const char *argv[] = {
+        "/usr/bin/python3", "cli/canopen_peer.py", port.c_str(), eds.c_str(), "5", nullptr};
     if (::posix_spawn(&pid_, "/usr/bin/python3", &fa, nullptr, const_cast<char **>(argv),
                       env.data()) != 0) {
       pid_ = -1;

@@ -92,7 +92,8 @@ TEST_CASE("cli: sdo read and write over slcan") {
   CHECK(r.code == 2);
   r = t::run_cli({"sdo", "read", "5", "2999:0", "--slcan", port, "--dict", xenax_eds});
   CHECK(r.code == 1);
-  CHECK(r.err == "fieldcodec: sdo read: node 5, 2999h:00: not in ../dictionaries/xenax_canopen.eds\n");
+  CHECK(r.err ==
+        "fieldcodec: sdo read: node 5, 2999h:00: not in ../dictionaries/xenax_canopen.eds\n");
   // the port cannot be opened: exit 3
   r = t::run_cli({"sdo", "read", "5", "1018:1", "--slcan", "/nonexistent/tty"});
   CHECK(r.code == 3);
@@ -127,8 +128,8 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
     node.inject(co::nmt::encode_heartbeat(5, co::nmt::state::operational).value());
     node.inject(co::make_frame(0x185, {0x37, 0x06}).value());
   });
-  r = t::run_cli({"monitor", "--slcan", port, "--dict", xenax_eds, "--count", "2",
-                  "--duration", "10"});
+  r = t::run_cli(
+      {"monitor", "--slcan", port, "--dict", xenax_eds, "--count", "2", "--duration", "10"});
   feeder.join();
   CHECK(r.code == 0);
   CHECK(r.err == "");
@@ -157,7 +158,7 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
   // the DCF reads back with the generator's reader, through decode --dict
   t::write_text("cli_dump_test.dcf", r.out);
   const auto d = t::run_cli({"decode", "--dict", "5=cli_dump_test.dcf"}, "605#4000100000000000\n"
-                                                                           "585#4300100092010200\n");
+                                                                         "585#4300100092010200\n");
   CHECK(d.code == 0);
   CHECK(d.out == "585 SDO       node 5: read 1000h:00 Device Type = 0x00020192\n");
   std::remove("cli_dump_test.dcf");
@@ -203,17 +204,16 @@ TEST_CASE("cli: pacontrol send over a serial line") {
 }
 
 TEST_CASE("cli: --help for every command, usage errors") {
-  for (const auto &args : std::vector<std::vector<std::string>>{
-           {"--help"},
-           {"decode", "--help"},
-           {"monitor", "--help"},
-           {"sdo", "read", "--help"},
-           {"sdo", "write", "--help"},
-           {"sdo", "--help"},
-           {"nmt", "--help"},
-           {"dump", "--help"},
-           {"pacontrol", "send", "--help"},
-           {"pacontrol", "--help"}}) {
+  for (const auto &args : std::vector<std::vector<std::string>>{{"--help"},
+                                                                {"decode", "--help"},
+                                                                {"monitor", "--help"},
+                                                                {"sdo", "read", "--help"},
+                                                                {"sdo", "write", "--help"},
+                                                                {"sdo", "--help"},
+                                                                {"nmt", "--help"},
+                                                                {"dump", "--help"},
+                                                                {"pacontrol", "send", "--help"},
+                                                                {"pacontrol", "--help"}}) {
     const auto r = t::run_cli(args);
     CAPTURE(args[0]);
     CHECK(r.code == 0);
