@@ -381,18 +381,18 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     return exit_ok;
   }
   if (o.positional.size() > 1U) return c.usage("one input file at most");
-  std::string input;
   const std::string file = o.positional.empty() ? "-" : o.positional[0];
-  if (file == "-") {
-    if (!read_stream(c.in, input)) return c.fail(exit_io, "cannot read standard input");
-  } else {
-    std::ifstream f(file, std::ios::binary);
-    if (!f) return c.fail(exit_io, file + ": cannot open");
-    if (!read_stream(f, input)) return c.fail(exit_io, file + ": cannot read");
+  std::ifstream in_file;
+  if (file != "-") {
+    in_file.open(file, std::ios::binary);
+    if (!in_file) return c.fail(exit_io, file + ": cannot open");
   }
+  std::istream &in = file == "-" ? c.in : in_file;
   const bool json = o.has("--json");
   bool problems = false;
   if (o.has("--pacontrol")) {
+    std::string input;
+    if (!read_stream(in, input)) return c.fail(exit_io, file + ": cannot read");
     std::vector<std::uint8_t> bytes;
     const bool hex = o.has("--hex") || (!o.has("--raw") && looks_like_hex(input));
     if (hex) {
@@ -417,8 +417,12 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
   can_decoder dec(std::move(dicts), std::move(families), {o.has("--sdo-frames")});
   std::vector<decoded_line> lines;
   std::size_t n = 0;
-  for (const std::string_view raw : split_lines(input)) {
+  // line by line, so that `candump -L can0 | fieldcodec decode` shows frames as they come
+  std::string line;
+  while (std::getline(in, line)) {
     ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string_view raw = line;
     if (host::candump::is_blank_or_comment(raw)) continue;
     auto r = host::candump::parse_line(raw);
     if (!r) {
@@ -428,8 +432,10 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
       dec.feed(r.value(), n, lines);
     }
     print_lines(lines, json, c.out);
+    if (file == "-") c.out.flush();
     lines.clear();
   }
+  if (in.bad()) return c.fail(exit_io, file + ": cannot read");
   dec.finish(lines);
   problems = problems || !lines.empty();
   print_lines(lines, json, c.out);
