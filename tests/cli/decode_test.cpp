@@ -181,6 +181,10 @@ TEST_CASE("decode: SDO transfers of a XENAX drive with its EDS, PDOs, CiA 402") 
   }
   const std::string eds = "../dictionaries/xenax_canopen.eds";
   decode_golden("xenax", bus.log.text, {"--dict", "5=" + eds});
+  // the same log read from its file
+  const auto from_file = t::run_cli({"decode", "cli/golden/xenax.log", "--dict", "5=" + eds});
+  CHECK(from_file.code == 0);
+  CHECK(from_file.out == t::read_text("cli/golden/xenax.txt"));
   // the same log without the dictionary: objects by address, values raw
   const auto bare = t::run_cli({"decode"}, bus.log.text);
   CHECK(bare.code == 0);
