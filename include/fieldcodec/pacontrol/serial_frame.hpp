@@ -118,16 +118,36 @@ struct text_writer {
     out[n++] = b;
     return {};
   }
-  /// Appends characters.
+  /// Appends characters. When they do not all fit, those that do are written, then
+  /// buffer_too_small (as one put() per character would).
   constexpr status put_text(std::span<const char> text) noexcept {
+    if (out.size() - n >= text.size()) { // one check for the whole text
+      for (const char c : text) out[n++] = static_cast<std::uint8_t>(c);
+      return {};
+    }
     for (const char c : text) FIELDCODEC_TRY_STATUS(put(c));
     return {};
   }
+  /// Appends `v` in decimal (as ascii::format_unsigned writes it).
   constexpr status put_unsigned(std::uint64_t v) noexcept {
-    char tmp[20]{};
-    auto len = ascii::format_unsigned(v, tmp);
-    if (!len) return len.error();
-    return put_text(std::span<const char>(tmp, len.value()));
+    char tmp[20]{}; // the digits, least significant first
+    std::size_t len = 0;
+    do {
+      tmp[len++] = static_cast<char>('0' + static_cast<int>(v % 10U));
+      v /= 10U;
+    } while (v != 0U);
+    if (out.size() - n < len) { // the digits that fit, then the error
+      for (std::size_t i = len; i-- > 0;) FIELDCODEC_TRY_STATUS(put(tmp[i]));
+    }
+    for (std::size_t i = len; i-- > 0;) out[n++] = static_cast<std::uint8_t>(tmp[i]);
+    return {};
+  }
+  /// Appends `v` as four upper-case hex digits (as ascii::format_hex(v, 4, …, true)).
+  constexpr status put_hex4(std::uint16_t v) noexcept {
+    constexpr char digits[] = "0123456789ABCDEF";
+    const std::array<char, 4> text{digits[(v >> 12U) & 0xFU], digits[(v >> 8U) & 0xFU],
+                                   digits[(v >> 4U) & 0xFU], digits[v & 0xFU]};
+    return put_text(text);
   }
   constexpr status put_value(const value &v) noexcept {
     char tmp[48]{};
@@ -166,10 +186,7 @@ encode_request(const request &r, std::span<std::uint8_t> out, check_rule rule = 
                check_mode mode = check_mode::computed) noexcept {
   FIELDCODEC_TRY_STATUS(validate(r.date));
   return detail::write_frame(out, rule, mode, [&](detail::text_writer &w) -> status {
-    char cmd[4]{};
-    auto n = ascii::format_hex(r.code, 4, cmd, true);
-    if (!n) return n.error();
-    FIELDCODEC_TRY_STATUS(w.put_text(cmd));
+    FIELDCODEC_TRY_STATUS(w.put_hex4(r.code));
     FIELDCODEC_TRY_STATUS(w.put(separator));
     FIELDCODEC_TRY_STATUS(w.put_unsigned(r.parameter));
     FIELDCODEC_TRY_STATUS(w.put(separator));
