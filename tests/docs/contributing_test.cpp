@@ -16,8 +16,7 @@ namespace doc_contributing {
 using namespace fieldcodec;
 
 // Parses `text`, then writes `code` and the number's places: the block's two lines.
-constexpr result<decimal> parse_and_tag(std::string_view text, std::uint8_t code,
-                                        byte_writer &w) {
+constexpr result<decimal> parse_and_tag(std::string_view text, std::uint8_t code, byte_writer &w) {
   // clang-format off
   FIELDCODEC_TRY(const decimal d, parse_decimal(text)); // returns the error, or declares d
   FIELDCODEC_TRY_STATUS(w.write_u8(code));              // returns the error, or goes on
@@ -30,8 +29,7 @@ constexpr bool parses_and_writes() {
   std::array<std::uint8_t, 2> buf{};
   byte_writer w(buf);
   const auto r = parse_and_tag("12.50", 0x2A, w);
-  return r && r.value().mantissa == 1250 && r.value().places == 2 && buf[0] == 0x2A &&
-         buf[1] == 2;
+  return r && r.value().mantissa == 1250 && r.value().places == 2 && buf[0] == 0x2A && buf[1] == 2;
 }
 static_assert(parses_and_writes());
 

@@ -1,11 +1,11 @@
 // The C++ blocks of README.md, as written there, and the results their comments state.
 // tests/docs_check/run.cmake fails when a block of the page and its copy here differ.
-#include <fieldcodec/core/bcd.hpp>
-#include <fieldcodec/core/result_exception.hpp>
-#include <fieldcodec/core/scaling.hpp>
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <fieldcodec/core/bcd.hpp>
+#include <fieldcodec/core/result_exception.hpp>
+#include <fieldcodec/core/scaling.hpp>
 
 #include <doctest/doctest.h>
 
