@@ -249,6 +249,22 @@ constexpr status split(std::string_view body, std::array<std::string_view, N> &f
 /// An unsigned decimal field of at most `max`. Errors: bad_syntax (empty), bad_sign
 /// (leading '-'), bad_digit, overflow (> max).
 constexpr result<std::uint64_t> parse_count(std::string_view f, std::uint64_t max) noexcept {
+  if (!f.empty() && f.size() <= 4U) { // 1..4 digits cannot overflow: no check per digit
+    std::uint64_t v = 0;
+    bool digits = true;
+    for (const char c : f) {
+      const unsigned d = static_cast<unsigned char>(c) - unsigned{'0'};
+      if (d > 9U) {
+        digits = false;
+        break;
+      }
+      v = v * 10U + d;
+    }
+    if (digits) {
+      if (v > max) return errc::overflow;
+      return v;
+    }
+  }
   if (!f.empty() && f.front() == '-') return errc::bad_sign;
   auto v = ascii::parse_unsigned(f);
   if (!v) return v.error();
@@ -267,6 +283,29 @@ constexpr result<bool> parse_flag(std::string_view f) noexcept {
 /// The date, real when `real` (TYP 1). Errors: bad_syntax, bad_digit, overflow (integer
 /// outside int32), type_mismatch (a fraction in an integer date).
 constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
+  if (!real) {
+    // The usual integer date: an optional '-' and 1..10 digits with a value inside int32, which
+    // parse_decimal reads as that integer with no places. Anything else (more digits, a point,
+    // a bad character, a value beyond int32) takes the general path and its errors.
+    const std::size_t sign = !f.empty() && f.front() == '-' ? 1U : 0U;
+    if (f.size() > sign && f.size() - sign <= 10U) {
+      std::int64_t v = 0;
+      bool digits = true;
+      for (std::size_t i = sign; i < f.size(); ++i) {
+        const unsigned d = static_cast<unsigned char>(f[i]) - unsigned{'0'};
+        if (d > 9U) {
+          digits = false;
+          break;
+        }
+        v = v * 10 + static_cast<std::int64_t>(d);
+      }
+      if (sign != 0U) v = -v;
+      if (digits && v >= std::numeric_limits<std::int32_t>::min() &&
+          v <= std::numeric_limits<std::int32_t>::max()) {
+        return value{od::command_value::integer, decimal{v, 0}};
+      }
+    }
+  }
   auto d = parse_decimal(f);
   if (!d) return d.error();
   if (real) return value{od::command_value::real, d.value()};
@@ -280,9 +319,19 @@ constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
 /// Errors: bad_length (not 4 fields, CMD not 4 characters), bad_syntax (empty field),
 /// bad_digit (lower-case or non-hex CMD, letters in decimal fields), bad_sign, overflow,
 /// out_of_range (TYP not 0/1), type_mismatch (a fraction with TYP 0).
+[[nodiscard]] constexpr result<request>
+parse_request_fields(const std::array<std::string_view, request_fields> &f) noexcept;
+
 [[nodiscard]] constexpr result<request> parse_request_body(std::string_view body) noexcept {
   std::array<std::string_view, request_fields> f{};
   FIELDCODEC_TRY_STATUS(detail::split(body, f));
+  return parse_request_fields(f);
+}
+
+/// The same from the four fields of a body already split at ';' (the decoder splits while the
+/// bytes arrive).
+[[nodiscard]] constexpr result<request>
+parse_request_fields(const std::array<std::string_view, request_fields> &f) noexcept {
   if (f[0].size() != 4U) return f[0].empty() ? errc::bad_syntax : errc::bad_length;
   auto cmd = ascii::parse_hex(f[0], ascii::hex_case::upper);
   if (!cmd) return cmd.error();
@@ -298,10 +347,19 @@ constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
 
 /// Parses the body of an acknowledgement ("0;0;31;0;1;1516.950").
 /// Errors: as parse_request_body (bad_length for not 6 fields; out_of_range for BE not 0/1).
+[[nodiscard]] constexpr result<acknowledgement> parse_acknowledgement_fields(
+    const std::array<std::string_view, acknowledgement_fields> &f) noexcept;
+
 [[nodiscard]] constexpr result<acknowledgement>
 parse_acknowledgement_body(std::string_view body) noexcept {
   std::array<std::string_view, acknowledgement_fields> f{};
   FIELDCODEC_TRY_STATUS(detail::split(body, f));
+  return parse_acknowledgement_fields(f);
+}
+
+/// The same from the six fields of a body already split at ';'.
+[[nodiscard]] constexpr result<acknowledgement> parse_acknowledgement_fields(
+    const std::array<std::string_view, acknowledgement_fields> &f) noexcept {
   constexpr auto max16 = std::numeric_limits<std::uint16_t>::max();
   auto quit = detail::parse_count(f[0], max16);
   if (!quit) return quit.error();
