@@ -328,7 +328,8 @@ inline constexpr std::array<std::array<std::uint8_t, 32>, 2> command_index = [] 
 [[nodiscard]] constexpr const command *command_for(direction d, std::uint8_t byte0) noexcept {
   const auto dir = static_cast<std::size_t>(d);
   if (dir > 1U) return nullptr;
-  const std::uint8_t i = command_index[dir][((byte0 >> 5U) << 2U) | (byte0 & 3U)];
+  const unsigned b = byte0;
+  const std::uint8_t i = command_index[dir][((b >> 5U) << 2U) | (b & 3U)];
   return i == no_command ? nullptr : &commands[i];
 }
 
