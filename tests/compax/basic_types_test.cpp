@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <string>
 #include <cstdint>
 
 namespace cx = fieldcodec::compax;
@@ -159,4 +160,27 @@ TEST_CASE("compax: visible strings") {
   CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
   buf[3] = 0x80;
   CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
+}
+
+// Issue 12: a drive may pad a string reply with NUL instead of spaces (docs/compax.md, "Visible
+// strings"). The text ends at the first NUL; only NUL and space may follow it.
+TEST_CASE("compax: visible strings padded with NUL") {
+  const auto text = [](std::span<const std::uint8_t> in) {
+    auto t = cx::decode_visible_string(in);
+    REQUIRE(t.has_value());
+    return std::string(t.value().begin(), t.value().end());
+  };
+  std::array<std::uint8_t, 12> buf{'P', '0', '0', '3', '=', '1', '.', '5'};
+  CHECK(text(buf) == "P003=1.5"); // NUL padding
+  buf[9] = ' ';
+  CHECK(text(buf) == "P003=1.5"); // NUL and space mixed after the text
+  buf[8] = ' ';
+  buf[9] = 0;
+  CHECK(text(buf) == "P003=1.5"); // spaces, then NUL
+  const std::array<std::uint8_t, 4> empty{};
+  CHECK(text(empty).empty());
+  buf[10] = 'X'; // a character after the NUL is not padding
+  CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
+  const std::array<std::uint8_t, 4> inner{'A', 0, 'B', 0};
+  CHECK(cx::decode_visible_string(inner).error() == errc::bad_character);
 }

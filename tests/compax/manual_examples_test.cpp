@@ -286,3 +286,18 @@ TEST_CASE("PCP request bad input") {
         errc::truncated);
   CHECK(cx::decode_pcp_request(wire).error() == errc::bad_length);
 }
+
+// Issue 12: the pad byte after odd-length data must be 0x00, like every other padding of the
+// module that a decoder checks.
+TEST_CASE("PCP request: non-zero pad byte after odd-length data") {
+  const std::array<std::uint8_t, 1> one{0x01};
+  auto r = cx::pcp_write(0x5FE9, 0, one);
+  REQUIRE(r.has_value());
+  std::array<std::uint8_t, 12> wire{};
+  REQUIRE(cx::encode_pcp_request(r.value(), wire).value() == 12);
+  CHECK(wire[10] == 0x01);
+  CHECK(wire[11] == 0x00);
+  CHECK(cx::decode_pcp_request(wire).value() == r.value());
+  wire[11] = 0x20;
+  CHECK(cx::decode_pcp_request(wire).error() == errc::unexpected_frame);
+}

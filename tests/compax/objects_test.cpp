@@ -172,4 +172,17 @@ TEST_CASE("generated COMPAX dictionary: manual examples by name") {
   CHECK(d::lage_ist.pointer == 67);
   CHECK(d::speed.pointer == 38);
 }
+
+// Issue 12: CONTROL (2.4.10) takes command numbers 1..21; 22..24 are "not assigned".
+TEST_CASE("generated COMPAX dictionary: CONTROL refuses 0 and 22") {
+  namespace d = fieldcodec::dictionaries::compax_objects;
+  std::array<std::uint8_t, 1> b{};
+  CHECK(cx::encode_object(d::control, decimal{0, 0}, b).error() == errc::out_of_range);
+  CHECK(cx::encode_object(d::control, decimal{22, 0}, b).error() == errc::out_of_range);
+  CHECK(cx::encode_object(d::control, decimal{255, 0}, b).error() == errc::out_of_range);
+  // 2.4.10 example: go to machine zero = command 1 → data byte 0x01
+  CHECK(enc(d::control, decimal{1, 0}) == bytes{0x01});
+  CHECK(enc(d::control, decimal{21, 0}) == bytes{0x15});
+  CHECK(cx::decode_object(d::control, bytes{0x00}).has_value()); // a read is not refused
+}
 #endif

@@ -117,7 +117,7 @@ encode_pcp_request(const pcp_request &r, std::span<std::uint8_t> out) noexcept {
 }
 
 /// Bytes → request. Errors: truncated, bad_length (counter/length disagree, or bytes left
-/// over), unknown_command.
+/// over), unknown_command, unexpected_frame (pad byte after odd-length data not 0x00).
 [[nodiscard]] constexpr result<pcp_request>
 decode_pcp_request(std::span<const std::uint8_t> in) noexcept {
   byte_reader rd{in};
@@ -144,6 +144,7 @@ decode_pcp_request(std::span<const std::uint8_t> in) noexcept {
   if ((r.length & 1U) != 0U) {
     auto pad = rd.read_u8();
     if (!pad) return pad.error();
+    if (pad.value() != 0U) return errc::unexpected_frame; // the pad byte is 0x00, as written
   }
   if (!rd.empty()) return errc::bad_length;
   return r;
