@@ -7,8 +7,8 @@
 #include <doctest/doctest.h>
 
 #include <array>
-#include <string>
 #include <cstdint>
+#include <string>
 
 namespace cx = fieldcodec::compax;
 using fieldcodec::decimal;

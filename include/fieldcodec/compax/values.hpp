@@ -16,8 +16,28 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 namespace fieldcodec::compax {
+
+namespace detail {
+/// An integer argument of any type as an int64; values above INT64_MAX (only an unsigned 64-bit
+/// argument has them) become INT64_MAX, which every field's range check refuses: builders that
+/// cannot fail keep the value this way and the encoder reports it, nothing wraps.
+template <wire_integer T>
+[[nodiscard]] constexpr std::int64_t saturate_i64(T v) noexcept {
+  if (std::cmp_greater(v, std::numeric_limits<std::int64_t>::max())) {
+    return std::numeric_limits<std::int64_t>::max();
+  }
+  return static_cast<std::int64_t>(v);
+}
+/// `v` as a T when it fits. Errors: out_of_range.
+template <wire_integer T, wire_integer U>
+[[nodiscard]] constexpr result<T> checked_narrow(U v) noexcept {
+  if (!std::in_range<T>(v)) return errc::out_of_range;
+  return static_cast<T>(v);
+}
+} // namespace detail
 
 /// Byte order of every integer object on this bus.
 inline constexpr byte_order bus_order = byte_order::big;
@@ -83,7 +103,8 @@ template <wire_integer T>
 }
 
 /// Visible strings (COMMAND, P, S, N): characters 0x20..0x7F, padded with spaces to the
-/// object's length (the manual's examples, e.g. 2.4.11 COMMAND, pad with 0x20). Errors: too_long (text longer than `out`), bad_character.
+/// object's length (the manual's examples, e.g. 2.4.11 COMMAND, pad with 0x20). Errors: too_long
+/// (text longer than `out`), bad_character.
 [[nodiscard]] constexpr status encode_visible_string(std::string_view text,
                                                      std::span<std::uint8_t> out) noexcept {
   if (text.size() > out.size()) return errc::too_long;
