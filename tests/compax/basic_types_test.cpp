@@ -87,6 +87,18 @@ static_assert(cx::decode_bcd_speed(b3{0x03, 0x50, 0x00}).value() == 35'000);
 static_assert(cx::encode_bcd_speed(600'000).value() == b3{0x60, 0x00, 0x00});
 static_assert(cx::encode_bcd_speed(600'001).error() == errc::out_of_range);
 static_assert(cx::encode_bcd_speed(0).error() == errc::out_of_range);
+// Any integer type, checked, never wrapped (issue 13): 2^32 + 35 000 is not 35.000 %, and
+// 2^64 − 1000 is not −1.000 mm.
+static_assert(cx::encode_bcd_speed((std::int64_t{1} << 32) + 35'000).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_speed(-35'000).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_speed(std::uint64_t{35'000}).value() == b3{0x03, 0x50, 0x00});
+static_assert(cx::encode_bcd_position(~std::uint64_t{0} - 999U).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_position(std::uint64_t{7'350'150}).value() ==
+              std::array<std::uint8_t, 6>{0x00, 0x00, 0x07, 0x35, 0x01, 0x50});
+static_assert(cx::encode_bcd_position(short{-1}).value() ==
+              std::array<std::uint8_t, 6>{0xFF, 0x00, 0x00, 0x00, 0x00, 0x01});
+static_assert(cx::encode_identification(-1).error() == errc::out_of_range);
+static_assert(cx::encode_identification(1'000'000'000'000ULL).error() == errc::overflow);
 static_assert(cx::decode_bcd_speed(b3{0x00, 0x00, 0x00}).error() == errc::out_of_range);
 static_assert(cx::decode_bcd_speed(b3{0x60, 0x00, 0x01}).error() == errc::out_of_range);
 static_assert(cx::decode_bcd_speed(b3{0x0B, 0x00, 0x00}).error() == errc::bad_digit);

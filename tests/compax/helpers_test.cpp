@@ -99,7 +99,7 @@ TEST_CASE("PRXSDYALZ (2.8.5): POSRXSPEEDY plus the ramp time MSB first") {
 
 TEST_CASE("FKT_GRUPPE (2.3.1): profile number, function group, version") {
   // 2.3.1 example (L733-736): read the 3rd function group description = read request sub 3
-  const auto rd = cx::pcp_read(0x600F, 3);
+  const auto rd = cx::pcp_read(0x600F, 3).value();
   CHECK(rd.param_counter == 3);
   CHECK(rd.sub == 3);
   // layout L703-721: bytes 1-2 profile number, byte 3 function group id, byte 4 version;
@@ -181,7 +181,7 @@ TEST_CASE("S23_S26 (2.5.7): four status words") {
 // layout follows the PCP service definitions as Interbus drive manuals print them.
 TEST_CASE("PCP confirmations: read (+), write (+), negative") {
   // read of LAGE_ZIEL (2.7.3 example value −1000.000 mm = FF F0 BD C0)
-  auto req = cx::pcp_read(0x607A, 0);
+  auto req = cx::pcp_read(0x607A, 0).value();
   req.invoke_id = 0x00;
   req.comm_ref = 0x02;
   const bytes read_ok{0x80, 0x81, 0x00, 0x05, 0x00, 0x02, 0x00,
@@ -269,7 +269,7 @@ TEST_CASE("PCP confirmations: bad input") {
   const bytes write_data{0x80, 0x82, 0x00, 0x03, 0x00, 0x02, 0x00, 0x00, 0x00, 0x01};
   CHECK(cx::decode_pcp_response(write_data).error() == errc::bad_length);
   // builders refuse what the wire cannot say
-  const auto req = cx::pcp_read(0x5FE8, 1);
+  const auto req = cx::pcp_read(0x5FE8, 1).value();
   CHECK(cx::pcp_refuse(req, 0, 1, 2).error() == errc::invalid_argument);
   CHECK(cx::pcp_confirm(req, bytes(33)).error() == errc::bad_length);
   CHECK(cx::pcp_confirm(cx::pcp_write(0x5FE9, 0, bytes{1}).value(), bytes{1}).error() ==

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace cx = fieldcodec::compax;
@@ -171,6 +172,45 @@ TEST_CASE("generated COMPAX dictionary: manual examples by name") {
   // pointers for OBJECT_REQ
   CHECK(d::lage_ist.pointer == 67);
   CHECK(d::speed.pointer == 38);
+}
+
+// Issue 13: arrays and records are od::object. Their elements are encoded by object and
+// sub-index, and the single-value call does not compile for them (the difference is visible at
+// the call site instead of a `*d::grenzen.find(1)` the user has to know).
+template <class O>
+constexpr bool encodes_without_sub = requires(const O &o, std::span<std::uint8_t> out) {
+  cx::encode_object(o, decimal{}, out);
+};
+template <class O>
+constexpr bool decodes_without_sub = requires(const O &o, std::span<const std::uint8_t> in) {
+  cx::decode_object(o, in);
+};
+static_assert(encodes_without_sub<od::entry> && decodes_without_sub<od::entry>);
+static_assert(!encodes_without_sub<od::object> && !decodes_without_sub<od::object>);
+
+TEST_CASE("generated COMPAX dictionary: array elements by object and sub-index") {
+  namespace d = fieldcodec::dictionaries::compax_objects;
+  std::array<std::uint8_t, 4> b{};
+  // 2.7.9 example (L1860-1866): negative limit −1650.000 mm = FF E6 D2 B0 (erratum CX-20)
+  REQUIRE(cx::encode_object(d::grenzen, 1, decimal{-1650, 0}, b).value() == 4);
+  CHECK(b == std::array<std::uint8_t, 4>{0xFF, 0xE6, 0xD2, 0xB0});
+  CHECK(fieldcodec::equal(cx::decode_object(d::grenzen, 1, b).value(), decimal{-1650, 0}));
+  CHECK(fieldcodec::equal(cx::decode_object(d::grenzen, std::uint64_t{2}, b).value(),
+                          decimal{-1650, 0}));
+  // the same as the entry the array holds
+  CHECK(cx::encode_object(*d::grenzen.find(2), decimal{1, 0}, b).value() == 4);
+  // sub-indices the array does not have, of any integer type, never wrapped
+  CHECK(cx::encode_object(d::grenzen, 3, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_object(d::grenzen, 257, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_object(d::grenzen, -255, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::decode_object(d::grenzen, 0, b).error() == errc::unknown_object);
+  // S7_S8 sub 2 (2.6.7): intermediate circuit voltage, 1 = 0.1 V
+  const std::array<std::uint8_t, 2> volts{0x0F, 0xA0};
+  CHECK(fieldcodec::equal(cx::decode_object(d::s7_s8, 2, volts).value(), decimal{400, 0}));
+  // Px by number: any integer type; 267 is not parameter 11
+  CHECK(cx::encode_px(d::dictionary, 267, decimal{5000, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_px(d::dictionary, 11LL, decimal{5000, 0}, b).value() == 4);
+  CHECK(cx::decode_px(d::dictionary, -1, b).error() == errc::unknown_object);
 }
 
 // Issue 12: CONTROL (2.4.10) takes command numbers 1..21; 22..24 are "not assigned".

@@ -20,6 +20,7 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 namespace fieldcodec::compax {
 
@@ -41,10 +42,11 @@ struct steuerbyte : bit_word<steuerbyte_bit, std::uint8_t> {
   [[nodiscard]] constexpr std::uint8_t record() const noexcept {
     return static_cast<std::uint8_t>(raw & 0x0FU);
   }
-  /// Select a record. Errors: out_of_range (above 15).
-  [[nodiscard]] constexpr status set_record(std::uint8_t n) noexcept {
-    if (n > 15U) return errc::out_of_range;
-    raw = static_cast<std::uint8_t>((raw & 0xF0U) | n);
+  /// Select a record (any integer type). Errors: out_of_range (not 0..15).
+  template <wire_integer T>
+  [[nodiscard]] constexpr status set_record(T n) noexcept {
+    if (std::cmp_less(n, 0) || std::cmp_greater(n, 15)) return errc::out_of_range;
+    raw = static_cast<std::uint8_t>((raw & 0xF0U) | static_cast<unsigned>(n));
     return {};
   }
 };
@@ -83,14 +85,16 @@ enum class cpx_stw_bit : std::uint8_t {
 };
 
 struct cpx_stw : bit_word<cpx_stw_bit, std::uint16_t> {
-  /// Virtual input E17..E32 (word bit n − 17). Errors: out_of_range.
-  [[nodiscard]] constexpr result<bool> virtual_input(unsigned n) const noexcept {
-    if (n < 17U || n > 32U) return errc::out_of_range;
-    return ((raw >> (n - 17U)) & 1U) != 0U;
+  /// Virtual input E17..E32 (word bit n − 17; any integer type). Errors: out_of_range.
+  template <wire_integer T>
+  [[nodiscard]] constexpr result<bool> virtual_input(T n) const noexcept {
+    if (std::cmp_less(n, 17) || std::cmp_greater(n, 32)) return errc::out_of_range;
+    return ((raw >> (static_cast<unsigned>(n) - 17U)) & 1U) != 0U;
   }
-  [[nodiscard]] constexpr status set_virtual_input(unsigned n, bool on) noexcept {
-    if (n < 17U || n > 32U) return errc::out_of_range;
-    const auto m = static_cast<std::uint16_t>(1U << (n - 17U));
+  template <wire_integer T>
+  [[nodiscard]] constexpr status set_virtual_input(T n, bool on) noexcept {
+    if (std::cmp_less(n, 17) || std::cmp_greater(n, 32)) return errc::out_of_range;
+    const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 17U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};
   }
@@ -442,14 +446,16 @@ inline constexpr scaling::linear override_scale{decimal{255, 2}, decimal{0, 0}};
 /// INPUT_WORD, OUTPUT_WORD, OUTPUT_MASK: bit n − 1 is input/output n (1..16).
 struct io_word {
   std::uint16_t raw = 0;
-  /// Errors: out_of_range (n not 1..16).
-  [[nodiscard]] constexpr result<bool> test(unsigned n) const noexcept {
-    if (n < 1U || n > 16U) return errc::out_of_range;
-    return ((raw >> (n - 1U)) & 1U) != 0U;
+  /// Input/output n (any integer type). Errors: out_of_range (n not 1..16).
+  template <wire_integer T>
+  [[nodiscard]] constexpr result<bool> test(T n) const noexcept {
+    if (std::cmp_less(n, 1) || std::cmp_greater(n, 16)) return errc::out_of_range;
+    return ((raw >> (static_cast<unsigned>(n) - 1U)) & 1U) != 0U;
   }
-  [[nodiscard]] constexpr status set(unsigned n, bool on = true) noexcept {
-    if (n < 1U || n > 16U) return errc::out_of_range;
-    const auto m = static_cast<std::uint16_t>(1U << (n - 1U));
+  template <wire_integer T>
+  [[nodiscard]] constexpr status set(T n, bool on = true) noexcept {
+    if (std::cmp_less(n, 1) || std::cmp_greater(n, 16)) return errc::out_of_range;
+    const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 1U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};
   }

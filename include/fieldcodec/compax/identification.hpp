@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <utility>
 
 namespace fieldcodec::compax {
 
@@ -49,10 +50,12 @@ inline constexpr std::uint64_t identification_max = 999'999'999'999;
 
 using identification_bytes = std::array<std::uint8_t, identification_size>;
 
-/// 12-digit number → 6 BCD bytes. Errors: overflow (more than 12 digits).
-[[nodiscard]] constexpr result<identification_bytes>
-encode_identification(std::uint64_t value) noexcept {
-  return bcd::encode<identification_size>(value);
+/// 12-digit number (any integer type) → 6 BCD bytes. Errors: out_of_range (negative),
+/// overflow (more than 12 digits).
+template <wire_integer T>
+[[nodiscard]] constexpr result<identification_bytes> encode_identification(T value) noexcept {
+  if (std::cmp_less(value, 0)) return errc::out_of_range;
+  return bcd::encode<identification_size>(static_cast<std::uint64_t>(value));
 }
 
 /// 6 BCD bytes → number. Errors: truncated, bad_length, bad_digit.

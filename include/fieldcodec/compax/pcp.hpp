@@ -29,6 +29,7 @@
 // * Write (+): nothing after the result word: counter 2.
 #pragma once
 
+#include <fieldcodec/compax/values.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/result.hpp>
 
@@ -83,24 +84,35 @@ struct pcp_request {
   return {};
 }
 
-/// A read request for index/sub-index.
-[[nodiscard]] constexpr pcp_request pcp_read(std::uint16_t index, std::uint8_t sub) noexcept {
+/// A read request for index/sub-index (any integer types).
+/// Errors: out_of_range (index not 0..0xFFFF, sub-index not 0..255).
+template <wire_integer I, wire_integer S>
+[[nodiscard]] constexpr result<pcp_request> pcp_read(I index, S sub) noexcept {
+  auto i = detail::checked_narrow<std::uint16_t>(index);
+  auto s = detail::checked_narrow<std::uint8_t>(sub);
+  if (!i || !s) return errc::out_of_range;
   pcp_request r{};
   r.service = pcp_service::read_request;
   r.param_counter = pcp_param_counter(r.service, 0);
-  r.index = index;
-  r.sub = sub;
+  r.index = i.value();
+  r.sub = s.value();
   return r;
 }
 
-/// A write request with the object's data bytes. Errors: bad_length (empty or above 32 bytes).
-[[nodiscard]] constexpr result<pcp_request> pcp_write(std::uint16_t index, std::uint8_t sub,
+/// A write request with the object's data bytes (index/sub-index of any integer types).
+/// Errors: out_of_range (index not 0..0xFFFF, sub-index not 0..255), bad_length (data empty or
+/// above 32 bytes).
+template <wire_integer I, wire_integer S>
+[[nodiscard]] constexpr result<pcp_request> pcp_write(I index, S sub,
                                                       std::span<const std::uint8_t> data) noexcept {
+  auto idx = detail::checked_narrow<std::uint16_t>(index);
+  auto sx = detail::checked_narrow<std::uint8_t>(sub);
+  if (!idx || !sx) return errc::out_of_range;
   if (data.empty() || data.size() > pcp_data_max) return errc::bad_length;
   pcp_request r{};
   r.service = pcp_service::write_request;
-  r.index = index;
-  r.sub = sub;
+  r.index = idx.value();
+  r.sub = sx.value();
   r.length = static_cast<std::uint8_t>(data.size());
   r.param_counter = pcp_param_counter(r.service, data.size());
   for (std::size_t i = 0; i < data.size(); ++i) r.data[i] = data[i];
