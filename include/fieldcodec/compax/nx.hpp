@@ -100,11 +100,29 @@ namespace detail {
 /// (kind value), otherwise the raw integer (kind dsp_raw).
 [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
   auto t = n.exact_thousandths();
-  if (t) {
-    const decimal d = normalize(decimal{t.value(), 3});
-    return arg{arg_kind::value, d.places, d.mantissa};
+  if (!t) return arg{arg_kind::dsp_raw, 0, n.raw};
+  // the normalized decimal of t / 1000 (at most 3 trailing zeros to drop)
+  std::int64_t v = t.value();
+  std::uint8_t places = 3;
+  while (places > 0U && v % 10 == 0) {
+    v /= 10;
+    --places;
   }
-  return arg{arg_kind::dsp_raw, 0, n.raw};
+  return arg{arg_kind::value, places, v};
+}
+
+/// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
+/// beyond `target` places), overflow (outside int64).
+[[nodiscard]] constexpr result<std::int64_t> scaled_to(std::int64_t number, std::uint8_t places,
+                                                       std::uint8_t target) noexcept {
+  for (; places > target; --places) {
+    if (number % 10 != 0) return errc::not_representable;
+    number /= 10;
+  }
+  for (; places < target; ++places) {
+    if (__builtin_mul_overflow(number, 10, &number)) return errc::overflow;
+  }
+  return number;
 }
 } // namespace detail
 
@@ -473,9 +491,7 @@ struct decoded_code {
 
 /// A whole number from a value argument. Errors: not_representable (decimal places).
 [[nodiscard]] constexpr result<std::int64_t> whole(decimal d) noexcept {
-  const decimal n = normalize(d);
-  if (n.places != 0U) return errc::not_representable;
-  return n.mantissa;
+  return scaled_to(d.mantissa, d.places, 0);
 }
 
 /// A value or raw DSP number → its DSP number.
@@ -486,7 +502,7 @@ struct decoded_code {
     if (n.raw < dsp_format::raw_min || n.raw > dsp_format::raw_max) return errc::overflow;
     return n;
   }
-  auto t = to_fixed(v, 3);
+  auto t = scaled_to(v.mantissa, v.places, 3);
   if (!t) return t.error();
   return dsp_number::from_thousandths(t.value());
 }
