@@ -97,6 +97,21 @@ static_assert(nx::make(nx::op::posa, nx::integer(250)) ==
               nx::make(nx::op::posa, nx::dsp_raw(250 * cx::dsp_format::one)));
 static_assert(nx::make(nx::op::posa, nx::integer(250)) != nx::make(nx::op::posa, nx::dsp_raw(250)));
 
+// On the 0.001 grid or not (what decoding keeps as a decimal or as a raw value).
+static_assert(cx::dsp_number{250 * cx::dsp_format::one}.exact_thousandths().value() == 250'000);
+static_assert(mm(1).exact_thousandths().value() == 1);
+static_assert(cx::dsp_number{250}.exact_thousandths().error() == errc::not_representable);
+static_assert(cx::dsp_number{cx::dsp_format::raw_max + 1}.exact_thousandths().error() ==
+              errc::overflow);
+// The DSP number of an argument.
+static_assert(nx::dsp_of(nx::integer(250)).value().raw == 250 * cx::dsp_format::one);
+static_assert(nx::dsp_of(nx::value(decimal{-15, 1})).value() == mm(-1'500));
+static_assert(nx::dsp_of(nx::dsp_raw(3)).value().raw == 3);
+static_assert(nx::dsp_of(nx::parameter(3)).error() == errc::type_mismatch);
+static_assert(nx::dsp_of(nx::special()).error() == errc::type_mismatch);
+static_assert(nx::dsp_of(nx::value(decimal{1, 4})).error() == errc::not_representable);
+static_assert(nx::dsp_of(nx::integer(8'388'608)).error() == errc::overflow);
+
 TEST_CASE("DSP number bytes: NL NM NH VL VM VH") {
   CHECK(dsp_bytes(mm(250'000)) == bytes{0x00, 0x00, 0x00, 0xFA, 0x00, 0x00});
   CHECK(dsp_bytes(mm(1'500)) == bytes{0x00, 0x00, 0x80, 0x01, 0x00, 0x00});
