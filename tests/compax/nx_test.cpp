@@ -97,6 +97,14 @@ static_assert(nx::make(nx::op::posa, nx::integer(250)) ==
               nx::make(nx::op::posa, nx::dsp_raw(250 * cx::dsp_format::one)));
 static_assert(nx::make(nx::op::posa, nx::integer(250)) != nx::make(nx::op::posa, nx::dsp_raw(250)));
 
+// Integer arguments: any integer type (core/integer.hpp integer_argument), not a character.
+template <class T>
+constexpr bool integer_accepts = requires(T v) {
+  nx::integer(v);
+};
+static_assert(integer_accepts<long long> && integer_accepts<std::uint8_t> &&
+              integer_accepts<bool> && !integer_accepts<char> && !integer_accepts<double>);
+
 // On the 0.001 grid or not (what decoding keeps as a decimal or as a raw value).
 static_assert(cx::dsp_number{250 * cx::dsp_format::one}.exact_thousandths().value() == 250'000);
 static_assert(mm(1).exact_thousandths().value() == 1);

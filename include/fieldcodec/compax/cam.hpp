@@ -28,9 +28,9 @@ using cam_mem_bytes = std::array<std::uint8_t, cam_mem_size>;
 
 /// CAM_MEM content as an unsigned 24-bit number. Any integer type.
 /// Errors: out_of_range (outside 0 … 16 777 215).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<cam_mem_bytes> encode_cam_mem_unsigned(T value) noexcept {
-  if (std::cmp_less(value, 0) || std::cmp_greater(value, unsigned_max(cam_mem_size))) {
+  if (!in_closed_range(value, 0, unsigned_max(cam_mem_size))) {
     return errc::out_of_range;
   }
   cam_mem_bytes out{};
@@ -41,10 +41,9 @@ template <wire_integer T>
 
 /// CAM_MEM content as a two's complement 24-bit number. Any integer type.
 /// Errors: out_of_range (outside −8 388 608 … 8 388 607).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<cam_mem_bytes> encode_cam_mem_signed(T value) noexcept {
-  if (std::cmp_less(value, signed_min(cam_mem_size)) ||
-      std::cmp_greater(value, signed_max(cam_mem_size))) {
+  if (!in_closed_range(value, signed_min(cam_mem_size), signed_max(cam_mem_size))) {
     return errc::out_of_range;
   }
   cam_mem_bytes out{};
@@ -70,9 +69,9 @@ decode_cam_mem_signed(std::span<const std::uint8_t> in) noexcept {
 }
 
 /// CAM_MEM_P (Unsigned16, 1 … 5460). Any integer type. Errors: out_of_range.
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<std::array<std::uint8_t, 2>> encode_cam_mem_pointer(T n) noexcept {
-  if (std::cmp_less(n, cam_mem_pointer_min) || std::cmp_greater(n, cam_mem_pointer_max)) {
+  if (!in_closed_range(n, cam_mem_pointer_min, cam_mem_pointer_max)) {
     return errc::out_of_range;
   }
   return to_bytes<std::uint16_t>(static_cast<std::uint16_t>(n), bus_order);

@@ -43,9 +43,9 @@ struct steuerbyte : bit_word<steuerbyte_bit, std::uint8_t> {
     return static_cast<std::uint8_t>(raw & 0x0FU);
   }
   /// Select a record (any integer type). Errors: out_of_range (not 0..15).
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr status set_record(T n) noexcept {
-    if (std::cmp_less(n, 0) || std::cmp_greater(n, 15)) return errc::out_of_range;
+    if (!in_closed_range(n, 0, 15)) return errc::out_of_range;
     raw = static_cast<std::uint8_t>((raw & 0xF0U) | static_cast<unsigned>(n));
     return {};
   }
@@ -86,14 +86,14 @@ enum class cpx_stw_bit : std::uint8_t {
 
 struct cpx_stw : bit_word<cpx_stw_bit, std::uint16_t> {
   /// Virtual input E17..E32 (word bit n − 17; any integer type). Errors: out_of_range.
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr result<bool> virtual_input(T n) const noexcept {
-    if (std::cmp_less(n, 17) || std::cmp_greater(n, 32)) return errc::out_of_range;
+    if (!in_closed_range(n, 17, 32)) return errc::out_of_range;
     return ((raw >> (static_cast<unsigned>(n) - 17U)) & 1U) != 0U;
   }
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr status set_virtual_input(T n, bool on) noexcept {
-    if (std::cmp_less(n, 17) || std::cmp_greater(n, 32)) return errc::out_of_range;
+    if (!in_closed_range(n, 17, 32)) return errc::out_of_range;
     const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 17U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};
@@ -447,14 +447,14 @@ inline constexpr scaling::linear override_scale{decimal{255, 2}, decimal{0, 0}};
 struct io_word {
   std::uint16_t raw = 0;
   /// Input/output n (any integer type). Errors: out_of_range (n not 1..16).
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr result<bool> test(T n) const noexcept {
-    if (std::cmp_less(n, 1) || std::cmp_greater(n, 16)) return errc::out_of_range;
+    if (!in_closed_range(n, 1, 16)) return errc::out_of_range;
     return ((raw >> (static_cast<unsigned>(n) - 1U)) & 1U) != 0U;
   }
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr status set(T n, bool on = true) noexcept {
-    if (std::cmp_less(n, 1) || std::cmp_greater(n, 16)) return errc::out_of_range;
+    if (!in_closed_range(n, 1, 16)) return errc::out_of_range;
     const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 1U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};

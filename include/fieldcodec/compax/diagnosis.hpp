@@ -35,9 +35,9 @@ enum class diagnosis_item : std::uint8_t {
 }
 
 /// The item of a sub-index. Any integer type. Errors: unknown_object (not 1 … 4).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<diagnosis_item> diagnosis_item_of(T sub) noexcept {
-  if (std::cmp_less(sub, 1) || std::cmp_greater(sub, 4)) return errc::unknown_object;
+  if (!in_closed_range(sub, 1, 4)) return errc::unknown_object;
   return static_cast<diagnosis_item>(sub);
 }
 
@@ -56,9 +56,9 @@ struct diagnosis_word {
   std::uint16_t raw = 0;
 
   /// Status bit n (0 … 15). Any integer type. Errors: out_of_range.
-  template <wire_integer T>
+  template <integer_argument T>
   [[nodiscard]] constexpr result<bool> bit(T n) const noexcept {
-    if (std::cmp_less(n, 0) || std::cmp_greater(n, 15)) return errc::out_of_range;
+    if (!in_closed_range(n, 0, 15)) return errc::out_of_range;
     return ((raw >> static_cast<unsigned>(n)) & 1U) != 0U;
   }
   [[nodiscard]] constexpr std::array<std::uint8_t, 2> bytes() const noexcept {

@@ -52,10 +52,11 @@ using identification_bytes = std::array<std::uint8_t, identification_size>;
 
 /// 12-digit number (any integer type) → 6 BCD bytes. Errors: out_of_range (negative),
 /// overflow (more than 12 digits).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<identification_bytes> encode_identification(T value) noexcept {
-  if (std::cmp_less(value, 0)) return errc::out_of_range;
-  return bcd::encode<identification_size>(static_cast<std::uint64_t>(value));
+  auto v = checked_narrow<std::uint64_t>(value);
+  if (!v) return errc::out_of_range; // negative
+  return bcd::encode<identification_size>(v.value());
 }
 
 /// 6 BCD bytes → number. Errors: truncated, bad_length, bad_digit.

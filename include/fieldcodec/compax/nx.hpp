@@ -130,7 +130,7 @@ namespace detail {
 /// POSA 250 (mm), nx::make(op::accel, nx::integer(200)) is ACCEL 200 (ms). Any integer type; a
 /// value the field cannot hold is refused by the encoder (out_of_range / overflow), never
 /// wrapped.
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr arg integer(T v) noexcept {
   return {arg_kind::value, 0, compax::detail::saturate_i64(v)};
 }
@@ -144,16 +144,16 @@ template <wire_integer T>
 /// A raw DSP value (value = raw / 2^24 of the unit), for the 6-byte fields only. A raw value on
 /// the 0.001 grid is kept as the decimal it stands for (kind value).
 [[nodiscard]] constexpr arg dsp_raw(dsp_number n) noexcept { return detail::from_dsp(n); }
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr arg dsp_raw(T raw) noexcept {
   return detail::from_dsp(dsp_number{compax::detail::saturate_i64(raw)});
 }
 /// P<n> / V<n>, n = 0..65535 (checked by the encoder).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr arg parameter(T n) noexcept {
   return {arg_kind::parameter, 0, compax::detail::saturate_i64(n)};
 }
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr arg variable(T n) noexcept {
   return {arg_kind::variable, 0, compax::detail::saturate_i64(n)};
 }
@@ -182,7 +182,7 @@ struct operand {
 
 /// The constant `v` (IF V1>=5: constant(5)); at most 3 decimal places (encoder:
 /// not_representable), DSP range (overflow).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr operand constant(T v) noexcept {
   return {operand_type::constant, 0, false, compax::detail::saturate_i64(v)};
 }
@@ -196,7 +196,7 @@ template <wire_integer T>
   return {operand_type::constant, a.places, a.kind == arg_kind::dsp_raw, a.number};
 }
 /// P<n>, S<n> or V<n> (n = 0..65535, checked by the encoder).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr operand operand_of(operand_type t, T n) noexcept {
   return {t, 0, false, compax::detail::saturate_i64(n)};
 }
@@ -293,7 +293,7 @@ make_pattern(std::span<const std::uint8_t> digits) noexcept {
   return p;
 }
 /// IF E<input>=<p> GOTO|GOSUB <target> (input and target 0..65535, checked by the encoder).
-template <wire_integer X, wire_integer N>
+template <integer_argument X, integer_argument N>
 [[nodiscard]] constexpr command make_if_input(X input, pattern p, jump j, N target) noexcept {
   command c{};
   c.operation = op::if_input;
@@ -303,16 +303,16 @@ template <wire_integer X, wire_integer N>
   c.target = compax::detail::saturate_i64(target);
   return c;
 }
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr command make_if_error(jump j, N target) noexcept {
   return make_if_input(input_error, pattern{1, {1}}, j, target);
 }
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr command make_if_stop(jump j, N target) noexcept {
   return make_if_input(input_stop, pattern{1, {1}}, j, target);
 }
 /// IF <left><cmp><right> GOTO|GOSUB <target>.
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr command make_if_compare(operand left, comparison cmp, operand right, jump j,
                                                 N target) noexcept {
   command c{};
@@ -325,7 +325,7 @@ template <wire_integer N>
   return c;
 }
 /// OUTPUT A<output>=<p> (output 0..65535, checked by the encoder).
-template <wire_integer X>
+template <integer_argument X>
 [[nodiscard]] constexpr command make_output(X output, pattern p) noexcept {
   command c{};
   c.operation = op::output;
@@ -334,7 +334,7 @@ template <wire_integer X>
   return c;
 }
 /// POSR … OUTPUT A<output>=<p>.
-template <wire_integer X>
+template <integer_argument X>
 [[nodiscard]] constexpr command then_output(command c, X output, pattern p) noexcept {
   c.second_operation = op::output;
   c.number = compax::detail::saturate_i64(output);
@@ -342,7 +342,7 @@ template <wire_integer X>
   return c;
 }
 /// P<n>=<value> (assignment = op::assign_p) or V<n>=<value> (op::assign_v); n = 0..65535.
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr command make_assign(op assignment, N n, operand value) noexcept {
   command c{};
   c.operation = assignment;
@@ -351,7 +351,7 @@ template <wire_integer N>
   return c;
 }
 /// P<n>=<left><ari><right> / V<n>=<left><ari><right>.
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr command make_assign(op assignment, N n, operand left, arithmetic ari,
                                             operand right) noexcept {
   command c = make_assign(assignment, n, left);
@@ -482,9 +482,17 @@ struct decoded_code {
   return {};
 }
 
+/// A number of a 2-byte field (numbers of P, S, V, E, A, records; 2-byte values).
+/// Errors: out_of_range (not 0..65535).
+[[nodiscard]] constexpr result<std::uint16_t> field16(std::int64_t v) noexcept {
+  auto u = checked_narrow<std::uint16_t>(v);
+  if (!u) return errc::out_of_range;
+  return u;
+}
+
 /// A number of a 2-byte field, MSB first. Errors: out_of_range (not 0..65535).
 [[nodiscard]] constexpr status write_word(byte_writer &w, std::int64_t v) noexcept {
-  auto u = compax::detail::checked_narrow<std::uint16_t>(v);
+  auto u = field16(v);
   if (!u) return u.error();
   return w.write(u.value(), byte_order::big);
 }
@@ -534,7 +542,7 @@ namespace detail {
   if ((f->s == shape::none || f->s == shape::zero) && a != arg{}) return errc::invalid_argument;
   if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
     // check the number before anything is written
-    if (auto n = compax::detail::checked_narrow<std::uint16_t>(a.number); !n) return n.error();
+    if (auto n = detail::field16(a.number); !n) return n.error();
   }
   FIELDCODEC_TRY_STATUS(w.write_u8(code));
   switch (f->s) {
@@ -581,7 +589,7 @@ namespace detail {
   case operand_type::status:
   case operand_type::variable:
     if (o.raw || o.places != 0U) return errc::invalid_argument;
-    if (auto n = compax::detail::checked_narrow<std::uint16_t>(o.number); !n) return n.error();
+    if (auto n = detail::field16(o.number); !n) return n.error();
     FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(o.type)));
     FIELDCODEC_TRY_STATUS(write_word(w, o.number));
     return w.pad(4, 0);
@@ -600,7 +608,7 @@ namespace detail {
 
 [[nodiscard]] constexpr status write_jump(byte_writer &w, jump j, std::int64_t target) noexcept {
   if (j != jump::goto_ && j != jump::gosub) return errc::invalid_argument;
-  auto t = compax::detail::checked_narrow<std::uint16_t>(target);
+  auto t = detail::field16(target);
   if (!t) return t.error();
   FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(j)));
   return w.write(t.value(), byte_order::big);
@@ -616,7 +624,7 @@ namespace detail {
 /// OUTPUT A<number>=<io_pattern> (the code and its operands).
 [[nodiscard]] constexpr status write_output(byte_writer &w, const command &c) noexcept {
   FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, true));
-  auto x = compax::detail::checked_narrow<std::uint16_t>(c.number);
+  auto x = detail::field16(c.number);
   if (!x) return x.error();
   FIELDCODEC_TRY_STATUS(w.write_u8(code_output));
   FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
@@ -640,7 +648,7 @@ namespace detail {
     const bool special = c.number == input_error || c.number == input_stop;
     if (special && c.io_pattern != pattern{1, {1}}) return errc::invalid_argument;
     FIELDCODEC_TRY_STATUS(detail::check_pattern(c.io_pattern, c.number, false));
-    auto x = compax::detail::checked_narrow<std::uint16_t>(c.number);
+    auto x = detail::field16(c.number);
     if (!x) return x.error();
     FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_if_input));
     FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
@@ -659,7 +667,7 @@ namespace detail {
   case op::output: FIELDCODEC_TRY_STATUS(detail::write_output(w, c)); return w.size();
   case op::assign_p:
   case op::assign_v: {
-    auto n = compax::detail::checked_narrow<std::uint16_t>(c.number);
+    auto n = detail::field16(c.number);
     if (!n) return n.error();
     FIELDCODEC_TRY_STATUS(
         w.write_u8(c.operation == op::assign_p ? detail::code_assign_p : detail::code_assign_v));

@@ -48,7 +48,7 @@ struct object_request {
 
 namespace detail {
 /// Pointer (0..126) and sub-index (0..255) of any integer types. Errors: out_of_range.
-template <wire_integer P, wire_integer S>
+template <integer_argument P, integer_argument S>
 [[nodiscard]] constexpr result<object_request> object_address(object_access a, P pointer,
                                                               S sub) noexcept {
   auto p = checked_narrow<std::uint8_t>(pointer);
@@ -60,14 +60,14 @@ template <wire_integer P, wire_integer S>
 
 /// A read request for `pointer`/`sub` (any integer types; pointer 0 is the "no object" request).
 /// Errors: out_of_range (pointer above 126, sub-index above 255 or negative).
-template <wire_integer P, wire_integer S = std::uint8_t>
+template <integer_argument P, integer_argument S = std::uint8_t>
 [[nodiscard]] constexpr result<object_request> object_read(P pointer, S sub = 0) noexcept {
   return detail::object_address(object_access::read, pointer, sub);
 }
 
 /// A write request; `data` (1..4 bytes, the object's bytes as on PCP) is left aligned.
 /// Errors: out_of_range (pointer, sub-index), bad_length (data empty or more than 4 bytes).
-template <wire_integer P, wire_integer S>
+template <integer_argument P, integer_argument S>
 [[nodiscard]] constexpr result<object_request>
 object_write(P pointer, S sub, std::span<const std::uint8_t> data) noexcept {
   auto a = detail::object_address(object_access::write, pointer, sub);

@@ -167,14 +167,14 @@ decode_object(const od::entry &e, std::span<const std::uint8_t> in, unsigned pla
 
 namespace detail {
 /// The element `sub` of an ARRAY/RECORD object. Any integer type. Errors: unknown_object.
-template <wire_integer S>
+template <integer_argument S>
 [[nodiscard]] constexpr result<const od::entry *> element(const od::object &o, S sub) noexcept {
   auto s = checked_narrow<std::uint8_t>(sub);
   if (!s) return errc::unknown_object;
   return o.lookup(s.value());
 }
 /// The entry (index, sub) of a dictionary. Any integer type. Errors: unknown_object.
-template <wire_integer S>
+template <integer_argument S>
 [[nodiscard]] constexpr result<const od::entry *> element(const od::dictionary &d,
                                                           std::uint16_t index, S sub) noexcept {
   auto s = checked_narrow<std::uint8_t>(sub);
@@ -186,7 +186,7 @@ template <wire_integer S>
 /// Element `sub` of an ARRAY or RECORD object (e.g. GRENZEN sub 1, the negative limit) in
 /// engineering units. `sub` of any integer type. Errors: unknown_object (no such sub-index),
 /// and those of encode_object(entry, …).
-template <wire_integer S>
+template <integer_argument S>
 [[nodiscard]] constexpr result<std::size_t> encode_object(const od::object &o, S sub, decimal eu,
                                                           std::span<std::uint8_t> out) noexcept {
   auto e = detail::element(o, sub);
@@ -196,7 +196,7 @@ template <wire_integer S>
 
 /// Element `sub` of an ARRAY or RECORD object from its bytes. Errors: unknown_object, and those
 /// of decode_object(entry, …).
-template <wire_integer S>
+template <integer_argument S>
 [[nodiscard]] constexpr result<decimal> decode_object(const od::object &o, S sub,
                                                       std::span<const std::uint8_t> in,
                                                       unsigned places = 6) noexcept {
@@ -212,7 +212,7 @@ decimal decode_object(const od::object &, std::span<const std::uint8_t>, unsigne
 
 /// Px parameter `n` (1..250, any integer type) in engineering units, with the resolution of its
 /// dictionary row. Errors: unknown_object (no such parameter), and those of encode_object.
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr result<std::size_t> encode_px(const od::dictionary &d, N n, decimal eu,
                                                       std::span<std::uint8_t> out) noexcept {
   auto e = detail::element(d, index::px, n);
@@ -221,7 +221,7 @@ template <wire_integer N>
 }
 
 /// Px parameter `n` from its 4 bytes. Errors: unknown_object, and those of decode_object.
-template <wire_integer N>
+template <integer_argument N>
 [[nodiscard]] constexpr result<decimal> decode_px(const od::dictionary &d, N n,
                                                   std::span<const std::uint8_t> in) noexcept {
   auto e = detail::element(d, index::px, n);

@@ -86,10 +86,10 @@ struct pcp_request {
 
 /// A read request for index/sub-index (any integer types).
 /// Errors: out_of_range (index not 0..0xFFFF, sub-index not 0..255).
-template <wire_integer I, wire_integer S>
+template <integer_argument I, integer_argument S>
 [[nodiscard]] constexpr result<pcp_request> pcp_read(I index, S sub) noexcept {
-  auto i = detail::checked_narrow<std::uint16_t>(index);
-  auto s = detail::checked_narrow<std::uint8_t>(sub);
+  auto i = checked_narrow<std::uint16_t>(index);
+  auto s = checked_narrow<std::uint8_t>(sub);
   if (!i || !s) return errc::out_of_range;
   pcp_request r{};
   r.service = pcp_service::read_request;
@@ -102,11 +102,11 @@ template <wire_integer I, wire_integer S>
 /// A write request with the object's data bytes (index/sub-index of any integer types).
 /// Errors: out_of_range (index not 0..0xFFFF, sub-index not 0..255), bad_length (data empty or
 /// above 32 bytes).
-template <wire_integer I, wire_integer S>
+template <integer_argument I, integer_argument S>
 [[nodiscard]] constexpr result<pcp_request> pcp_write(I index, S sub,
                                                       std::span<const std::uint8_t> data) noexcept {
-  auto idx = detail::checked_narrow<std::uint16_t>(index);
-  auto sx = detail::checked_narrow<std::uint8_t>(sub);
+  auto idx = checked_narrow<std::uint16_t>(index);
+  auto sx = checked_narrow<std::uint8_t>(sub);
   if (!idx || !sx) return errc::out_of_range;
   if (data.empty() || data.size() > pcp_data_max) return errc::bad_length;
   pcp_request r{};

@@ -10,6 +10,7 @@
 #include <fieldcodec/core/bcd.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
@@ -30,13 +31,12 @@ using bcd_position_bytes = std::array<std::uint8_t, bcd_position_size>;
 
 /// A position in 0.001 mm (any integer type) → 6 BCD bytes.
 /// Errors: out_of_range (beyond ±4 000 000.000).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<bcd_position_bytes> encode_bcd_position(T thousandths) noexcept {
-  if (std::cmp_greater(thousandths, bcd_position_limit) ||
-      std::cmp_less(thousandths, -bcd_position_limit)) {
+  if (!in_closed_range(thousandths, -bcd_position_limit, bcd_position_limit)) {
     return errc::out_of_range;
   }
-  return bcd::encode_signed<bcd_position_size>(static_cast<std::int64_t>(thousandths));
+  return bcd::encode_signed<bcd_position_size>(checked_narrow<std::int64_t>(thousandths).value());
 }
 
 /// A position given as an exact decimal in mm ("7350.15"). Errors: not_representable (finer
@@ -70,13 +70,12 @@ using bcd_speed_bytes = std::array<std::uint8_t, bcd_speed_size>;
 
 /// A speed in 0.001 % (any integer type) → 3 BCD bytes (POSR0SPEED).
 /// Errors: out_of_range (outside 1..600 000).
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr result<bcd_speed_bytes> encode_bcd_speed(T thousandths_percent) noexcept {
-  if (std::cmp_less(thousandths_percent, bcd_speed_min) ||
-      std::cmp_greater(thousandths_percent, bcd_speed_max)) {
+  if (!in_closed_range(thousandths_percent, bcd_speed_min, bcd_speed_max)) {
     return errc::out_of_range;
   }
-  return bcd::encode<bcd_speed_size>(static_cast<std::uint64_t>(thousandths_percent));
+  return bcd::encode<bcd_speed_size>(checked_narrow<std::uint64_t>(thousandths_percent).value());
 }
 
 /// 3 BCD bytes → speed in 0.001 %. Errors: truncated, bad_length, bad_digit, out_of_range.

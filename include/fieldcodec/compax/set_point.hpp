@@ -37,7 +37,7 @@ namespace fieldcodec::compax {
 encode_lage_ziel(decimal target_mm) noexcept {
   auto t = to_fixed(target_mm, 3);
   if (!t) return t.error();
-  auto v = detail::checked_narrow<std::int32_t>(t.value());
+  auto v = checked_narrow<std::int32_t>(t.value());
   if (!v) return errc::overflow;
   return encode_integer<std::int32_t>(v.value());
 }

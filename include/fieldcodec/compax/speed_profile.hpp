@@ -53,7 +53,9 @@ namespace detail {
 [[nodiscard]] constexpr result<std::int32_t> step_position(decimal mm) noexcept {
   auto t = to_fixed(mm, speed_step_places);
   if (!t) return t.error() == errc::overflow ? errc::out_of_range : t.error();
-  return checked_narrow<std::int32_t>(t.value());
+  auto p = checked_narrow<std::int32_t>(t.value());
+  if (!p) return errc::out_of_range;
+  return p;
 }
 /// Speed in 0.001 %. Errors: not_representable, out_of_range (outside 1 … 600 000).
 [[nodiscard]] constexpr result<std::uint32_t> step_speed(decimal percent) noexcept {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
@@ -24,18 +25,10 @@ namespace detail {
 /// An integer argument of any type as an int64; values above INT64_MAX (only an unsigned 64-bit
 /// argument has them) become INT64_MAX, which every field's range check refuses: builders that
 /// cannot fail keep the value this way and the encoder reports it, nothing wraps.
-template <wire_integer T>
+template <integer_argument T>
 [[nodiscard]] constexpr std::int64_t saturate_i64(T v) noexcept {
-  if (std::cmp_greater(v, std::numeric_limits<std::int64_t>::max())) {
-    return std::numeric_limits<std::int64_t>::max();
-  }
-  return static_cast<std::int64_t>(v);
-}
-/// `v` as a T when it fits. Errors: out_of_range.
-template <wire_integer T, wire_integer U>
-[[nodiscard]] constexpr result<T> checked_narrow(U v) noexcept {
-  if (!std::in_range<T>(v)) return errc::out_of_range;
-  return static_cast<T>(v);
+  auto n = checked_narrow<std::int64_t>(v);
+  return n ? n.value() : std::numeric_limits<std::int64_t>::max();
 }
 } // namespace detail
 
