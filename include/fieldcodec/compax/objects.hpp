@@ -1,6 +1,6 @@
 // fieldcodec — COMPAX objects by dictionary entry: encode and decode an object's data bytes
 // in engineering units, whatever its coding (big-endian integer with scale, signed BCD
-// position, BCD speed, boolean). Works with any od::entry, in particular the generated
+// position, BCD speed, boolean). Works with any od::descriptor, in particular the generated
 // descriptors of include/fieldcodec/dictionaries/compax_objects.hpp:
 //
 //   namespace d = fieldcodec::dictionaries::compax_objects;
@@ -18,6 +18,7 @@
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/object.hpp>
@@ -60,11 +61,11 @@ enum class coding : std::uint8_t {
 
 /// Write the object's data bytes for the engineering value `eu` (mm, %, ms, … as the entry's
 /// scale says; booleans: 0 or 1) to the front of `out`; returns the number of bytes. Values
-/// finer than the resolution are rounded half away from zero, like od::entry::to_raw.
+/// finer than the resolution are rounded half away from zero, like od::descriptor::to_raw.
 /// Errors: out_of_range (outside the entry's limits or the coding's range), overflow (does not
 /// fit the field, or is the Integer32 overflow marker), type_mismatch (coding::other),
 /// buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> encode_object(const od::entry &e, decimal eu,
+[[nodiscard]] constexpr result<std::size_t> encode_object(const od::descriptor &e, decimal eu,
                                                           std::span<std::uint8_t> out) noexcept {
   switch (coding_of(e)) {
   case coding::integer: {
@@ -122,8 +123,9 @@ enum class coding : std::uint8_t {
 /// exact for every COMPAX resolution except OVERRIDE's 1/2.55).
 /// Errors: truncated, bad_length, overflow (Integer32 0x80000000), bad_sign, bad_digit,
 /// out_of_range, type_mismatch (coding::other).
-[[nodiscard]] constexpr result<decimal>
-decode_object(const od::entry &e, std::span<const std::uint8_t> in, unsigned places = 6) noexcept {
+[[nodiscard]] constexpr result<decimal> decode_object(const od::descriptor &e,
+                                                      std::span<const std::uint8_t> in,
+                                                      unsigned places = 6) noexcept {
   switch (coding_of(e)) {
   case coding::integer: {
     const std::size_t w = od::fixed_size(e.type);
@@ -168,41 +170,41 @@ decode_object(const od::entry &e, std::span<const std::uint8_t> in, unsigned pla
 namespace detail {
 /// The element `sub` of an ARRAY/RECORD object. Any integer type. Errors: unknown_object.
 template <integer_argument S>
-[[nodiscard]] constexpr result<const od::entry *> element(const od::object &o, S sub) noexcept {
+[[nodiscard]] constexpr result<od::descriptor> element(const od::object &o, S sub) noexcept {
   auto s = checked_narrow<std::uint8_t>(sub);
   if (!s) return errc::unknown_object;
-  return o.lookup(s.value());
+  return o.at(s.value());
 }
 /// The entry (index, sub) of a dictionary. Any integer type. Errors: unknown_object.
 template <integer_argument S>
-[[nodiscard]] constexpr result<const od::entry *> element(const od::dictionary &d,
-                                                          std::uint16_t index, S sub) noexcept {
+[[nodiscard]] constexpr result<od::descriptor> element(const od::dictionary &d, std::uint16_t index,
+                                                       S sub) noexcept {
   auto s = checked_narrow<std::uint8_t>(sub);
   if (!s) return errc::unknown_object;
-  return d.lookup(index, s.value());
+  return d.at(index, s.value());
 }
 } // namespace detail
 
 /// Element `sub` of an ARRAY or RECORD object (e.g. GRENZEN sub 1, the negative limit) in
 /// engineering units. `sub` of any integer type. Errors: unknown_object (no such sub-index),
-/// and those of encode_object(entry, …).
+/// and those of encode_object(descriptor, …).
 template <integer_argument S>
 [[nodiscard]] constexpr result<std::size_t> encode_object(const od::object &o, S sub, decimal eu,
                                                           std::span<std::uint8_t> out) noexcept {
   auto e = detail::element(o, sub);
   if (!e) return e.error();
-  return encode_object(*e.value(), eu, out);
+  return encode_object(e.value(), eu, out);
 }
 
 /// Element `sub` of an ARRAY or RECORD object from its bytes. Errors: unknown_object, and those
-/// of decode_object(entry, …).
+/// of decode_object(descriptor, …).
 template <integer_argument S>
 [[nodiscard]] constexpr result<decimal> decode_object(const od::object &o, S sub,
                                                       std::span<const std::uint8_t> in,
                                                       unsigned places = 6) noexcept {
   auto e = detail::element(o, sub);
   if (!e) return e.error();
-  return decode_object(*e.value(), in, places);
+  return decode_object(e.value(), in, places);
 }
 
 /// An ARRAY or RECORD has no single value: name the element, encode_object(d::grenzen, 1, …).
@@ -217,7 +219,7 @@ template <integer_argument N>
                                                       std::span<std::uint8_t> out) noexcept {
   auto e = detail::element(d, index::px, n);
   if (!e) return e.error();
-  return encode_object(*e.value(), eu, out);
+  return encode_object(e.value(), eu, out);
 }
 
 /// Px parameter `n` from its 4 bytes. Errors: unknown_object, and those of decode_object.
@@ -226,7 +228,7 @@ template <integer_argument N>
                                                   std::span<const std::uint8_t> in) noexcept {
   auto e = detail::element(d, index::px, n);
   if (!e) return e.error();
-  return decode_object(*e.value(), in);
+  return decode_object(e.value(), in);
 }
 
 } // namespace fieldcodec::compax
