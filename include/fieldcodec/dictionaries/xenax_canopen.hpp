@@ -16,7 +16,7 @@ namespace fieldcodec::dictionaries::xenax_canopen {
 
 inline constexpr const char *source_file = "xenax_canopen.eds";
 
-inline constexpr std::array<od::entry, 448> entries{{
+inline constexpr std::array<od::entry, 463> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Device Type", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(131474U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Error Register", .low = od::num::u(0U), .high = od::num::u(255U), .default_value = od::num::u(0U)},
     {.index = 0x1005, .type = od::data_type::unsigned32, .name = "COB-ID SYNC", .low = od::num::u(1U), .high = od::num::u(4294967295U), .default_value = od::num::u(2147483776U)},
@@ -110,6 +110,12 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x1613, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Target Position Error Window", .default_value = od::num::u(1617362976U)},
     {.index = 0x1614, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(1U)},
     {.index = 0x1614, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "I Force Max", .default_value = od::num::u(1618149392U)},
+    {.index = 0x1615, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1615, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 1", .default_value = od::num::u(0U)},
+    {.index = 0x1615, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 2", .default_value = od::num::u(0U)},
+    {.index = 0x1616, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1616, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 1", .default_value = od::num::u(0U)},
+    {.index = 0x1616, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 2", .default_value = od::num::u(0U)},
     {.index = 0x1617, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
     {.index = 0x1617, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Controlword", .default_value = od::num::u(1614807056U)},
     {.index = 0x1617, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Reserved for future", .default_value = od::num::u(537002016U)},
@@ -180,11 +186,20 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x1A01, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Actual Position", .default_value = od::num::u(1617166368U)},
     {.index = 0x1A10, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(1U)},
     {.index = 0x1A10, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Digital Inputs", .default_value = od::num::u(1627193376U)},
+    {.index = 0x1A11, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1A11, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 1", .default_value = od::num::u(0U)},
+    {.index = 0x1A11, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 2", .default_value = od::num::u(0U)},
+    {.index = 0x1A12, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1A12, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 1", .default_value = od::num::u(0U)},
+    {.index = 0x1A12, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 2", .default_value = od::num::u(0U)},
     {.index = 0x1A13, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
     {.index = 0x1A13, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Actual Following Position Error", .default_value = od::num::u(1626603552U)},
     {.index = 0x1A13, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Process Status Register", .default_value = od::num::u(537264160U)},
     {.index = 0x1A14, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(1U)},
     {.index = 0x1A14, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Actual Current", .default_value = od::num::u(1618477072U)},
+    {.index = 0x1A15, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1A15, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 1", .default_value = od::num::u(0U)},
+    {.index = 0x1A15, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Mapping Entry 2", .default_value = od::num::u(0U)},
     {.index = 0x1A16, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
     {.index = 0x1A16, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "I Force Actual", .default_value = od::num::u(537198624U)},
     {.index = 0x1A16, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "Process Status Register", .default_value = od::num::u(537264160U)},
@@ -327,7 +342,7 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x5003, .sub = 58, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SSO Set Sector Offset", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 59, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENCPD Encoder Plausibility Checking Disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 60, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SPAD Set Point ACK disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
-    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .high = od::num::i(0), .default_value = od::num::i(0)},
+    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 62, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRH Dir Home", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 63, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRZ Z-Mark", .low = od::num::i(1), .high = od::num::i(3), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 64, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FQS Filter Quality Speed", .low = od::num::i(500), .high = od::num::i(100000), .default_value = od::num::i(5000)},
@@ -582,159 +597,179 @@ inline constexpr const od::entry &receive_pdo_mapping_param_20_target_position_e
 inline constexpr od::object receive_pdo_mapping_param_21{0x1614, od::object_code::record, "Receive PDO Mapping Param 21", {entries.data() + 91, 2}};
 inline constexpr const od::entry &receive_pdo_mapping_param_21_nbr_of_entries = entries[91];
 inline constexpr const od::entry &receive_pdo_mapping_param_21_i_force_max = entries[92];
-inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24", {entries.data() + 93, 3}};
-inline constexpr const od::entry &receive_pdo_mapping_param_24_nbr_of_entries = entries[93];
-inline constexpr const od::entry &receive_pdo_mapping_param_24_controlword = entries[94];
-inline constexpr const od::entry &receive_pdo_mapping_param_24_reserved_for_future = entries[95];
-inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1", {entries.data() + 96, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_1_nbr_of_entries = entries[96];
-inline constexpr const od::entry &transmit_pdo_comm_param_1_cob_id = entries[97];
-inline constexpr const od::entry &transmit_pdo_comm_param_1_transmission_type = entries[98];
-inline constexpr const od::entry &transmit_pdo_comm_param_1_inhibit_time = entries[99];
-inline constexpr const od::entry &transmit_pdo_comm_param_1_compatibility_entry = entries[100];
-inline constexpr const od::entry &transmit_pdo_comm_param_1_event_timer = entries[101];
-inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2", {entries.data() + 102, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_2_nbr_of_entries = entries[102];
-inline constexpr const od::entry &transmit_pdo_comm_param_2_cob_id = entries[103];
-inline constexpr const od::entry &transmit_pdo_comm_param_2_transmission_type = entries[104];
-inline constexpr const od::entry &transmit_pdo_comm_param_2_inhibit_time = entries[105];
-inline constexpr const od::entry &transmit_pdo_comm_param_2_compatibility_entry = entries[106];
-inline constexpr const od::entry &transmit_pdo_comm_param_2_event_timer = entries[107];
-inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17", {entries.data() + 108, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_17_nbr_of_entries = entries[108];
-inline constexpr const od::entry &transmit_pdo_comm_param_17_cob_id = entries[109];
-inline constexpr const od::entry &transmit_pdo_comm_param_17_transmission_type = entries[110];
-inline constexpr const od::entry &transmit_pdo_comm_param_17_inhibit_time = entries[111];
-inline constexpr const od::entry &transmit_pdo_comm_param_17_compatibility_entry = entries[112];
-inline constexpr const od::entry &transmit_pdo_comm_param_17_event_timer = entries[113];
-inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18", {entries.data() + 114, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_18_nbr_of_entries = entries[114];
-inline constexpr const od::entry &transmit_pdo_comm_param_18_cob_id = entries[115];
-inline constexpr const od::entry &transmit_pdo_comm_param_18_transmission_type = entries[116];
-inline constexpr const od::entry &transmit_pdo_comm_param_18_inhibit_time = entries[117];
-inline constexpr const od::entry &transmit_pdo_comm_param_18_compatibility_entry = entries[118];
-inline constexpr const od::entry &transmit_pdo_comm_param_18_event_timer = entries[119];
-inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19", {entries.data() + 120, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_19_nbr_of_entries = entries[120];
-inline constexpr const od::entry &transmit_pdo_comm_param_19_cob_id = entries[121];
-inline constexpr const od::entry &transmit_pdo_comm_param_19_transmission_type = entries[122];
-inline constexpr const od::entry &transmit_pdo_comm_param_19_inhibit_time = entries[123];
-inline constexpr const od::entry &transmit_pdo_comm_param_19_compatibility_entry = entries[124];
-inline constexpr const od::entry &transmit_pdo_comm_param_19_event_timer = entries[125];
-inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20", {entries.data() + 126, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_20_nbr_of_entries = entries[126];
-inline constexpr const od::entry &transmit_pdo_comm_param_20_cob_id = entries[127];
-inline constexpr const od::entry &transmit_pdo_comm_param_20_transmission_type = entries[128];
-inline constexpr const od::entry &transmit_pdo_comm_param_20_inhibit_time = entries[129];
-inline constexpr const od::entry &transmit_pdo_comm_param_20_compatibility_entry = entries[130];
-inline constexpr const od::entry &transmit_pdo_comm_param_20_event_timer = entries[131];
-inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21", {entries.data() + 132, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_21_nbr_of_entries = entries[132];
-inline constexpr const od::entry &transmit_pdo_comm_param_21_cob_id = entries[133];
-inline constexpr const od::entry &transmit_pdo_comm_param_21_transmission_type = entries[134];
-inline constexpr const od::entry &transmit_pdo_comm_param_21_inhibit_time = entries[135];
-inline constexpr const od::entry &transmit_pdo_comm_param_21_compatibility_entry = entries[136];
-inline constexpr const od::entry &transmit_pdo_comm_param_21_event_timer = entries[137];
-inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22", {entries.data() + 138, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_22_nbr_of_entries = entries[138];
-inline constexpr const od::entry &transmit_pdo_comm_param_22_cob_id = entries[139];
-inline constexpr const od::entry &transmit_pdo_comm_param_22_transmission_type = entries[140];
-inline constexpr const od::entry &transmit_pdo_comm_param_22_inhibit_time = entries[141];
-inline constexpr const od::entry &transmit_pdo_comm_param_22_compatibility_entry = entries[142];
-inline constexpr const od::entry &transmit_pdo_comm_param_22_event_timer = entries[143];
-inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23", {entries.data() + 144, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_23_nbr_of_entries = entries[144];
-inline constexpr const od::entry &transmit_pdo_comm_param_23_cob_id = entries[145];
-inline constexpr const od::entry &transmit_pdo_comm_param_23_transmission_type = entries[146];
-inline constexpr const od::entry &transmit_pdo_comm_param_23_inhibit_time = entries[147];
-inline constexpr const od::entry &transmit_pdo_comm_param_23_compatibility_entry = entries[148];
-inline constexpr const od::entry &transmit_pdo_comm_param_23_event_timer = entries[149];
-inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24", {entries.data() + 150, 6}};
-inline constexpr const od::entry &transmit_pdo_comm_param_24_nbr_of_entries = entries[150];
-inline constexpr const od::entry &transmit_pdo_comm_param_24_cob_id = entries[151];
-inline constexpr const od::entry &transmit_pdo_comm_param_24_transmission_type = entries[152];
-inline constexpr const od::entry &transmit_pdo_comm_param_24_inhibit_time = entries[153];
-inline constexpr const od::entry &transmit_pdo_comm_param_24_compatibility_entry = entries[154];
-inline constexpr const od::entry &transmit_pdo_comm_param_24_event_timer = entries[155];
-inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1", {entries.data() + 156, 2}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_1_nbr_of_entries = entries[156];
-inline constexpr const od::entry &transmit_pdo_mapping_param_1_statusword = entries[157];
-inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2", {entries.data() + 158, 3}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_2_nbr_of_entries = entries[158];
-inline constexpr const od::entry &transmit_pdo_mapping_param_2_statusword = entries[159];
-inline constexpr const od::entry &transmit_pdo_mapping_param_2_actual_position = entries[160];
-inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17", {entries.data() + 161, 2}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_17_nbr_of_entries = entries[161];
-inline constexpr const od::entry &transmit_pdo_mapping_param_17_digital_inputs = entries[162];
-inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20", {entries.data() + 163, 3}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_20_nbr_of_entries = entries[163];
-inline constexpr const od::entry &transmit_pdo_mapping_param_20_actual_following_position_error = entries[164];
-inline constexpr const od::entry &transmit_pdo_mapping_param_20_process_status_register = entries[165];
-inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21", {entries.data() + 166, 2}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_21_nbr_of_entries = entries[166];
-inline constexpr const od::entry &transmit_pdo_mapping_param_21_actual_current = entries[167];
-inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23", {entries.data() + 168, 3}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_23_nbr_of_entries = entries[168];
-inline constexpr const od::entry &transmit_pdo_mapping_param_23_i_force_actual = entries[169];
-inline constexpr const od::entry &transmit_pdo_mapping_param_23_process_status_register = entries[170];
-inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24", {entries.data() + 171, 3}};
-inline constexpr const od::entry &transmit_pdo_mapping_param_24_nbr_of_entries = entries[171];
-inline constexpr const od::entry &transmit_pdo_mapping_param_24_statusword = entries[172];
-inline constexpr const od::entry &transmit_pdo_mapping_param_24_i_force_actual = entries[173];
-inline constexpr const od::entry &s_curve_profile = entries[174]; // 0x2000
-inline constexpr const od::entry &reserved_2001 = entries[175]; // 0x2001
-inline constexpr const od::entry &reserved_2002 = entries[176]; // 0x2002
-inline constexpr const od::entry &reserved_2003 = entries[177]; // 0x2003
-inline constexpr const od::entry &xenax_error_number = entries[178]; // 0x2004
-inline constexpr const od::entry &i_force_actual = entries[179]; // 0x2005
-inline constexpr const od::entry &process_status_register = entries[180]; // 0x2006
-inline constexpr const od::entry &pdo_cycle_time = entries[181]; // 0x2007
-inline constexpr const od::entry &motor_type = entries[182]; // 0x2008
-inline constexpr const od::entry &limit_force = entries[183]; // 0x2009
-inline constexpr const od::entry &force_actual_value = entries[184]; // 0x200A
-inline constexpr const od::entry &direct_commands = entries[185]; // 0x5000
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter", {entries.data() + 186, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter", {entries.data() + 232, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter", {entries.data() + 249, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter", {entries.data() + 356, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter", {entries.data() + 368, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter", {entries.data() + 382, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter", {entries.data() + 393, 15}};
-inline constexpr const od::entry &signateq_sensor_model_type_sqsmt = entries[408]; // 0x5011
-inline constexpr const od::entry &signateq_sensor_serial_number_sqssn = entries[409]; // 0x5012
-inline constexpr const od::entry &tell_error_string_tes = entries[410]; // 0x5020
-inline constexpr const od::entry &servo_identification_string_sid = entries[411]; // 0x5021
-inline constexpr const od::entry &error_code = entries[412]; // 0x603F
-inline constexpr const od::entry &controlword = entries[413]; // 0x6040
-inline constexpr const od::entry &statusword = entries[414]; // 0x6041
-inline constexpr const od::entry &modes_of_operation_requested = entries[415]; // 0x6060
-inline constexpr const od::entry &modes_of_operation_display = entries[416]; // 0x6061
-inline constexpr const od::entry &position_actual_value = entries[417]; // 0x6064
-inline constexpr const od::entry &following_position_error_window = entries[418]; // 0x6065
-inline constexpr const od::entry &target_position_window = entries[419]; // 0x6067
-inline constexpr const od::entry &position_window_time = entries[420]; // 0x6068
-inline constexpr const od::entry &velocity_actual_value = entries[421]; // 0x606C
-inline constexpr const od::entry &limit_i_force = entries[422]; // 0x6073
-inline constexpr const od::entry &motor_current_actual_value = entries[423]; // 0x6078
-inline constexpr const od::entry &target_position = entries[424]; // 0x607A
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions", {entries.data() + 425, 3}};
-inline constexpr const od::entry &speed = entries[428]; // 0x6081
-inline constexpr const od::entry &acceleration = entries[429]; // 0x6083
-inline constexpr const od::entry &quick_stop_deceleration = entries[430]; // 0x6085
-inline constexpr const od::entry &reference_methods = entries[431]; // 0x6098
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds", {entries.data() + 432, 3}};
-inline constexpr const od::entry &velocity_offset = entries[435]; // 0x60B1
-inline constexpr const od::entry &torque_offset = entries[436]; // 0x60B2
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time", {entries.data() + 437, 3}};
-inline constexpr const od::entry &synchronous_cycle_time_highest_sub_index_value = entries[437];
-inline constexpr const od::entry &synchronous_cycle_time_base_value = entries[438];
-inline constexpr const od::entry &synchronous_cycle_time_n_10_exponent = entries[439];
-inline constexpr const od::entry &actual_position_following_error = entries[440]; // 0x60F4
-inline constexpr const od::entry &digital_inputs = entries[441]; // 0x60FD
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs", {entries.data() + 442, 3}};
-inline constexpr const od::entry &target_velocity = entries[445]; // 0x60FF
-inline constexpr const od::entry &supported_modes_of_operation = entries[446]; // 0x6502
-inline constexpr const od::entry &product_website_address = entries[447]; // 0x6505
+inline constexpr od::object receive_pdo_mapping_param_22{0x1615, od::object_code::record, "Receive PDO Mapping Param 22", {entries.data() + 93, 3}};
+inline constexpr const od::entry &receive_pdo_mapping_param_22_nbr_of_entries = entries[93];
+inline constexpr const od::entry &receive_pdo_mapping_param_22_mapping_entry_1 = entries[94];
+inline constexpr const od::entry &receive_pdo_mapping_param_22_mapping_entry_2 = entries[95];
+inline constexpr od::object receive_pdo_mapping_param_23{0x1616, od::object_code::record, "Receive PDO Mapping Param 23", {entries.data() + 96, 3}};
+inline constexpr const od::entry &receive_pdo_mapping_param_23_nbr_of_entries = entries[96];
+inline constexpr const od::entry &receive_pdo_mapping_param_23_mapping_entry_1 = entries[97];
+inline constexpr const od::entry &receive_pdo_mapping_param_23_mapping_entry_2 = entries[98];
+inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24", {entries.data() + 99, 3}};
+inline constexpr const od::entry &receive_pdo_mapping_param_24_nbr_of_entries = entries[99];
+inline constexpr const od::entry &receive_pdo_mapping_param_24_controlword = entries[100];
+inline constexpr const od::entry &receive_pdo_mapping_param_24_reserved_for_future = entries[101];
+inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1", {entries.data() + 102, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_1_nbr_of_entries = entries[102];
+inline constexpr const od::entry &transmit_pdo_comm_param_1_cob_id = entries[103];
+inline constexpr const od::entry &transmit_pdo_comm_param_1_transmission_type = entries[104];
+inline constexpr const od::entry &transmit_pdo_comm_param_1_inhibit_time = entries[105];
+inline constexpr const od::entry &transmit_pdo_comm_param_1_compatibility_entry = entries[106];
+inline constexpr const od::entry &transmit_pdo_comm_param_1_event_timer = entries[107];
+inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2", {entries.data() + 108, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_2_nbr_of_entries = entries[108];
+inline constexpr const od::entry &transmit_pdo_comm_param_2_cob_id = entries[109];
+inline constexpr const od::entry &transmit_pdo_comm_param_2_transmission_type = entries[110];
+inline constexpr const od::entry &transmit_pdo_comm_param_2_inhibit_time = entries[111];
+inline constexpr const od::entry &transmit_pdo_comm_param_2_compatibility_entry = entries[112];
+inline constexpr const od::entry &transmit_pdo_comm_param_2_event_timer = entries[113];
+inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17", {entries.data() + 114, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_17_nbr_of_entries = entries[114];
+inline constexpr const od::entry &transmit_pdo_comm_param_17_cob_id = entries[115];
+inline constexpr const od::entry &transmit_pdo_comm_param_17_transmission_type = entries[116];
+inline constexpr const od::entry &transmit_pdo_comm_param_17_inhibit_time = entries[117];
+inline constexpr const od::entry &transmit_pdo_comm_param_17_compatibility_entry = entries[118];
+inline constexpr const od::entry &transmit_pdo_comm_param_17_event_timer = entries[119];
+inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18", {entries.data() + 120, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_18_nbr_of_entries = entries[120];
+inline constexpr const od::entry &transmit_pdo_comm_param_18_cob_id = entries[121];
+inline constexpr const od::entry &transmit_pdo_comm_param_18_transmission_type = entries[122];
+inline constexpr const od::entry &transmit_pdo_comm_param_18_inhibit_time = entries[123];
+inline constexpr const od::entry &transmit_pdo_comm_param_18_compatibility_entry = entries[124];
+inline constexpr const od::entry &transmit_pdo_comm_param_18_event_timer = entries[125];
+inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19", {entries.data() + 126, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_19_nbr_of_entries = entries[126];
+inline constexpr const od::entry &transmit_pdo_comm_param_19_cob_id = entries[127];
+inline constexpr const od::entry &transmit_pdo_comm_param_19_transmission_type = entries[128];
+inline constexpr const od::entry &transmit_pdo_comm_param_19_inhibit_time = entries[129];
+inline constexpr const od::entry &transmit_pdo_comm_param_19_compatibility_entry = entries[130];
+inline constexpr const od::entry &transmit_pdo_comm_param_19_event_timer = entries[131];
+inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20", {entries.data() + 132, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_20_nbr_of_entries = entries[132];
+inline constexpr const od::entry &transmit_pdo_comm_param_20_cob_id = entries[133];
+inline constexpr const od::entry &transmit_pdo_comm_param_20_transmission_type = entries[134];
+inline constexpr const od::entry &transmit_pdo_comm_param_20_inhibit_time = entries[135];
+inline constexpr const od::entry &transmit_pdo_comm_param_20_compatibility_entry = entries[136];
+inline constexpr const od::entry &transmit_pdo_comm_param_20_event_timer = entries[137];
+inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21", {entries.data() + 138, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_21_nbr_of_entries = entries[138];
+inline constexpr const od::entry &transmit_pdo_comm_param_21_cob_id = entries[139];
+inline constexpr const od::entry &transmit_pdo_comm_param_21_transmission_type = entries[140];
+inline constexpr const od::entry &transmit_pdo_comm_param_21_inhibit_time = entries[141];
+inline constexpr const od::entry &transmit_pdo_comm_param_21_compatibility_entry = entries[142];
+inline constexpr const od::entry &transmit_pdo_comm_param_21_event_timer = entries[143];
+inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22", {entries.data() + 144, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_22_nbr_of_entries = entries[144];
+inline constexpr const od::entry &transmit_pdo_comm_param_22_cob_id = entries[145];
+inline constexpr const od::entry &transmit_pdo_comm_param_22_transmission_type = entries[146];
+inline constexpr const od::entry &transmit_pdo_comm_param_22_inhibit_time = entries[147];
+inline constexpr const od::entry &transmit_pdo_comm_param_22_compatibility_entry = entries[148];
+inline constexpr const od::entry &transmit_pdo_comm_param_22_event_timer = entries[149];
+inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23", {entries.data() + 150, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_23_nbr_of_entries = entries[150];
+inline constexpr const od::entry &transmit_pdo_comm_param_23_cob_id = entries[151];
+inline constexpr const od::entry &transmit_pdo_comm_param_23_transmission_type = entries[152];
+inline constexpr const od::entry &transmit_pdo_comm_param_23_inhibit_time = entries[153];
+inline constexpr const od::entry &transmit_pdo_comm_param_23_compatibility_entry = entries[154];
+inline constexpr const od::entry &transmit_pdo_comm_param_23_event_timer = entries[155];
+inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24", {entries.data() + 156, 6}};
+inline constexpr const od::entry &transmit_pdo_comm_param_24_nbr_of_entries = entries[156];
+inline constexpr const od::entry &transmit_pdo_comm_param_24_cob_id = entries[157];
+inline constexpr const od::entry &transmit_pdo_comm_param_24_transmission_type = entries[158];
+inline constexpr const od::entry &transmit_pdo_comm_param_24_inhibit_time = entries[159];
+inline constexpr const od::entry &transmit_pdo_comm_param_24_compatibility_entry = entries[160];
+inline constexpr const od::entry &transmit_pdo_comm_param_24_event_timer = entries[161];
+inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1", {entries.data() + 162, 2}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_1_nbr_of_entries = entries[162];
+inline constexpr const od::entry &transmit_pdo_mapping_param_1_statusword = entries[163];
+inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2", {entries.data() + 164, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_2_nbr_of_entries = entries[164];
+inline constexpr const od::entry &transmit_pdo_mapping_param_2_statusword = entries[165];
+inline constexpr const od::entry &transmit_pdo_mapping_param_2_actual_position = entries[166];
+inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17", {entries.data() + 167, 2}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_17_nbr_of_entries = entries[167];
+inline constexpr const od::entry &transmit_pdo_mapping_param_17_digital_inputs = entries[168];
+inline constexpr od::object transmit_pdo_mapping_param_18{0x1A11, od::object_code::record, "Transmit PDO Mapping Param 18", {entries.data() + 169, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_18_nbr_of_entries = entries[169];
+inline constexpr const od::entry &transmit_pdo_mapping_param_18_mapping_entry_1 = entries[170];
+inline constexpr const od::entry &transmit_pdo_mapping_param_18_mapping_entry_2 = entries[171];
+inline constexpr od::object transmit_pdo_mapping_param_19{0x1A12, od::object_code::record, "Transmit PDO Mapping Param 19", {entries.data() + 172, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_19_nbr_of_entries = entries[172];
+inline constexpr const od::entry &transmit_pdo_mapping_param_19_mapping_entry_1 = entries[173];
+inline constexpr const od::entry &transmit_pdo_mapping_param_19_mapping_entry_2 = entries[174];
+inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20", {entries.data() + 175, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_20_nbr_of_entries = entries[175];
+inline constexpr const od::entry &transmit_pdo_mapping_param_20_actual_following_position_error = entries[176];
+inline constexpr const od::entry &transmit_pdo_mapping_param_20_process_status_register = entries[177];
+inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21", {entries.data() + 178, 2}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_21_nbr_of_entries = entries[178];
+inline constexpr const od::entry &transmit_pdo_mapping_param_21_actual_current = entries[179];
+inline constexpr od::object transmit_pdo_mapping_param_22{0x1A15, od::object_code::record, "Transmit PDO Mapping Param 22", {entries.data() + 180, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_22_nbr_of_entries = entries[180];
+inline constexpr const od::entry &transmit_pdo_mapping_param_22_mapping_entry_1 = entries[181];
+inline constexpr const od::entry &transmit_pdo_mapping_param_22_mapping_entry_2 = entries[182];
+inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23", {entries.data() + 183, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_23_nbr_of_entries = entries[183];
+inline constexpr const od::entry &transmit_pdo_mapping_param_23_i_force_actual = entries[184];
+inline constexpr const od::entry &transmit_pdo_mapping_param_23_process_status_register = entries[185];
+inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24", {entries.data() + 186, 3}};
+inline constexpr const od::entry &transmit_pdo_mapping_param_24_nbr_of_entries = entries[186];
+inline constexpr const od::entry &transmit_pdo_mapping_param_24_statusword = entries[187];
+inline constexpr const od::entry &transmit_pdo_mapping_param_24_i_force_actual = entries[188];
+inline constexpr const od::entry &s_curve_profile = entries[189]; // 0x2000
+inline constexpr const od::entry &reserved_2001 = entries[190]; // 0x2001
+inline constexpr const od::entry &reserved_2002 = entries[191]; // 0x2002
+inline constexpr const od::entry &reserved_2003 = entries[192]; // 0x2003
+inline constexpr const od::entry &xenax_error_number = entries[193]; // 0x2004
+inline constexpr const od::entry &i_force_actual = entries[194]; // 0x2005
+inline constexpr const od::entry &process_status_register = entries[195]; // 0x2006
+inline constexpr const od::entry &pdo_cycle_time = entries[196]; // 0x2007
+inline constexpr const od::entry &motor_type = entries[197]; // 0x2008
+inline constexpr const od::entry &limit_force = entries[198]; // 0x2009
+inline constexpr const od::entry &force_actual_value = entries[199]; // 0x200A
+inline constexpr const od::entry &direct_commands = entries[200]; // 0x5000
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter", {entries.data() + 201, 46}};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter", {entries.data() + 247, 17}};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter", {entries.data() + 264, 107}};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter", {entries.data() + 371, 12}};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter", {entries.data() + 383, 14}};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter", {entries.data() + 397, 11}};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter", {entries.data() + 408, 15}};
+inline constexpr const od::entry &signateq_sensor_model_type_sqsmt = entries[423]; // 0x5011
+inline constexpr const od::entry &signateq_sensor_serial_number_sqssn = entries[424]; // 0x5012
+inline constexpr const od::entry &tell_error_string_tes = entries[425]; // 0x5020
+inline constexpr const od::entry &servo_identification_string_sid = entries[426]; // 0x5021
+inline constexpr const od::entry &error_code = entries[427]; // 0x603F
+inline constexpr const od::entry &controlword = entries[428]; // 0x6040
+inline constexpr const od::entry &statusword = entries[429]; // 0x6041
+inline constexpr const od::entry &modes_of_operation_requested = entries[430]; // 0x6060
+inline constexpr const od::entry &modes_of_operation_display = entries[431]; // 0x6061
+inline constexpr const od::entry &position_actual_value = entries[432]; // 0x6064
+inline constexpr const od::entry &following_position_error_window = entries[433]; // 0x6065
+inline constexpr const od::entry &target_position_window = entries[434]; // 0x6067
+inline constexpr const od::entry &position_window_time = entries[435]; // 0x6068
+inline constexpr const od::entry &velocity_actual_value = entries[436]; // 0x606C
+inline constexpr const od::entry &limit_i_force = entries[437]; // 0x6073
+inline constexpr const od::entry &motor_current_actual_value = entries[438]; // 0x6078
+inline constexpr const od::entry &target_position = entries[439]; // 0x607A
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions", {entries.data() + 440, 3}};
+inline constexpr const od::entry &speed = entries[443]; // 0x6081
+inline constexpr const od::entry &acceleration = entries[444]; // 0x6083
+inline constexpr const od::entry &quick_stop_deceleration = entries[445]; // 0x6085
+inline constexpr const od::entry &reference_methods = entries[446]; // 0x6098
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds", {entries.data() + 447, 3}};
+inline constexpr const od::entry &velocity_offset = entries[450]; // 0x60B1
+inline constexpr const od::entry &torque_offset = entries[451]; // 0x60B2
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time", {entries.data() + 452, 3}};
+inline constexpr const od::entry &synchronous_cycle_time_highest_sub_index_value = entries[452];
+inline constexpr const od::entry &synchronous_cycle_time_base_value = entries[453];
+inline constexpr const od::entry &synchronous_cycle_time_n_10_exponent = entries[454];
+inline constexpr const od::entry &actual_position_following_error = entries[455]; // 0x60F4
+inline constexpr const od::entry &digital_inputs = entries[456]; // 0x60FD
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs", {entries.data() + 457, 3}};
+inline constexpr const od::entry &target_velocity = entries[460]; // 0x60FF
+inline constexpr const od::entry &supported_modes_of_operation = entries[461]; // 0x6502
+inline constexpr const od::entry &product_website_address = entries[462]; // 0x6505
 
 } // namespace fieldcodec::dictionaries::xenax_canopen
 // clang-format on

@@ -236,7 +236,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x5003, .sub = 58, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SSO Set Sector Offset", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 59, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENCPD Encoder Plausibility Checking Disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 60, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SPAD Set Point ACK disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
-    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .high = od::num::i(0), .default_value = od::num::i(0)},
+    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 62, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRH Dir Home", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 63, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRZ Z-Mark", .low = od::num::i(1), .high = od::num::i(3), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 64, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FQS Filter Quality Speed", .low = od::num::i(500), .high = od::num::i(100000), .default_value = od::num::i(5000)},

@@ -37,7 +37,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1030, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "InterfaceIndex_U16", .default_value = od::num::u(1U)},
     {.index = 0x1030, .sub = 2, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "InterfaceDescription_VSTR"},
     {.index = 0x1030, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "InterfaceType_U8", .default_value = od::num::u(6U)},
-    {.index = 0x1030, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "InterfaceMtu_U32", .default_value = od::num::u(646U)},
+    {.index = 0x1030, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "InterfaceMtu_U32", .default_value = od::num::u(646U)},
     {.index = 0x1030, .sub = 5, .object = od::object_code::record, .type = od::data_type::octet_string, .access_type = od::access::ro, .name = "InterfacePhysAddress_OSTR"},
     {.index = 0x1030, .sub = 6, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "InterfaceName_VSTR"},
     {.index = 0x1030, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "InterfaceOperStatus_U8", .default_value = od::num::u(0U)},
@@ -48,27 +48,27 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1400, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
     {.index = 0x1400, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "NodeID_U8", .default_value = od::num::u(0U)},
     {.index = 0x1400, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "MappingVersion_U8", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
-    {.index = 0x1600, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .object = od::object_code::array, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 1, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 3, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 4, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 5, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 6, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 7, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
+    {.index = 0x1600, .sub = 8, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
     {.index = 0x1800, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .default_value = od::num::u(2U)},
     {.index = 0x1800, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "NodeID_U8", .default_value = od::num::u(0U)},
     {.index = 0x1800, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "MappingVersion_U8", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .object = od::object_code::record, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
-    {.index = 0x1A00, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .object = od::object_code::array, .type = od::data_type::unsigned8, .name = "Nbr of Entries", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 1, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 1", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 2", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 3, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 3", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 4, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 4", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 5, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 5", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 6, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 6", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 7, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 7", .default_value = od::num::u(0U)},
+    {.index = 0x1A00, .sub = 8, .object = od::object_code::array, .type = od::data_type::unsigned64, .name = "ObjectMapping 8", .default_value = od::num::u(0U)},
     {.index = 0x1C0B, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "NumberOfEntries", .default_value = od::num::u(3U)},
     {.index = 0x1C0B, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .name = "CumulativeCnt_U32", .default_value = od::num::u(0U)},
     {.index = 0x1C0B, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "ThresholdCnt_U32", .default_value = od::num::u(0U)},
@@ -243,7 +243,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x5003, .sub = 58, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SSO Set Sector Offset", .low = od::num::i(-2147483648), .high = od::num::i(2147483647), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 59, .object = od::object_code::array, .type = od::data_type::integer32, .name = "ENCPD Encoder Plausibility Checking Disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 60, .object = od::object_code::array, .type = od::data_type::integer32, .name = "SPAD Set Point ACK disable", .low = od::num::i(0), .high = od::num::i(1), .default_value = od::num::i(0)},
-    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .high = od::num::i(0), .default_value = od::num::i(0)},
+    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .name = "RXZP ROTAX Z-Position", .low = od::num::i(0), .default_value = od::num::i(0)},
     {.index = 0x5003, .sub = 62, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRH Dir Home", .low = od::num::i(1), .high = od::num::i(2), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 63, .object = od::object_code::array, .type = od::data_type::integer32, .name = "DRZ Z-Mark", .low = od::num::i(1), .high = od::num::i(3), .default_value = od::num::i(1)},
     {.index = 0x5003, .sub = 64, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FQS Filter Quality Speed", .low = od::num::i(500), .high = od::num::i(100000), .default_value = od::num::i(5000)},
@@ -421,30 +421,12 @@ inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::rec
 inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nbr_of_entries = entries[28];
 inline constexpr const od::entry &pdo_rxcommparam_00h_rec_nodeid_u8 = entries[29];
 inline constexpr const od::entry &pdo_rxcommparam_00h_rec_mappingversion_u8 = entries[30];
-inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::record, "PDO_RxMappParam_00h_AU64", {entries.data() + 31, 9}};
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_nbr_of_entries = entries[31];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_1 = entries[32];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_2 = entries[33];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_3 = entries[34];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_4 = entries[35];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_5 = entries[36];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_6 = entries[37];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_7 = entries[38];
-inline constexpr const od::entry &pdo_rxmappparam_00h_au64_objectmapping_8 = entries[39];
+inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::array, "PDO_RxMappParam_00h_AU64", {entries.data() + 31, 9}};
 inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC", {entries.data() + 40, 3}};
 inline constexpr const od::entry &pdo_txcommparam_00h_rec_nbr_of_entries = entries[40];
 inline constexpr const od::entry &pdo_txcommparam_00h_rec_nodeid_u8 = entries[41];
 inline constexpr const od::entry &pdo_txcommparam_00h_rec_mappingversion_u8 = entries[42];
-inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::record, "PDO_TxMappParam_00h_AU64", {entries.data() + 43, 9}};
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_nbr_of_entries = entries[43];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_1 = entries[44];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_2 = entries[45];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_3 = entries[46];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_4 = entries[47];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_5 = entries[48];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_6 = entries[49];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_7 = entries[50];
-inline constexpr const od::entry &pdo_txmappparam_00h_au64_objectmapping_8 = entries[51];
+inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::array, "PDO_TxMappParam_00h_AU64", {entries.data() + 43, 9}};
 inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC", {entries.data() + 52, 4}};
 inline constexpr const od::entry &dll_cnlosssoc_rec_numberofentries = entries[52];
 inline constexpr const od::entry &dll_cnlosssoc_rec_cumulativecnt_u32 = entries[53];
