@@ -153,7 +153,7 @@ struct simulated_xenax {
           co::make_frame(co::cob_id::tpdo(1, node).value(), std::span(b).first(map_tpdo1.bytes()))
               .value());
       REQUIRE(map_tpdo2.set(b, 0, statusword()).has_value());
-      REQUIRE(map_tpdo2.set(b, 1, static_cast<std::uint64_t>(std::int64_t{position})).has_value());
+      REQUIRE(map_tpdo2.set(b, 1, position).has_value());
       out.push_back(
           co::make_frame(co::cob_id::tpdo(2, node).value(), std::span(b).first(map_tpdo2.bytes()))
               .value());
@@ -214,7 +214,7 @@ struct master {
   void rpdo2(std::uint16_t cw, std::int32_t target) {
     std::array<std::uint8_t, 8> b{};
     REQUIRE(map_rpdo2.set(b, 0, cw).has_value());
-    REQUIRE(map_rpdo2.set(b, 1, static_cast<std::uint64_t>(std::int64_t{target})).has_value());
+    REQUIRE(map_rpdo2.set(b, 1, target).has_value());
     previous_cw = cw;
     send(co::make_frame(co::cob_id::rpdo(2, node).value(), std::span(b).first(map_rpdo2.bytes()))
              .value());
