@@ -4,6 +4,8 @@
 #include <fieldcodec/dictionaries/xenax_ethercat.hpp>
 #include <fieldcodec/dictionaries/xenax_powerlink.hpp>
 
+#include "doc_blocks.hpp"
+
 #include <doctest/doctest.h>
 
 #include <array>
@@ -491,4 +493,28 @@ TEST_CASE("64-bit and 1-bit fields keep their full range with their signedness")
   CHECK(b[16] == 0b1001);
   CHECK(m.add({0x5555, 0, pdo::signedness::unknown, 132, 8}) == errc::too_long); // full
   CHECK(m.size() == 4);
+}
+
+TEST_CASE("docs/canopen.md, PDO: the example compiles and says what it does") {
+  namespace pdo = fieldcodec::canopen::pdo;
+  namespace xcan = fieldcodec::dictionaries::xenax_canopen;
+
+  const auto entries = pdo::default_mapping(xcan::dictionary, 0x1A13).value();
+  const auto tpdo20 = pdo::make_mapping(xcan::dictionary, pdo::direction::tpdo, entries.entries());
+  const std::array<std::uint8_t, 8> frame{0xFF, 0xFF, 0xFF, 0xFF, 0x09, 0x00, 0x00, 0x00};
+  std::array<std::int64_t, 2> values{};
+  const auto unpacked = tpdo20.value().unpack_all(frame, values);
+  // unpacked.has_value(), values == {-1, 9}: a following error of -1, not 4294967295
+
+  CHECK(unpacked.has_value());
+  CHECK(values == std::array<std::int64_t, 2>{-1, 9});
+  // the block in the document is this one
+  int found = 0;
+  for (const auto &block :
+       doc_blocks::cpp_blocks(doc_blocks::beside(__FILE__, "../../docs/canopen.md"))) {
+    if (block.find("pdo::default_mapping") == std::string::npos) continue;
+    CHECK(doc_blocks::holds(doc_blocks::read_file(__FILE__), block));
+    ++found;
+  }
+  CHECK(found == 1);
 }
