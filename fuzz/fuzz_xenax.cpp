@@ -100,7 +100,7 @@ void check_units(const std::uint8_t *r) {
   const auto steps = static_cast<std::uint16_t>(r[0] | (r[1] << 8U));
   const auto ma = xe::current_limit_to_ma(steps);
   auto back = xe::current_limit_from_ma(fc::decimal{static_cast<std::int64_t>(ma), 0});
-  if (steps <= xe::max_current_limit) {
+  if (steps != xe::no_current_limit && steps <= xe::max_current_limit) {
     FUZZ_CHECK(back.has_value() && back.value() == steps);
   } else {
     FUZZ_CHECK(back.is(errc::out_of_range));
@@ -118,9 +118,10 @@ void check_units(const std::uint8_t *r) {
   FUZZ_CHECK((rotary ? lim_n : lim_t).is(errc::invalid_argument));
   auto lim = rotary ? lim_t : lim_n;
   if (lim) {
-    FUZZ_CHECK(lim.value() <= xe::max_current_limit && force.mantissa >= 0);
+    // never 0 (= no limit) and never from a negative force
+    FUZZ_CHECK(lim.value() >= 1U && lim.value() <= xe::max_current_limit && force.mantissa > 0);
   } else {
-    FUZZ_CHECK(lim.is(errc::out_of_range) && force.mantissa < 0);
+    FUZZ_CHECK(lim.is(errc::out_of_range));
   }
   // mA -> force -> mA at a resolution finer than the constant (10 k mA/N, 1000 k mA/Nm)
   if (rotary) {
@@ -138,15 +139,23 @@ void check_units(const std::uint8_t *r) {
        static_cast<std::uint32_t>(r[7] & 0x7FU) << 24U) +
       1U);
   const xe::linear_resolution lares{resolution};
-  auto mm = xe::to_mm(mn, lares, 9);
-  FUZZ_CHECK(mm.has_value() && xe::to_increments(mm.value(), lares).value() == mn);
-  const xe::rotary_resolution enc{resolution};
-  auto deg = xe::to_degrees(mn, enc, 9);
-  FUZZ_CHECK(deg.has_value());
-  if (auto inc = xe::to_increments(deg.value(), enc)) {
-    FUZZ_CHECK(inc.value() == mn);
+  // (9 decimal places of a huge value may not fit an int64 mantissa: overflow, never a wrong value)
+  if (auto mm = xe::to_mm(mn, lares, 9)) {
+    FUZZ_CHECK(xe::to_increments(mm.value(), lares).value() == mn);
   } else {
-    FUZZ_CHECK(inc.is(errc::overflow)); // 17+ significant decimal places after normalising
+    FUZZ_CHECK(mm.is(errc::overflow));
+    FUZZ_CHECK(xe::to_mm(mn, lares, 0).has_value());
+  }
+  const xe::rotary_resolution enc{resolution};
+  if (auto deg = xe::to_degrees(mn, enc, 9)) {
+    if (auto inc = xe::to_increments(deg.value(), enc)) {
+      FUZZ_CHECK(inc.value() == mn);
+    } else {
+      FUZZ_CHECK(inc.is(errc::overflow)); // 17+ significant decimal places after normalising
+    }
+  } else {
+    FUZZ_CHECK(deg.is(errc::overflow));
+    FUZZ_CHECK(xe::to_degrees(mn, enc, 0).has_value());
   }
   FUZZ_CHECK(xe::to_mm(mn, xe::linear_resolution{-resolution}).is(errc::invalid_argument));
   // 60B2h per bus

@@ -116,6 +116,18 @@ TEST_CASE("force and torque <-> motor current (6.1.2, l. 1875-1901)") {
   // 6078h's ±20 000 mA (errata 17) on an ELAX: 166.667 N
   CHECK(same(xenax::to_newtons(20000, motor::elax_ex_f20).value().value, {166667, 3}));
   CHECK(same(xenax::to_newtons(20000, motor::elax_ex_f20, 0).value().value, {167, 0}));
+  // a limit never comes out as 0, which the XENAX takes as "no limitation" (l. 1849): a force
+  // or current that rounds to 0 steps is refused; switching off is written as no_current_limit
+  CHECK(xenax::current_limit_for(xenax::newtons{{0, 0}}, motor::elax_ex_f20) == errc::out_of_range);
+  CHECK(xenax::current_limit_for(xenax::newtons{{4, 2}}, motor::elax_ex_f20) ==
+        errc::out_of_range); // 0.04 N x 12 = 0.48 steps
+  CHECK(xenax::current_limit_for(xenax::newtons{{5, 2}}, motor::elax_ex_f20).value() == 1);
+  CHECK(xenax::current_limit_for(xenax::newton_metres{{1, 3}}, motor::rotax_rxhq_110_50_t1_5) ==
+        errc::out_of_range); // 0.001 Nm = 0.25 steps
+  CHECK(xenax::current_limit_from_ma({4, 0}) == errc::out_of_range);
+  CHECK(xenax::current_limit_from_ma({0, 0}) == errc::out_of_range);
+  CHECK(xenax::current_limit_from_ma({5, 0}).value() == 1);
+  static_assert(xenax::no_current_limit == 0);
   // 20 A (6073h maximum 2000) is the limit
   CHECK(xenax::current_limit_for(xenax::newtons{{166, 0}}, motor::elax_ex_f20).value() == 1992);
   CHECK(xenax::current_limit_for(xenax::newtons{{167, 0}}, motor::elax_ex_f20) ==

@@ -17,14 +17,18 @@ namespace fieldcodec::xenax {
 // ---------------------------------------------------------------------------------------------
 // Current and force
 
-/// 6073h Limit I_Force: UNSIGNED16 in 10 mA, 0..2000 (20 A); 0 = no limit.
+/// 6073h Limit I_Force: UNSIGNED16 in 10 mA, 0..2000 (20 A).
 inline constexpr std::uint16_t max_current_limit = 2000;
+/// 6073h = 0 switches force limitation off ("No limitation occurs when the value is set to
+/// zero", 6.1.2, l. 1849). Write it explicitly: no conversion below ever returns 0.
+inline constexpr std::uint16_t no_current_limit = 0;
 
-/// mA → 6073h steps, rounded half away from zero. Errors: out_of_range (negative or > 20 A).
+/// mA → 6073h steps, rounded half away from zero. Errors: out_of_range (negative, above 20 A,
+/// or so small that it rounds to 0 steps, which the XENAX would take as "no limit").
 [[nodiscard]] constexpr result<std::uint16_t> current_limit_from_ma(decimal ma) noexcept {
   auto raw = scaling::to_raw(ma, scaling::linear{{1, 1}, {0, 0}}, scaling::field{2, false});
   if (!raw) return raw.error() == errc::overflow ? errc::out_of_range : raw.error();
-  if (raw.value() > max_current_limit) return errc::out_of_range;
+  if (raw.value() == 0 || raw.value() > max_current_limit) return errc::out_of_range;
   return static_cast<std::uint16_t>(raw.value());
 }
 /// 6073h steps → mA.
@@ -95,13 +99,13 @@ namespace detail {
   return static_cast<std::int32_t>(raw.value());
 }
 /// force (N or Nm) → 6073h steps of 10 mA in one rounding (k steps/N, 100·k steps/Nm).
-/// Errors: out_of_range (negative or above 20 A).
+/// Errors: out_of_range (negative, above 20 A, or rounding to 0 = "no limit").
 [[nodiscard]] constexpr result<std::uint16_t> limit_steps(decimal force, motor m) noexcept {
   const decimal k = force_constant(m);
   const decimal per_unit = normalize(decimal{k.mantissa * (is_rotary(m) ? 100 : 1), k.places});
   auto raw = scaling::to_raw(force, scaling::linear{per_unit, {0, 0}}, scaling::field{2, false});
   if (!raw) return raw.error() == errc::overflow ? errc::out_of_range : raw.error();
-  if (raw.value() > max_current_limit) return errc::out_of_range;
+  if (raw.value() == 0 || raw.value() > max_current_limit) return errc::out_of_range;
   return static_cast<std::uint16_t>(raw.value());
 }
 } // namespace detail
@@ -142,7 +146,8 @@ namespace detail {
 
 /// Force → 6073h Limit I_Force (10 mA steps): the manual's example (6.1.2, l. 1897-1901)
 /// limits an ELAX to 4 N with 48. One rounding, half away from zero, from the exact value.
-/// Errors: invalid_argument (a ROTAX), out_of_range (negative, or above 20 A).
+/// Errors: invalid_argument (a ROTAX), out_of_range (negative, above 20 A, or a force so small
+/// that it rounds to 0 steps: 0 would switch limitation off, see no_current_limit).
 [[nodiscard]] constexpr result<std::uint16_t> current_limit_for(newtons f, motor m) noexcept {
   if (is_rotary(m)) return errc::invalid_argument;
   return detail::limit_steps(f.value, m);
