@@ -807,7 +807,7 @@ consteval void raise(mapping_problem p) {
   }
 }
 template <std::size_t N>
-consteval static_mapping<N> layout(const mapping_entry (&e)[N]) {
+constexpr static_mapping<N> layout(const mapping_entry (&e)[N]) noexcept {
   static_mapping<N> m;
   for (std::size_t i = 0; i < N; ++i) {
     m.entries[i] = e[i];
