@@ -11,6 +11,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/ds402/state_machine.hpp>
+#include <fieldcodec/xenax/bus.hpp>
 #include <fieldcodec/xenax/error_code.hpp>
 #include <fieldcodec/xenax/homing.hpp>
 #include <fieldcodec/xenax/modes.hpp>
@@ -32,7 +33,7 @@ namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 using fieldcodec::byte_order;
 
 namespace {
-constexpr std::uint8_t node = 1;
+constexpr std::uint8_t node = xenax::node_id(1).value(); // the XENAX takes 1-99 (2.5, CI)
 
 co::can_frame F(std::uint16_t id, std::initializer_list<std::uint8_t> b) {
   return co::make_frame(id, b).value();
