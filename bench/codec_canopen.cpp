@@ -69,8 +69,10 @@ void fill_inputs() {
     w.value = static_cast<std::uint32_t>(r.next());
     const auto size = static_cast<std::size_t>(r.between(1, 4));
     const auto bytes = fieldcodec::to_bytes<std::uint32_t>(w.value, byte_order::little);
-    g_sdo_frames[i] = sdo::expedited_download(w.node, w.index, w.sub,
-                                              std::span<const std::uint8_t>(bytes).first(size))
+    g_sdo_frames[i] = sdo::channel::default_for(w.node)
+                          .value()
+                          .request(sdo::expedited_download(
+                              {w.index, w.sub}, std::span<const std::uint8_t>(bytes).first(size)))
                           .value();
     auto &v = g_rpdo[i];
     v.controlword = static_cast<std::uint16_t>(r.below(0x10000));
@@ -87,7 +89,11 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/expedited_download encode u32",
       [](const sdo_write &w) {
         const auto bytes = fieldcodec::to_bytes<std::uint32_t>(w.value, byte_order::little);
-        return sdo::expedited_download(w.node, w.index, w.sub, bytes).value_or(co::can_frame{});
+        const auto ch = sdo::channel::default_for(w.node);
+        if (!ch) return co::can_frame{};
+        return ch.value()
+            .request(sdo::expedited_download({w.index, w.sub}, bytes))
+            .value_or(co::can_frame{});
       },
       [](const sdo_write &w) {
         co::can_frame f;
@@ -108,13 +114,14 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/decode_request expedited download",
       [](const co::can_frame &f) {
         sdo_decoded d;
-        auto m = sdo::decode_request(f);
-        if (!m || m.value().k != sdo::kind::initiate_download_request || !m.value().expedited) {
+        auto m = sdo::decode(f, sdo::direction::to_server);
+        if (!m || m.value().type != sdo::message_type::initiate_download_request ||
+            !m.value().expedited) {
           return d;
         }
         const auto &msg = m.value();
-        d.index = msg.index;
-        d.sub = msg.sub;
+        d.index = msg.address.index;
+        d.sub = msg.address.sub;
         d.size = msg.data_size;
         d.value = static_cast<std::uint32_t>(
             fieldcodec::load_unsigned(msg.bytes(), msg.data_size, byte_order::little).value_or(0));

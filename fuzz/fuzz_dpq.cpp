@@ -279,8 +279,8 @@ void check_sdo(const od::entry &e, reader &r) {
     // canonical answer: expedited upload response with size indication and the field's bytes
     auto p = dpq::raw_to_bytes(e, raw.value());
     if (p) {
-      auto canon =
-          fieldcodec::canopen::sdo::expedited_upload_response(5, e.index, e.sub, p.value().span());
+      auto canon = fieldcodec::canopen::sdo::channel::default_for(5).value().response(
+          fieldcodec::canopen::sdo::expedited_upload_response({e.index, e.sub}, p.value().span()));
       FUZZ_CHECK(canon.has_value());
       FUZZ_CHECK(dpq::read_raw_response(5, e, canon.value()).value() == raw.value());
     } else {
@@ -289,7 +289,8 @@ void check_sdo(const od::entry &e, reader &r) {
     if (auto eu = dpq::read_response(5, e, f)) {
       auto w = dpq::write_request(5, e, eu.value());
       if (w) {
-        auto m = fieldcodec::canopen::sdo::decode_request(w.value());
+        auto m = fieldcodec::canopen::sdo::decode(w.value(),
+                                                  fieldcodec::canopen::sdo::direction::to_server);
         FUZZ_CHECK(m.has_value() && p.has_value());
         FUZZ_CHECK(std::equal(m.value().bytes().begin(), m.value().bytes().end(),
                               p.value().span().begin(), p.value().span().end()));
@@ -321,8 +322,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     // the abort table: every row's code is composed of its columns and found again
     for (const auto &row : dpq::sdo_abort_table) {
       FUZZ_CHECK(dpq::compose_abort_code(row.additional, row.error_code, row.error_class) ==
-                 row.abort_code);
-      FUZZ_CHECK(dpq::find_sdo_abort(row.abort_code) != nullptr);
+                 row.code);
+      FUZZ_CHECK(dpq::find_sdo_abort(row.code) != nullptr);
     }
     return 0;
   }

@@ -72,7 +72,8 @@ void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte
 
   // SDO: expedited upload response with the bytes (little-endian on CANopen) → the value.
   if (order != fc::byte_order::little || w > 4U) return;
-  auto f = sdo::expedited_upload_response(5, e.index, e.sub, in);
+  auto f = sdo::channel::default_for(5).value().response(
+      sdo::expedited_upload_response({e.index, e.sub}, in));
   FUZZ_CHECK(f.has_value());
   auto v = sdo::upload_value(e, f.value());
   FUZZ_CHECK(v.has_value() && v.value() == any.value());
@@ -83,7 +84,7 @@ void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte
       const auto i = any.value().to_int64();
       if (i && i.value() > -(std::int64_t{1} << 53) && i.value() < (std::int64_t{1} << 53)) {
         FUZZ_CHECK(d.has_value());
-        auto m = sdo::decode_request(d.value());
+        auto m = sdo::decode(d.value(), sdo::direction::to_server);
         FUZZ_CHECK(m.has_value() && m.value().data_size == w);
         FUZZ_CHECK(std::equal(in.begin(), in.end(), m.value().bytes().begin()));
       }

@@ -49,13 +49,15 @@ void canopen_cycle(master &m) {
   // SDO: set profile position mode (6060h = 1) once, then serve responses.
   if (m.sdo.state() == co::sdo::transfer_state::idle) {
     const std::array<std::uint8_t, 1> mode{1};
-    if (auto f = m.sdo.download(0x6060, 0, mode, fw::tick)) send_can(f.value());
+    if (auto s = m.sdo.download({0x6060, 0}, mode, fw::tick)) {
+      for (const auto &f : s.value().send) send_can(f);
+    }
   }
   co::can_frame in{};
   in.id = static_cast<std::uint16_t>(0x580U + 1U);
   in.dlc = 8;
   in.data = fw::receive<8>();
-  if (auto o = m.sdo.on_frame(in, fw::tick); o.send) send_can(*o.send);
+  for (const auto &f : m.sdo.on_frame(in, fw::tick).send) send_can(f);
 
   // TPDO in → statusword → next controlword towards "operation enabled" → RPDO out.
   const auto tpdo = fw::receive<6>(8);

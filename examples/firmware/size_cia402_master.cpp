@@ -24,14 +24,15 @@ constexpr auto tx_map =
 int main() {
   co::sdo::client client(1, 500);
   const auto mode = fw::receive<1>();
-  if (auto f = client.download(0x6060, 0, mode, fw::tick)) fw::transmit(f.value().data);
+  if (auto s = client.download({0x6060, 0}, mode, fw::tick)) {
+    for (const auto &f : s.value().send) fw::transmit(f.data);
+  }
   for (int i = 0; i < 4; ++i) {
     co::can_frame in{};
     in.id = static_cast<std::uint16_t>(0x580U + fw::rx_register[0]);
     in.dlc = 8;
     in.data = fw::receive<8>();
-    auto o = client.on_frame(in, fw::tick);
-    if (o.send) fw::transmit(o.send->data);
+    for (const auto &f : client.on_frame(in, fw::tick).send) fw::transmit(f.data);
   }
   fieldcodec::ds402::power_sequencer walker;
   const auto tpdo = fw::receive<8>();

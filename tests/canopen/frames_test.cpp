@@ -127,6 +127,22 @@ TEST_CASE("boot-up and heartbeat") {
         errc::unexpected_frame);
 }
 
+// Issue 12 #5: a widely used master sends the guarding RTR with DLC 0; CiA 301 shows DLC 1. The
+// node must answer both (before the fix, DLC 0 was refused with bad_length and the master saw a
+// dead node).
+TEST_CASE("node guarding: a remote request is answered whatever its DLC") {
+  using co::nmt::state;
+  co::nmt::guard_responder node(5);
+  for (std::uint8_t dlc = 0; dlc <= 8; ++dlc) {
+    CAPTURE(static_cast<int>(dlc));
+    const auto req = co::make_remote_frame(0x705, dlc).value();
+    CHECK(co::nmt::decode_guard_request(req).value() == 5);
+    const auto toggle = static_cast<std::uint8_t>(dlc % 2U == 0U ? 0x00U : 0x80U);
+    CHECK(node.respond(req, state::operational).value() ==
+          F(0x705, {static_cast<std::uint8_t>(toggle | 0x05U)}));
+  }
+}
+
 TEST_CASE("node guarding with the alternating toggle") {
   using co::nmt::state;
   const auto req = co::nmt::encode_guard_request(5).value();
@@ -135,7 +151,9 @@ TEST_CASE("node guarding with the alternating toggle") {
   CHECK(req.dlc == 1);
   CHECK(co::nmt::decode_guard_request(req).value() == 5);
   CHECK(co::nmt::decode_guard_request(F(0x705, {0})) == errc::unexpected_frame);
-  CHECK(co::nmt::decode_guard_request(co::make_remote_frame(0x705, 0).value()) == errc::bad_length);
+  co::can_frame nine = co::make_remote_frame(0x705, 8).value();
+  nine.dlc = 9;
+  CHECK(co::nmt::decode_guard_request(nine) == errc::bad_length);
 
   co::nmt::guard_responder node(5);
   co::nmt::guard_monitor master(5);

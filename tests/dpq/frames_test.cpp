@@ -101,7 +101,8 @@ TEST_CASE("dpq frames: event timer of TPDO1 on node 5 = 100 ms (3.4)") {
   CHECK(dpq::write_raw_request(5, event_timer, 100).value() == req.value());
   // Reply as printed: 0x585 60 00 18 05 00 00 00 00.
   const auto reply = frame(0x585, {0x60, 0x00, 0x18, 0x05, 0x00, 0x00, 0x00, 0x00});
-  CHECK(co::sdo::download_response(5, 0x1800, 5).value() == reply);
+  CHECK(co::sdo::channel::default_for(5).value().response(
+            co::sdo::download_response({0x1800, 5})) == reply);
   CHECK(dpq::write_response(5, event_timer, reply).has_value());
   // "The contents of the data bytes are arbitrary and must be ignored by the control."
   CHECK(dpq::write_response(5, event_timer,
@@ -118,7 +119,8 @@ TEST_CASE("dpq frames: read-back of the event timer (3.4, errata DPQ-F1/F2)") {
   // The reply has 8 bytes: 4B 00 18 05 64 00 00 00 (the manual shows only "64 00").
   const auto reply = frame(0x585, {0x4B, 0x00, 0x18, 0x05, 0x64, 0x00, 0x00, 0x00});
   const std::array<std::uint8_t, 2> value{0x64, 0x00};
-  CHECK(co::sdo::expedited_upload_response(5, 0x1800, 5, value).value() == reply);
+  CHECK(co::sdo::channel::default_for(5).value().response(
+            co::sdo::expedited_upload_response({0x1800, 5}, value)) == reply);
   CHECK(dpq::read_raw_response(5, event_timer, reply).value() == 100);
   CHECK(dpq::read_response(5, event_timer, reply).value().mantissa == 100);
   // The frame exactly as printed (6 bytes) is refused.
@@ -194,21 +196,19 @@ TEST_CASE("dpq frames: an abort from the card (3.3 table)") {
   const auto f = frame(0x585, {0x80, 0x23, 0x20, 0x00, 0x31, 0x00, 0x09, 0x06});
   CHECK(dpq::write_response(5, inj_p_limit_1, f).error() == errc::aborted);
   CHECK(dpq::read_response(5, inj_p_limit_1, f).error() == errc::aborted);
-  auto m = co::sdo::decode_response(f);
+  auto m = co::sdo::decode(f, co::sdo::direction::to_client);
   REQUIRE(m.has_value());
-  CHECK(m.value().code == 0x06090031U);
-  CHECK(dpq::describe_sdo_abort(m.value().code) == "value too large");
-  CHECK(dpq::sdo_abort_errc(m.value().code) == errc::out_of_range);
+  CHECK(m.value().abort == co::sdo::abort_code::value_too_high);
+  CHECK(dpq::describe_sdo_abort(m.value().abort) == "value too large");
+  CHECK(dpq::sdo_abort_errc(m.value().abort) == errc::out_of_range);
   // Every row of the table, framed by the generic encoder, decodes to the same code.
   for (const auto &row : dpq::sdo_abort_table) {
-    auto a = co::sdo::abort(co::sdo::direction::to_client, 5, 0x2023, 0,
-                            static_cast<co::sdo::abort_code>(row.abort_code));
-    REQUIRE(a.has_value());
-    CHECK(a.value().data[4] == static_cast<std::uint8_t>(row.additional & 0xFFU));
-    CHECK(a.value().data[5] == static_cast<std::uint8_t>(row.additional >> 8U));
-    CHECK(a.value().data[6] == row.error_code);
-    CHECK(a.value().data[7] == row.error_class);
-    CHECK(co::sdo::is_known(row.abort_code)); // all 16 are CiA 301 codes
+    const auto a = co::sdo::abort({0x2023, 0}, row.code);
+    CHECK(a[4] == static_cast<std::uint8_t>(row.additional & 0xFFU));
+    CHECK(a[5] == static_cast<std::uint8_t>(row.additional >> 8U));
+    CHECK(a[6] == row.error_code);
+    CHECK(a[7] == row.error_class);
+    CHECK(co::sdo::is_known(row.code)); // all 16 are CiA 301 codes
   }
 }
 

@@ -13,9 +13,13 @@ namespace fc = fieldcodec;
 namespace dpq = fieldcodec::dpq;
 using fc::errc;
 
-static_assert(dpq::compose_abort_code(0x0011, 0x09, 0x06) == 0x06090011U);
-static_assert(dpq::find_sdo_abort(0x06020000U)->error == errc::unknown_object);
-static_assert(dpq::find_sdo_abort(0x08000000U) == nullptr);
+namespace {
+constexpr dpq::abort_code A(std::uint32_t v) { return static_cast<dpq::abort_code>(v); }
+} // namespace
+
+static_assert(dpq::compose_abort_code(0x0011, 0x09, 0x06) == A(0x06090011U));
+static_assert(dpq::find_sdo_abort(A(0x06020000U))->error() == errc::unknown_object);
+static_assert(dpq::find_sdo_abort(A(0x08000000U)) == nullptr);
 
 TEST_CASE("dpq sdo abort: the manual's 16 rows, byte by byte") {
   struct printed {
@@ -48,32 +52,32 @@ TEST_CASE("dpq sdo abort: the manual's 16 rows, byte by byte") {
     const std::uint32_t le = std::uint32_t{p.b4} | (std::uint32_t{p.b5} << 8U) |
                              (std::uint32_t{p.b6} << 16U) | (std::uint32_t{p.b7} << 24U);
     CHECK(le == p.cia);
-    CHECK(row.abort_code == p.cia);
+    CHECK(row.code == A(p.cia));
     CHECK(row.additional == (std::uint32_t{p.b4} | (std::uint32_t{p.b5} << 8U)));
     CHECK(row.error_code == p.b6);
     CHECK(row.error_class == p.b7);
-    CHECK(dpq::compose_abort_code(row.additional, row.error_code, row.error_class) == p.cia);
-    CHECK(dpq::find_sdo_abort(p.cia) == &row);
+    CHECK(dpq::compose_abort_code(row.additional, row.error_code, row.error_class) == A(p.cia));
+    CHECK(dpq::find_sdo_abort(A(p.cia)) == &row);
     CHECK(!row.dpq_text.empty());
-    CHECK(!row.cia_text.empty());
+    CHECK(!row.cia_text().empty());
     codes.insert(p.cia);
   }
   CHECK(codes.size() == 16);
 }
 
 TEST_CASE("dpq sdo abort: texts and errc") {
-  CHECK(dpq::describe_sdo_abort(0x06090011) == "no such sub-index");
-  CHECK(dpq::describe_sdo_abort(0x05030000) == "toggle bit wrong");
-  CHECK(dpq::describe_sdo_abort(0x08000000).empty()); // CiA general error: not in the DPQ list
-  CHECK(dpq::sdo_abort_errc(0x06010000) == errc::access_denied);
-  CHECK(dpq::sdo_abort_errc(0x06090031) == errc::out_of_range);
-  CHECK(dpq::sdo_abort_errc(0x06090032) == errc::out_of_range);
-  CHECK(dpq::sdo_abort_errc(0x06070010) == errc::type_mismatch);
-  CHECK(dpq::sdo_abort_errc(0x06070012) == errc::too_long);
-  CHECK(dpq::sdo_abort_errc(0x06070013) == errc::bad_length);
-  CHECK(dpq::sdo_abort_errc(0x05030000) == errc::bad_toggle);
-  CHECK(dpq::sdo_abort_errc(0x05040001) == errc::unknown_command);
-  CHECK(dpq::sdo_abort_errc(0x08000022) == errc::bad_state);
-  CHECK(dpq::sdo_abort_errc(0x06020000) == errc::unknown_object);
-  CHECK(dpq::sdo_abort_errc(0x12345678) == errc::aborted);
+  CHECK(dpq::describe_sdo_abort(A(0x06090011)) == "no such sub-index");
+  CHECK(dpq::describe_sdo_abort(A(0x05030000)) == "toggle bit wrong");
+  CHECK(dpq::describe_sdo_abort(A(0x08000000)).empty()); // CiA general error: not in the DPQ list
+  CHECK(dpq::sdo_abort_errc(A(0x06010000)) == errc::access_denied);
+  CHECK(dpq::sdo_abort_errc(A(0x06090031)) == errc::out_of_range);
+  CHECK(dpq::sdo_abort_errc(A(0x06090032)) == errc::out_of_range);
+  CHECK(dpq::sdo_abort_errc(A(0x06070010)) == errc::type_mismatch);
+  CHECK(dpq::sdo_abort_errc(A(0x06070012)) == errc::too_long);
+  CHECK(dpq::sdo_abort_errc(A(0x06070013)) == errc::bad_length);
+  CHECK(dpq::sdo_abort_errc(A(0x05030000)) == errc::bad_toggle);
+  CHECK(dpq::sdo_abort_errc(A(0x05040001)) == errc::unknown_command);
+  CHECK(dpq::sdo_abort_errc(A(0x08000022)) == errc::bad_state);
+  CHECK(dpq::sdo_abort_errc(A(0x06020000)) == errc::unknown_object);
+  CHECK(dpq::sdo_abort_errc(A(0x12345678)) == errc::aborted);
 }

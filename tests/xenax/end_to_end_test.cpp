@@ -54,12 +54,13 @@ constexpr auto map_tpdo1 =
     pdo::make_static_mapping(xcan::dictionary, pdo::direction::tpdo, pdo1_tx_map);
 
 // A XENAX as far as these examples need it.
+constexpr auto xcan_layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+
 struct simulated_xenax {
-  std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store::storage_size(xcan::dictionary));
-  sdo::dictionary_store store{xcan::dictionary, storage};
+  std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(xcan_layout.storage_size());
+  sdo::dictionary_store<> store{xcan::dictionary, xcan_layout, storage};
   std::array<std::uint8_t, 256> sdo_buffer{};
-  sdo::server<sdo::dictionary_store> server{node, store, sdo_buffer};
+  sdo::server<sdo::dictionary_store<>> server{node, store, sdo_buffer};
   co::nmt::state nmt = co::nmt::state::pre_operational;
   ds402::state state = ds402::state::switch_on_disabled;
   std::uint16_t previous_cw = 0;
@@ -74,14 +75,16 @@ struct simulated_xenax {
     return static_cast<std::uint16_t>(ds402::state_bits(state) | ds402::sw::remote | mode_bits);
   }
   std::int8_t mode_display() const {
-    return static_cast<std::int8_t>(store.slot(0x6061, 0).value()[0]);
+    return static_cast<std::int8_t>(store.value({0x6061, 0}).value()[0]);
   }
   void store_value(std::uint16_t index, std::int64_t v) {
-    auto s = store.slot(index, 0).value();
-    auto r = v < 0 ? fieldcodec::store_signed(s, s.size(), v, byte_order::little)
-                   : fieldcodec::store_unsigned(s, s.size(), static_cast<std::uint64_t>(v),
-                                                byte_order::little);
+    std::array<std::uint8_t, 8> b{};
+    const auto n = store.value({index, 0}).value().size();
+    auto r =
+        v < 0 ? fieldcodec::store_signed(b, n, v, byte_order::little)
+              : fieldcodec::store_unsigned(b, n, static_cast<std::uint64_t>(v), byte_order::little);
     REQUIRE(r.has_value());
+    REQUIRE(store.set({index, 0}, std::span(b).first(n)) == sdo::abort_code::none);
   }
   std::vector<co::can_frame> power_on() { return {co::nmt::encode_boot_up(node).value()}; }
   void fail(std::uint8_t number) { // a following error, say
@@ -100,9 +103,10 @@ struct simulated_xenax {
       return out;
     }
     if (f.id == co::cob_id::sdo_rx(node).value()) {
-      if (auto r = server.on_frame(f, 0)) out.push_back(*r);
+      const auto r = server.on_frame(f, 0);
+      out.insert(out.end(), r.send.begin(), r.send.end());
       // 6061h follows 6060h once the drive has switched modes
-      store.slot(0x6061, 0).value()[0] = store.slot(0x6060, 0).value()[0];
+      REQUIRE(store.set({0x6061, 0}, store.value({0x6060, 0}).value()) == sdo::abort_code::none);
       return out;
     }
     if (nmt != co::nmt::state::operational) return out;
@@ -129,7 +133,8 @@ struct simulated_xenax {
         mode_display() == static_cast<std::int8_t>(xenax::mode::profile_position)) {
       if (rising) { // new set-point: acknowledge, motion starts
         const auto target = static_cast<std::int32_t>(
-            fieldcodec::load_signed(store.slot(0x607A, 0).value(), 4, byte_order::little).value());
+            fieldcodec::load_signed(store.value({0x607A, 0}).value(), 4, byte_order::little)
+                .value());
         goal = (cw & xenax::cw::relative) != 0 ? position + target : target;
         mode_bits = xenax::sw::bit12;
       } else if (falling && mode_bits == xenax::sw::bit12) { // the move completes at once
@@ -181,8 +186,8 @@ struct master {
         statusword = static_cast<std::uint16_t>(map_tpdo2.get(f.payload(), 0).value());
         actual_position = static_cast<std::int32_t>(map_tpdo2.get_signed(f.payload(), 1).value());
       } else if (f.id == co::cob_id::sdo_tx(node).value()) {
-        auto o = client.on_frame(f, 0);
-        if (o.send) send(*o.send);
+        const auto o = client.on_frame(f, 0);
+        for (const auto &g : o.send) send(g);
       }
     }
   }
@@ -190,8 +195,11 @@ struct master {
     log.push_back(f);
     deliver(drive.receive(f));
   }
+  void send(const sdo::step &s) {
+    for (const auto &f : s.send) send(f);
+  }
   void sdo_write(std::uint16_t index, std::uint8_t sub, std::span<const std::uint8_t> bytes) {
-    send(client.download(index, sub, bytes, 0).value());
+    send(client.download({index, sub}, bytes, 0).value());
     REQUIRE(client.state() == sdo::transfer_state::done);
   }
   template <class T>
@@ -201,7 +209,7 @@ struct master {
   }
   std::vector<std::uint8_t> sdo_read(std::uint16_t index, std::uint8_t sub = 0) {
     std::array<std::uint8_t, 64> buf{};
-    send(client.upload(index, sub, buf, 0).value());
+    send(client.upload({index, sub}, buf, 0).value());
     REQUIRE(client.state() == sdo::transfer_state::done);
     return {client.received().begin(), client.received().end()};
   }
@@ -399,13 +407,13 @@ TEST_CASE("XENAX 5.4.1: jog mode is selected with 6060h = 0xFF (-1)") {
   // 6060h limits are -2..10: 11 is refused by the server with "value too high"
   const std::array<std::uint8_t, 1> eleven{11};
   (void)m.take_log();
-  m.send(m.client.download(0x6060, 0, eleven, 0).value());
+  m.send(m.client.download({0x6060, 0}, eleven, 0).value());
   check_frames(m.take_log(), {
                                  F(0x601, {0x2F, 0x60, 0x60, 0x00, 0x0B, 0x00, 0x00, 0x00}),
                                  F(0x581, {0x80, 0x60, 0x60, 0x00, 0x31, 0x00, 0x09, 0x06}),
                              });
   CHECK(m.client.state() == sdo::transfer_state::failed);
-  CHECK(m.client.abort_code_value() == 0x06090031U);
+  CHECK(m.client.error()->abort == sdo::abort_code::value_too_high);
 }
 
 TEST_CASE("XENAX 5.1.2 reference of a LINAX, then 5.3.1 cyclic synchronous position set-up") {

@@ -112,13 +112,15 @@ struct heartbeat {
   return make_remote_frame(id.value(), 1);
 }
 
-/// Is `f` a node-guarding request? Returns the node. Errors: unexpected_frame (not a remote
-/// frame on 0x701..0x77F), bad_length (DLC not 1).
+/// Is `f` a node-guarding request? Returns the node. A remote frame on 0x700 + node is a
+/// guarding request whatever its DLC: CiA 301 asks for 1, widely used masters send 0 (issue 12
+/// #5), and a node that refused them would look dead to its master.
+/// Errors: unexpected_frame (not a remote frame on 0x701..0x77F), bad_length (DLC above 8).
 [[nodiscard]] constexpr result<std::uint8_t> decode_guard_request(const can_frame &f) noexcept {
   if (!f.rtr || f.id <= cob_id::nmt_error_base || f.id > cob_id::nmt_error_base + max_node_id) {
     return errc::unexpected_frame;
   }
-  if (f.dlc != 1U) return errc::bad_length;
+  if (f.dlc > max_dlc) return errc::bad_length;
   return static_cast<std::uint8_t>(f.id - cob_id::nmt_error_base);
 }
 

@@ -1,146 +1,314 @@
 // fieldcodec — the object store an SDO server reads and writes, and dictionary_store, a store
 // over an od::dictionary with caller-owned storage.
 //
-// A store is anything with
-//   sdo::abort_code read(std::uint16_t index, std::uint8_t sub, std::span<std::uint8_t> out,
-//                        std::size_t &size);
-//   sdo::abort_code write(std::uint16_t index, std::uint8_t sub, std::span<const std::uint8_t>);
-// returning abort_code::none on success.
+// A store serves values in parts (offset + chunk) so that no buffer of the server caps the size
+// of an object, and it never shows a value half-written: a value becomes visible only when the
+// last part of its transfer arrives. A store is anything with
+//
+//   sdo::abort_code read(od::address a, std::size_t offset, std::span<std::uint8_t> out,
+//                        std::size_t &total) const;
+//       copies min(out.size(), total − offset) bytes of the value from `offset` and sets
+//       `total` to the value's length now;
+//   sdo::abort_code begin_write(od::address a, std::optional<std::uint32_t> size);
+//       a download of `size` bytes (if known) is about to start: may it? (early aborts:
+//       no object, read-only, length);
+//   sdo::abort_code write(od::address a, std::size_t offset, std::span<const std::uint8_t> part,
+//                         bool last);
+//       a part of the value, in order from offset 0; with `last` the value is complete and
+//       becomes visible (or is refused, and the old value stays);
+//
+// each answering abort_code::none on success. The SDO server passes a value that fits its
+// buffer as one part (offset 0, last), so a store without a staging area still takes every
+// object up to the server's buffer size.
 #pragma once
 
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/value.hpp>
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace fieldcodec::canopen::sdo {
 
 template <class S>
-concept object_store = requires(S &s, std::uint16_t index, std::uint8_t sub,
+concept object_store = requires(S &s, const S &cs, od::address a, std::size_t offset,
                                 std::span<std::uint8_t> out, std::span<const std::uint8_t> in,
-                                std::size_t &size) {
-  { s.read(index, sub, out, size) } -> std::same_as<abort_code>;
-  { s.write(index, sub, in) } -> std::same_as<abort_code>;
+                                std::optional<std::uint32_t> size, std::size_t &total, bool last) {
+  { cs.read(a, offset, out, total) } -> std::same_as<abort_code>;
+  { s.begin_write(a, size) } -> std::same_as<abort_code>;
+  { s.write(a, offset, in, last) } -> std::same_as<abort_code>;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The layout of a dictionary's values in storage
+
+/// Bytes a byte string's slot spends on its current length (little-endian u32 before the data).
+inline constexpr std::size_t length_prefix = 4;
+
+/// Bytes of storage entry `e` needs: width() for fixed-size types; for byte strings the length
+/// prefix plus the capacity `size` (0 when the entry declares no size: it cannot be stored).
+[[nodiscard]] constexpr std::size_t slot_size(const od::entry &e) noexcept {
+  if (!od::is_byte_string(e.type)) return e.width();
+  return e.size == 0U ? 0U : length_prefix + e.size;
+}
+
+/// Where each entry's value starts in storage: offsets[i] for entry i in dictionary order,
+/// offsets[N] the total size. Computed once (at compile time for a generated dictionary), so
+/// a store finds a slot in O(1) after the dictionary's binary search.
+template <std::size_t N>
+struct store_layout {
+  std::array<std::uint32_t, N + 1> offsets{};
+  [[nodiscard]] constexpr std::size_t storage_size() const noexcept { return offsets[N]; }
+};
+
+/// The layout of `dict`, which must have exactly N entries (a mismatch leaves the layout empty:
+/// every access then answers general_error).
+template <std::size_t N>
+[[nodiscard]] constexpr store_layout<N> make_layout(od::dictionary dict) noexcept {
+  store_layout<N> l;
+  if (dict.size() != N) return l;
+  std::uint32_t at = 0;
+  for (std::size_t i = 0; i < N; ++i) {
+    l.offsets[i] = at;
+    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
+  }
+  l.offsets[N] = at;
+  return l;
+}
+
+/// The write hook of a store that takes every valid value.
+struct accept_writes {
+  [[nodiscard]] constexpr abort_code operator()(const od::entry &,
+                                                std::span<const std::uint8_t>) const noexcept {
+    return abort_code::none;
+  }
 };
 
 // ---------------------------------------------------------------------------------------------
 // An object store over a dictionary
 
-/// Stores the values of every entry of an od::dictionary in caller-owned bytes, one slot per
-/// entry in dictionary order: width() bytes (little-endian) for fixed-size types, `size` bytes
-/// for byte strings (which must declare a size). Checks on write: access type, length (exact for
-/// fixed-size types, at most `size` for byte strings, whose unused tail is zeroed), limits, and
-/// the rules of od::decode / od::decode_bytes.
+/// Stores the values of every entry of an od::dictionary in caller-owned bytes laid out by a
+/// store_layout: fixed-size values little-endian, byte strings (VISIBLE_STRING, OCTET_STRING,
+/// UNICODE_STRING, DOMAIN) with their current length and a capacity of `entry.size` bytes.
+///
+/// Writes (by SDO now, by RPDO through the same `write`) are checked — access type, length
+/// (exact for fixed-size types, at most the capacity for byte strings), limits, and the rules
+/// of od::decode / od::decode_bytes — and then offered to the write hook `OnWrite`:
+///   abort_code on_write(const od::entry &e, std::span<const std::uint8_t> value)
+/// which sees the complete new value before anyone else and may refuse it with an abort code
+/// (the old value stays). A value is stored only when complete: a value that arrives in several
+/// parts (larger than the SDO server's buffer) is collected in the caller-owned `staging` area
+/// and copied when its last part has passed the checks and the hook; without a staging area (or
+/// with one too small) such a value is refused with 0x05040005 (out of memory).
+template <class OnWrite = accept_writes>
 class dictionary_store {
 public:
-  constexpr dictionary_store(od::dictionary dict, std::span<std::uint8_t> storage) noexcept
-      : dict_(dict), storage_(storage) {}
+  template <std::size_t N>
+  constexpr dictionary_store(od::dictionary dict, const store_layout<N> &layout,
+                             std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
+                             OnWrite on_write = {}) noexcept
+      : dict_(dict), offsets_(layout.offsets), storage_(storage), staging_(staging),
+        on_write_(on_write) {}
 
-  /// Bytes of storage the dictionary needs.
+  /// Bytes of storage `dict` needs.
   [[nodiscard]] static constexpr std::size_t storage_size(od::dictionary dict) noexcept {
     std::size_t n = 0;
-    for (const auto &e : dict) n += e.width();
+    for (const auto &e : dict) n += slot_size(e);
     return n;
   }
 
-  /// Fill every slot with the entry's default (node-ID relative defaults for `node`); entries
-  /// without a numeric default get zeros, string defaults are copied from default_text.
-  /// Errors: buffer_too_small (storage too small).
+  /// Fill every slot with the entry's default for `node` (node-ID relative defaults resolved):
+  /// numbers from the numeric default (zero without one), byte strings from the default text
+  /// (its length is the value's length). Errors: buffer_too_small (storage or layout do not
+  /// fit the dictionary), too_long (a default text longer than its entry's capacity: cut, the
+  /// other entries are filled).
   [[nodiscard]] constexpr status init_defaults(std::uint8_t node) noexcept {
-    if (storage_.size() < storage_size(dict_)) return errc::buffer_too_small;
-    std::size_t off = 0;
-    for (const auto &e : dict_) {
-      auto slot = storage_.subspan(off, e.width());
+    if (!layout_fits()) return errc::buffer_too_small;
+    node_ = node;
+    status result{};
+    for (std::size_t i = 0; i < dict_.size(); ++i) {
+      const od::entry &e = dict_.entries()[i];
+      auto slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
       for (auto &b : slot) b = 0;
       if (od::is_byte_string(e.type)) {
-        for (std::size_t i = 0; i < e.default_text.size() && i < slot.size(); ++i) {
-          slot[i] = static_cast<std::uint8_t>(e.default_text[i]);
+        if (slot.empty()) continue;
+        std::size_t n = e.default_text.size();
+        if (n > e.size) {
+          n = e.size;
+          result = errc::too_long;
         }
+        for (std::size_t k = 0; k < n; ++k) {
+          slot[length_prefix + k] = static_cast<std::uint8_t>(e.default_text[k]);
+        }
+        set_length(slot, n);
       } else if (auto d = e.default_for(node)) {
         (void)od::encode(e, d.value(), slot); // an out-of-limit default stays zero
       }
-      off += e.width();
     }
-    return {};
+    return result;
   }
 
-  [[nodiscard]] constexpr abort_code read(std::uint16_t index, std::uint8_t sub,
+  [[nodiscard]] constexpr abort_code read(od::address a, std::size_t offset,
                                           std::span<std::uint8_t> out,
-                                          std::size_t &size) const noexcept {
-    const od::entry *e = nullptr;
-    std::span<std::uint8_t> slot;
-    if (auto c = locate(index, sub, e, slot); c != abort_code::none) return c;
-    if (!od::readable(e->access_type)) return abort_code::read_write_only;
-    std::size_t n = slot.size();
-    if (e->type == od::data_type::visible_string) {
-      while (n > 0U && slot[n - 1U] == 0U) --n;
-    }
-    if (n > out.size()) return abort_code::out_of_memory;
-    for (std::size_t i = 0; i < n; ++i) out[i] = slot[i];
-    size = n;
+                                          std::size_t &total) const noexcept {
+    const located l = locate(a);
+    if (l.code != abort_code::none) return l.code;
+    if (!od::readable(l.e->access_type)) return abort_code::read_write_only;
+    const auto v = current(l);
+    if (offset > v.size()) return abort_code::general_error;
+    const std::size_t n = v.size() - offset < out.size() ? v.size() - offset : out.size();
+    for (std::size_t i = 0; i < n; ++i) out[i] = v[offset + i];
+    total = v.size();
     return abort_code::none;
   }
 
-  [[nodiscard]] constexpr abort_code write(std::uint16_t index, std::uint8_t sub,
-                                           std::span<const std::uint8_t> data) noexcept {
-    const od::entry *e = nullptr;
-    std::span<std::uint8_t> slot;
-    if (auto c = locate(index, sub, e, slot); c != abort_code::none) return c;
-    if (!od::writable(e->access_type)) return abort_code::write_read_only;
-    if (od::is_byte_string(e->type)) {
-      if (data.size() > slot.size()) return abort_code::length_too_high;
-      auto v = od::decode_bytes(*e, data);
-      if (!v)
-        return v.error() == errc::too_long ? abort_code::length_too_high
-                                           : abort_code::invalid_value;
-      for (std::size_t i = 0; i < slot.size(); ++i) slot[i] = i < data.size() ? data[i] : 0U;
-      return abort_code::none;
+  [[nodiscard]] constexpr abort_code begin_write(od::address a,
+                                                 std::optional<std::uint32_t> size) noexcept {
+    const located l = locate(a);
+    if (l.code != abort_code::none) return l.code;
+    if (!od::writable(l.e->access_type)) return abort_code::write_read_only;
+    staged_ = 0;
+    staged_address_ = a;
+    if (!size) return abort_code::none;
+    if (od::is_byte_string(l.e->type)) {
+      return *size > l.e->size ? abort_code::length_too_high : abort_code::none;
     }
-    if (data.size() > slot.size()) return abort_code::length_too_high;
-    if (data.size() < slot.size()) return abort_code::length_too_low;
-    auto v = od::decode(*e, data, byte_order::little, od::limits::check);
-    if (!v) {
-      if (v.error() != errc::out_of_range) return abort_code::invalid_value;
-      return out_of_range_code(*e, data);
-    }
-    for (std::size_t i = 0; i < slot.size(); ++i) slot[i] = data[i];
+    if (*size > l.e->width()) return abort_code::length_too_high;
+    if (*size < l.e->width()) return abort_code::length_too_low;
     return abort_code::none;
   }
 
-  /// The stored bytes of index:sub (for the application side). Errors: unknown_object.
-  [[nodiscard]] constexpr result<std::span<std::uint8_t>> slot(std::uint16_t index,
-                                                               std::uint8_t sub) const noexcept {
-    const od::entry *e = nullptr;
-    std::span<std::uint8_t> s;
-    if (locate(index, sub, e, s) != abort_code::none) return errc::unknown_object;
-    return s;
+  [[nodiscard]] constexpr abort_code write(od::address a, std::size_t offset,
+                                           std::span<const std::uint8_t> part, bool last) noexcept {
+    const located l = locate(a);
+    if (l.code != abort_code::none) return l.code;
+    if (!od::writable(l.e->access_type)) return abort_code::write_read_only;
+    if (offset == 0U && last) return store(l, part, true);
+    if (offset == 0U) {
+      staged_ = 0;
+      staged_address_ = a;
+    }
+    if (staged_address_ != a || offset != staged_) return abort_code::general_error;
+    if (od::is_byte_string(l.e->type) ? offset + part.size() > l.e->size
+                                      : offset + part.size() > l.e->width()) {
+      return abort_code::length_too_high;
+    }
+    if (offset + part.size() > staging_.size()) return abort_code::out_of_memory;
+    for (std::size_t i = 0; i < part.size(); ++i) staging_[offset + i] = part[i];
+    staged_ = offset + part.size();
+    if (!last) return abort_code::none;
+    const std::size_t n = staged_;
+    staged_ = 0;
+    return store(l, std::span<const std::uint8_t>(staging_).first(n), true);
+  }
+
+  /// The application's side: the current value of `a` (fixed-size: width() bytes; byte
+  /// strings: the length written). Errors: unknown_object, access_denied (no storage).
+  [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
+  value(od::address a) const noexcept {
+    const located l = locate(a);
+    if (l.code == abort_code::unsupported_access) return errc::access_denied;
+    if (l.code != abort_code::none) return errc::unknown_object;
+    return current(l);
+  }
+  /// The application sets a value (also of read-only objects): the same checks as an SDO write
+  /// except access type, no write hook. Returns none or the abort code an SDO write would get.
+  [[nodiscard]] constexpr abort_code set(od::address a,
+                                         std::span<const std::uint8_t> value) noexcept {
+    const located l = locate(a);
+    if (l.code != abort_code::none) return l.code;
+    return store(l, value, false);
   }
 
   [[nodiscard]] constexpr od::dictionary dictionary() const noexcept { return dict_; }
+  /// The node-ID init_defaults() resolved relative values for.
+  [[nodiscard]] constexpr std::uint8_t node() const noexcept { return node_; }
+  [[nodiscard]] constexpr OnWrite &hook() noexcept { return on_write_; }
 
 private:
-  [[nodiscard]] constexpr abort_code locate(std::uint16_t index, std::uint8_t sub,
-                                            const od::entry *&e,
-                                            std::span<std::uint8_t> &slot) const noexcept {
-    std::size_t off = 0;
-    for (const auto &x : dict_) {
-      if (x.index == index && x.sub == sub) {
-        if (off + x.width() > storage_.size()) return abort_code::general_error;
-        if (od::is_byte_string(x.type) && x.width() == 0U) return abort_code::unsupported_access;
-        e = &x;
-        slot = storage_.subspan(off, x.width());
-        return abort_code::none;
-      }
-      off += x.width();
+  struct located {
+    abort_code code = abort_code::none;
+    const od::entry *e = nullptr;
+    std::span<std::uint8_t> slot{};
+  };
+
+  [[nodiscard]] constexpr bool layout_fits() const noexcept {
+    return offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size();
+  }
+
+  [[nodiscard]] constexpr located locate(od::address a) const noexcept {
+    located l;
+    l.e = dict_.find(a.index, a.sub);
+    if (l.e == nullptr) {
+      l.code = dict_.object(a.index).empty() ? abort_code::no_object : abort_code::no_sub_index;
+      return l;
     }
-    return dict_.object(index).empty() ? abort_code::no_object : abort_code::no_sub_index;
+    if (!layout_fits()) {
+      l.code = abort_code::general_error;
+      return l;
+    }
+    const auto i = static_cast<std::size_t>(l.e - dict_.entries().data());
+    l.slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
+    if (l.slot.empty()) l.code = abort_code::unsupported_access; // a byte string without size
+    return l;
+  }
+
+  [[nodiscard]] static constexpr std::size_t
+  length_of(std::span<const std::uint8_t> slot) noexcept {
+    return static_cast<std::size_t>(
+        load_unsigned(slot, length_prefix, byte_order::little).value_or(0));
+  }
+  static constexpr void set_length(std::span<std::uint8_t> slot, std::size_t n) noexcept {
+    (void)store_unsigned(slot, length_prefix, n, byte_order::little);
+  }
+  [[nodiscard]] static constexpr std::span<const std::uint8_t> current(const located &l) noexcept {
+    if (!od::is_byte_string(l.e->type)) return l.slot;
+    std::size_t n = length_of(l.slot);
+    if (n > l.slot.size() - length_prefix) n = l.slot.size() - length_prefix;
+    return std::span<const std::uint8_t>(l.slot).subspan(length_prefix, n);
+  }
+
+  /// Check a complete value, ask the hook (SDO/RPDO writes), then store it.
+  [[nodiscard]] constexpr abort_code store(const located &l, std::span<const std::uint8_t> data,
+                                           bool ask_hook) noexcept {
+    const od::entry &e = *l.e;
+    if (od::is_byte_string(e.type)) {
+      if (data.size() > e.size) return abort_code::length_too_high;
+      auto v = od::decode_bytes(e, data);
+      if (!v) {
+        return v.error() == errc::too_long ? abort_code::length_too_high
+                                           : abort_code::invalid_value;
+      }
+      if (ask_hook) {
+        if (const auto c = on_write_(e, v.value()); c != abort_code::none) return c;
+      }
+      const auto value = v.value(); // visible strings: trailing NULs cut
+      for (std::size_t i = 0; i < value.size(); ++i) l.slot[length_prefix + i] = value[i];
+      for (std::size_t i = value.size(); i < e.size; ++i) l.slot[length_prefix + i] = 0;
+      set_length(l.slot, value.size());
+      return abort_code::none;
+    }
+    if (data.size() > l.slot.size()) return abort_code::length_too_high;
+    if (data.size() < l.slot.size()) return abort_code::length_too_low;
+    auto v = od::decode(e, data, byte_order::little, od::limits::check);
+    if (!v) {
+      if (v.error() != errc::out_of_range) return abort_code::invalid_value;
+      return out_of_range_code(e, data);
+    }
+    if (ask_hook) {
+      if (const auto c = on_write_(e, data); c != abort_code::none) return c;
+    }
+    for (std::size_t i = 0; i < l.slot.size(); ++i) l.slot[i] = data[i];
+    return abort_code::none;
   }
 
   [[nodiscard]] static constexpr abort_code
@@ -157,9 +325,15 @@ private:
   }
 
   od::dictionary dict_;
+  std::span<const std::uint32_t> offsets_;
   std::span<std::uint8_t> storage_;
+  std::span<std::uint8_t> staging_;
+  OnWrite on_write_;
+  std::size_t staged_ = 0;
+  od::address staged_address_{};
+  std::uint8_t node_ = 0;
 };
 
-static_assert(object_store<dictionary_store>);
+static_assert(object_store<dictionary_store<>>);
 
 } // namespace fieldcodec::canopen::sdo

@@ -1,31 +1,42 @@
-// fieldcodec — SDO frame codec (CiA 301): every command specifier, expedited and segmented
-// transfer, abort codes. Block transfer is recognised (and answered with an abort by the
-// server in sdo_server.hpp) but not performed.
+// fieldcodec — the SDO message codec (CiA 301): the 8 data bytes of every SDO message
+// (expedited, segmented and block transfer, abort), the table of abort codes, and the SDO
+// channel that puts messages on CAN identifiers.
 //
-// Byte 0 of an SDO frame is the command byte:
-//   client -> server (COB-ID 0x600 + node), "ccs" in bits 7..5
-//     0 download segment        000t nnnc   t toggle, n = 7 - data bytes, c = last
-//     1 initiate download       001x nnes   e expedited, s size indicated, n = 4 - bytes (e=s=1)
-//     2 initiate upload         0100 0000
-//     3 upload segment request  011t 0000
-//     4 abort                   1000 0000
-//     5 block upload, 6 block download
-//   server -> client (COB-ID 0x580 + node), "scs" in bits 7..5
-//     0 upload segment          000t nnnc
-//     1 download segment resp.  001t 0000
-//     2 initiate upload resp.   010x nnes
-//     3 initiate download resp. 0110 0000
-//     4 abort                   1000 0000
-//     5 block download resp., 6 block upload resp.
-// Bytes 1..2 are the index (little-endian) and byte 3 the sub-index in initiate, abort and block
-// initiate frames; bytes 4..7 carry expedited data, the size of a segmented transfer or the
-// abort code. Every SDO frame has DLC 8.
+// The codec knows nothing about CAN identifiers: `encode(message)` gives the 8 bytes
+// (`sdo::payload`), `decode(payload, direction)` reads them, so the same codec and the transfer
+// machines serve CAN, CoE (EtherCAT's mailbox carries the same 8 bytes) or a test bus. An
+// `sdo::channel` holds the two COB-IDs of one SDO connection (request: client → server,
+// response: server → client): `channel::default_for(node)` is the predefined 0x600 + node /
+// 0x580 + node, `channel::from_cob_ids(sub1, sub2)` reads the values of an SDO parameter object
+// (1200h–127Fh server, 1280h–12FFh client: sub 1 is always client → server).
+//
+// Byte 0 of an SDO message is the command byte, its bits 7..5 the command specifier; one table
+// (`detail::commands`) lists every command of both directions with the bits that select it and
+// the layout of the other bytes, and drives both the encoder and the decoder:
+//   client → server                         server → client
+//   0 download segment      000t nnnc       0 upload segment          000t nnnc
+//   1 initiate download     001x nnes       1 download segment resp.  001t 0000
+//   2 initiate upload       0100 0000       2 initiate upload resp.   010x nnes
+//   3 upload segment req.   011t 0000       3 initiate download resp. 0110 0000
+//   4 abort                 1000 0000       4 abort                   1000 0000
+//   5 block upload:  initiate 1010 0c00,    5 block download: initiate resp. 1010 0s00,
+//     end response 1010 0001, ack 1010 0010,  end response 1010 0001, ack 1010 0010
+//     start 1010 0011
+//   6 block download: initiate 1100 0cs0,   6 block upload: initiate resp. 1100 0cs0,
+//     end 110n nn01                           end 110n nn01
+// t toggle, n unused bytes, c last segment (segments) or CRC supported (block initiate), e
+// expedited, s size indicated. Bytes 1..2 are the index (little-endian) and byte 3 the
+// sub-index in initiate and abort messages; bytes 4..7 carry expedited data, a size or the
+// abort code. The segments of a block transfer (byte 0 = c << 7 | sequence number 1..127, then
+// 7 data bytes) carry no command specifier: only the transfer's state tells them apart, so they
+// have their own functions (encode_block_segment / decode_block_segment).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
@@ -36,9 +47,11 @@
 namespace fieldcodec::canopen::sdo {
 
 // ---------------------------------------------------------------------------------------------
-// Abort codes
+// Abort codes: one table {code, errc, text}, used by the client, the server and dpq/.
 
-/// The SDO abort codes of CiA 301. `none` (0) is not sent; it marks success in server stores.
+/// An SDO abort code. The named values are those of CiA 301; any other 32-bit value a peer
+/// sends is kept as it is (is_known() tells them apart). `none` (0) is never sent: it means
+/// "no abort" where a function answers with an abort code (stores, write hooks).
 enum class abort_code : std::uint32_t {
   none = 0,
   toggle_not_alternated = 0x05030000U,
@@ -74,442 +87,716 @@ enum class abort_code : std::uint32_t {
   no_data = 0x08000024U,
 };
 
-/// Every code of the table above except `none`, in numeric order.
-inline constexpr abort_code all_abort_codes[] = {
-    abort_code::toggle_not_alternated,
-    abort_code::timeout,
-    abort_code::unknown_command,
-    abort_code::invalid_block_size,
-    abort_code::invalid_sequence_number,
-    abort_code::crc_error,
-    abort_code::out_of_memory,
-    abort_code::unsupported_access,
-    abort_code::read_write_only,
-    abort_code::write_read_only,
-    abort_code::no_object,
-    abort_code::not_mappable,
-    abort_code::pdo_too_long,
-    abort_code::parameter_incompatible,
-    abort_code::device_incompatible,
-    abort_code::hardware_error,
-    abort_code::length_mismatch,
-    abort_code::length_too_high,
-    abort_code::length_too_low,
-    abort_code::no_sub_index,
-    abort_code::invalid_value,
-    abort_code::value_too_high,
-    abort_code::value_too_low,
-    abort_code::max_less_than_min,
-    abort_code::no_sdo_connection,
-    abort_code::general_error,
-    abort_code::cannot_store,
-    abort_code::cannot_store_local_control,
-    abort_code::cannot_store_device_state,
-    abort_code::no_dictionary,
-    abort_code::no_data,
+/// One row of the abort table: the code, the fieldcodec error closest to it, and a short
+/// description (fieldcodec's own wording of CiA 301).
+struct abort_info {
+  abort_code code;
+  errc error;
+  std::string_view text;
 };
 
-/// A description of each abort code (empty for codes CiA 301 does not define).
-[[nodiscard]] constexpr std::string_view to_string(abort_code c) noexcept {
-  switch (c) {
-  case abort_code::none: return "no abort";
-  case abort_code::toggle_not_alternated: return "toggle bit did not alternate";
-  case abort_code::timeout: return "SDO protocol timed out";
-  case abort_code::unknown_command: return "client/server command specifier invalid or unknown";
-  case abort_code::invalid_block_size: return "invalid block size (block mode)";
-  case abort_code::invalid_sequence_number: return "invalid sequence number (block mode)";
-  case abort_code::crc_error: return "CRC error (block mode)";
-  case abort_code::out_of_memory: return "out of memory";
-  case abort_code::unsupported_access: return "access to this object not supported";
-  case abort_code::read_write_only: return "read of a write-only object";
-  case abort_code::write_read_only: return "write to a read-only object";
-  case abort_code::no_object: return "object not in the object dictionary";
-  case abort_code::not_mappable: return "object cannot be mapped into a PDO";
-  case abort_code::pdo_too_long: return "mapped objects exceed the PDO length";
-  case abort_code::parameter_incompatible: return "general parameter incompatibility";
-  case abort_code::device_incompatible: return "general internal incompatibility in the device";
-  case abort_code::hardware_error: return "access failed: hardware error";
-  case abort_code::length_mismatch: return "data type mismatch: length does not match";
-  case abort_code::length_too_high: return "data type mismatch: length too high";
-  case abort_code::length_too_low: return "data type mismatch: length too low";
-  case abort_code::no_sub_index: return "sub-index does not exist";
-  case abort_code::invalid_value: return "invalid value (download only)";
-  case abort_code::value_too_high: return "value too high (download only)";
-  case abort_code::value_too_low: return "value too low (download only)";
-  case abort_code::max_less_than_min: return "maximum value below minimum value";
-  case abort_code::no_sdo_connection: return "resource not available: SDO connection";
-  case abort_code::general_error: return "general error";
-  case abort_code::cannot_store: return "data cannot be transferred or stored";
-  case abort_code::cannot_store_local_control:
-    return "data cannot be transferred or stored: local control";
-  case abort_code::cannot_store_device_state:
-    return "data cannot be transferred or stored: device state";
-  case abort_code::no_dictionary: return "no object dictionary present or generation failed";
-  case abort_code::no_data: return "no data available";
-  }
-  return "";
-}
+/// Every CiA 301 abort code, in numeric order.
+inline constexpr abort_info abort_codes[] = {
+    {abort_code::toggle_not_alternated, errc::bad_toggle, "toggle bit did not alternate"},
+    {abort_code::timeout, errc::timeout, "SDO protocol timed out"},
+    {abort_code::unknown_command, errc::unknown_command,
+     "client/server command specifier invalid or unknown"},
+    {abort_code::invalid_block_size, errc::out_of_range, "invalid block size (block mode)"},
+    {abort_code::invalid_sequence_number, errc::unexpected_frame,
+     "invalid sequence number (block mode)"},
+    {abort_code::crc_error, errc::bad_checksum, "CRC error (block mode)"},
+    {abort_code::out_of_memory, errc::buffer_too_small, "out of memory"},
+    {abort_code::unsupported_access, errc::access_denied, "access to this object not supported"},
+    {abort_code::read_write_only, errc::access_denied, "read of a write-only object"},
+    {abort_code::write_read_only, errc::access_denied, "write to a read-only object"},
+    {abort_code::no_object, errc::unknown_object, "object not in the object dictionary"},
+    {abort_code::not_mappable, errc::invalid_argument, "object cannot be mapped into a PDO"},
+    {abort_code::pdo_too_long, errc::too_long, "mapped objects exceed the PDO length"},
+    {abort_code::parameter_incompatible, errc::invalid_argument,
+     "general parameter incompatibility"},
+    {abort_code::device_incompatible, errc::aborted,
+     "general internal incompatibility in the device"},
+    {abort_code::hardware_error, errc::aborted, "access failed: hardware error"},
+    {abort_code::length_mismatch, errc::type_mismatch, "data type mismatch: length does not match"},
+    {abort_code::length_too_high, errc::too_long, "data type mismatch: length too high"},
+    {abort_code::length_too_low, errc::bad_length, "data type mismatch: length too low"},
+    {abort_code::no_sub_index, errc::unknown_object, "sub-index does not exist"},
+    {abort_code::invalid_value, errc::out_of_range, "invalid value (download only)"},
+    {abort_code::value_too_high, errc::out_of_range, "value too high (download only)"},
+    {abort_code::value_too_low, errc::out_of_range, "value too low (download only)"},
+    {abort_code::max_less_than_min, errc::out_of_range, "maximum value below minimum value"},
+    {abort_code::no_sdo_connection, errc::bad_state, "resource not available: SDO connection"},
+    {abort_code::general_error, errc::aborted, "general error"},
+    {abort_code::cannot_store, errc::aborted, "data cannot be transferred or stored"},
+    {abort_code::cannot_store_local_control, errc::aborted,
+     "data cannot be transferred or stored: local control"},
+    {abort_code::cannot_store_device_state, errc::bad_state,
+     "data cannot be transferred or stored: device state"},
+    {abort_code::no_dictionary, errc::unknown_object,
+     "no object dictionary present or generation failed"},
+    {abort_code::no_data, errc::bad_state, "no data available"},
+};
 
-/// True for the codes of the CiA 301 table.
-[[nodiscard]] constexpr bool is_known(std::uint32_t code) noexcept {
-  for (auto c : all_abort_codes) {
-    if (static_cast<std::uint32_t>(c) == code) return true;
+/// The row of `code`, or nullptr for a code CiA 301 does not define (and for `none`).
+[[nodiscard]] constexpr const abort_info *find_abort(abort_code code) noexcept {
+  for (const auto &row : abort_codes) {
+    if (row.code == code) return &row;
   }
-  return false;
+  return nullptr;
+}
+/// True for the codes of the CiA 301 table.
+[[nodiscard]] constexpr bool is_known(abort_code code) noexcept {
+  return find_abort(code) != nullptr;
+}
+/// The description of a code: "no abort" for none, empty for a code CiA 301 does not define.
+[[nodiscard]] constexpr std::string_view to_string(abort_code code) noexcept {
+  if (code == abort_code::none) return "no abort";
+  const abort_info *row = find_abort(code);
+  return row != nullptr ? row->text : std::string_view{};
+}
+/// The fieldcodec error closest to a code; errc::aborted for a code CiA 301 does not define.
+[[nodiscard]] constexpr errc to_errc(abort_code code) noexcept {
+  const abort_info *row = find_abort(code);
+  return row != nullptr ? row->error : errc::aborted;
 }
 
 // ---------------------------------------------------------------------------------------------
 // Messages
 
-/// What an SDO frame is.
-enum class kind : std::uint8_t {
+/// The 8 data bytes of one SDO message.
+using payload = std::array<std::uint8_t, 8>;
+
+/// Which side sent a message.
+enum class direction : std::uint8_t { to_server, to_client };
+
+/// What an SDO message is. Block acknowledgements, ends and end responses have the same bytes
+/// in both directions, so they are one type each.
+enum class message_type : std::uint8_t {
   // client -> server
   initiate_download_request,
   download_segment_request,
   initiate_upload_request,
   upload_segment_request,
-  block_upload_request,
-  block_download_request,
+  block_download_initiate,
+  block_upload_initiate,
+  block_upload_start,
   // server -> client
   initiate_download_response,
   download_segment_response,
   initiate_upload_response,
   upload_segment_response,
-  block_download_response,
-  block_upload_response,
+  block_download_initiate_response,
+  block_upload_initiate_response,
   // either way
+  block_ack,          ///< receiver of a sub-block: last good sequence number, next block size
+  block_end,          ///< sender of a block transfer: unused bytes of the last segment, CRC
+  block_end_response, ///< receiver of a block transfer: end confirmed
+  block_segment,      ///< a segment of a sub-block (only from decode_block_segment)
   abort,
 };
 
-/// A decoded SDO frame. Which members mean something depends on `k`:
-/// * initiate download request / initiate upload response: index, sub, expedited,
-///   size_indicated, size (expedited: the data bytes, 1..4 or 4 when not indicated; segmented:
-///   the announced total when size_indicated), data/data_size (expedited data).
+/// A decoded SDO message. Which members mean something depends on `type`:
+/// * initiate download request / initiate upload response: address, expedited, size_indicated,
+///   size (expedited: the data bytes, 1..4, or 4 when not indicated; segmented: the announced
+///   total when size_indicated), data/data_size (expedited data).
 /// * download segment request / upload segment response: toggle, last, data/data_size (0..7).
 /// * upload segment request / download segment response: toggle.
-/// * initiate upload request / initiate download response: index, sub.
-/// * abort: index, sub, code.
-/// * block frames: command (byte 0), and index/sub as bytes 1..3 show them.
+/// * initiate upload request / initiate download response: address.
+/// * abort: address, abort.
+/// * block download initiate: address, crc, size_indicated, size. Block upload initiate
+///   response: the same. Block upload initiate: address, crc, block_size, switch_threshold.
+///   Block download initiate response: address, crc, block_size.
+/// * block ack: sequence (last good sequence number, 0..127), block_size (next sub-block).
+/// * block end: unused (bytes of the last segment without data), checksum (CRC).
+/// * block segment: sequence (1..127), last (no more segments), data (7 bytes).
 struct message {
-  kind k = kind::abort;
-  std::uint8_t command = 0; ///< byte 0 as received
-  std::uint16_t index = 0;
-  std::uint8_t sub = 0;
+  message_type type = message_type::abort;
+  od::address address{};
   bool expedited = false;
   bool size_indicated = false;
   bool toggle = false;
   bool last = false;
+  bool crc = false;                  ///< block initiate: CRC supported by the sender
+  std::uint8_t block_size = 0;       ///< block initiate (response), block ack: segments 1..127
+  std::uint8_t sequence = 0;         ///< block ack: last good sequence number; block segment
+  std::uint8_t switch_threshold = 0; ///< block upload initiate: protocol switch threshold
+  std::uint8_t unused = 0;           ///< block end: bytes of the last segment without data
+  std::uint16_t checksum = 0;        ///< block end: CRC-16 of the data
   std::uint32_t size = 0;
-  std::uint32_t code = 0; ///< abort code (raw, may be outside the CiA table)
+  abort_code abort = abort_code::none;
   std::array<std::uint8_t, 7> data{};
   std::uint8_t data_size = 0;
 
   [[nodiscard]] constexpr std::span<const std::uint8_t> bytes() const noexcept {
     return std::span<const std::uint8_t>(data).first(data_size);
   }
+  friend constexpr bool operator==(const message &, const message &) noexcept = default;
 };
 
-/// Which side sent a frame.
-enum class direction : std::uint8_t { to_server, to_client };
+/// Largest number of segments in a sub-block.
+inline constexpr std::uint8_t max_block_size = 127;
 
 namespace detail {
 inline constexpr std::uint8_t toggle_bit = 0x10U;
 
-[[nodiscard]] constexpr can_frame frame8(std::uint16_t id, std::uint8_t command,
-                                         std::uint16_t index, std::uint8_t sub) noexcept {
-  can_frame f;
-  f.id = id;
-  f.dlc = 8;
-  f.data[0] = command;
-  f.data[1] = static_cast<std::uint8_t>(index & 0xFFU);
-  f.data[2] = static_cast<std::uint8_t>(index >> 8U);
-  f.data[3] = sub;
-  return f;
+/// How the bytes after the command byte are laid out.
+enum class layout : std::uint8_t {
+  segment,        ///< t nnn c in byte 0, data in bytes 1..7
+  toggle,         ///< t in byte 0, nothing else
+  initiate,       ///< nn e s in byte 0, address, expedited data or size in bytes 4..7
+  address,        ///< address only
+  abort,          ///< address, abort code
+  block_initiate, ///< c s in byte 0 (bits 2, 1), address, size
+  block_response, ///< c in byte 0, address, block size in byte 4
+  block_upload,   ///< c in byte 0, address, block size in byte 4, threshold in byte 5
+  block_ack,      ///< sequence in byte 1, block size in byte 2
+  block_end,      ///< nnn in byte 0 (bits 4..2), CRC in bytes 1..2
+  command_only,   ///< nothing after the command byte
+};
+
+/// One command: it is the message `type` when byte 0 masked with `mask` equals `bits` in
+/// direction `dir`.
+struct command {
+  direction dir;
+  std::uint8_t mask;
+  std::uint8_t bits;
+  message_type type;
+  layout lay;
+};
+
+inline constexpr command commands[] = {
+    {direction::to_server, 0xE0, 0x00, message_type::download_segment_request, layout::segment},
+    {direction::to_server, 0xE0, 0x20, message_type::initiate_download_request, layout::initiate},
+    {direction::to_server, 0xE0, 0x40, message_type::initiate_upload_request, layout::address},
+    {direction::to_server, 0xE0, 0x60, message_type::upload_segment_request, layout::toggle},
+    {direction::to_server, 0xE0, 0x80, message_type::abort, layout::abort},
+    {direction::to_server, 0xE3, 0xA0, message_type::block_upload_initiate, layout::block_upload},
+    {direction::to_server, 0xE3, 0xA1, message_type::block_end_response, layout::command_only},
+    {direction::to_server, 0xE3, 0xA2, message_type::block_ack, layout::block_ack},
+    {direction::to_server, 0xE3, 0xA3, message_type::block_upload_start, layout::command_only},
+    {direction::to_server, 0xE1, 0xC0, message_type::block_download_initiate,
+     layout::block_initiate},
+    {direction::to_server, 0xE1, 0xC1, message_type::block_end, layout::block_end},
+    {direction::to_client, 0xE0, 0x00, message_type::upload_segment_response, layout::segment},
+    {direction::to_client, 0xE0, 0x20, message_type::download_segment_response, layout::toggle},
+    {direction::to_client, 0xE0, 0x40, message_type::initiate_upload_response, layout::initiate},
+    {direction::to_client, 0xE0, 0x60, message_type::initiate_download_response, layout::address},
+    {direction::to_client, 0xE0, 0x80, message_type::abort, layout::abort},
+    {direction::to_client, 0xE3, 0xA0, message_type::block_download_initiate_response,
+     layout::block_response},
+    {direction::to_client, 0xE3, 0xA1, message_type::block_end_response, layout::command_only},
+    {direction::to_client, 0xE3, 0xA2, message_type::block_ack, layout::block_ack},
+    {direction::to_client, 0xE1, 0xC0, message_type::block_upload_initiate_response,
+     layout::block_initiate},
+    {direction::to_client, 0xE1, 0xC1, message_type::block_end, layout::block_end},
+};
+
+[[nodiscard]] constexpr const command *command_for(message_type t) noexcept {
+  for (const auto &c : commands) {
+    if (c.type == t) return &c;
+  }
+  return nullptr;
 }
-constexpr void put_u32(can_frame &f, std::uint32_t v) noexcept {
-  for (std::size_t i = 0; i < 4U; ++i) f.data[4U + i] = static_cast<std::uint8_t>(v >> (8U * i));
+[[nodiscard]] constexpr const command *command_for(direction d, std::uint8_t byte0) noexcept {
+  for (const auto &c : commands) {
+    if (c.dir == d && (byte0 & c.mask) == c.bits) return &c;
+  }
+  return nullptr;
 }
-[[nodiscard]] constexpr std::uint32_t get_u32(const can_frame &f) noexcept {
-  return static_cast<std::uint32_t>(f.data[4]) | (static_cast<std::uint32_t>(f.data[5]) << 8U) |
-         (static_cast<std::uint32_t>(f.data[6]) << 16U) |
-         (static_cast<std::uint32_t>(f.data[7]) << 24U);
+
+constexpr void put_address(payload &p, od::address a) noexcept {
+  const auto i = to_bytes<std::uint16_t>(a.index, byte_order::little);
+  p[1] = i[0];
+  p[2] = i[1];
+  p[3] = a.sub;
 }
-[[nodiscard]] constexpr result<std::uint16_t> id_for(direction d, std::uint8_t node) noexcept {
-  return d == direction::to_server ? cob_id::sdo_rx(node) : cob_id::sdo_tx(node);
+[[nodiscard]] constexpr od::address get_address(const payload &p) noexcept {
+  return {from_bytes<std::uint16_t>({p[1], p[2]}, byte_order::little), p[3]};
 }
-// initiate with expedited data: 0x20 (download) or 0x40 (upload response) base
-[[nodiscard]] constexpr result<can_frame>
-expedited(direction d, std::uint8_t base, std::uint8_t node, std::uint16_t index, std::uint8_t sub,
-          std::span<const std::uint8_t> bytes, bool size_indicated) noexcept {
-  auto id = id_for(d, node);
-  if (!id) return id.error();
-  if (bytes.empty()) return errc::bad_length;
-  if (bytes.size() > 4U) return errc::too_long;
-  if (!size_indicated && bytes.size() != 4U) return errc::bad_length;
-  const auto n = static_cast<unsigned>(4U - bytes.size());
-  const auto cmd = static_cast<std::uint8_t>(base | (size_indicated ? (n << 2U) | 0x03U : 0x02U));
-  auto f = frame8(id.value(), cmd, index, sub);
-  for (std::size_t i = 0; i < bytes.size(); ++i) f.data[4U + i] = bytes[i];
-  return f;
+constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
+  const auto b = to_bytes<std::uint32_t>(v, byte_order::little);
+  for (std::size_t i = 0; i < 4U; ++i) p[4U + i] = b[i];
 }
-[[nodiscard]] constexpr result<can_frame> segment(direction d, std::uint8_t node, bool toggle,
-                                                  std::span<const std::uint8_t> bytes,
-                                                  bool last) noexcept {
-  auto id = id_for(d, node);
-  if (!id) return id.error();
-  if (bytes.size() > 7U) return errc::too_long;
-  if (!last && bytes.size() != 7U) return errc::bad_length;
-  const auto n = static_cast<unsigned>(7U - bytes.size());
-  const auto cmd =
-      static_cast<std::uint8_t>((toggle ? toggle_bit : 0U) | (n << 1U) | (last ? 1U : 0U));
-  auto f = frame8(id.value(), cmd, 0, 0);
-  f.data[1] = f.data[2] = f.data[3] = 0;
-  for (std::size_t i = 0; i < bytes.size(); ++i) f.data[1U + i] = bytes[i];
-  return f;
+[[nodiscard]] constexpr std::uint32_t get_u32(const payload &p) noexcept {
+  return from_bytes<std::uint32_t>({p[4], p[5], p[6], p[7]}, byte_order::little);
+}
+[[nodiscard]] constexpr bool valid_block_size(std::uint8_t n) noexcept {
+  return n >= 1U && n <= max_block_size;
 }
 } // namespace detail
 
-// ----- client -> server ------------------------------------------------------------------------
+/// The 8 bytes of `m`. Unused bytes are zero.
+/// Errors: bad_length (expedited without data or unsized with other than 4 bytes, a non-last
+/// segment without exactly 7 bytes), too_long (expedited over 4 or a segment over 7 bytes),
+/// out_of_range (block size not 1..127, sequence number over 127 — or 0 for a segment —,
+/// unused bytes over 7), invalid_argument (an unknown type).
+[[nodiscard]] constexpr result<payload> encode(const message &m) noexcept {
+  payload p{};
+  if (m.type == message_type::block_segment) {
+    if (m.sequence == 0U || m.sequence > max_block_size) return errc::out_of_range;
+    if (m.data_size > 7U) return errc::too_long;
+    p[0] = static_cast<std::uint8_t>((m.last ? 0x80U : 0U) | m.sequence);
+    for (std::size_t i = 0; i < m.data_size; ++i) p[1U + i] = m.data[i];
+    return p;
+  }
+  const detail::command *c = detail::command_for(m.type);
+  if (c == nullptr) return errc::invalid_argument;
+  unsigned b0 = c->bits;
+  switch (c->lay) {
+  case detail::layout::segment:
+    if (m.data_size > 7U) return errc::too_long;
+    if (!m.last && m.data_size != 7U) return errc::bad_length;
+    b0 |= (m.toggle ? detail::toggle_bit : 0U) | ((7U - m.data_size) << 1U) | (m.last ? 1U : 0U);
+    for (std::size_t i = 0; i < m.data_size; ++i) p[1U + i] = m.data[i];
+    break;
+  case detail::layout::toggle: b0 |= m.toggle ? detail::toggle_bit : 0U; break;
+  case detail::layout::initiate:
+    detail::put_address(p, m.address);
+    if (m.expedited) {
+      if (m.data_size == 0U) return errc::bad_length;
+      if (m.data_size > 4U) return errc::too_long;
+      if (!m.size_indicated && m.data_size != 4U) return errc::bad_length;
+      b0 |= m.size_indicated ? ((4U - m.data_size) << 2U) | 0x03U : 0x02U;
+      for (std::size_t i = 0; i < m.data_size; ++i) p[4U + i] = m.data[i];
+    } else if (m.size_indicated) {
+      b0 |= 0x01U;
+      detail::put_u32(p, m.size);
+    }
+    break;
+  case detail::layout::address: detail::put_address(p, m.address); break;
+  case detail::layout::abort:
+    detail::put_address(p, m.address);
+    detail::put_u32(p, static_cast<std::uint32_t>(m.abort));
+    break;
+  case detail::layout::block_initiate:
+    detail::put_address(p, m.address);
+    b0 |= (m.crc ? 0x04U : 0U) | (m.size_indicated ? 0x02U : 0U);
+    if (m.size_indicated) detail::put_u32(p, m.size);
+    break;
+  case detail::layout::block_response:
+  case detail::layout::block_upload:
+    if (!detail::valid_block_size(m.block_size)) return errc::out_of_range;
+    detail::put_address(p, m.address);
+    b0 |= m.crc ? 0x04U : 0U;
+    p[4] = m.block_size;
+    if (c->lay == detail::layout::block_upload) p[5] = m.switch_threshold;
+    break;
+  case detail::layout::block_ack:
+    if (m.sequence > max_block_size || !detail::valid_block_size(m.block_size)) {
+      return errc::out_of_range;
+    }
+    p[1] = m.sequence;
+    p[2] = m.block_size;
+    break;
+  case detail::layout::block_end:
+    if (m.unused > 7U) return errc::out_of_range;
+    b0 |= static_cast<unsigned>(m.unused) << 2U;
+    {
+      const auto crc_bytes = to_bytes<std::uint16_t>(m.checksum, byte_order::little);
+      p[1] = crc_bytes[0];
+      p[2] = crc_bytes[1];
+    }
+    break;
+  case detail::layout::command_only: break;
+  }
+  p[0] = static_cast<std::uint8_t>(b0);
+  return p;
+}
+
+/// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
+/// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
+/// reported as they are. Errors: unknown_command (no such command in that direction).
+[[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
+  const detail::command *c = detail::command_for(d, p[0]);
+  if (c == nullptr) return errc::unknown_command;
+  message m;
+  m.type = c->type;
+  const unsigned b0 = p[0];
+  switch (c->lay) {
+  case detail::layout::segment:
+    m.toggle = (b0 & detail::toggle_bit) != 0U;
+    m.last = (b0 & 0x01U) != 0U;
+    m.data_size = static_cast<std::uint8_t>(7U - ((b0 >> 1U) & 7U));
+    for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = p[1U + i];
+    break;
+  case detail::layout::toggle: m.toggle = (b0 & detail::toggle_bit) != 0U; break;
+  case detail::layout::initiate:
+    m.address = detail::get_address(p);
+    m.expedited = (b0 & 0x02U) != 0U;
+    m.size_indicated = (b0 & 0x01U) != 0U;
+    if (m.expedited) {
+      const unsigned n = m.size_indicated ? (b0 >> 2U) & 3U : 0U;
+      m.data_size = static_cast<std::uint8_t>(4U - n);
+      m.size = m.data_size;
+      for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = p[4U + i];
+    } else if (m.size_indicated) {
+      m.size = detail::get_u32(p);
+    }
+    break;
+  case detail::layout::address: m.address = detail::get_address(p); break;
+  case detail::layout::abort:
+    m.address = detail::get_address(p);
+    m.abort = static_cast<abort_code>(detail::get_u32(p));
+    break;
+  case detail::layout::block_initiate:
+    m.address = detail::get_address(p);
+    m.crc = (b0 & 0x04U) != 0U;
+    m.size_indicated = (b0 & 0x02U) != 0U;
+    if (m.size_indicated) m.size = detail::get_u32(p);
+    break;
+  case detail::layout::block_response:
+  case detail::layout::block_upload:
+    m.address = detail::get_address(p);
+    m.crc = (b0 & 0x04U) != 0U;
+    m.block_size = p[4];
+    if (c->lay == detail::layout::block_upload) m.switch_threshold = p[5];
+    break;
+  case detail::layout::block_ack:
+    m.sequence = p[1];
+    m.block_size = p[2];
+    break;
+  case detail::layout::block_end:
+    m.unused = static_cast<std::uint8_t>((b0 >> 2U) & 7U);
+    m.checksum = from_bytes<std::uint16_t>({p[1], p[2]}, byte_order::little);
+    break;
+  case detail::layout::command_only: break;
+  }
+  return m;
+}
+
+/// A segment of a sub-block: byte 0 = last << 7 | sequence, then 7 data bytes (all 7 are sent;
+/// how many of the last segment's bytes are data is said by the block end message).
+/// Errors: out_of_range (sequence number 0).
+[[nodiscard]] constexpr result<message> decode_block_segment(const payload &p) noexcept {
+  message m;
+  m.type = message_type::block_segment;
+  m.sequence = static_cast<std::uint8_t>(p[0] & 0x7FU);
+  if (m.sequence == 0U) return errc::out_of_range;
+  m.last = (p[0] & 0x80U) != 0U;
+  m.data_size = 7;
+  for (std::size_t i = 0; i < 7U; ++i) m.data[i] = p[1U + i];
+  return m;
+}
+
+// ----- named constructors ---------------------------------------------------------------------
+
+namespace detail {
+[[nodiscard]] constexpr message with_bytes(message m, std::span<const std::uint8_t> bytes,
+                                           std::size_t max) noexcept {
+  m.data_size = static_cast<std::uint8_t>(bytes.size() > max ? max + 1U : bytes.size());
+  for (std::size_t i = 0; i < bytes.size() && i < max; ++i) m.data[i] = bytes[i];
+  return m;
+}
+[[nodiscard]] constexpr result<payload> expedited(message_type t, od::address a,
+                                                  std::span<const std::uint8_t> bytes,
+                                                  bool size_indicated) noexcept {
+  if (bytes.size() > 4U) return errc::too_long;
+  message m;
+  m.type = t;
+  m.address = a;
+  m.expedited = true;
+  m.size_indicated = size_indicated;
+  return encode(with_bytes(m, bytes, 4));
+}
+[[nodiscard]] constexpr result<payload> initiate(message_type t, od::address a, std::uint32_t size,
+                                                 bool size_indicated) noexcept {
+  message m;
+  m.type = t;
+  m.address = a;
+  m.size_indicated = size_indicated;
+  m.size = size_indicated ? size : 0U;
+  return encode(m);
+}
+[[nodiscard]] constexpr result<payload>
+segment(message_type t, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+  if (bytes.size() > 7U) return errc::too_long;
+  message m;
+  m.type = t;
+  m.toggle = toggle;
+  m.last = last;
+  return encode(with_bytes(m, bytes, 7));
+}
+[[nodiscard]] constexpr payload simple(message_type t, od::address a, bool toggle) noexcept {
+  message m;
+  m.type = t;
+  m.address = a;
+  m.toggle = toggle;
+  return encode(m).value(); // these types cannot fail
+}
+} // namespace detail
+
+// client -> server
 
 /// Expedited download of 1..4 bytes with size indication (0x2F, 0x2B, 0x27, 0x23).
-/// Errors: invalid_argument (node), bad_length (no bytes), too_long (more than 4 bytes).
-[[nodiscard]] constexpr result<can_frame>
-expedited_download(std::uint8_t node, std::uint16_t index, std::uint8_t sub,
-                   std::span<const std::uint8_t> bytes) noexcept {
-  return detail::expedited(direction::to_server, 0x20U, node, index, sub, bytes, true);
+/// Errors: bad_length (no bytes), too_long (more than 4 bytes).
+[[nodiscard]] constexpr result<payload>
+expedited_download(od::address a, std::span<const std::uint8_t> bytes) noexcept {
+  return detail::expedited(message_type::initiate_download_request, a, bytes, true);
 }
-/// Expedited download without size indication (0x22): exactly 4 bytes.
-/// Errors: invalid_argument, bad_length (not 4 bytes).
-[[nodiscard]] constexpr result<can_frame>
-expedited_download_unsized(std::uint8_t node, std::uint16_t index, std::uint8_t sub,
-                           std::span<const std::uint8_t> bytes) noexcept {
-  return detail::expedited(direction::to_server, 0x20U, node, index, sub, bytes, false);
+/// Expedited download without size indication (0x22): exactly 4 bytes. Errors: bad_length.
+[[nodiscard]] constexpr result<payload>
+expedited_download_unsized(od::address a, std::span<const std::uint8_t> bytes) noexcept {
+  return detail::expedited(message_type::initiate_download_request, a, bytes, false);
 }
 /// Initiate a segmented download of `size` bytes (0x21), or without size indication (0x20).
-[[nodiscard]] constexpr result<can_frame> initiate_download(std::uint8_t node, std::uint16_t index,
-                                                            std::uint8_t sub, std::uint32_t size,
-                                                            bool size_indicated = true) noexcept {
-  auto id = cob_id::sdo_rx(node);
-  if (!id) return id.error();
-  auto f = detail::frame8(id.value(), size_indicated ? 0x21U : 0x20U, index, sub);
-  if (size_indicated) detail::put_u32(f, size);
-  return f;
+[[nodiscard]] constexpr payload initiate_download(od::address a, std::uint32_t size,
+                                                  bool size_indicated = true) noexcept {
+  return detail::initiate(message_type::initiate_download_request, a, size, size_indicated).value();
 }
-/// A download segment: 0..7 bytes (exactly 7 unless last), toggle as given.
-/// Errors: invalid_argument, too_long (> 7 bytes), bad_length (fewer than 7 in a non-last
-/// segment).
-[[nodiscard]] constexpr result<can_frame> download_segment(std::uint8_t node, bool toggle,
-                                                           std::span<const std::uint8_t> bytes,
-                                                           bool last) noexcept {
-  return detail::segment(direction::to_server, node, toggle, bytes, last);
+/// A download segment: 0..7 bytes (exactly 7 unless last).
+/// Errors: too_long (> 7 bytes), bad_length (fewer than 7 in a non-last segment).
+[[nodiscard]] constexpr result<payload>
+download_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+  return detail::segment(message_type::download_segment_request, toggle, bytes, last);
 }
 /// Initiate upload (0x40).
-[[nodiscard]] constexpr result<can_frame> initiate_upload(std::uint8_t node, std::uint16_t index,
-                                                          std::uint8_t sub) noexcept {
-  auto id = cob_id::sdo_rx(node);
-  if (!id) return id.error();
-  return detail::frame8(id.value(), 0x40U, index, sub);
+[[nodiscard]] constexpr payload initiate_upload(od::address a) noexcept {
+  return detail::simple(message_type::initiate_upload_request, a, false);
 }
 /// Upload segment request (0x60 / 0x70).
-[[nodiscard]] constexpr result<can_frame> upload_segment_request(std::uint8_t node,
-                                                                 bool toggle) noexcept {
-  auto id = cob_id::sdo_rx(node);
-  if (!id) return id.error();
-  return detail::frame8(id.value(), toggle ? 0x70U : 0x60U, 0, 0);
+[[nodiscard]] constexpr payload upload_segment_request(bool toggle) noexcept {
+  return detail::simple(message_type::upload_segment_request, {}, toggle);
 }
 
-// ----- server -> client ------------------------------------------------------------------------
+// server -> client
 
 /// Initiate download response (0x60).
-[[nodiscard]] constexpr result<can_frame> download_response(std::uint8_t node, std::uint16_t index,
-                                                            std::uint8_t sub) noexcept {
-  auto id = cob_id::sdo_tx(node);
-  if (!id) return id.error();
-  return detail::frame8(id.value(), 0x60U, index, sub);
+[[nodiscard]] constexpr payload download_response(od::address a) noexcept {
+  return detail::simple(message_type::initiate_download_response, a, false);
 }
 /// Download segment response (0x20 / 0x30).
-[[nodiscard]] constexpr result<can_frame> download_segment_response(std::uint8_t node,
-                                                                    bool toggle) noexcept {
-  auto id = cob_id::sdo_tx(node);
-  if (!id) return id.error();
-  return detail::frame8(id.value(), toggle ? 0x30U : 0x20U, 0, 0);
+[[nodiscard]] constexpr payload download_segment_response(bool toggle) noexcept {
+  return detail::simple(message_type::download_segment_response, {}, toggle);
 }
 /// Expedited upload response with size indication (0x4F, 0x4B, 0x47, 0x43).
-[[nodiscard]] constexpr result<can_frame>
-expedited_upload_response(std::uint8_t node, std::uint16_t index, std::uint8_t sub,
-                          std::span<const std::uint8_t> bytes) noexcept {
-  return detail::expedited(direction::to_client, 0x40U, node, index, sub, bytes, true);
+/// Errors: bad_length (no bytes), too_long (more than 4 bytes).
+[[nodiscard]] constexpr result<payload>
+expedited_upload_response(od::address a, std::span<const std::uint8_t> bytes) noexcept {
+  return detail::expedited(message_type::initiate_upload_response, a, bytes, true);
 }
 /// Expedited upload response without size indication (0x42): exactly 4 bytes.
-[[nodiscard]] constexpr result<can_frame>
-expedited_upload_response_unsized(std::uint8_t node, std::uint16_t index, std::uint8_t sub,
-                                  std::span<const std::uint8_t> bytes) noexcept {
-  return detail::expedited(direction::to_client, 0x40U, node, index, sub, bytes, false);
+[[nodiscard]] constexpr result<payload>
+expedited_upload_response_unsized(od::address a, std::span<const std::uint8_t> bytes) noexcept {
+  return detail::expedited(message_type::initiate_upload_response, a, bytes, false);
 }
 /// Initiate upload response of a segmented upload of `size` bytes (0x41), or without size
 /// indication (0x40).
-[[nodiscard]] constexpr result<can_frame> upload_response(std::uint8_t node, std::uint16_t index,
-                                                          std::uint8_t sub, std::uint32_t size,
-                                                          bool size_indicated = true) noexcept {
-  auto id = cob_id::sdo_tx(node);
-  if (!id) return id.error();
-  auto f = detail::frame8(id.value(), size_indicated ? 0x41U : 0x40U, index, sub);
-  if (size_indicated) detail::put_u32(f, size);
-  return f;
+[[nodiscard]] constexpr payload upload_response(od::address a, std::uint32_t size,
+                                                bool size_indicated = true) noexcept {
+  return detail::initiate(message_type::initiate_upload_response, a, size, size_indicated).value();
 }
-/// An upload segment: 0..7 bytes (exactly 7 unless last).
-[[nodiscard]] constexpr result<can_frame> upload_segment(std::uint8_t node, bool toggle,
-                                                         std::span<const std::uint8_t> bytes,
-                                                         bool last) noexcept {
-  return detail::segment(direction::to_client, node, toggle, bytes, last);
+/// An upload segment: 0..7 bytes (exactly 7 unless last). Errors: too_long, bad_length.
+[[nodiscard]] constexpr result<payload>
+upload_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+  return detail::segment(message_type::upload_segment_response, toggle, bytes, last);
 }
 
-// ----- both ------------------------------------------------------------------------------------
+// both
 
-/// Abort transfer (0x80) sent by the client (`to_server`) or by the server (`to_client`).
-[[nodiscard]] constexpr result<can_frame> abort(direction d, std::uint8_t node, std::uint16_t index,
-                                                std::uint8_t sub, abort_code code) noexcept {
-  auto id = detail::id_for(d, node);
-  if (!id) return id.error();
-  auto f = detail::frame8(id.value(), 0x80U, index, sub);
-  detail::put_u32(f, static_cast<std::uint32_t>(code));
-  return f;
-}
-
-// ----- decoding --------------------------------------------------------------------------------
-
-namespace detail {
-constexpr void read_mux(const can_frame &f, message &m) noexcept {
-  m.index = static_cast<std::uint16_t>(f.data[1] | (f.data[2] << 8U));
-  m.sub = f.data[3];
-}
-constexpr void read_initiate(const can_frame &f, message &m) noexcept {
-  read_mux(f, m);
-  m.expedited = (f.data[0] & 0x02U) != 0U;
-  m.size_indicated = (f.data[0] & 0x01U) != 0U;
-  if (m.expedited) {
-    const std::uint8_t n =
-        m.size_indicated ? static_cast<std::uint8_t>((f.data[0] >> 2U) & 3U) : 0U;
-    m.data_size = static_cast<std::uint8_t>(4U - n);
-    m.size = m.data_size;
-    for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = f.data[4U + i];
-  } else if (m.size_indicated) {
-    m.size = get_u32(f);
-  }
-}
-constexpr void read_segment(const can_frame &f, message &m) noexcept {
-  m.toggle = (f.data[0] & toggle_bit) != 0U;
-  m.last = (f.data[0] & 0x01U) != 0U;
-  m.data_size = static_cast<std::uint8_t>(7U - ((f.data[0] >> 1U) & 7U));
-  for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = f.data[1U + i];
-}
-} // namespace detail
-
-/// Decode a frame sent to the server (COB-ID is not checked). Errors: unexpected_frame (remote
-/// frame), bad_length (DLC not 8), unknown_command (ccs 7).
-[[nodiscard]] constexpr result<message> decode_request(const can_frame &f) noexcept {
-  FIELDCODEC_TRY_STATUS(expect_data(f, 8));
+/// Abort transfer (0x80), sent by either side.
+[[nodiscard]] constexpr payload abort(od::address a, abort_code code) noexcept {
   message m;
-  m.command = f.data[0];
-  switch (f.data[0] >> 5U) {
-  case 0:
-    m.k = kind::download_segment_request;
-    detail::read_segment(f, m);
-    break;
-  case 1:
-    m.k = kind::initiate_download_request;
-    detail::read_initiate(f, m);
-    break;
-  case 2:
-    m.k = kind::initiate_upload_request;
-    detail::read_mux(f, m);
-    break;
-  case 3:
-    m.k = kind::upload_segment_request;
-    m.toggle = (f.data[0] & detail::toggle_bit) != 0U;
-    break;
-  case 4:
-    m.k = kind::abort;
-    detail::read_mux(f, m);
-    m.code = detail::get_u32(f);
-    break;
-  case 5:
-    m.k = kind::block_upload_request;
-    detail::read_mux(f, m);
-    break;
-  case 6:
-    m.k = kind::block_download_request;
-    detail::read_mux(f, m);
-    break;
-  default: return errc::unknown_command;
-  }
-  return m;
+  m.type = message_type::abort;
+  m.address = a;
+  m.abort = code;
+  return encode(m).value();
 }
 
-/// Decode a frame sent to the client (COB-ID is not checked). Errors: unexpected_frame (remote
-/// frame), bad_length (DLC not 8), unknown_command (scs 7).
-[[nodiscard]] constexpr result<message> decode_response(const can_frame &f) noexcept {
-  FIELDCODEC_TRY_STATUS(expect_data(f, 8));
+// block transfer
+
+/// Block download initiate (client, 0xC0 | crc << 2 | s << 1) with the size when known.
+[[nodiscard]] constexpr payload block_download_initiate(od::address a, std::uint32_t size,
+                                                        bool size_indicated, bool crc) noexcept {
   message m;
-  m.command = f.data[0];
-  switch (f.data[0] >> 5U) {
-  case 0:
-    m.k = kind::upload_segment_response;
-    detail::read_segment(f, m);
-    break;
-  case 1:
-    m.k = kind::download_segment_response;
-    m.toggle = (f.data[0] & detail::toggle_bit) != 0U;
-    break;
-  case 2:
-    m.k = kind::initiate_upload_response;
-    detail::read_initiate(f, m);
-    break;
-  case 3:
-    m.k = kind::initiate_download_response;
-    detail::read_mux(f, m);
-    break;
-  case 4:
-    m.k = kind::abort;
-    detail::read_mux(f, m);
-    m.code = detail::get_u32(f);
-    break;
-  case 5:
-    m.k = kind::block_download_response;
-    detail::read_mux(f, m);
-    break;
-  case 6:
-    m.k = kind::block_upload_response;
-    detail::read_mux(f, m);
-    break;
-  default: return errc::unknown_command;
-  }
-  return m;
+  m.type = message_type::block_download_initiate;
+  m.address = a;
+  m.size_indicated = size_indicated;
+  m.size = size_indicated ? size : 0U;
+  m.crc = crc;
+  return encode(m).value();
+}
+/// Block download initiate response (server, 0xA0 | crc << 2): the first block size.
+/// Errors: out_of_range (block size not 1..127).
+[[nodiscard]] constexpr result<payload>
+block_download_initiate_response(od::address a, std::uint8_t block_size, bool crc) noexcept {
+  message m;
+  m.type = message_type::block_download_initiate_response;
+  m.address = a;
+  m.block_size = block_size;
+  m.crc = crc;
+  return encode(m);
+}
+/// Block upload initiate (client, 0xA0 | crc << 2): block size and protocol switch threshold
+/// (0: no switch). Errors: out_of_range (block size not 1..127).
+[[nodiscard]] constexpr result<payload> block_upload_initiate(od::address a,
+                                                              std::uint8_t block_size,
+                                                              std::uint8_t switch_threshold,
+                                                              bool crc) noexcept {
+  message m;
+  m.type = message_type::block_upload_initiate;
+  m.address = a;
+  m.block_size = block_size;
+  m.switch_threshold = switch_threshold;
+  m.crc = crc;
+  return encode(m);
+}
+/// Block upload initiate response (server, 0xC0 | crc << 2 | s << 1) with the size.
+[[nodiscard]] constexpr payload block_upload_initiate_response(od::address a, std::uint32_t size,
+                                                               bool size_indicated,
+                                                               bool crc) noexcept {
+  message m;
+  m.type = message_type::block_upload_initiate_response;
+  m.address = a;
+  m.size_indicated = size_indicated;
+  m.size = size_indicated ? size : 0U;
+  m.crc = crc;
+  return encode(m).value();
+}
+/// Block upload start (client, 0xA3).
+[[nodiscard]] constexpr payload block_upload_start() noexcept {
+  return detail::simple(message_type::block_upload_start, {}, false);
+}
+/// A segment of a sub-block: sequence number 1..127, up to 7 bytes (the rest zero), `last` for
+/// the last segment of the transfer. Errors: out_of_range (sequence), too_long.
+[[nodiscard]] constexpr result<payload> encode_block_segment(std::uint8_t sequence,
+                                                             std::span<const std::uint8_t> bytes,
+                                                             bool last) noexcept {
+  if (bytes.size() > 7U) return errc::too_long;
+  message m;
+  m.type = message_type::block_segment;
+  m.sequence = sequence;
+  m.last = last;
+  return encode(detail::with_bytes(m, bytes, 7));
+}
+/// Block acknowledgement (0xA2): the last segment received in sequence (0: none) and the size
+/// of the next sub-block. Errors: out_of_range.
+[[nodiscard]] constexpr result<payload> block_ack(std::uint8_t sequence,
+                                                  std::uint8_t block_size) noexcept {
+  message m;
+  m.type = message_type::block_ack;
+  m.sequence = sequence;
+  m.block_size = block_size;
+  return encode(m);
+}
+/// Block end (0xC1 | unused << 2): bytes of the last segment without data (0..7) and the CRC
+/// of the data (0 when CRC is not used). Errors: out_of_range (unused over 7).
+[[nodiscard]] constexpr result<payload> block_end(std::uint8_t unused,
+                                                  std::uint16_t checksum) noexcept {
+  message m;
+  m.type = message_type::block_end;
+  m.unused = unused;
+  m.checksum = checksum;
+  return encode(m);
+}
+/// Block end response (0xA1).
+[[nodiscard]] constexpr payload block_end_response() noexcept {
+  return detail::simple(message_type::block_end_response, {}, false);
 }
 
-/// A decoded frame with its node and direction, told apart by the COB-ID.
+// ---------------------------------------------------------------------------------------------
+// The channel: the CAN identifiers of one SDO connection
+
+/// The two COB-IDs of an SDO connection. Messages from the client travel on `request_id`,
+/// answers from the server on `response_id`; every SDO frame has DLC 8.
+struct channel {
+  std::uint16_t request_id = 0;  ///< client → server (1200h/1280h sub 1)
+  std::uint16_t response_id = 0; ///< server → client (1200h/1280h sub 2)
+
+  /// The predefined connection of `node`: 0x600 + node / 0x580 + node.
+  /// Errors: invalid_argument (node not 1..127).
+  [[nodiscard]] static constexpr result<channel> default_for(std::uint8_t node) noexcept {
+    if (!is_node_id(node)) return errc::invalid_argument;
+    return channel{static_cast<std::uint16_t>(cob_id::sdo_rx_base + node),
+                   static_cast<std::uint16_t>(cob_id::sdo_tx_base + node)};
+  }
+  /// The connection an SDO parameter object describes: the values of sub 1 (client → server)
+  /// and sub 2 (server → client). Bit 31 set means "not valid", bit 29 a 29-bit identifier.
+  /// Errors: bad_state (a COB-ID not valid), out_of_range (29-bit identifier, or bits 11..28
+  /// set).
+  [[nodiscard]] static constexpr result<channel>
+  from_cob_ids(std::uint32_t client_to_server, std::uint32_t server_to_client) noexcept {
+    constexpr std::uint32_t invalid = 0x8000'0000U;
+    for (const std::uint32_t v : {client_to_server, server_to_client}) {
+      if ((v & invalid) != 0U) return errc::bad_state;
+      if ((v & 0x3FFF'F800U) != 0U) return errc::out_of_range; // frame bit 29 or bits 11..28
+    }
+    return channel{static_cast<std::uint16_t>(client_to_server & max_can_id),
+                   static_cast<std::uint16_t>(server_to_client & max_can_id)};
+  }
+
+  /// The CAN frame of a message from the client / from the server.
+  [[nodiscard]] constexpr can_frame request(const payload &p) const noexcept {
+    return frame(request_id, p);
+  }
+  [[nodiscard]] constexpr can_frame response(const payload &p) const noexcept {
+    return frame(response_id, p);
+  }
+  [[nodiscard]] constexpr result<can_frame> request(const result<payload> &p) const noexcept {
+    if (!p) return p.error();
+    return frame(request_id, p.value());
+  }
+  [[nodiscard]] constexpr result<can_frame> response(const result<payload> &p) const noexcept {
+    if (!p) return p.error();
+    return frame(response_id, p.value());
+  }
+  /// Is `f` a data frame on this connection's request / response identifier (any DLC)? A
+  /// channel without identifiers (0: the NMT COB-ID, never an SDO) matches nothing.
+  [[nodiscard]] constexpr bool is_request(const can_frame &f) const noexcept {
+    return request_id != 0U && f.id == request_id && !f.rtr;
+  }
+  [[nodiscard]] constexpr bool is_response(const can_frame &f) const noexcept {
+    return response_id != 0U && f.id == response_id && !f.rtr;
+  }
+
+  friend constexpr bool operator==(const channel &, const channel &) noexcept = default;
+
+private:
+  [[nodiscard]] static constexpr can_frame frame(std::uint16_t id, const payload &p) noexcept {
+    can_frame f;
+    f.id = id;
+    f.dlc = 8;
+    f.data = p;
+    return f;
+  }
+};
+
+/// The 8 bytes of an SDO frame. Errors: unexpected_frame (remote frame), bad_length (DLC not 8
+/// or an invalid frame).
+[[nodiscard]] constexpr result<payload> payload_of(const can_frame &f) noexcept {
+  FIELDCODEC_TRY_STATUS(expect_data(f, 8));
+  return f.data;
+}
+
+/// Decode an SDO frame sent in direction `d` (the COB-ID is not checked).
+/// Errors: those of payload_of and decode.
+[[nodiscard]] constexpr result<message> decode(const can_frame &f, direction d) noexcept {
+  auto p = payload_of(f);
+  if (!p) return p.error();
+  return decode(p.value(), d);
+}
+
+/// A decoded frame of the predefined connection set with its node and direction.
 struct addressed {
   std::uint8_t node;
   direction dir;
   message m;
 };
 
-/// Decode any SDO frame of the predefined connection set (0x581..0x5FF, 0x601..0x67F).
-/// Errors: unexpected_frame (another COB-ID, remote frame), bad_length, unknown_command.
+/// Decode any SDO frame of the predefined connection set (0x581..0x5FF, 0x601..0x67F): the
+/// COB-ID gives node and direction. Errors: unexpected_frame (another COB-ID, remote frame),
+/// bad_length, unknown_command.
 [[nodiscard]] constexpr result<addressed> decode(const can_frame &f) noexcept {
-  if (f.id > cob_id::sdo_tx_base && f.id <= cob_id::sdo_tx_base + max_node_id) {
-    auto m = decode_response(f);
-    if (!m) return m.error();
-    return addressed{static_cast<std::uint8_t>(f.id - cob_id::sdo_tx_base), direction::to_client,
-                     m.value()};
-  }
+  direction d = direction::to_client;
+  std::uint16_t base = cob_id::sdo_tx_base;
   if (f.id > cob_id::sdo_rx_base && f.id <= cob_id::sdo_rx_base + max_node_id) {
-    auto m = decode_request(f);
-    if (!m) return m.error();
-    return addressed{static_cast<std::uint8_t>(f.id - cob_id::sdo_rx_base), direction::to_server,
-                     m.value()};
+    d = direction::to_server;
+    base = cob_id::sdo_rx_base;
+  } else if (f.id <= cob_id::sdo_tx_base || f.id > cob_id::sdo_tx_base + max_node_id) {
+    return errc::unexpected_frame;
   }
-  return errc::unexpected_frame;
+  auto m = decode(f, d);
+  if (!m) return m.error();
+  return addressed{static_cast<std::uint8_t>(f.id - base), d, m.value()};
 }
 
 } // namespace fieldcodec::canopen::sdo

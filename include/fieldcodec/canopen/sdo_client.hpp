@@ -1,22 +1,30 @@
-// fieldcodec — a non-blocking SDO client transfer machine (expedited and segmented).
+// fieldcodec — a non-blocking SDO client transfer machine: expedited, segmented and block
+// download and upload.
 //
-// The client turns "read / write index:sub" into request frames and consumes response frames.
-// It owns no memory: the data of a download and the buffer of an upload belong to the caller
-// and must stay valid until the transfer is over. Time is supplied by the caller in
-// milliseconds (any monotonic counter; wrap-around is handled).
+// The client turns "write / read index:sub" into request frames and consumes response frames
+// on its channel (sdo::channel). It owns no memory: the data of a download and the buffer of an
+// upload belong to the caller and must stay valid until the transfer is over. Time is the
+// caller's millisecond counter (any monotonic counter; wrap-around is handled). Every call
+// returns an sdo::step: the frames to send, the state, and the deadline of the timeout.
 //
-//   sdo::client c(5);
-//   auto first = c.upload(0x1800, 5, buffer, now);      // send first.value()
-//   ... for every received frame:  auto out = c.on_frame(frame, now); if (out.send)
-//   send(*out.send);
-//   ... every cycle:               auto out = c.poll(now);            if (out.send)
-//   send(*out.send); c.state() == sdo::transfer_state::done -> c.received() holds the value
+//   sdo::client c(5);                                   // the server of node 5 (0x605/0x585)
+//   auto s = c.upload({0x1008, 0}, buffer, now);        // result<step>: bad_state when busy
+//   for (const auto &f : s.value().send) transmit(f);
+//
+//   // for every received frame, and when the deadline passes:
+//   auto t = c.on_frame(frame, now);                    // or c.poll(now)
+//   for (const auto &f : t.send) transmit(f);
+//
+//   // c.state() == sdo::transfer_state::done: c.received() holds the value;
+//   // failed: c.error() says why ({errc, abort code, address}).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
-#include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_transfer.hpp>
+#include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -25,252 +33,353 @@
 
 namespace fieldcodec::canopen::sdo {
 
-enum class transfer_state : std::uint8_t { idle, busy, done, failed };
-
-/// What a step of a transfer machine produced: a frame to send (if any) and the state after it.
-struct output {
-  std::optional<can_frame> send;
-  transfer_state state;
+/// Options of a block transfer started by the client.
+struct block_options {
+  std::uint8_t block_size = max_block_size; ///< upload: segments per sub-block the client takes
+  std::uint8_t switch_threshold = 0;        ///< upload: the server may answer with a normal upload
+                                            ///< for objects of at most this many bytes (0: never)
+  bool crc = true;                          ///< ask for the CRC (used when the server supports it)
 };
 
 class client {
 public:
-  /// A client for the server of `node` (default SDO, 0x600/0x580 + node).
+  /// A client on `ch`.
+  constexpr explicit client(channel ch, std::uint32_t timeout_ms = 1000) noexcept
+      : ch_(ch), core_(timeout_ms) {}
+  /// A client for the server of `node` on the predefined channel (0x600/0x580 + node). With a
+  /// node-ID outside 1..127 every transfer is refused with invalid_argument.
   constexpr explicit client(std::uint8_t node, std::uint32_t timeout_ms = 1000) noexcept
-      : node_(node), timeout_ms_(timeout_ms) {}
+      : ch_(channel::default_for(node).value_or(channel{})), core_(timeout_ms) {}
 
-  /// Start writing `data` to index:sub; returns the first frame to send. 1..4 bytes go
-  /// expedited, 0 or more than 4 bytes segmented (with size indication).
-  /// Errors: bad_state (a transfer is running), invalid_argument (node-ID not 1..127).
-  [[nodiscard]] constexpr result<can_frame> download(std::uint16_t index, std::uint8_t sub,
-                                                     std::span<const std::uint8_t> data,
-                                                     std::uint32_t now) noexcept {
-    if (state_ == transfer_state::busy) return errc::bad_state;
-    if (!is_node_id(node_)) return errc::invalid_argument;
-    begin(index, sub, now);
-    upload_ = false;
+  /// Start writing `data` to `a`: 1..4 bytes go expedited, 0 or more than 4 bytes segmented
+  /// (with size indication). Errors: bad_state (a transfer is running), invalid_argument (no
+  /// channel: node-ID not 1..127), too_long (more than 2^32 − 1 bytes).
+  [[nodiscard]] constexpr result<step> download(od::address a, std::span<const std::uint8_t> data,
+                                                std::uint32_t now) noexcept {
+    FIELDCODEC_TRY_STATUS(can_start(data.size()));
+    begin(a, now);
     tx_ = data;
-    auto f = (!data.empty() && data.size() <= 4U)
-                 ? expedited_download(node_, index, sub, data)
-                 : initiate_download(node_, index, sub, static_cast<std::uint32_t>(data.size()));
-    if (!f) return fail(f.error()), f;
-    state_ = transfer_state::busy;
-    step_ =
-        data.empty() || data.size() > 4U ? step::await_initiate_segmented : step::await_initiate;
-    return f;
+    if (!data.empty() && data.size() <= 4U) {
+      expect(&client::download_expedited);
+      return send(expedited_download(a, data).value());
+    }
+    expect(&client::download_initiate);
+    return send(initiate_download(a, static_cast<std::uint32_t>(data.size())));
   }
 
-  /// Start reading index:sub into `buffer`; returns the first frame to send.
-  /// Errors: bad_state, invalid_argument.
-  [[nodiscard]] constexpr result<can_frame> upload(std::uint16_t index, std::uint8_t sub,
-                                                   std::span<std::uint8_t> buffer,
-                                                   std::uint32_t now) noexcept {
-    if (state_ == transfer_state::busy) return errc::bad_state;
-    if (!is_node_id(node_)) return errc::invalid_argument;
-    begin(index, sub, now);
-    upload_ = true;
+  /// Start reading `a` into `buffer`. Errors: bad_state, invalid_argument.
+  [[nodiscard]] constexpr result<step> upload(od::address a, std::span<std::uint8_t> buffer,
+                                              std::uint32_t now) noexcept {
+    FIELDCODEC_TRY_STATUS(can_start(0));
+    begin(a, now);
     rx_ = buffer;
-    auto f = initiate_upload(node_, index, sub);
-    if (!f) return fail(f.error()), f;
-    state_ = transfer_state::busy;
-    step_ = step::await_initiate;
-    return f;
+    expect(&client::upload_initiate);
+    return send(initiate_upload(a));
   }
 
-  /// Consume a received frame. Frames on other COB-IDs and frames while no transfer runs are
-  /// ignored (nothing to send, state unchanged). A response that does not fit the transfer
-  /// makes the client abort (the abort frame is in `send`) and fail with:
-  /// aborted (server sent an abort; abort_code() holds it), bad_toggle, unexpected_frame (wrong
-  /// command specifier, index or sub-index), unknown_command, bad_length (DLC, or the data
-  /// disagree with the announced size), buffer_too_small (upload larger than the buffer).
-  [[nodiscard]] constexpr output on_frame(const can_frame &f, std::uint32_t now) noexcept {
-    if (state_ != transfer_state::busy || f.id != cob_id::sdo_tx_base + node_ || f.rtr) {
-      return {std::nullopt, state_};
+  /// Start writing `data` to `a` with block transfer (size indicated).
+  /// Errors: bad_state, invalid_argument, too_long.
+  [[nodiscard]] constexpr result<step> block_download(od::address a,
+                                                      std::span<const std::uint8_t> data,
+                                                      std::uint32_t now,
+                                                      block_options o = {}) noexcept {
+    FIELDCODEC_TRY_STATUS(can_start(data.size()));
+    begin(a, now);
+    tx_ = data;
+    options_ = o;
+    expect(&client::block_download_initiate);
+    return send(
+        sdo::block_download_initiate(a, static_cast<std::uint32_t>(data.size()), true, o.crc));
+  }
+
+  /// Start reading `a` into `buffer` with block transfer. The server may switch to a normal
+  /// upload for an object of at most o.switch_threshold bytes. Errors: bad_state,
+  /// invalid_argument (also: block size not 1..127).
+  [[nodiscard]] constexpr result<step> block_upload(od::address a, std::span<std::uint8_t> buffer,
+                                                    std::uint32_t now,
+                                                    block_options o = {}) noexcept {
+    FIELDCODEC_TRY_STATUS(can_start(0));
+    auto p = sdo::block_upload_initiate(a, o.block_size, o.switch_threshold, o.crc);
+    if (!p) return errc::invalid_argument;
+    begin(a, now);
+    rx_ = buffer;
+    options_ = o;
+    expect(&client::block_upload_initiate);
+    return send(p.value());
+  }
+
+  /// Consume a received frame. Frames on other identifiers and frames while no transfer runs
+  /// are ignored (nothing to send, state unchanged). A frame that does not fit the transfer
+  /// makes the client abort (the abort frame is sent) and fail with (error().error):
+  /// aborted (the server sent an abort; error().abort holds its code), bad_toggle,
+  /// unexpected_frame (wrong command specifier, index or sub-index, sequence number),
+  /// unknown_command, bad_length (DLC; the data disagree with the announced size),
+  /// buffer_too_small (upload larger than the buffer), bad_checksum (block CRC),
+  /// out_of_range (block size).
+  [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
+    if (!core_.busy() || !ch_.is_response(f)) return core_.make({});
+    auto p = payload_of(f);
+    if (!p) return abort_with(p.error(), abort_code::general_error);
+    core_.touch(now);
+    if (raw_ != nullptr) {
+      if (auto s = (this->*raw_)(p.value())) return *s;
     }
-    auto r = decode_response(f);
-    if (!r) {
-      return abort_with(r.error() == errc::bad_length ? abort_code::general_error
-                                                      : abort_code::unknown_command,
-                        r.error());
-    }
+    auto r = decode(p.value(), direction::to_client);
+    if (!r) return abort_with(r.error(), abort_code::unknown_command);
     const message &m = r.value();
-    if (m.k == kind::abort) {
-      code_ = m.code;
-      fail(errc::aborted);
-      return {std::nullopt, state_};
+    if (m.type == message_type::abort) {
+      core_.fail(errc::aborted, m.abort);
+      return core_.make({});
     }
-    last_ = now;
-    return upload_ ? upload_step(m) : download_step(m);
+    return (this->*handler_)(m);
   }
 
-  /// Check the timeout. Errors via state: timeout (abort 0x05040000 in `send`).
-  [[nodiscard]] constexpr output poll(std::uint32_t now) noexcept {
-    if (state_ == transfer_state::busy && now - last_ >= timeout_ms_) {
-      return abort_with(abort_code::timeout, errc::timeout);
-    }
-    return {std::nullopt, state_};
+  /// Check the timeout: abort 0x05040000, error timeout.
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    if (core_.timed_out(now)) return abort_with(errc::timeout, abort_code::timeout);
+    return core_.make({});
   }
 
-  /// Abort the running transfer from the application side (e.g. on shutdown).
-  [[nodiscard]] constexpr output cancel(abort_code code = abort_code::general_error) noexcept {
-    if (state_ != transfer_state::busy) return {std::nullopt, state_};
-    return abort_with(code, errc::aborted);
+  /// Abort the running transfer from the application side (e.g. on shutdown): error aborted
+  /// with `code`.
+  [[nodiscard]] constexpr step cancel(abort_code code = abort_code::general_error) noexcept {
+    if (!core_.busy()) return core_.make({});
+    return abort_with(errc::aborted, code);
   }
 
-  [[nodiscard]] constexpr transfer_state state() const noexcept { return state_; }
-  [[nodiscard]] constexpr bool busy() const noexcept { return state_ == transfer_state::busy; }
-  /// Why the last transfer failed (valid in state failed).
-  [[nodiscard]] constexpr errc error() const noexcept { return error_; }
-  /// The abort code sent or received with the last failure (0 if none).
-  [[nodiscard]] constexpr std::uint32_t abort_code_value() const noexcept { return code_; }
+  [[nodiscard]] constexpr transfer_state state() const noexcept { return core_.state(); }
+  [[nodiscard]] constexpr bool busy() const noexcept { return core_.busy(); }
+  /// Why the last transfer failed (see on_frame); empty otherwise.
+  [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept {
+    return core_.error();
+  }
   /// The bytes uploaded so far (the value once state() == done).
   [[nodiscard]] constexpr std::span<const std::uint8_t> received() const noexcept {
     return std::span<const std::uint8_t>(rx_).first(count_);
   }
-  /// Bytes transferred so far.
+  /// Bytes transferred so far (a block download counts acknowledged bytes).
   [[nodiscard]] constexpr std::size_t transferred() const noexcept { return count_; }
-  [[nodiscard]] constexpr std::uint8_t node() const noexcept { return node_; }
+  [[nodiscard]] constexpr const channel &connection() const noexcept { return ch_; }
+  /// Use another channel (between transfers). Errors: bad_state.
+  [[nodiscard]] constexpr status set_connection(channel ch) noexcept {
+    if (core_.busy()) return errc::bad_state;
+    ch_ = ch;
+    return {};
+  }
 
 private:
-  enum class step : std::uint8_t { await_initiate, await_initiate_segmented, await_segment };
+  // Per-state transition functions: the running transfer's state is the function that takes
+  // the next message (`handler_`), and for block segments, which carry no command specifier,
+  // the function that sees the raw bytes first (`raw_`). Firmware that never starts a block
+  // transfer never references the block functions, so the linker drops them.
+  using handler = step (client::*)(const message &);
+  using raw_handler = std::optional<step> (client::*)(const payload &);
+  constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
+    handler_ = h;
+    raw_ = raw;
+  }
 
-  constexpr void begin(std::uint16_t index, std::uint8_t sub, std::uint32_t now) noexcept {
-    index_ = index;
-    sub_ = sub;
-    last_ = now;
-    toggle_ = false;
+  [[nodiscard]] constexpr status can_start(std::size_t size) const noexcept {
+    if (core_.busy()) return errc::bad_state;
+    if (ch_.request_id == 0U && ch_.response_id == 0U) return errc::invalid_argument;
+    if (size > 0xFFFF'FFFFU) return errc::too_long;
+    return {};
+  }
+  constexpr void begin(od::address a, std::uint32_t now) noexcept {
+    core_.begin(a, now);
     count_ = 0;
-    code_ = 0;
-    size_indicated_ = false;
-    size_ = 0;
-    error_ = errc::truncated;
     tx_ = {};
     rx_ = {};
   }
-  constexpr void fail(errc e) noexcept {
-    error_ = e;
-    state_ = transfer_state::failed;
+  [[nodiscard]] constexpr step send(const payload &p) const noexcept {
+    return core_.make(frames(ch_.request(p)));
   }
-  [[nodiscard]] constexpr output abort_with(abort_code code, errc e) noexcept {
-    code_ = static_cast<std::uint32_t>(code);
-    fail(e);
-    auto f = abort(direction::to_server, node_, index_, sub_, code);
-    return {f ? std::optional<can_frame>(f.value()) : std::nullopt, state_};
+  [[nodiscard]] constexpr step abort_with(errc e, abort_code code) noexcept {
+    core_.fail(e, code);
+    return core_.make(frames(ch_.request(abort(core_.address(), code))));
   }
-  [[nodiscard]] constexpr output finish() noexcept {
-    state_ = transfer_state::done;
-    return {std::nullopt, state_};
+  [[nodiscard]] constexpr step unexpected() noexcept {
+    return abort_with(errc::unexpected_frame, abort_code::unknown_command);
   }
-  [[nodiscard]] constexpr bool same_object(const message &m) const noexcept {
-    return m.index == index_ && m.sub == sub_;
+  [[nodiscard]] constexpr step done() noexcept {
+    core_.finish();
+    return core_.make({});
+  }
+  /// An initiate response must be of `t` and name the transfer's object.
+  [[nodiscard]] constexpr std::optional<step> check_initiate(const message &m,
+                                                             message_type t) noexcept {
+    if (m.type != t) return unexpected();
+    if (m.address != core_.address()) {
+      return abort_with(errc::unexpected_frame, abort_code::general_error);
+    }
+    return std::nullopt;
   }
 
-  [[nodiscard]] constexpr output send_next_segment() noexcept {
-    const std::size_t left = tx_.size() - count_;
-    const std::size_t n = left < 7U ? left : 7U;
-    const bool last = left <= 7U;
-    auto f = download_segment(node_, toggle_, tx_.subspan(count_, n), last);
-    if (!f) return abort_with(abort_code::general_error, f.error());
-    count_ += n;
-    step_ = step::await_segment;
-    return {f.value(), state_};
+  // ----- expedited and segmented download --------------------------------------------------
+
+  [[nodiscard]] constexpr step download_expedited(const message &m) noexcept {
+    if (auto s = check_initiate(m, message_type::initiate_download_response)) return *s;
+    count_ = tx_.size();
+    return done();
+  }
+  [[nodiscard]] constexpr step download_initiate(const message &m) noexcept {
+    if (auto s = check_initiate(m, message_type::initiate_download_response)) return *s;
+    seg_tx_.start(static_cast<std::uint32_t>(tx_.size()));
+    return next_download_segment();
+  }
+  [[nodiscard]] constexpr step next_download_segment() noexcept {
+    expect(&client::download_segment);
+    const auto chunk = tx_.subspan(seg_tx_.offset(), seg_tx_.next_length());
+    return send(seg_tx_.next(message_type::download_segment_request, chunk));
+  }
+  [[nodiscard]] constexpr step download_segment(const message &m) noexcept {
+    if (m.type != message_type::download_segment_response) return unexpected();
+    if (!seg_tx_.answer_matches(m.toggle)) {
+      return abort_with(errc::bad_toggle, abort_code::toggle_not_alternated);
+    }
+    count_ = seg_tx_.offset();
+    if (seg_tx_.finished()) return done();
+    return next_download_segment();
   }
 
-  [[nodiscard]] constexpr output download_step(const message &m) noexcept {
-    switch (step_) {
-    case step::await_initiate:
-      if (m.k != kind::initiate_download_response) {
-        return abort_with(abort_code::unknown_command, errc::unexpected_frame);
+  // ----- expedited and segmented upload ----------------------------------------------------
+
+  [[nodiscard]] constexpr step upload_initiate(const message &m) noexcept {
+    if (auto s = check_initiate(m, message_type::initiate_upload_response)) return *s;
+    if (m.expedited) {
+      if (m.data_size > rx_.size()) {
+        return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
       }
-      if (!same_object(m)) return abort_with(abort_code::general_error, errc::unexpected_frame);
-      count_ = tx_.size();
-      return finish();
-    case step::await_initiate_segmented:
-      if (m.k != kind::initiate_download_response) {
-        return abort_with(abort_code::unknown_command, errc::unexpected_frame);
-      }
-      if (!same_object(m)) return abort_with(abort_code::general_error, errc::unexpected_frame);
-      return send_next_segment();
-    case step::await_segment:
-      if (m.k != kind::download_segment_response) {
-        return abort_with(abort_code::unknown_command, errc::unexpected_frame);
-      }
-      if (m.toggle != toggle_) {
-        return abort_with(abort_code::toggle_not_alternated, errc::bad_toggle);
-      }
-      toggle_ = !toggle_;
-      if (count_ == tx_.size()) return finish();
-      return send_next_segment();
+      for (std::size_t i = 0; i < m.data_size; ++i) rx_[i] = m.data[i];
+      count_ = m.data_size;
+      return done();
     }
-    return abort_with(abort_code::general_error, errc::bad_state);
+    if (m.size_indicated && m.size > rx_.size()) {
+      return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
+    }
+    seg_rx_.start(rx_.size(),
+                  m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt);
+    expect(&client::upload_segment);
+    return send(upload_segment_request(seg_rx_.toggle()));
+  }
+  [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
+    if (m.type != message_type::upload_segment_response) return unexpected();
+    const std::size_t at = seg_rx_.count();
+    if (const auto code = seg_rx_.accept(m); code != abort_code::none) return local_abort(code);
+    for (std::size_t i = 0; i < m.data_size; ++i) rx_[at + i] = m.data[i];
+    count_ = seg_rx_.count();
+    if (m.last) return done();
+    return send(upload_segment_request(seg_rx_.toggle()));
+  }
+  /// A failure the receiving or sending core detected: the errc that goes with its code.
+  [[nodiscard]] constexpr step local_abort(abort_code code) noexcept {
+    switch (code) {
+    case abort_code::toggle_not_alternated: return abort_with(errc::bad_toggle, code);
+    case abort_code::out_of_memory: return abort_with(errc::buffer_too_small, code);
+    case abort_code::length_too_high:
+    case abort_code::length_too_low: return abort_with(errc::bad_length, code);
+    case abort_code::invalid_sequence_number: return abort_with(errc::unexpected_frame, code);
+    case abort_code::invalid_block_size: return abort_with(errc::out_of_range, code);
+    case abort_code::crc_error: return abort_with(errc::bad_checksum, code);
+    default: return abort_with(errc::unexpected_frame, code);
+    }
   }
 
-  [[nodiscard]] constexpr output request_segment() noexcept {
-    auto f = upload_segment_request(node_, toggle_);
-    if (!f) return abort_with(abort_code::general_error, f.error());
-    step_ = step::await_segment;
-    return {f.value(), state_};
+  // ----- block download ----------------------------------------------------------------------
+
+  [[nodiscard]] constexpr step block_download_initiate(const message &m) noexcept {
+    if (auto s = check_initiate(m, message_type::block_download_initiate_response)) return *s;
+    if (m.block_size < 1U || m.block_size > max_block_size) {
+      return abort_with(errc::out_of_range, abort_code::invalid_block_size);
+    }
+    block_tx_.start(static_cast<std::uint32_t>(tx_.size()), options_.crc && m.crc, m.block_size);
+    return next_burst();
+  }
+  [[nodiscard]] constexpr std::span<const std::uint8_t> burst_window() const noexcept {
+    return tx_.subspan(block_tx_.offset(), block_tx_.burst_bytes());
+  }
+  [[nodiscard]] constexpr step next_burst() noexcept {
+    expect(&client::block_download_ack);
+    window_ = burst_window();
+    return core_.make(block_tx_.burst(ch_.request_id, window_));
+  }
+  [[nodiscard]] constexpr step block_download_ack(const message &m) noexcept {
+    if (m.type != message_type::block_ack) return unexpected();
+    const auto r = block_tx_.on_ack(m, window_);
+    count_ = block_tx_.acknowledged();
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    if (r.what == block_sender::next::burst) return next_burst();
+    expect(&client::block_download_end);
+    return send(block_tx_.end());
+  }
+  [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
+    if (m.type != message_type::block_end_response) return unexpected();
+    return done();
   }
 
-  [[nodiscard]] constexpr output upload_step(const message &m) noexcept {
-    if (step_ == step::await_initiate) {
-      if (m.k != kind::initiate_upload_response) {
-        return abort_with(abort_code::unknown_command, errc::unexpected_frame);
-      }
-      if (!same_object(m)) return abort_with(abort_code::general_error, errc::unexpected_frame);
-      if (m.expedited) {
-        if (m.data_size > rx_.size()) {
-          return abort_with(abort_code::out_of_memory, errc::buffer_too_small);
-        }
-        for (std::size_t i = 0; i < m.data_size; ++i) rx_[i] = m.data[i];
-        count_ = m.data_size;
-        return finish();
-      }
-      size_indicated_ = m.size_indicated;
-      size_ = m.size;
-      if (size_indicated_ && size_ > rx_.size()) {
-        return abort_with(abort_code::out_of_memory, errc::buffer_too_small);
-      }
-      return request_segment();
+  // ----- block upload ------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr step block_upload_initiate(const message &m) noexcept {
+    if (m.type == message_type::initiate_upload_response) {
+      // protocol switch: the server answers with a normal upload (only if we allowed it)
+      if (options_.switch_threshold == 0U) return unexpected();
+      expect(&client::upload_initiate);
+      return upload_initiate(m);
     }
-    if (m.k != kind::upload_segment_response) {
-      return abort_with(abort_code::unknown_command, errc::unexpected_frame);
+    if (auto s = check_initiate(m, message_type::block_upload_initiate_response)) return *s;
+    if (m.size_indicated && m.size > rx_.size()) {
+      return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
     }
-    if (m.toggle != toggle_) return abort_with(abort_code::toggle_not_alternated, errc::bad_toggle);
-    if (count_ + m.data_size > rx_.size()) {
-      return abort_with(abort_code::out_of_memory, errc::buffer_too_small);
+    block_rx_.start(rx_.size(),
+                    m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt,
+                    options_.crc && m.crc, options_.block_size);
+    expect(&client::unexpected_message, &client::block_upload_segment);
+    return send(block_upload_start());
+  }
+  [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
+  /// During the segments of a sub-block every frame but an abort is a segment.
+  [[nodiscard]] constexpr std::optional<step> block_upload_segment(const payload &p) noexcept {
+    if (p[0] == 0x80U) return std::nullopt; // an abort
+    auto seg = decode_block_segment(p);
+    if (!seg) return abort_with(errc::unexpected_frame, abort_code::invalid_sequence_number);
+    const auto r = block_rx_.on_segment(seg.value(), p);
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    for (std::size_t i = 0; i < r.bytes.size(); ++i) rx_[r.offset + i] = r.bytes[i];
+    count_ = block_rx_.count();
+    if (!r.acknowledge) return core_.make({});
+    if (block_rx_.final_received()) {
+      expect(&client::block_upload_end, &client::block_upload_repeat);
     }
-    if (size_indicated_ && count_ + m.data_size > size_) {
-      return abort_with(abort_code::length_too_high, errc::bad_length);
-    }
-    for (std::size_t i = 0; i < m.data_size; ++i) rx_[count_ + i] = m.data[i];
-    count_ += m.data_size;
-    toggle_ = !toggle_;
-    if (m.last) {
-      if (size_indicated_ && count_ != size_) {
-        return abort_with(abort_code::length_too_low, errc::bad_length);
-      }
-      return finish();
-    }
-    return request_segment();
+    return send(block_rx_.acknowledge(options_.block_size));
+  }
+  /// While the end is awaited: the last segment once more is ignored.
+  [[nodiscard]] constexpr std::optional<step> block_upload_repeat(const payload &p) noexcept {
+    if (block_rx_.is_repeat(p)) return core_.make({});
+    return std::nullopt;
+  }
+  [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {
+    if (m.type != message_type::block_end) return unexpected();
+    const auto r = block_rx_.on_end(m);
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    for (std::size_t i = 0; i < r.bytes.size(); ++i) rx_[r.offset + i] = r.bytes[i];
+    count_ = block_rx_.count();
+    core_.finish();
+    return send(block_end_response());
   }
 
-  std::uint8_t node_;
-  std::uint32_t timeout_ms_;
-  transfer_state state_ = transfer_state::idle;
-  step step_ = step::await_initiate;
-  bool upload_ = false;
-  bool toggle_ = false;
-  bool size_indicated_ = false;
-  std::uint16_t index_ = 0;
-  std::uint8_t sub_ = 0;
-  std::uint32_t last_ = 0;
-  std::uint32_t size_ = 0;
-  std::uint32_t code_ = 0;
-  errc error_ = errc::truncated;
+  channel ch_;
+  machine_core core_;
+  handler handler_ = &client::unexpected_message;
+  raw_handler raw_ = nullptr;
+  block_options options_{};
   std::size_t count_ = 0;
   std::span<const std::uint8_t> tx_{};
   std::span<std::uint8_t> rx_{};
+  std::span<const std::uint8_t> window_{};
+  segment_sender seg_tx_{};
+  segment_receiver seg_rx_{};
+  block_sender block_tx_{};
+  block_receiver block_rx_{};
 };
 
 } // namespace fieldcodec::canopen::sdo

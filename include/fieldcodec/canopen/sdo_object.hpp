@@ -1,9 +1,10 @@
-// fieldcodec — SDO frames for dictionary entries: typed, limit-checked expedited download,
+// fieldcodec — SDO messages for dictionary entries: typed, limit-checked expedited download,
 // upload request, and the value of an expedited upload response.
 //
-//   auto f = canopen::sdo::download(node, xenax_canopen::modes_of_operation_requested, -1);
+//   auto f = canopen::sdo::download(1, xenax_canopen::modes_of_operation_requested, -1);
 //   // 0x601: 2F 60 60 00 FF 00 00 00
-// Values longer than 4 bytes go through sdo::client (segmented transfer).
+//   auto p = canopen::sdo::download(xenax_canopen::controlword, 0x0F);   // the 8 bytes only
+// Values longer than 4 bytes go through sdo::client (segmented or block transfer).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -19,44 +20,76 @@
 
 namespace fieldcodec::canopen::sdo {
 
-/// Expedited download of `value` to entry `e` (od::encode rules: limits, field width).
+/// Expedited download of `value` to entry `e`. `value` may be of any arithmetic type: it is
+/// taken as the number it is (never converted to the entry's type first) and checked against
+/// the entry's limits and field (od::encode rules), so nothing narrows or wraps silently
+/// (0xFF as a uint8_t is 255, too large for an INTEGER8; −1 for an UNSIGNED8 overflows).
 /// Errors: those of od::encode (out_of_range, overflow, type_mismatch, not_representable),
-/// access_denied (read-only or constant entry), too_long (more than 4 bytes: use the client),
-/// invalid_argument (node).
+/// access_denied (read-only or constant entry), too_long (more than 4 bytes: use the client).
 template <od::value_type T>
-[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const od::entry &e,
-                                                   T value) noexcept {
+[[nodiscard]] constexpr result<payload> download(const od::entry &e, T value) noexcept {
   if (!od::writable(e.access_type)) return errc::access_denied;
   if (od::fixed_size(e.type) > 4U || od::fixed_size(e.type) == 0U) return errc::too_long;
   std::array<std::uint8_t, 8> b{};
   auto n = od::encode(e, value, b);
   if (!n) return n.error();
-  return expedited_download(node, e.index, e.sub,
-                            std::span<const std::uint8_t>(b).first(n.value()));
+  return expedited_download({e.index, e.sub}, std::span<const std::uint8_t>(b).first(n.value()));
+}
+/// The same as a frame on channel `ch`.
+template <od::value_type T>
+[[nodiscard]] constexpr result<can_frame> download(const channel &ch, const od::entry &e,
+                                                   T value) noexcept {
+  return ch.request(download(e, value));
+}
+/// The same as a frame to the server of `node` (predefined channel). Errors: invalid_argument
+/// (node not 1..127) and those above.
+template <od::value_type T>
+[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const od::entry &e,
+                                                   T value) noexcept {
+  auto ch = channel::default_for(node);
+  if (!ch) return ch.error();
+  return download(ch.value(), e, value);
 }
 
-/// Initiate upload of entry `e`. Errors: access_denied (write-only), invalid_argument (node).
-[[nodiscard]] constexpr result<can_frame> upload(std::uint8_t node, const od::entry &e) noexcept {
+/// Initiate upload of entry `e`. Errors: access_denied (write-only).
+[[nodiscard]] constexpr result<payload> upload(const od::entry &e) noexcept {
   if (!od::readable(e.access_type)) return errc::access_denied;
-  return initiate_upload(node, e.index, e.sub);
+  return initiate_upload({e.index, e.sub});
+}
+/// The same as a frame to the server of `node`. Errors: access_denied, invalid_argument.
+[[nodiscard]] constexpr result<can_frame> upload(std::uint8_t node, const od::entry &e) noexcept {
+  auto ch = channel::default_for(node);
+  if (!ch) return ch.error();
+  return ch.value().request(upload(e));
 }
 
 /// The value in an expedited upload response for entry `e`.
-/// Errors: aborted (an abort frame), unexpected_frame (another kind of frame, another object,
-/// or a segmented response), bad_length (indicated size differs from the type's size), those of
-/// decode_response and od::decode (limits are not checked: the device reports what it has).
+/// Errors: aborted (an abort message), unexpected_frame (another kind of message, another
+/// object, or a segmented response), bad_length (indicated size differs from the type's size),
+/// type_mismatch, those of decode and od::decode (limits are not checked: the device reports
+/// what it has).
 [[nodiscard]] constexpr result<od::number> upload_value(const od::entry &e,
-                                                        const can_frame &f) noexcept {
-  auto m = decode_response(f);
+                                                        const payload &p) noexcept {
+  auto m = decode(p, direction::to_client);
   if (!m) return m.error();
   const message &r = m.value();
-  if (r.k == kind::abort) return errc::aborted;
-  if (r.k != kind::initiate_upload_response || !r.expedited) return errc::unexpected_frame;
-  if (r.index != e.index || r.sub != e.sub) return errc::unexpected_frame;
+  if (r.type == message_type::abort) return errc::aborted;
+  if (r.type != message_type::initiate_upload_response || !r.expedited) {
+    return errc::unexpected_frame;
+  }
+  if (r.address != od::address{e.index, e.sub}) return errc::unexpected_frame;
   const std::size_t w = od::fixed_size(e.type);
   if (w == 0U || w > 4U) return errc::type_mismatch;
   if (r.size_indicated && r.data_size != w) return errc::bad_length;
   return od::decode(e, r.bytes().first(w), byte_order::little, od::limits::ignore);
+}
+/// The same from a frame (the COB-ID is not checked). Errors: also bad_length (DLC not 8),
+/// unexpected_frame (remote frame).
+[[nodiscard]] constexpr result<od::number> upload_value(const od::entry &e,
+                                                        const can_frame &f) noexcept {
+  auto p = payload_of(f);
+  if (!p) return p.error();
+  return upload_value(e, p.value());
 }
 
 } // namespace fieldcodec::canopen::sdo

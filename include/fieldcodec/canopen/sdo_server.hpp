@@ -1,20 +1,31 @@
-// fieldcodec — a non-blocking SDO server transfer machine.
+// fieldcodec — a non-blocking SDO server transfer machine: expedited, segmented and block
+// download and upload from an object store (canopen/object_store.hpp).
 //
-// The server answers requests addressed to its node (COB-ID 0x600 + node) from an object
-// store (canopen/object_store.hpp). Segmented transfers go through a caller-owned buffer
-// (its size limits the largest value). Block transfer requests are answered with an abort
-// (0x05040001).
+// The server answers requests on its channel (the predefined 0x600 + node / 0x580 + node, or
+// the identifiers of an SDO server parameter object 1200h–127Fh). It moves values through a
+// caller-owned buffer in parts, so an object larger than the buffer is still served: a
+// download is passed to the store in parts (the store shows the value only when the last part
+// arrived), an upload is read from the store in parts. A value that fits the buffer is written
+// to the store in one part. Every call returns an sdo::step (frames, state, deadline).
+//
+//   sdo::server<Store> s(5, store, buffer);
+//   for every received frame: for (const auto &f : s.on_frame(frame, now).send) transmit(f);
+//   when the deadline passes: for (const auto &f : s.poll(now).send) transmit(f);
+//
+// Block transfer: the server offers CRC when asked, takes sub-blocks of up to min(127,
+// buffer / 7) segments, and sends sub-blocks of the size the client asks for when that many
+// segments fit its buffer (otherwise it aborts with 0x05040002). It answers a block upload of
+// an object of at most the client's protocol switch threshold with a normal upload.
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
-#include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
-#include <fieldcodec/canopen/sdo_client.hpp>
-#include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/canopen/sdo_transfer.hpp>
+#include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
-#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -22,188 +33,379 @@
 
 namespace fieldcodec::canopen::sdo {
 
+/// What a server offers.
+struct server_options {
+  bool block = true; ///< answer block transfer requests (else abort 0x05040001)
+  bool crc = true;   ///< support the CRC of block transfers
+};
+
 template <object_store Store>
 class server {
 public:
-  /// `store` and `buffer` are borrowed and must outlive the server.
+  /// A server on `ch`. `store` and `buffer` are borrowed and must outlive the server.
+  constexpr server(channel ch, Store &store, std::span<std::uint8_t> buffer,
+                   std::uint32_t timeout_ms = 1000, server_options o = {}) noexcept
+      : ch_(ch), store_(&store), buf_(buffer), core_(timeout_ms), options_(o) {}
+  /// A server for `node` on the predefined channel; a node-ID outside 1..127 answers nothing.
   constexpr server(std::uint8_t node, Store &store, std::span<std::uint8_t> buffer,
-                   std::uint32_t timeout_ms = 1000) noexcept
-      : node_(node), store_(&store), buf_(buffer), timeout_ms_(timeout_ms) {}
+                   std::uint32_t timeout_ms = 1000, server_options o = {}) noexcept
+      : server(channel::default_for(node).value_or(channel{}), store, buffer, timeout_ms, o) {}
 
-  /// Consume a frame; returns the response to send, if any. Frames for other COB-IDs, remote
-  /// frames and frames with DLC other than 8 get no response (last_error() tells bad_length).
-  [[nodiscard]] constexpr std::optional<can_frame> on_frame(const can_frame &f,
-                                                            std::uint32_t now) noexcept {
-    if (f.id != cob_id::sdo_rx_base + node_ || f.rtr) return std::nullopt;
-    auto r = decode_request(f);
+  /// Consume a frame. Frames on other identifiers and remote frames are not for the server;
+  /// frames with a DLC other than 8 get no answer (error(): bad_length). A request that does
+  /// not fit the running transfer is answered with an abort, and the transfer fails.
+  [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
+    if (!ch_.is_request(f)) return core_.make({});
+    auto p = payload_of(f);
+    if (!p) {
+      core_.refuse(p.error(), {});
+      return core_.make({});
+    }
+    if (core_.busy()) core_.touch(now);
+    if (phase_ == phase::block_download_segments && p.value()[0] != 0x80U) {
+      return block_download_segment(p.value());
+    }
+    if (phase_ == phase::block_download_end && block_rx_.is_repeat(p.value())) {
+      return core_.make({}); // the last segment once more
+    }
+    auto r = decode(p.value(), direction::to_server);
     if (!r) {
-      error_ = r.error();
-      if (r.error() == errc::unknown_command) {
-        return reply_abort(static_cast<std::uint16_t>(f.data[1] | (f.data[2] << 8U)), f.data[3],
-                           abort_code::unknown_command);
-      }
-      return std::nullopt;
+      const od::address a = detail::get_address(p.value());
+      core_.refuse(r.error(), a);
+      return reply_abort(a, abort_code::unknown_command, r.error());
     }
     const message &m = r.value();
-    last_ = now;
-    switch (m.k) {
-    case kind::initiate_download_request: return initiate_download(m);
-    case kind::download_segment_request: return download_segment(m);
-    case kind::initiate_upload_request: return initiate_upload(m);
-    case kind::upload_segment_request: return upload_segment(m);
-    case kind::abort:
-      if (state_ == transfer_state::busy) {
-        state_ = transfer_state::failed;
-        error_ = errc::aborted;
-      }
-      return std::nullopt;
-    case kind::block_upload_request:
-    case kind::block_download_request:
-      error_ = errc::unknown_command;
-      return reply_abort(m.index, m.sub, abort_code::unknown_command);
+    switch (m.type) {
+    case message_type::initiate_download_request: return initiate_download(m, now);
+    case message_type::initiate_upload_request: return initiate_upload(m, now);
+    case message_type::block_download_initiate: return block_download_initiate(m, now);
+    case message_type::block_upload_initiate: return block_upload_initiate(m, now);
+    case message_type::abort:
+      if (core_.busy()) core_.fail(errc::aborted, m.abort);
+      phase_ = phase::idle;
+      return core_.make({});
     default: break;
     }
-    error_ = errc::unexpected_frame;
-    return reply_abort(m.index, m.sub, abort_code::unknown_command);
-  }
-
-  /// Abort a segmented transfer whose client went silent (0x05040000).
-  [[nodiscard]] constexpr std::optional<can_frame> poll(std::uint32_t now) noexcept {
-    if (state_ == transfer_state::busy && now - last_ >= timeout_ms_) {
-      error_ = errc::timeout;
-      return reply_abort(index_, sub_, abort_code::timeout);
+    switch (phase_) {
+    case phase::download_segments: return download_segment(m);
+    case phase::upload_segments: return upload_segment(m);
+    case phase::block_download_end: return block_download_end(m);
+    case phase::block_upload_start: return block_upload_start(m);
+    case phase::block_upload_ack: return block_upload_ack(m);
+    case phase::block_upload_end: return block_upload_end(m);
+    case phase::idle:
+    case phase::block_download_segments: break;
     }
-    return std::nullopt;
+    return unexpected();
   }
 
-  [[nodiscard]] constexpr transfer_state state() const noexcept { return state_; }
-  [[nodiscard]] constexpr errc last_error() const noexcept { return error_; }
+  /// Abort a transfer whose client went silent (0x05040000, error timeout).
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    if (core_.timed_out(now)) return fail(errc::timeout, abort_code::timeout);
+    return core_.make({});
+  }
+
+  [[nodiscard]] constexpr transfer_state state() const noexcept { return core_.state(); }
+  [[nodiscard]] constexpr bool busy() const noexcept { return core_.busy(); }
+  /// Why the last transfer failed, or why the last frame was refused; empty otherwise.
+  [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept {
+    return core_.error();
+  }
+  [[nodiscard]] constexpr const channel &connection() const noexcept { return ch_; }
+  /// Follow a new SDO server parameter (1200h sub 1/2); ends a running transfer silently.
+  constexpr void set_connection(channel ch) noexcept {
+    ch_ = ch;
+    core_.stop();
+    phase_ = phase::idle;
+  }
 
 private:
-  enum class mode : std::uint8_t { download, upload };
+  enum class phase : std::uint8_t {
+    idle,
+    download_segments,
+    upload_segments,
+    block_download_segments,
+    block_download_end,
+    block_upload_start,
+    block_upload_ack,
+    block_upload_end,
+  };
 
-  [[nodiscard]] constexpr std::optional<can_frame>
-  reply_abort(std::uint16_t index, std::uint8_t sub, abort_code code) noexcept {
-    if (state_ == transfer_state::busy) state_ = transfer_state::failed;
-    auto f = abort(direction::to_client, node_, index, sub, code);
-    if (!f) return std::nullopt;
-    return f.value();
+  // ----- answers and failures ------------------------------------------------------------
+
+  [[nodiscard]] constexpr step send(const payload &p) const noexcept {
+    return core_.make(frames(ch_.response(p)));
   }
-  [[nodiscard]] constexpr std::optional<can_frame> ok(result<can_frame> f) noexcept {
-    if (!f) return std::nullopt;
-    return f.value();
+  /// Fail the running transfer (if any) with `e` and answer with an abort about `a`.
+  [[nodiscard]] constexpr step reply_abort(od::address a, abort_code code, errc e) noexcept {
+    if (core_.busy()) {
+      core_.fail(e, code);
+    } else {
+      core_.refuse(e, a);
+    }
+    phase_ = phase::idle;
+    return core_.make(frames(ch_.response(abort(a, code))));
+  }
+  [[nodiscard]] constexpr step fail(errc e, abort_code code) noexcept {
+    return reply_abort(core_.address(), code, e);
+  }
+  [[nodiscard]] constexpr step store_refused(abort_code code) noexcept {
+    return fail(errc::aborted, code);
+  }
+  [[nodiscard]] constexpr step unexpected() noexcept {
+    return reply_abort(core_.address(), abort_code::unknown_command, errc::unexpected_frame);
+  }
+  [[nodiscard]] constexpr step local_abort(abort_code code) noexcept {
+    switch (code) {
+    case abort_code::toggle_not_alternated: return fail(errc::bad_toggle, code);
+    case abort_code::out_of_memory: return fail(errc::buffer_too_small, code);
+    case abort_code::length_too_high:
+    case abort_code::length_too_low: return fail(errc::bad_length, code);
+    case abort_code::invalid_sequence_number: return fail(errc::unexpected_frame, code);
+    case abort_code::invalid_block_size: return fail(errc::out_of_range, code);
+    case abort_code::crc_error: return fail(errc::bad_checksum, code);
+    default: return fail(errc::unexpected_frame, code);
+    }
+  }
+  [[nodiscard]] constexpr step finish(const payload &p) noexcept {
+    core_.finish();
+    phase_ = phase::idle;
+    return send(p);
+  }
+  constexpr void start(od::address a, std::uint32_t now, phase ph) noexcept {
+    core_.begin(a, now);
+    phase_ = ph;
+    used_ = 0;
+    flushed_ = 0;
   }
 
-  [[nodiscard]] constexpr std::optional<can_frame> initiate_download(const message &m) noexcept {
-    state_ = transfer_state::idle; // a new initiate ends any running transfer
-    if (m.expedited) {
-      const auto code = store_->write(m.index, m.sub, m.bytes());
-      if (code != abort_code::none) return reply_abort(m.index, m.sub, code);
-      state_ = transfer_state::done;
-      return ok(download_response(node_, m.index, m.sub));
-    }
-    if (m.size_indicated && m.size > buf_.size()) {
-      return reply_abort(m.index, m.sub, abort_code::out_of_memory);
-    }
-    index_ = m.index;
-    sub_ = m.sub;
-    size_indicated_ = m.size_indicated;
-    size_ = m.size;
-    count_ = 0;
-    toggle_ = false;
-    mode_ = mode::download;
-    state_ = transfer_state::busy;
-    return ok(download_response(node_, m.index, m.sub));
-  }
+  // ----- the download side: the buffer fills, full buffers go to the store ----------------
 
-  [[nodiscard]] constexpr std::optional<can_frame> download_segment(const message &m) noexcept {
-    if (state_ != transfer_state::busy || mode_ != mode::download) {
-      error_ = errc::unexpected_frame;
-      return reply_abort(index_, sub_, abort_code::unknown_command);
-    }
-    if (m.toggle != toggle_) {
-      error_ = errc::bad_toggle;
-      return reply_abort(index_, sub_, abort_code::toggle_not_alternated);
-    }
-    if (count_ + m.data_size > buf_.size()) {
-      error_ = errc::buffer_too_small;
-      return reply_abort(index_, sub_, abort_code::out_of_memory);
-    }
-    if (size_indicated_ && count_ + m.data_size > size_) {
-      error_ = errc::bad_length;
-      return reply_abort(index_, sub_, abort_code::length_too_high);
-    }
-    for (std::size_t i = 0; i < m.data_size; ++i) buf_[count_ + i] = m.data[i];
-    count_ += m.data_size;
-    const bool t = toggle_;
-    toggle_ = !toggle_;
-    if (m.last) {
-      if (size_indicated_ && count_ != size_) {
-        error_ = errc::bad_length;
-        return reply_abort(index_, sub_, abort_code::length_too_low);
+  /// Append received bytes; a full buffer goes to the store as a part.
+  [[nodiscard]] constexpr abort_code append(std::span<const std::uint8_t> bytes) noexcept {
+    for (const std::uint8_t b : bytes) {
+      if (used_ == buf_.size()) {
+        if (buf_.empty()) return abort_code::out_of_memory;
+        const auto c = store_->write(core_.address(), flushed_, buf_, false);
+        if (c != abort_code::none) return c;
+        flushed_ += used_;
+        used_ = 0;
       }
-      const auto code =
-          store_->write(index_, sub_, std::span<const std::uint8_t>(buf_).first(count_));
-      if (code != abort_code::none) return reply_abort(index_, sub_, code);
-      state_ = transfer_state::done;
+      buf_[used_++] = b;
     }
-    return ok(download_segment_response(node_, t));
+    return abort_code::none;
+  }
+  /// The last part: the value becomes visible (or is refused).
+  [[nodiscard]] constexpr abort_code complete_download() noexcept {
+    return store_->write(core_.address(), flushed_,
+                         std::span<const std::uint8_t>(buf_).first(used_), true);
   }
 
-  [[nodiscard]] constexpr std::optional<can_frame> initiate_upload(const message &m) noexcept {
-    state_ = transfer_state::idle;
-    std::size_t n = 0;
-    const auto code = store_->read(m.index, m.sub, buf_, n);
-    if (code != abort_code::none) return reply_abort(m.index, m.sub, code);
-    if (n >= 1U && n <= 4U) {
-      state_ = transfer_state::done;
-      return ok(expedited_upload_response(node_, m.index, m.sub,
-                                          std::span<const std::uint8_t>(buf_).first(n)));
+  [[nodiscard]] constexpr step initiate_download(const message &m, std::uint32_t now) noexcept {
+    start(m.address, now, phase::idle); // a new initiate ends any running transfer
+    const std::optional<std::uint32_t> size =
+        m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt;
+    if (const auto c = store_->begin_write(m.address, size); c != abort_code::none) {
+      return store_refused(c);
     }
-    index_ = m.index;
-    sub_ = m.sub;
-    size_ = static_cast<std::uint32_t>(n);
-    count_ = 0;
-    toggle_ = false;
-    mode_ = mode::upload;
-    state_ = transfer_state::busy;
-    return ok(upload_response(node_, m.index, m.sub, size_));
+    if (m.expedited) {
+      if (const auto c = store_->write(m.address, 0, m.bytes(), true); c != abort_code::none) {
+        return store_refused(c);
+      }
+      return finish(download_response(m.address));
+    }
+    seg_rx_.start(~std::size_t{0}, size);
+    phase_ = phase::download_segments;
+    return send(download_response(m.address));
   }
 
-  [[nodiscard]] constexpr std::optional<can_frame> upload_segment(const message &m) noexcept {
-    if (state_ != transfer_state::busy || mode_ != mode::upload) {
-      error_ = errc::unexpected_frame;
-      return reply_abort(index_, sub_, abort_code::unknown_command);
-    }
-    if (m.toggle != toggle_) {
-      error_ = errc::bad_toggle;
-      return reply_abort(index_, sub_, abort_code::toggle_not_alternated);
-    }
-    const std::size_t left = size_ - count_;
-    const std::size_t n = left < 7U ? left : 7U;
-    const bool last = left <= 7U;
-    auto f = sdo::upload_segment(node_, toggle_,
-                                 std::span<const std::uint8_t>(buf_).subspan(count_, n), last);
-    count_ += n;
-    toggle_ = !toggle_;
-    if (last) state_ = transfer_state::done;
-    return ok(f);
+  [[nodiscard]] constexpr step download_segment(const message &m) noexcept {
+    if (m.type != message_type::download_segment_request) return unexpected();
+    const bool toggle = m.toggle;
+    if (const auto c = seg_rx_.accept(m); c != abort_code::none) return local_abort(c);
+    if (const auto c = append(m.bytes()); c != abort_code::none) return store_refused(c);
+    if (!m.last) return send(download_segment_response(toggle));
+    if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
+    return finish(download_segment_response(toggle));
   }
 
-  std::uint8_t node_;
+  [[nodiscard]] constexpr std::uint8_t download_block_size() const noexcept {
+    const std::size_t n = (buf_.size() - used_) / 7U;
+    return static_cast<std::uint8_t>(n > max_block_size ? max_block_size : n);
+  }
+
+  [[nodiscard]] constexpr step block_download_initiate(const message &m,
+                                                       std::uint32_t now) noexcept {
+    start(m.address, now, phase::idle);
+    if (!options_.block) {
+      return reply_abort(m.address, abort_code::unknown_command, errc::unknown_command);
+    }
+    const std::optional<std::uint32_t> size =
+        m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt;
+    if (const auto c = store_->begin_write(m.address, size); c != abort_code::none) {
+      return store_refused(c);
+    }
+    const std::uint8_t n = download_block_size();
+    if (n == 0U) return fail(errc::buffer_too_small, abort_code::out_of_memory);
+    const bool crc = options_.crc && m.crc;
+    block_rx_.start(~std::size_t{0}, size, crc, n);
+    phase_ = phase::block_download_segments;
+    return send(block_download_initiate_response(m.address, n, crc).value_or(payload{}));
+  }
+
+  [[nodiscard]] constexpr step block_download_segment(const payload &p) noexcept {
+    auto seg = decode_block_segment(p);
+    if (!seg) return fail(errc::unexpected_frame, abort_code::invalid_sequence_number);
+    const auto r = block_rx_.on_segment(seg.value(), p);
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
+    if (!r.acknowledge) return core_.make({});
+    if (block_rx_.final_received()) phase_ = phase::block_download_end;
+    // room for the next sub-block: send the collected bytes to the store when it is short
+    if (download_block_size() == 0U && used_ > 0U) {
+      const auto c = store_->write(core_.address(), flushed_,
+                                   std::span<const std::uint8_t>(buf_).first(used_), false);
+      if (c != abort_code::none) return store_refused(c);
+      flushed_ += used_;
+      used_ = 0;
+    }
+    const std::uint8_t n = download_block_size();
+    return send(block_rx_.acknowledge(n == 0U ? 1U : n));
+  }
+
+  [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
+    if (m.type != message_type::block_end) return unexpected();
+    const auto r = block_rx_.on_end(m);
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
+    if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
+    return finish(block_end_response());
+  }
+
+  // ----- the upload side: the buffer is a window over the value --------------------------
+
+  /// Make the window cover [offset, offset + n) of the value. Returns none or an abort code.
+  [[nodiscard]] constexpr abort_code window(std::size_t offset, std::size_t n) noexcept {
+    if (offset >= win_ && offset + n <= win_ + used_) return abort_code::none;
+    std::size_t total = 0;
+    const auto c = store_->read(core_.address(), offset, buf_, total);
+    if (c != abort_code::none) return c;
+    if (total != size_) return abort_code::general_error; // the value changed meanwhile
+    win_ = offset;
+    used_ = total - offset < buf_.size() ? total - offset : buf_.size();
+    if (n > used_) return abort_code::out_of_memory;
+    return abort_code::none;
+  }
+  [[nodiscard]] constexpr std::span<const std::uint8_t> view(std::size_t offset,
+                                                             std::size_t n) const noexcept {
+    return std::span<const std::uint8_t>(buf_).subspan(offset - win_, n);
+  }
+  /// Read the start of `a`; size_ is its length. Returns none or an abort code.
+  [[nodiscard]] constexpr abort_code open_upload(od::address a) noexcept {
+    std::size_t total = 0;
+    const auto c = store_->read(a, 0, buf_, total);
+    if (c != abort_code::none) return c;
+    if (total > 0xFFFF'FFFFU) return abort_code::length_too_high;
+    size_ = total;
+    win_ = 0;
+    used_ = total < buf_.size() ? total : buf_.size();
+    return abort_code::none;
+  }
+
+  [[nodiscard]] constexpr step initiate_upload(const message &m, std::uint32_t now) noexcept {
+    start(m.address, now, phase::idle);
+    if (const auto c = open_upload(m.address); c != abort_code::none) return store_refused(c);
+    return normal_upload_response();
+  }
+  /// The answer to an initiate upload (also after a protocol switch).
+  [[nodiscard]] constexpr step normal_upload_response() noexcept {
+    if (size_ >= 1U && size_ <= 4U) {
+      if (used_ < size_) return fail(errc::buffer_too_small, abort_code::out_of_memory);
+      return finish(expedited_upload_response(core_.address(), view(0, size_)).value_or(payload{}));
+    }
+    seg_tx_.start(static_cast<std::uint32_t>(size_));
+    phase_ = phase::upload_segments;
+    return send(upload_response(core_.address(), static_cast<std::uint32_t>(size_)));
+  }
+
+  [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
+    if (m.type != message_type::upload_segment_request) return unexpected();
+    if (m.toggle != seg_tx_.toggle()) {
+      return fail(errc::bad_toggle, abort_code::toggle_not_alternated);
+    }
+    const std::size_t at = seg_tx_.offset();
+    const std::size_t n = seg_tx_.next_length();
+    if (const auto c = window(at, n); c != abort_code::none) return store_refused(c);
+    const payload p = seg_tx_.next(message_type::upload_segment_response, view(at, n));
+    if (seg_tx_.finished()) return finish(p);
+    return send(p);
+  }
+
+  [[nodiscard]] constexpr step block_upload_initiate(const message &m, std::uint32_t now) noexcept {
+    start(m.address, now, phase::idle);
+    if (!options_.block) {
+      return reply_abort(m.address, abort_code::unknown_command, errc::unknown_command);
+    }
+    if (m.block_size < 1U || m.block_size > max_block_size) {
+      return fail(errc::out_of_range, abort_code::invalid_block_size);
+    }
+    if (const auto c = open_upload(m.address); c != abort_code::none) return store_refused(c);
+    if (m.switch_threshold != 0U && size_ <= m.switch_threshold) return normal_upload_response();
+    const bool crc = options_.crc && m.crc;
+    block_tx_.start(static_cast<std::uint32_t>(size_), crc, m.block_size);
+    phase_ = phase::block_upload_start;
+    return send(
+        block_upload_initiate_response(m.address, static_cast<std::uint32_t>(size_), true, crc));
+  }
+
+  [[nodiscard]] constexpr step next_burst() noexcept {
+    const std::size_t at = block_tx_.offset();
+    const std::size_t n = block_tx_.burst_bytes();
+    if (n > buf_.size()) { // the client asks for more segments than the buffer holds
+      return fail(errc::out_of_range, abort_code::invalid_block_size);
+    }
+    if (const auto c = window(at, n); c != abort_code::none) return store_refused(c);
+    phase_ = phase::block_upload_ack;
+    burst_ = view(at, n);
+    return core_.make(block_tx_.burst(ch_.response_id, burst_));
+  }
+
+  [[nodiscard]] constexpr step block_upload_start(const message &m) noexcept {
+    if (m.type != message_type::block_upload_start) return unexpected();
+    return next_burst();
+  }
+
+  [[nodiscard]] constexpr step block_upload_ack(const message &m) noexcept {
+    if (m.type != message_type::block_ack) return unexpected();
+    const auto r = block_tx_.on_ack(m, burst_);
+    if (r.abort != abort_code::none) return local_abort(r.abort);
+    if (r.what == block_sender::next::burst) return next_burst();
+    phase_ = phase::block_upload_end;
+    return send(block_tx_.end());
+  }
+
+  [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {
+    if (m.type != message_type::block_end_response) return unexpected();
+    core_.finish();
+    phase_ = phase::idle;
+    return core_.make({});
+  }
+
+  channel ch_;
   Store *store_;
   std::span<std::uint8_t> buf_;
-  std::uint32_t timeout_ms_;
-  transfer_state state_ = transfer_state::idle;
-  mode mode_ = mode::download;
-  errc error_ = errc::truncated;
-  bool toggle_ = false;
-  bool size_indicated_ = false;
-  std::uint16_t index_ = 0;
-  std::uint8_t sub_ = 0;
-  std::uint32_t size_ = 0;
-  std::uint32_t last_ = 0;
-  std::size_t count_ = 0;
+  machine_core core_;
+  server_options options_;
+  phase phase_ = phase::idle;
+  std::size_t used_ = 0;    ///< download: bytes in the buffer; upload: bytes of the window
+  std::size_t flushed_ = 0; ///< download: bytes passed to the store as parts
+  std::size_t win_ = 0;     ///< upload: offset of the window in the value
+  std::size_t size_ = 0;    ///< upload: length of the value
+  std::span<const std::uint8_t> burst_{};
+  segment_sender seg_tx_{};
+  segment_receiver seg_rx_{};
+  block_sender block_tx_{};
+  block_receiver block_rx_{};
 };
 
 } // namespace fieldcodec::canopen::sdo

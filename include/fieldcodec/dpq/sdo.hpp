@@ -21,8 +21,20 @@
 #include <fieldcodec/od/entry.hpp>
 
 #include <cstdint>
+#include <span>
 
 namespace fieldcodec::dpq {
+
+namespace detail {
+/// The expedited download of `bytes` to `e` on the predefined channel of `node`.
+[[nodiscard]] constexpr result<canopen::can_frame>
+download_frame(std::uint8_t node, const od::entry &e,
+               std::span<const std::uint8_t> bytes) noexcept {
+  auto ch = canopen::sdo::channel::default_for(node);
+  if (!ch) return ch.error();
+  return ch.value().request(canopen::sdo::expedited_download({e.index, e.sub}, bytes));
+}
+} // namespace detail
 
 /// Expedited download of a raw value. Errors: access_denied (read-only), those of raw_to_bytes,
 /// invalid_argument (node not 1..127).
@@ -31,7 +43,7 @@ write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexc
   if (!od::writable(e.access_type)) return errc::access_denied;
   auto p = raw_to_bytes(e, raw);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
+  return detail::download_frame(node, e, p.value().span());
 }
 
 /// Expedited download of an engineering value. Errors: access_denied, out_of_range, overflow,
@@ -40,13 +52,13 @@ write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexc
 write_request(std::uint8_t node, const od::entry &e, decimal eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
+  return detail::download_frame(node, e, p.value().span());
 }
 [[nodiscard]] constexpr result<canopen::can_frame>
 write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
-  return canopen::sdo::expedited_download(node, e.index, e.sub, p.value().span());
+  return detail::download_frame(node, e, p.value().span());
 }
 
 /// Upload request (command 0x40; the manual's example prints 0x42, see errata DPQ-F1).
@@ -54,23 +66,25 @@ write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
 [[nodiscard]] constexpr result<canopen::can_frame> read_request(std::uint8_t node,
                                                                 const od::entry &e) noexcept {
   if (!od::readable(e.access_type)) return errc::access_denied;
-  return canopen::sdo::initiate_upload(node, e.index, e.sub);
+  auto ch = canopen::sdo::channel::default_for(node);
+  if (!ch) return ch.error();
+  return ch.value().request(canopen::sdo::initiate_upload({e.index, e.sub}));
 }
 
 namespace detail {
 /// The response of `node` to a request about `e`, decoded. Errors: unexpected_frame (other
 /// COB-ID, other index or sub-index), aborted (the card sent an abort; decode the frame with
-/// canopen::sdo::decode_response for the code, dpq::describe_sdo_abort names it), bad_length,
-/// unknown_command.
+/// canopen::sdo::decode(frame, direction::to_client) for the code, dpq::describe_sdo_abort names
+/// it), bad_length, unknown_command.
 [[nodiscard]] constexpr result<canopen::sdo::message>
 response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
-  auto id = canopen::cob_id::sdo_tx(node);
-  if (!id) return id.error();
-  if (f.id != id.value() || f.rtr) return errc::unexpected_frame;
-  auto m = canopen::sdo::decode_response(f);
+  auto ch = canopen::sdo::channel::default_for(node);
+  if (!ch) return ch.error();
+  if (!ch.value().is_response(f)) return errc::unexpected_frame;
+  auto m = canopen::sdo::decode(f, canopen::sdo::direction::to_client);
   if (!m) return m.error();
-  if (m.value().index != e.index || m.value().sub != e.sub) return errc::unexpected_frame;
-  if (m.value().k == canopen::sdo::kind::abort) return errc::aborted;
+  if (m.value().address != od::address{e.index, e.sub}) return errc::unexpected_frame;
+  if (m.value().type == canopen::sdo::message_type::abort) return errc::aborted;
   return m;
 }
 } // namespace detail
@@ -82,7 +96,7 @@ response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f)
                                               const canopen::can_frame &f) noexcept {
   auto m = detail::response_for(node, e, f);
   if (!m) return m.error();
-  if (m.value().k != canopen::sdo::kind::initiate_download_response) {
+  if (m.value().type != canopen::sdo::message_type::initiate_download_response) {
     return errc::unexpected_frame;
   }
   return {};
@@ -98,7 +112,7 @@ read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_fram
   auto m = detail::response_for(node, e, f);
   if (!m) return m.error();
   const canopen::sdo::message &msg = m.value();
-  if (msg.k != canopen::sdo::kind::initiate_upload_response || !msg.expedited) {
+  if (msg.type != canopen::sdo::message_type::initiate_upload_response || !msg.expedited) {
     return errc::unexpected_frame;
   }
   const std::uint32_t w = e.width();

@@ -1,7 +1,11 @@
-// fieldcodec — conversions between canopen::can_frame and Linux SocketCAN `struct can_frame`.
+// fieldcodec — host adapter: conversions between canopen::can_frame and Linux SocketCAN
+// `struct can_frame`.
 //
-// Host-only: this header is empty where <linux/can.h> does not exist (firmware builds). It does
-// no I/O; opening and reading the socket stays with the application.
+// host/ is the only place of fieldcodec that knows an operating system. Its headers belong to
+// the CMake target fieldcodec::host (Linux only); nothing under include/fieldcodec/ outside
+// host/ includes them, and firmware never builds them. This header is empty where
+// <linux/can.h> does not exist. It does no I/O itself: opening and reading the socket stays with
+// the application.
 #pragma once
 
 #if defined(__has_include)
@@ -20,13 +24,13 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace fieldcodec::canopen {
+namespace fieldcodec::host {
 
 /// A SocketCAN frame for `f` (base frame format; RTR sets CAN_RTR_FLAG).
 /// Errors: invalid_argument (id > 0x7FF), bad_length (dlc > 8).
-[[nodiscard]] inline result<::can_frame> to_socketcan(const can_frame &f) noexcept {
-  if (f.id > max_can_id) return errc::invalid_argument;
-  if (f.dlc > max_dlc) return errc::bad_length;
+[[nodiscard]] inline result<::can_frame> to_socketcan(const canopen::can_frame &f) noexcept {
+  if (f.id > canopen::max_can_id) return errc::invalid_argument;
+  if (f.dlc > canopen::max_dlc) return errc::bad_length;
   ::can_frame out{};
   out.can_id = static_cast<canid_t>(f.id) | (f.rtr ? static_cast<canid_t>(CAN_RTR_FLAG) : 0U);
   out.can_dlc = f.dlc;
@@ -39,7 +43,7 @@ namespace fieldcodec::canopen {
 /// The frame SocketCAN delivered. Error frames and extended (29-bit) frames are not CANopen
 /// base frames. Errors: unexpected_frame (CAN_ERR_FLAG or CAN_EFF_FLAG set), bad_length
 /// (length > 8).
-[[nodiscard]] inline result<can_frame> from_socketcan(const ::can_frame &in) noexcept {
+[[nodiscard]] inline result<canopen::can_frame> from_socketcan(const ::can_frame &in) noexcept {
   if ((in.can_id & static_cast<canid_t>(CAN_ERR_FLAG)) != 0U) return errc::unexpected_frame;
   if ((in.can_id & static_cast<canid_t>(CAN_EFF_FLAG)) != 0U) return errc::unexpected_frame;
   // A base frame has 11 identifier bits: anything above them would be silently dropped and the
@@ -47,8 +51,8 @@ namespace fieldcodec::canopen {
   if ((in.can_id & static_cast<canid_t>(CAN_EFF_MASK & ~CAN_SFF_MASK)) != 0U) {
     return errc::invalid_argument;
   }
-  if (in.can_dlc > max_dlc) return errc::bad_length;
-  can_frame f;
+  if (in.can_dlc > canopen::max_dlc) return errc::bad_length;
+  canopen::can_frame f;
   f.id = static_cast<std::uint16_t>(in.can_id & static_cast<canid_t>(CAN_SFF_MASK));
   f.rtr = (in.can_id & static_cast<canid_t>(CAN_RTR_FLAG)) != 0U;
   f.dlc = in.can_dlc;
@@ -58,6 +62,6 @@ namespace fieldcodec::canopen {
   return f;
 }
 
-} // namespace fieldcodec::canopen
+} // namespace fieldcodec::host
 
 #endif // FIELDCODEC_HAS_SOCKETCAN

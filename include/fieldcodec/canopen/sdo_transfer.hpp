@@ -1,0 +1,407 @@
+// fieldcodec — the shared core of the SDO transfer machines (sdo_client.hpp, sdo_server.hpp):
+// states, errors with context, the step shape, and the rules of segmented and block transfer
+// that both sides follow.
+//
+// A transfer moves bytes from a sending side to a receiving side:
+//   download: client sends, server receives;   upload: server sends, client receives.
+// The four roles below hold the protocol rules of one side of one transfer kind and nothing
+// else: where the bytes come from and go to (a borrowed span, a server buffer over a store),
+// which frame type carries them and how a failure is reported stay with the client and the
+// server. So the toggle, size, sequence-number, block-size and CRC rules exist once.
+//   segment_sender    segmented: the next segment, toggle check of the answer
+//   segment_receiver  segmented: toggle, announced size and capacity checks
+//   block_sender      block: sub-block bursts, acknowledgements, retransmission, end (CRC)
+//   block_receiver    block: sequence numbers, when to acknowledge, end (unused bytes, CRC)
+#pragma once
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace fieldcodec::canopen::sdo {
+
+/// The state of a transfer machine.
+enum class transfer_state : std::uint8_t { idle, busy, done, failed };
+
+/// Why a transfer failed: the error, the abort code sent or received (none when no abort
+/// message was involved, e.g. a refused frame), and the object.
+///   error == errc::aborted: the peer sent `abort`;
+///   otherwise the machine detected the problem itself and sent `abort` (if not none).
+struct transfer_error {
+  errc error = errc::aborted;
+  abort_code abort = abort_code::none;
+  od::address address{};
+
+  [[nodiscard]] constexpr bool is(errc e) const noexcept { return error == e; }
+  friend constexpr bool operator==(const transfer_error &,
+                                   const transfer_error &) noexcept = default;
+};
+
+/// What every call into an SDO machine returns.
+using step = canopen::step<transfer_state>;
+
+/// Segments needed for `size` bytes of a segmented or block transfer (at least one: a 0-byte
+/// transfer sends one empty last segment).
+[[nodiscard]] constexpr std::uint32_t segments_for(std::uint32_t size) noexcept {
+  return size == 0U ? 1U : size / 7U + (size % 7U != 0U ? 1U : 0U);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Segmented transfer
+
+/// The sending side of a segmented transfer of `size` bytes.
+class segment_sender {
+public:
+  constexpr void start(std::uint32_t size) noexcept {
+    size_ = size;
+    offset_ = 0;
+    toggle_ = false;
+  }
+  /// Bytes of the next segment and where they start.
+  [[nodiscard]] constexpr std::uint32_t offset() const noexcept { return offset_; }
+  [[nodiscard]] constexpr std::uint32_t next_length() const noexcept {
+    return size_ - offset_ < 7U ? size_ - offset_ : 7U;
+  }
+  [[nodiscard]] constexpr bool next_is_last() const noexcept { return size_ - offset_ <= 7U; }
+  [[nodiscard]] constexpr bool toggle() const noexcept { return toggle_; }
+  [[nodiscard]] constexpr bool finished() const noexcept { return offset_ == size_ && sent_last_; }
+
+  /// The next segment (`bytes` = the next_length() bytes at offset()) as message `type`
+  /// (download_segment_request or upload_segment_response); moves on and flips the toggle.
+  [[nodiscard]] constexpr payload next(message_type type,
+                                       std::span<const std::uint8_t> bytes) noexcept {
+    message m;
+    m.type = type;
+    m.toggle = toggle_;
+    m.last = next_is_last();
+    m.data_size = static_cast<std::uint8_t>(bytes.size());
+    for (std::size_t i = 0; i < bytes.size() && i < 7U; ++i) m.data[i] = bytes[i];
+    offset_ += static_cast<std::uint32_t>(bytes.size());
+    sent_last_ = m.last;
+    toggle_ = !toggle_;
+    return encode(m).value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
+  }
+  /// Does the toggle the peer answered with belong to the segment just sent?
+  [[nodiscard]] constexpr bool answer_matches(bool peer_toggle) const noexcept {
+    return peer_toggle != toggle_; // next() has flipped it already
+  }
+
+private:
+  std::uint32_t size_ = 0;
+  std::uint32_t offset_ = 0;
+  bool toggle_ = false;
+  bool sent_last_ = false;
+};
+
+/// The receiving side of a segmented transfer.
+class segment_receiver {
+public:
+  /// `capacity`: most bytes the receiver can take; `announced`: the size the sender indicated.
+  constexpr void start(std::size_t capacity, std::optional<std::uint32_t> announced) noexcept {
+    capacity_ = capacity;
+    announced_ = announced;
+    count_ = 0;
+    toggle_ = false;
+  }
+  /// The toggle the next segment (or segment request) must carry.
+  [[nodiscard]] constexpr bool toggle() const noexcept { return toggle_; }
+  [[nodiscard]] constexpr std::size_t count() const noexcept { return count_; }
+
+  /// Check a received segment; on success the caller stores m.bytes() at the old count().
+  /// Returns none or the abort code: toggle_not_alternated, out_of_memory (over capacity),
+  /// length_too_high / length_too_low (disagrees with the announced size).
+  [[nodiscard]] constexpr abort_code accept(const message &m) noexcept {
+    if (m.toggle != toggle_) return abort_code::toggle_not_alternated;
+    if (announced_ && count_ + m.data_size > *announced_) return abort_code::length_too_high;
+    if (count_ + m.data_size > capacity_) return abort_code::out_of_memory;
+    if (m.last && announced_ && count_ + m.data_size != *announced_) {
+      return abort_code::length_too_low;
+    }
+    count_ += m.data_size;
+    toggle_ = !toggle_;
+    return abort_code::none;
+  }
+
+private:
+  std::size_t capacity_ = 0;
+  std::optional<std::uint32_t> announced_{};
+  std::size_t count_ = 0;
+  bool toggle_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Block transfer
+
+/// The sending side of a block transfer of `size` bytes: sub-blocks of block_size() segments,
+/// retransmission from the first segment the receiver did not acknowledge, and the end message
+/// with the unused bytes of the last segment and the CRC of the data.
+class block_sender {
+public:
+  constexpr void start(std::uint32_t size, bool crc, std::uint8_t block_size) noexcept {
+    size_ = size;
+    acked_ = 0;
+    crc_enabled_ = crc;
+    crc_ = 0;
+    block_size_ = block_size;
+    in_flight_ = 0;
+  }
+  /// Where the next burst starts, how many segments and bytes it has, and whether it holds the
+  /// last segment of the transfer.
+  [[nodiscard]] constexpr std::uint32_t offset() const noexcept { return acked_; }
+  [[nodiscard]] constexpr std::uint8_t burst_segments() const noexcept {
+    const std::uint32_t left = segments_for(size_) - acked_ / 7U;
+    return static_cast<std::uint8_t>(left < block_size_ ? left : block_size_);
+  }
+  [[nodiscard]] constexpr std::uint32_t burst_bytes() const noexcept {
+    const std::uint32_t n = 7U * burst_segments();
+    return size_ - acked_ < n ? size_ - acked_ : n;
+  }
+  [[nodiscard]] constexpr bool burst_ends_transfer() const noexcept {
+    return acked_ / 7U + burst_segments() == segments_for(size_);
+  }
+  [[nodiscard]] constexpr std::uint8_t block_size() const noexcept { return block_size_; }
+  [[nodiscard]] constexpr std::uint32_t acknowledged() const noexcept { return acked_; }
+
+  /// The burst of the next sub-block on `id`; `window` = the burst_bytes() bytes at offset().
+  [[nodiscard]] constexpr frames burst(std::uint16_t id,
+                                       std::span<const std::uint8_t> window) noexcept {
+    in_flight_ = burst_segments();
+    return frames::block_segments(id, window, in_flight_, burst_ends_transfer());
+  }
+
+  /// What an acknowledgement asks for.
+  enum class next : std::uint8_t { burst, end };
+  /// Take an acknowledgement of the burst whose bytes were `window`: the receiver got segments
+  /// 1..sequence and wants `block_size` segments next. Returns what to send next, or the abort
+  /// code: invalid_sequence_number (more segments acknowledged than sent), invalid_block_size
+  /// (next block size not 1..127).
+  struct ack_result {
+    abort_code abort = abort_code::none;
+    next what = next::burst;
+  };
+  [[nodiscard]] constexpr ack_result on_ack(const message &m,
+                                            std::span<const std::uint8_t> window) noexcept {
+    if (m.sequence > in_flight_) return {abort_code::invalid_sequence_number, next::burst};
+    const bool ended = burst_ends_transfer() && m.sequence == in_flight_;
+    std::uint32_t n = 7U * m.sequence;
+    if (n > window.size()) n = static_cast<std::uint32_t>(window.size());
+    if (crc_enabled_) crc_ = crc::ccitt16(window.first(n), crc_);
+    acked_ += n;
+    in_flight_ = 0;
+    if (ended) return {abort_code::none, next::end};
+    if (m.block_size < 1U || m.block_size > max_block_size) {
+      return {abort_code::invalid_block_size, next::burst};
+    }
+    block_size_ = m.block_size;
+    return {abort_code::none, next::burst};
+  }
+  /// The end message once every segment is acknowledged.
+  [[nodiscard]] constexpr payload end() const noexcept {
+    const auto unused = static_cast<std::uint8_t>(7U * segments_for(size_) - size_);
+    return block_end(unused, crc_enabled_ ? crc_ : std::uint16_t{0}).value_or(payload{});
+  }
+
+private:
+  std::uint32_t size_ = 0;
+  std::uint32_t acked_ = 0;
+  std::uint16_t crc_ = 0;
+  bool crc_enabled_ = false;
+  std::uint8_t block_size_ = 1;
+  std::uint8_t in_flight_ = 0;
+};
+
+/// The receiving side of a block transfer: takes segments in sequence, ignores duplicates and
+/// segments after a gap, says when to acknowledge, and checks the end (size, CRC). The last
+/// segment of the transfer is held back until the end message says how many of its bytes are
+/// data.
+class block_receiver {
+public:
+  constexpr void start(std::size_t capacity, std::optional<std::uint32_t> announced, bool crc,
+                       std::uint8_t block_size) noexcept {
+    capacity_ = capacity;
+    announced_ = announced;
+    crc_enabled_ = crc;
+    crc_ = 0;
+    count_ = 0;
+    sequence_ = 0;
+    block_size_ = block_size;
+    final_ = false;
+    previous_ = {};
+    have_previous_ = false;
+  }
+  [[nodiscard]] constexpr std::size_t count() const noexcept { return count_; }
+  [[nodiscard]] constexpr bool final_received() const noexcept { return final_; }
+  [[nodiscard]] constexpr std::uint8_t block_size() const noexcept { return block_size_; }
+
+  /// What a segment asks for: the bytes to store (at `offset`), whether to acknowledge now.
+  struct segment_result {
+    abort_code abort = abort_code::none;
+    std::span<const std::uint8_t> bytes{}; ///< store at `offset` (empty: nothing new)
+    std::size_t offset = 0;
+    bool acknowledge = false;
+  };
+  /// Take a segment frame's bytes. `m` is the decoded segment (decode_block_segment), `raw`
+  /// its 8 bytes. The rules (as the common C stacks apply them):
+  /// * the next sequence number is taken; the last one of the sub-block (or the last segment of
+  ///   the transfer) asks for the acknowledgement;
+  /// * a repeat of the segment just taken, and anything before the first segment of a
+  ///   sub-block, is ignored (leftovers of a burst that was already acknowledged);
+  /// * any other sequence number (a gap, a reordered frame) asks for the acknowledgement at
+  ///   once: the sender retransmits from the first segment missing.
+  /// With sub-blocks of one segment a repeated frame cannot be told from the next segment (both
+  /// carry sequence number 1): it is taken as new data, and only the CRC finds it. Keep the CRC
+  /// on over links that may repeat frames.
+  [[nodiscard]] constexpr segment_result on_segment(const message &m, const payload &raw) noexcept {
+    segment_result r;
+    if (final_) return r; // a repeat after the last segment: nothing new
+    const bool in_sequence = m.sequence == sequence_ + 1U;
+    if (!in_sequence) {
+      if (sequence_ != 0U && m.sequence != sequence_) r.acknowledge = true;
+      return r;
+    }
+    sequence_ = m.sequence;
+    previous_ = raw;
+    have_previous_ = true;
+    if (m.last) {
+      final_ = true;
+      for (std::size_t i = 0; i < 7U; ++i) last_[i] = m.data[i];
+    } else {
+      if (announced_ && count_ + 7U > *announced_) {
+        r.abort = abort_code::length_too_high;
+        return r;
+      }
+      if (count_ + 7U > capacity_) {
+        r.abort = abort_code::out_of_memory;
+        return r;
+      }
+      r.bytes = m.bytes();
+      r.offset = count_;
+      if (crc_enabled_) crc_ = crc::ccitt16(r.bytes, crc_);
+      count_ += 7U;
+    }
+    r.acknowledge = m.sequence == block_size_ || m.last;
+    return r;
+  }
+  /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
+  /// message is awaited, such a repeat is ignored instead of being read as a message.)
+  [[nodiscard]] constexpr bool is_repeat(const payload &raw) const noexcept {
+    return have_previous_ && raw == previous_;
+  }
+  /// The acknowledgement of the current sub-block, asking for `next_block_size` segments next;
+  /// the next sub-block starts. Errors: none (out-of-range sizes are clamped to 1..127).
+  [[nodiscard]] constexpr payload acknowledge(std::uint8_t next_block_size) noexcept {
+    if (next_block_size < 1U) next_block_size = 1U;
+    if (next_block_size > max_block_size) next_block_size = max_block_size;
+    const std::uint8_t seq = sequence_;
+    sequence_ = 0;
+    block_size_ = next_block_size;
+    return block_ack(seq, next_block_size).value_or(payload{});
+  }
+
+  /// Check the end message; on success the caller stores `bytes` (the data of the last
+  /// segment) at `offset`, and the transfer is complete. Abort codes: unknown_command (end
+  /// before the last segment), length_too_high / length_too_low (against the announced size),
+  /// out_of_memory (over capacity), crc_error.
+  struct end_result {
+    abort_code abort = abort_code::none;
+    std::span<const std::uint8_t> bytes{};
+    std::size_t offset = 0;
+  };
+  [[nodiscard]] constexpr end_result on_end(const message &m) noexcept {
+    end_result r;
+    if (!final_) {
+      r.abort = abort_code::unknown_command;
+      return r;
+    }
+    const std::size_t n = 7U - m.unused;
+    const std::size_t total = count_ + n;
+    if (announced_ && total > *announced_) r.abort = abort_code::length_too_high;
+    if (announced_ && total < *announced_) r.abort = abort_code::length_too_low;
+    if (r.abort == abort_code::none && total > capacity_) r.abort = abort_code::out_of_memory;
+    if (r.abort != abort_code::none) return r;
+    r.bytes = std::span<const std::uint8_t>(last_).first(n);
+    r.offset = count_;
+    if (crc_enabled_ && crc::ccitt16(r.bytes, crc_) != m.checksum) {
+      r.abort = abort_code::crc_error;
+      return r;
+    }
+    count_ = total;
+    return r;
+  }
+
+private:
+  std::size_t capacity_ = 0;
+  std::optional<std::uint32_t> announced_{};
+  std::size_t count_ = 0;
+  std::uint16_t crc_ = 0;
+  bool crc_enabled_ = false;
+  bool final_ = false;
+  bool have_previous_ = false;
+  std::uint8_t sequence_ = 0;
+  std::uint8_t block_size_ = 1;
+  std::array<std::uint8_t, 7> last_{};
+  payload previous_{};
+};
+
+// ---------------------------------------------------------------------------------------------
+// What client and server share: state, error, deadline
+
+/// The bookkeeping every SDO machine has: state, the object, the error of the last failure, the
+/// time of the last activity and the timeout.
+class machine_core {
+public:
+  constexpr explicit machine_core(std::uint32_t timeout_ms) noexcept : timeout_ms_(timeout_ms) {}
+
+  [[nodiscard]] constexpr transfer_state state() const noexcept { return state_; }
+  [[nodiscard]] constexpr bool busy() const noexcept { return state_ == transfer_state::busy; }
+  /// Why the last transfer failed or the last frame on the channel was refused; empty when
+  /// neither happened since the last transfer started.
+  [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept { return error_; }
+  [[nodiscard]] constexpr od::address address() const noexcept { return address_; }
+  [[nodiscard]] constexpr std::uint32_t timeout_ms() const noexcept { return timeout_ms_; }
+
+  constexpr void begin(od::address a, std::uint32_t now) noexcept {
+    address_ = a;
+    last_ = now;
+    error_.reset();
+    state_ = transfer_state::busy;
+  }
+  constexpr void touch(std::uint32_t now) noexcept { last_ = now; }
+  constexpr void finish() noexcept { state_ = transfer_state::done; }
+  constexpr void fail(errc e, abort_code code) noexcept {
+    error_ = transfer_error{e, code, address_};
+    state_ = transfer_state::failed;
+  }
+  /// Note a refused frame without touching the transfer.
+  constexpr void refuse(errc e, od::address a) noexcept {
+    error_ = transfer_error{e, abort_code::none, a};
+  }
+  constexpr void stop() noexcept { state_ = transfer_state::idle; }
+  [[nodiscard]] constexpr bool timed_out(std::uint32_t now) const noexcept {
+    return busy() && now - last_ >= timeout_ms_;
+  }
+  [[nodiscard]] constexpr step make(frames f) const noexcept {
+    step s;
+    s.send = f;
+    s.state = state_;
+    if (busy()) s.deadline = last_ + timeout_ms_;
+    return s;
+  }
+
+private:
+  std::uint32_t timeout_ms_;
+  std::uint32_t last_ = 0;
+  od::address address_{};
+  std::optional<transfer_error> error_{};
+  transfer_state state_ = transfer_state::idle;
+};
+
+} // namespace fieldcodec::canopen::sdo

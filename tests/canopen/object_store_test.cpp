@@ -1,0 +1,250 @@
+// The object store: O(1) layout, values in parts, staging (never half-visible), the write
+// hook, strings and domains with their capacity, default text and written length.
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/dictionaries/xenax_canopen.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace od = fieldcodec::od;
+using fieldcodec::errc;
+using sdo::abort_code;
+
+namespace {
+constexpr od::entry entries[] = {
+    {.index = 0x1008,
+     .type = od::data_type::visible_string,
+     .access_type = od::access::constant,
+     .size = 20,
+     .default_text = "XENAX Xvi 75V8S"},
+    {.index = 0x2000, .type = od::data_type::unsigned16, .default_value = od::num::u(0x1234)},
+    {.index = 0x2001, .type = od::data_type::domain, .size = 300},
+    {.index = 0x2002,
+     .type = od::data_type::integer8,
+     .low = od::num::i(-5),
+     .high = od::num::i(5)},
+    {.index = 0x2003, .type = od::data_type::octet_string, .size = 4, .default_text = "too long"},
+};
+constexpr od::dictionary dict{entries};
+constexpr auto layout = sdo::make_layout<std::size(entries)>(dict);
+
+// The layout is computed at compile time: byte strings take a 4-byte length and their
+// capacity, numbers their width.
+static_assert(layout.offsets[0] == 0);
+static_assert(layout.offsets[1] == 4 + 20);
+static_assert(layout.offsets[2] == 24 + 2);
+static_assert(layout.offsets[3] == 26 + 4 + 300);
+static_assert(layout.offsets[4] == 330 + 1);
+static_assert(layout.storage_size() == 331 + 4 + 4);
+static_assert(layout.storage_size() == sdo::dictionary_store<>::storage_size(dict));
+
+std::string_view text(std::span<const std::uint8_t> b) {
+  return {reinterpret_cast<const char *>(b.data()), b.size()};
+}
+
+/// A hook that records what was written and refuses the value 3 for 2002h.
+struct recorder {
+  std::vector<od::address> *seen;
+  abort_code operator()(const od::entry &e, std::span<const std::uint8_t> v) const {
+    seen->push_back({e.index, e.sub});
+    if (e.index == 0x2002 && v.size() == 1 && v[0] == 3)
+      return abort_code::cannot_store_device_state;
+    return abort_code::none;
+  }
+};
+} // namespace
+
+TEST_CASE("store: defaults, strings with their default text, reads in parts") {
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  sdo::dictionary_store<> s{dict, layout, storage};
+  // a default text longer than its capacity is cut and reported
+  CHECK(s.init_defaults(5) == errc::too_long);
+  CHECK(s.node() == 5);
+  CHECK(text(s.value({0x1008, 0}).value()) == "XENAX Xvi 75V8S");
+  CHECK(text(s.value({0x2003, 0}).value()) == "too ");
+  CHECK(s.value({0x2001, 0}).value().empty()); // a domain without default: 0 bytes
+  CHECK(s.value({0x2000, 0}).value()[0] == 0x34);
+  CHECK(s.value({0x3000, 0}) == errc::unknown_object);
+  // partial reads: offset + chunk, total is the value's length
+  std::array<std::uint8_t, 4> out{};
+  std::size_t total = 0;
+  CHECK(s.read({0x1008, 0}, 6, out, total) == abort_code::none);
+  CHECK(total == 15);
+  CHECK(text(out) == "Xvi ");
+  CHECK(s.read({0x1008, 0}, 13, out, total) == abort_code::none); // the last 2 bytes
+  CHECK(out[0] == '8');
+  CHECK(out[1] == 'S');
+  CHECK(s.read({0x1008, 0}, 16, out, total) == abort_code::general_error);
+  CHECK(s.read({0x1009, 0}, 0, out, total) == abort_code::no_object);
+  CHECK(s.read({0x2000, 1}, 0, out, total) == abort_code::no_sub_index);
+  // a storage too small for the layout
+  std::vector<std::uint8_t> small(10);
+  sdo::dictionary_store<> t{dict, layout, small};
+  CHECK(t.init_defaults(5) == errc::buffer_too_small);
+  CHECK(t.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
+}
+
+TEST_CASE("store: writes in parts become visible only when complete") {
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  std::vector<std::uint8_t> staging(300);
+  sdo::dictionary_store<> s{dict, layout, storage, staging};
+  (void)s.init_defaults(1);
+  const std::array<std::uint8_t, 5> a{1, 2, 3, 4, 5};
+  CHECK(s.begin_write({0x2001, 0}, 10) == abort_code::none);
+  CHECK(s.write({0x2001, 0}, 0, a, false) == abort_code::none);
+  CHECK(s.value({0x2001, 0}).value().empty()); // not yet
+  CHECK(s.write({0x2001, 0}, 5, a, true) == abort_code::none);
+  CHECK(s.value({0x2001, 0}).value().size() == 10);
+  // parts out of order are refused; the value stays
+  CHECK(s.write({0x2001, 0}, 0, a, false) == abort_code::none);
+  CHECK(s.write({0x2001, 0}, 7, a, true) == abort_code::general_error);
+  CHECK(s.value({0x2001, 0}).value().size() == 10);
+  // a part beyond the capacity
+  CHECK(s.begin_write({0x2001, 0}, 301) == abort_code::length_too_high);
+  std::vector<std::uint8_t> big(299);
+  CHECK(s.write({0x2001, 0}, 0, big, false) == abort_code::none);
+  CHECK(s.write({0x2001, 0}, 299, a, true) == abort_code::length_too_high);
+  // without a staging area, a value in parts is refused with out of memory
+  std::vector<std::uint8_t> storage2(layout.storage_size());
+  sdo::dictionary_store<> t{dict, layout, storage2};
+  (void)t.init_defaults(1);
+  CHECK(t.write({0x2001, 0}, 0, a, false) == abort_code::out_of_memory);
+  CHECK(t.write({0x2001, 0}, 0, a, true) == abort_code::none); // one part: fine
+  // begin_write checks access and length early
+  CHECK(s.begin_write({0x1008, 0}, 3) == abort_code::write_read_only);
+  CHECK(s.begin_write({0x2000, 0}, 3) == abort_code::length_too_high);
+  CHECK(s.begin_write({0x2000, 0}, 1) == abort_code::length_too_low);
+  CHECK(s.begin_write({0x2000, 0}, std::nullopt) == abort_code::none);
+  CHECK(s.begin_write({0x2004, 0}, 1) == abort_code::no_object);
+  // the application sets read-only objects and gets the same value checks
+  const std::array<std::uint8_t, 3> abc{'a', 'b', 'c'};
+  CHECK(s.set({0x1008, 0}, abc) == abort_code::none);
+  CHECK(text(s.value({0x1008, 0}).value()) == "abc");
+  const std::array<std::uint8_t, 1> bad{0x07};
+  CHECK(s.set({0x1008, 0}, bad) == abort_code::invalid_value); // not a visible character
+  const std::array<std::uint8_t, 1> nine{9};
+  CHECK(s.set({0x2002, 0}, nine) == abort_code::value_too_high);
+}
+
+TEST_CASE("store: the write hook sees every SDO write and may refuse it") {
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  std::vector<od::address> seen;
+  sdo::dictionary_store<recorder> s{dict, layout, storage, {}, recorder{&seen}};
+  (void)s.init_defaults(1);
+  std::vector<std::uint8_t> buffer(64);
+  sdo::server<sdo::dictionary_store<recorder>> srv(1, s, buffer);
+  sdo::client c(1);
+  auto talk = [&](sdo::step st) {
+    for (int i = 0; i < 100 && !st.send.empty(); ++i) {
+      auto r = srv.on_frame(st.send[0], 0);
+      if (r.send.empty()) break;
+      st = c.on_frame(r.send[0], 0);
+    }
+  };
+  const std::array<std::uint8_t, 1> two{2}, three{3};
+  talk(c.download({0x2002, 0}, two, 0).value());
+  CHECK(c.state() == sdo::transfer_state::done);
+  REQUIRE(seen.size() == 1);
+  CHECK(seen[0] == od::address{0x2002, 0});
+  talk(c.download({0x2002, 0}, three, 0).value());
+  CHECK(c.state() == sdo::transfer_state::failed);
+  CHECK(c.error() ==
+        sdo::transfer_error{errc::aborted, abort_code::cannot_store_device_state, {0x2002, 0}});
+  CHECK(s.value({0x2002, 0}).value()[0] == 2); // refused: the old value stays
+  // a value the checks refuse never reaches the hook
+  const std::array<std::uint8_t, 1> nine{9};
+  talk(c.download({0x2002, 0}, nine, 0).value());
+  CHECK(c.error()->abort == abort_code::value_too_high);
+  CHECK(seen.size() == 2);
+  // the application's own writes do not call the hook
+  CHECK(s.set({0x2002, 0}, three) == abort_code::none);
+  CHECK(seen.size() == 2);
+}
+
+TEST_CASE("server: an object larger than its buffer, through the store's staging") {
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  std::vector<std::uint8_t> staging(300);
+  sdo::dictionary_store<> s{dict, layout, storage, staging};
+  (void)s.init_defaults(1);
+  std::vector<std::uint8_t> buffer(16); // far smaller than the 300-byte domain
+  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
+  sdo::client c(1);
+  std::vector<std::uint8_t> v(300);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::uint8_t>(i * 7);
+  auto talk = [&](sdo::step st) {
+    std::size_t exchanges = 0;
+    while (!st.send.empty() && exchanges < 1000) {
+      ++exchanges;
+      auto r = srv.on_frame(st.send[0], 0);
+      if (r.send.empty()) break;
+      st = c.on_frame(r.send[0], 0);
+    }
+  };
+  talk(c.download({0x2001, 0}, v, 0).value());
+  CHECK(c.state() == sdo::transfer_state::done);
+  const auto stored = s.value({0x2001, 0}).value();
+  CHECK(std::vector<std::uint8_t>(stored.begin(), stored.end()) == v);
+  // and back, read from the store in parts of the buffer's size
+  std::vector<std::uint8_t> back(400);
+  talk(c.upload({0x2001, 0}, back, 0).value());
+  CHECK(c.state() == sdo::transfer_state::done);
+  CHECK(std::vector<std::uint8_t>(c.received().begin(), c.received().end()) == v);
+
+  SUBCASE("a transfer that stops half-way leaves the old value") {
+    std::vector<std::uint8_t> w(300, 0xEE);
+    auto st = c.download({0x2001, 0}, w, 0).value();
+    for (int i = 0; i < 20; ++i) { // 20 of 43 segments, then the client gives up
+      auto r = srv.on_frame(st.send[0], 0);
+      st = c.on_frame(r.send[0], 0);
+    }
+    (void)srv.on_frame(c.cancel().send[0], 0);
+    CHECK(srv.state() == sdo::transfer_state::failed);
+    const auto kept = s.value({0x2001, 0}).value();
+    CHECK(std::vector<std::uint8_t>(kept.begin(), kept.end()) == v);
+  }
+}
+
+// Issue 12 #1: every string object of the XENAX CAN dictionary is readable over SDO with its EDS
+// default as the initial value. The store takes a string's capacity from `entry.size`; the
+// generator fills it from the EDS (declared size, default's length, generator option: the
+// codegen/od work of this round). Until the regenerated XENAX header carries the sizes, the
+// strings without one are counted and the test is marked may_fail: remove the decorator when
+// the sizes land.
+TEST_CASE("XENAX CAN dictionary: strings served with their default text" * doctest::may_fail()) {
+  namespace x = fieldcodec::dictionaries::xenax_canopen;
+  constexpr auto xl = sdo::make_layout<x::dictionary.size()>(x::dictionary);
+  std::vector<std::uint8_t> storage(xl.storage_size());
+  sdo::dictionary_store<> s{x::dictionary, xl, storage};
+  CHECK(s.init_defaults(1).has_value());
+  std::vector<std::uint8_t> buffer(256);
+  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
+  sdo::client c(1);
+  std::size_t strings = 0, served = 0;
+  for (const auto &e : x::dictionary) {
+    if (!od::is_byte_string(e.type) || !od::readable(e.access_type)) continue;
+    ++strings;
+    if (e.size == 0) continue;
+    CAPTURE(e.index);
+    std::vector<std::uint8_t> out(e.size + 8);
+    auto st = c.upload({e.index, e.sub}, out, 0).value();
+    for (int i = 0; i < 100 && !st.send.empty(); ++i) {
+      auto r = srv.on_frame(st.send[0], 0);
+      if (r.send.empty()) break;
+      st = c.on_frame(r.send[0], 0);
+    }
+    CHECK(c.state() == sdo::transfer_state::done);
+    CHECK(text(c.received()) == e.default_text.substr(0, e.size));
+    ++served;
+  }
+  MESSAGE("XENAX CAN strings: " << strings << ", with a capacity: " << served);
+  CHECK(strings > 0);
+  CHECK(served == strings);
+}
