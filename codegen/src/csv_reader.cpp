@@ -167,8 +167,10 @@ public:
         "default",     "scale",    "offset", "unit",        "pointer", "acceptance",
         "bus_manager", "section",  "flags",  "remark"};
     static const std::set<std::string> command_columns{
-        "code",          "name",      "symbol", "section",    "title", "parameter", "parameter_min",
-        "parameter_max", "date_type", "date",   "reply_type", "reply", "modes",     "remark"};
+        "code",      "name",          "symbol",        "section",           "title",
+        "parameter", "parameter_min", "parameter_max", "parameter_packing", "date_type",
+        "date",      "date_min",      "date_max",      "date_packing",      "reply_type",
+        "reply",     "modes",         "remark"};
     const auto &known = has_index ? object_columns : command_columns;
     for (std::size_t c = 0; c < header.size(); ++c) {
       if (known.count(header[c].text) == 0U) {
@@ -549,11 +551,44 @@ private:
       out = od::command_value::none;
     } else if (t == "integer") {
       out = od::command_value::integer;
-    } else if (t == "float") {
-      out = od::command_value::floating;
+    } else if (t == "float" || t == "real") {
+      out = od::command_value::real;
     } else {
       bad(*get(r, column), column, "expected none, integer or float, got '" + t + "'");
       return false;
+    }
+    return true;
+  }
+
+  bool packing(const row &r, const std::string &column, od::packing &out) {
+    const std::string t = text(r, column);
+    if (t.empty() || t == "whole") {
+      out = od::packing::whole;
+    } else if (t == "byte_byte") {
+      out = od::packing::byte_byte;
+    } else if (t == "byte_byte_word") {
+      out = od::packing::byte_byte_word;
+    } else {
+      bad(*get(r, column), column, "expected whole, byte_byte or byte_byte_word, got '" + t + "'");
+      return false;
+    }
+    return true;
+  }
+
+  // the bounds of a packed parameter or date must be packed values of the packing's width
+  bool packed_bounds(const row &r, const std::string &what, od::packing p, const od::number &lo,
+                     const od::number &hi) {
+    if (p == od::packing::whole) return true;
+    const std::uint64_t max = p == od::packing::byte_byte ? 0xFFFFU : 0xFFFF'FFFFU;
+    for (const auto &[bound, column] : {std::pair{&lo, what + "_min"}, {&hi, what + "_max"}}) {
+      if (!*bound) continue;
+      auto v = bound->to_uint64();
+      if (!v || v.value() > max) {
+        bad(*get(r, column), column,
+            "expected a value of " + std::string(od::name(p)) + " packing (0 to " +
+                std::to_string(max) + ")");
+        return false;
+      }
     }
     return true;
   }
@@ -594,7 +629,15 @@ private:
     bool present = false;
     if (!csv_int(r, "parameter_min", c.parameter_min, present)) return;
     if (!csv_int(r, "parameter_max", c.parameter_max, present)) return;
+    if (!csv_int(r, "date_min", c.date_min, present)) return;
+    if (!csv_int(r, "date_max", c.date_max, present)) return;
+    if (!packing(r, "parameter_packing", c.parameter_packing) ||
+        !packing(r, "date_packing", c.date_packing))
+      return;
     if (!value_type(r, "date_type", c.date_type) || !value_type(r, "reply_type", c.reply_type))
+      return;
+    if (!packed_bounds(r, "parameter", c.parameter_packing, c.parameter_min, c.parameter_max) ||
+        !packed_bounds(r, "date", c.date_packing, c.date_min, c.date_max))
       return;
     c.date = text(r, "date");
     c.reply = text(r, "reply");

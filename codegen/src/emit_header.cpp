@@ -201,7 +201,7 @@ std::string command_value_enum(od::command_value v) {
   switch (v) {
   case od::command_value::none: return "none";
   case od::command_value::integer: return "integer";
-  case od::command_value::floating: return "floating";
+  case od::command_value::real: return "real";
   }
   return "none";
 }
@@ -231,12 +231,24 @@ void emit_commands(std::string &o, const dictionary &d) {
       o += ", .parameter_max = ";
       o += number_literal(c.parameter_max);
     }
+    if (c.parameter_packing != od::packing::whole)
+      o += ", .parameter_packing = od::packing::" + std::string(od::name(c.parameter_packing));
     if (c.date_type != od::command_value::none)
       o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
     if (!c.date.empty()) {
       o += ", .date = ";
       append_cpp_string(o, c.date);
     }
+    if (c.date_min) {
+      o += ", .date_min = ";
+      o += number_literal(c.date_min);
+    }
+    if (c.date_max) {
+      o += ", .date_max = ";
+      o += number_literal(c.date_max);
+    }
+    if (c.date_packing != od::packing::whole)
+      o += ", .date_packing = od::packing::" + std::string(od::name(c.date_packing));
     if (c.reply_type != od::command_value::none)
       o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
     if (!c.reply.empty()) {

@@ -59,7 +59,9 @@ struct object_info {
 struct command {
   std::uint16_t code = 0;
   std::string name, symbol, section, title, parameter, date, reply, modes, remark;
-  od::number parameter_min, parameter_max;
+  od::number parameter_min, parameter_max, date_min, date_max;
+  od::packing parameter_packing = od::packing::whole;
+  od::packing date_packing = od::packing::whole;
   od::command_value date_type = od::command_value::none;
   od::command_value reply_type = od::command_value::none;
   int line = 0;

@@ -75,7 +75,12 @@ endfunction()
 
 # --- find-package-cmake + the generator of the installed package -------------------------
 recipe(find_block ${readme} find-package-cmake)
-consumer(${WORK_DIR}/find_package app ${SOURCE_DIR}/tests/install/main.cpp "${find_block}")
+# The package also exports the host adapters' target (FIELDCODEC_HOST, on for a Linux build).
+consumer(${WORK_DIR}/find_package app ${SOURCE_DIR}/tests/install/main.cpp "${find_block}
+if(NOT TARGET fieldcodec::host)
+  message(FATAL_ERROR \"the installed package does not export fieldcodec::host\")
+endif()
+")
 run(${CMAKE_COMMAND} -S ${WORK_DIR}/find_package -B ${WORK_DIR}/find_package/build
     -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${prefix})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/find_package/build)
@@ -97,12 +102,12 @@ set(dir ${WORK_DIR}/subproject)
 file(MAKE_DIRECTORY ${dir}/third_party)
 file(CREATE_LINK ${SOURCE_DIR} ${dir}/third_party/fieldcodec SYMBOLIC)
 consumer(${dir} app ${SOURCE_DIR}/tests/install/main.cpp "${sub_block}
-foreach(opt TESTS CODEGEN EXAMPLES FUZZERS BENCH INSTALL)
+foreach(opt TESTS CODEGEN EXAMPLES FUZZERS BENCH INSTALL HOST)
   if(FIELDCODEC_BUILD_\${opt} OR FIELDCODEC_\${opt})
     message(FATAL_ERROR \"FIELDCODEC_BUILD_\${opt} is on in a subproject\")
   endif()
 endforeach()
-if(TARGET fieldcodec_test_main OR TARGET fieldcodec-gen)
+if(TARGET fieldcodec_test_main OR TARGET fieldcodec-gen OR TARGET fieldcodec::host)
   message(FATAL_ERROR \"tests or the generator were configured in a subproject\")
 endif()
 ")
