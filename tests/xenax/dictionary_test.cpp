@@ -74,7 +74,7 @@ TEST_CASE("POWERLINK 1030h sub 4 is UNSIGNED16, 1600h/1A00h are ARRAYs (errata 1
   const od::entry *mtu = xpl::dictionary.find(0x1030, 4);
   REQUIRE(mtu != nullptr);
   CHECK(mtu->type == od::data_type::unsigned16);
-  CHECK(mtu->default_for(1).value() == od::num::u(0x286)); // l. 436
+  CHECK(mtu->default_for(1).value().to_uint64().value() == 0x286); // l. 436
   for (const std::uint16_t index : {std::uint16_t{0x1600}, std::uint16_t{0x1A00}}) {
     const auto object = xpl::dictionary.object(index);
     REQUIRE(object.size() == 9);
