@@ -169,9 +169,7 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
 /// Read `length` bits as a two's complement number, sign-extended.
 [[nodiscard]] constexpr result<std::int64_t>
 unpack_signed(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length) noexcept {
-  auto u = unpack(pdo, offset, length);
-  if (!u) return u.error();
-  std::uint64_t v = u.value();
+  FIELDCODEC_TRY(std::uint64_t v, unpack(pdo, offset, length));
   if (length < 64U && ((v >> (length - 1U)) & 1U) != 0U) v |= ~std::uint64_t{0} << length;
   return static_cast<std::int64_t>(v);
 }
@@ -255,18 +253,16 @@ template <integer T>
 template <integer T>
 [[nodiscard]] constexpr status pack_value(std::span<std::uint8_t> pdo, std::size_t offset,
                                           std::size_t length, signedness s, T v) noexcept {
-  auto bits = field_bits(v, length, s);
-  if (!bits) return bits.error();
-  return pack(pdo, offset, length, bits.value());
+  FIELDCODEC_TRY(const std::uint64_t bits, field_bits(v, length, s));
+  return pack(pdo, offset, length, bits);
 }
 
 template <integer T>
 [[nodiscard]] constexpr result<T> unpack_value(std::span<const std::uint8_t> pdo,
                                                std::size_t offset, std::size_t length,
                                                signedness s) noexcept {
-  auto raw = unpack(pdo, offset, length);
-  if (!raw) return raw.error();
-  return field_value<T>(raw.value(), length, s);
+  FIELDCODEC_TRY(const std::uint64_t raw, unpack(pdo, offset, length));
+  return field_value<T>(raw, length, s);
 }
 } // namespace detail
 
@@ -495,9 +491,7 @@ template <integer T>
   if (raws.size() < entries.size()) return errc::bad_length;
   std::size_t offset = 0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    auto v = unpack(pdo, offset, entries[i].bits);
-    if (!v) return v.error();
-    raws[i] = v.value();
+    FIELDCODEC_TRY(raws[i], unpack(pdo, offset, entries[i].bits));
     offset += entries[i].bits;
   }
   return {};
@@ -588,9 +582,7 @@ private:
                                              std::span<T> values) const noexcept {
     if (values.size() < count_) return errc::bad_length;
     for (std::size_t i = 0; i < count_; ++i) {
-      auto v = get<T>(pdo, i);
-      if (!v) return v.error();
-      values[i] = v.value();
+      FIELDCODEC_TRY(values[i], get<T>(pdo, i));
     }
     return {};
   }
@@ -682,19 +674,16 @@ template <class Entry, std::size_t Capacity, class Decode>
 read_default(const od::dictionary &dict, std::uint16_t index, od::data_type type,
              Decode decode) noexcept {
   const std::span<const od::entry> object = dict.object(index);
-  auto count = default_of(object, 0, od::data_type::unsigned8);
-  if (!count) return count.error();
+  FIELDCODEC_TRY(const std::uint64_t count, default_of(object, 0, od::data_type::unsigned8));
   for (const od::entry &e : object) { // every entry, also those beyond the default count
     if (e.sub != 0U && e.type != type) return errc::type_mismatch;
   }
-  if (count.value() > Capacity) return errc::too_long;
+  if (count > Capacity) return errc::too_long;
   entry_list<Entry, Capacity> list;
-  for (std::size_t i = 1; i <= count.value(); ++i) {
-    auto v = default_of(object, static_cast<std::uint8_t>(i), type);
-    if (!v) return v.error();
-    auto e = decode(v.value());
-    if (!e) return e.error();
-    list.items[list.count++] = e.value();
+  for (std::size_t i = 1; i <= count; ++i) {
+    FIELDCODEC_TRY(const std::uint64_t v, default_of(object, static_cast<std::uint8_t>(i), type));
+    FIELDCODEC_TRY(list.items[list.count], decode(v));
+    ++list.count;
   }
   return list;
 }

@@ -68,9 +68,9 @@ template <std::integral T>
 torque_offset_from_acceleration(std::int64_t inc_per_s2, bus b) noexcept {
   // raw = acceleration / scaling, i.e. a scale of 1 / 50 000 = 0.00002 on EtherCAT
   const scaling::linear s{b == bus::ethercat ? decimal{2, 5} : decimal{1, 0}, {0, 0}};
-  auto raw = scaling::to_raw(decimal{inc_per_s2, 0}, s, scaling::field{2, true});
-  if (!raw) return raw.error();
-  return static_cast<std::int16_t>(raw.value());
+  FIELDCODEC_TRY(const std::int64_t raw,
+                 scaling::to_raw(decimal{inc_per_s2, 0}, s, scaling::field{2, true}));
+  return static_cast<std::int16_t>(raw);
 }
 
 /// 60B2h → the acceleration (inc/s²) the XENAX applies on the bus. Exact.

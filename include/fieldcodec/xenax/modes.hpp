@@ -125,12 +125,11 @@ struct status {
 
 /// Decode a statusword for the mode shown in 6061h. Errors: bad_state (no PDS state matches).
 [[nodiscard]] constexpr result<status> decode_status(std::uint16_t statusword, mode m) noexcept {
-  auto s = ds402::decode_state(statusword);
-  if (!s) return s.error();
+  FIELDCODEC_TRY(const ds402::state s, ds402::decode_state(statusword));
   const bool b10 = (statusword & sw::bit10) != 0U;
   const bool b12 = (statusword & sw::bit12) != 0U;
   const bool b13 = (statusword & sw::bit13) != 0U;
-  status r{s.value(),
+  status r{s,
            (statusword & ds402::sw::warning) != 0U,
            (statusword & ds402::sw::remote) != 0U,
            (statusword & sw::soft_limit) != 0U,

@@ -93,10 +93,10 @@ struct newton_metres {
 namespace detail {
 /// force (N or Nm) → mA as an INTEGER32, rounded half away from zero.
 [[nodiscard]] constexpr result<std::int32_t> to_ma(decimal force, motor m) noexcept {
-  auto raw = scaling::to_raw(force, scaling::linear{current_per_force(m), {0, 0}},
-                             scaling::field{4, true});
-  if (!raw) return raw.error();
-  return static_cast<std::int32_t>(raw.value());
+  FIELDCODEC_TRY(const std::int64_t raw,
+                 scaling::to_raw(force, scaling::linear{current_per_force(m), {0, 0}},
+                                 scaling::field{4, true}));
+  return static_cast<std::int32_t>(raw);
 }
 /// force (N or Nm) → 6073h steps of 10 mA in one rounding (k steps/N, 100·k steps/Nm).
 /// Errors: out_of_range (negative, above 20 A, or rounding to 0 = "no limit").
@@ -130,18 +130,18 @@ namespace detail {
 [[nodiscard]] constexpr result<newtons> to_newtons(std::int32_t ma, motor m,
                                                    unsigned places = 3) noexcept {
   if (is_rotary(m)) return errc::invalid_argument;
-  auto f = scaling::to_eu_decimal(ma, scaling::linear{current_per_force(m), {0, 0}}, places);
-  if (!f) return f.error();
-  return newtons{f.value()};
+  FIELDCODEC_TRY(const decimal f,
+                 scaling::to_eu_decimal(ma, scaling::linear{current_per_force(m), {0, 0}}, places));
+  return newtons{f};
 }
 /// Motor current in mA → torque in Nm, rounded to `places` decimal places.
 /// Errors: invalid_argument (a linear motor, or places > 18).
 [[nodiscard]] constexpr result<newton_metres> to_newton_metres(std::int32_t ma, motor m,
                                                                unsigned places = 4) noexcept {
   if (!is_rotary(m)) return errc::invalid_argument;
-  auto t = scaling::to_eu_decimal(ma, scaling::linear{current_per_force(m), {0, 0}}, places);
-  if (!t) return t.error();
-  return newton_metres{t.value()};
+  FIELDCODEC_TRY(const decimal t,
+                 scaling::to_eu_decimal(ma, scaling::linear{current_per_force(m), {0, 0}}, places));
+  return newton_metres{t};
 }
 
 /// Force → 6073h Limit I_Force (10 mA steps): the manual's example (6.1.2, l. 1897-1901)
@@ -203,8 +203,8 @@ namespace detail {
   return scaling::to_eu_decimal(num, scaling::linear{decimal{den, 0}, {0, 0}}, places);
 }
 [[nodiscard]] constexpr result<std::int32_t> to_int32(result<decimal> d) noexcept {
-  if (!d) return d.error();
-  const std::int64_t v = d.value().mantissa;
+  FIELDCODEC_TRY(const decimal q, d);
+  const std::int64_t v = q.mantissa;
   if (v < std::numeric_limits<std::int32_t>::min() ||
       v > std::numeric_limits<std::int32_t>::max()) {
     return errc::overflow;
@@ -218,19 +218,16 @@ namespace detail {
 /// positive), overflow (outside INTEGER32).
 [[nodiscard]] constexpr result<std::int32_t> to_increments(decimal mm,
                                                            linear_resolution r) noexcept {
-  auto s = detail::per_mm(r);
-  if (!s) return s.error();
-  auto raw = scaling::to_raw(mm, s.value(), scaling::field{4, true});
-  if (!raw) return raw.error();
-  return static_cast<std::int32_t>(raw.value());
+  FIELDCODEC_TRY(const scaling::linear s, detail::per_mm(r));
+  FIELDCODEC_TRY(const std::int64_t raw, scaling::to_raw(mm, s, scaling::field{4, true}));
+  return static_cast<std::int32_t>(raw);
 }
 /// Increments → mm: inc × 1000 / LARES, exact, rounded half away from zero to `places`.
 /// Errors: invalid_argument (LARES not positive, places > 18), overflow.
 [[nodiscard]] constexpr result<decimal> to_mm(std::int64_t inc, linear_resolution r,
                                               unsigned places = 3) noexcept {
-  auto s = detail::per_mm(r);
-  if (!s) return s.error();
-  return scaling::to_eu_decimal(inc, s.value(), places);
+  FIELDCODEC_TRY(const scaling::linear s, detail::per_mm(r));
+  return scaling::to_eu_decimal(inc, s, places);
 }
 
 /// Degrees (°/s, °/s²) → increments: round(degrees × ENC / 360), half away from zero, with a
@@ -244,18 +241,16 @@ namespace detail {
   if (d.places > 16U) return errc::overflow; // 360 × 10^places must fit int64
   std::int64_t den = 360;
   for (unsigned i = 0; i < d.places; ++i) den *= 10;
-  auto num = detail::product(d.mantissa, r.inc_per_turn);
-  if (!num) return num.error();
-  return detail::to_int32(detail::quotient(num.value(), den, 0));
+  FIELDCODEC_TRY(const std::int64_t num, detail::product(d.mantissa, r.inc_per_turn));
+  return detail::to_int32(detail::quotient(num, den, 0));
 }
 /// Increments → degrees: inc × 360 / ENC, exact, rounded half away from zero to `places`.
 /// Errors: invalid_argument (ENC not positive, places > 18), overflow.
 [[nodiscard]] constexpr result<decimal> to_degrees(std::int64_t inc, rotary_resolution r,
                                                    unsigned places = 3) noexcept {
   if (r.inc_per_turn <= 0) return errc::invalid_argument;
-  auto num = detail::product(inc, 360);
-  if (!num) return num.error();
-  return detail::quotient(num.value(), r.inc_per_turn, places);
+  FIELDCODEC_TRY(const std::int64_t num, detail::product(inc, 360));
+  return detail::quotient(num, r.inc_per_turn, places);
 }
 
 // ---------------------------------------------------------------------------------------------
