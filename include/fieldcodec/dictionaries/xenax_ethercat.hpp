@@ -113,7 +113,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x2005, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2006, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2007, .type = od::data_type::unsigned16, .low = od::unsigned_number(100U), .high = od::unsigned_number(10000U), .default_value = od::unsigned_number(1000U)},
-    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro},
+    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x2009, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x200A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x5000, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
