@@ -214,13 +214,18 @@ struct rig {
     return s;
   }
 
-  std::vector<co::can_frame> start() { return list(dev.start(now).value().send); }
-  std::vector<co::can_frame> feed(const co::can_frame &f) {
-    return list(dev.on_frame(f, now).send);
-  }
+  /// The deadline of the last step.
+  std::optional<std::uint32_t> deadline;
+
+  std::vector<co::can_frame> start() { return take(dev.start(now).value()); }
+  std::vector<co::can_frame> feed(const co::can_frame &f) { return take(dev.on_frame(f, now)); }
   std::vector<co::can_frame> tick(std::uint32_t ms = 0) {
     now += ms;
-    return list(dev.poll(now).send);
+    return take(dev.poll(now));
+  }
+  std::vector<co::can_frame> take(const typename device_type::step &s) {
+    deadline = s.deadline;
+    return list(s.send);
   }
   /// Start and enter operational.
   void operational() {

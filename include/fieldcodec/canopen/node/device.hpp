@@ -71,7 +71,11 @@ struct capacity {
   std::size_t heartbeat_consumers = 4; ///< entries of 1016h
   std::size_t sdo_servers = 1;         ///< the default server plus 1201h..
   std::size_t sdo_clients = 0;         ///< 1280h..
-  std::size_t sdo_buffer = 64;         ///< bytes per SDO server (see sdo::server)
+  /// Bytes per SDO server (see sdo::server). The default holds a whole sub-block of 127
+  /// segments, what masters ask for in a block upload (python canopen, the common C stacks);
+  /// a smaller buffer serves block uploads of at most sdo_buffer / 7 segments per sub-block
+  /// and aborts larger ones with 0x05040002. At least 8.
+  std::size_t sdo_buffer = 889;
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
