@@ -7,12 +7,12 @@
 // Checked after every transfer, once the bus is quiet:
 // * completed: exactly the bytes sent (download: the server's object; upload: the client's
 //   buffer holds the object);
-// * not completed: the client ended with an abort (its own, e.g. timeout, or the server's) and
-//   the server is not busy; the object holds its old value or exactly the new one, never a part.
-//   A download whose last confirmation was lost is complete on the server and failed on the
-//   client (SDO has no confirmation of the confirmation); a block upload whose final end
-//   response was lost is complete on the client and timed out on the server. Both are counted
-//   apart, and the object still holds exactly one of the two values;
+// * not completed: the client ended with an abort (its own, e.g. timeout, or the server's);
+//   the server aborted too, or never saw a request of the transfer, or had finished its part
+//   when its last answer was lost (SDO has no confirmation of the confirmation: a download is
+//   then stored although the client failed); each case is counted apart;
+// * the object holds its old value or exactly the new one, never a part; the server's final
+//   state agrees with it;
 // * no machine is left busy.
 // Checked after every frame node 3 takes: its RPDO-written pair (2000h, 2001h) is consistent
 // (2001h == low 16 bits of ~2000h: never half of one PDO and half of another), and its
@@ -39,7 +39,8 @@ namespace {
 
 struct counts {
   std::size_t transfers = 0, expedited = 0, segmented = 0, block = 0;
-  std::size_t completed = 0, aborted_both = 0, confirmation_lost = 0, end_response_lost = 0;
+  std::size_t completed = 0, completed_server_timed_out = 0, aborted_both = 0, client_only = 0,
+              answer_lost = 0;
   std::size_t frames = 0, dropped = 0, duplicated = 0, swapped = 0, delayed = 0;
   std::size_t tpdo_frames = 0, rpdo_checked = 0, sync_frames = 0, heartbeat_losses = 0;
 };
@@ -224,6 +225,7 @@ private:
       a_next_ = a.deadline;
       return;
     }
+    if (f.id == 0x603 && f.data[0] != 0x80) ++requests_; // not the abort
     auto out = b.feed(f);
     b_next_ = b.deadline;
     count_losses();
@@ -333,33 +335,31 @@ private:
     const auto after = value_of(obj);
     const bool download =
         k == kind::expedited_down || k == kind::segmented_down || k == kind::block_down;
-    if (download) {
-      CHECK((after == before || after == sent)); // never a part
-      if (c.state() == transfer_state::done) {
+    CHECK((after == before || (download && after == sent))); // never a part
+    const bool reached_server = requests_ > 0;
+    requests_ = 0;
+    if (c.state() == transfer_state::done) {
+      if (download) {
         CHECK(after == sent);
-        ++n.completed;
       } else {
-        REQUIRE(c.state() == transfer_state::failed);
-        if (after == sent && after != before) {
-          ++n.confirmation_lost; // the server stored it; its last answer was lost
-        } else {
-          ++n.aborted_both;
-        }
+        const auto got = c.received();
+        CHECK(std::vector<std::uint8_t>(got.begin(), got.end()) == before);
       }
+      // a block upload's end response lost, or a repeated request that restarted the server
+      // after it had finished: the server then timed out on its own
+      ++(srv.state() == transfer_state::failed ? n.completed_server_timed_out : n.completed);
       return;
     }
-    CHECK(after == before); // an upload changes nothing
-    if (c.state() == transfer_state::done) {
-      const auto got = c.received();
-      CHECK(std::vector<std::uint8_t>(got.begin(), got.end()) == before);
-      if (srv.state() == transfer_state::failed) {
-        ++n.end_response_lost;
-      } else {
-        ++n.completed;
-      }
-    } else {
-      REQUIRE(c.state() == transfer_state::failed);
+    REQUIRE(c.state() == transfer_state::failed);
+    if (!reached_server) {
+      ++n.client_only; // no request reached the server: nothing to abort there
+    } else if (srv.state() == transfer_state::failed) {
       ++n.aborted_both;
+    } else {
+      // the server finished its part and its last answer was lost: the client timed out
+      CHECK(srv.state() == transfer_state::done);
+      if (download) CHECK(after == sent);
+      ++n.answer_lost;
     }
   }
 
@@ -368,6 +368,7 @@ private:
   std::optional<std::uint32_t> a_next_{}, b_next_{};
   std::uint32_t next_pdo_ = 5, next_sync_ = 7;
   std::uint32_t counter_ = 0;
+  std::size_t requests_ = 0; ///< client frames but aborts that reached the server this transfer
 
 public:
   std::size_t stalls_ = 0; ///< polls that left a deadline in the past (never expected)
@@ -387,11 +388,13 @@ TEST_CASE("fault injection: thousands of SDO transfers and PDO traffic between t
   sim.idle(500);
   const counts &n = sim.n;
   MESSAGE("fault injection: " << n.transfers << " transfers (" << n.expedited << " expedited, "
-                              << n.segmented << " segmented, " << n.block
-                              << " block): " << n.completed << " completed, " << n.aborted_both
-                              << " aborted on both sides, " << n.confirmation_lost
-                              << " stored but the last confirmation lost, " << n.end_response_lost
-                              << " uploaded but the end response lost; " << n.frames
+                              << n.segmented << " segmented, " << n.block << " block): "
+                              << n.completed << " completed, " << n.completed_server_timed_out
+                              << " completed with the server timing out afterwards, "
+                              << n.aborted_both << " aborted on both sides, " << n.answer_lost
+                              << " finished by the server with its last answer lost, "
+                              << n.client_only << " aborted by the client alone (no request "
+                              << "reached the server); " << n.frames
                               << " frames, faults: " << n.dropped << " dropped, " << n.duplicated
                               << " duplicated, " << n.swapped << " swapped, " << n.delayed
                               << " delayed past the timeout; " << n.tpdo_frames << " TPDOs, "
@@ -399,7 +402,9 @@ TEST_CASE("fault injection: thousands of SDO transfers and PDO traffic between t
                               << n.heartbeat_losses << " heartbeat losses; " << sim.now
                               << " ms simulated");
   CHECK(n.transfers == 3000);
-  CHECK(n.completed + n.aborted_both + n.confirmation_lost + n.end_response_lost == n.transfers);
+  CHECK(n.completed + n.completed_server_timed_out + n.aborted_both + n.answer_lost +
+            n.client_only ==
+        n.transfers);
   CHECK(n.completed > n.transfers / 3);
   CHECK(n.aborted_both > 0);
   CHECK(n.dropped > 100);
