@@ -41,7 +41,7 @@ void fill_inputs() {
     q.date = static_cast<std::int32_t>(
         r.between(r.below(2) != 0U ? -1000 : INT32_MIN, r.below(2) != 0U ? 1000 : INT32_MAX));
     q.ok = true;
-    const serial::request s{q.command, q.parameter, pac::value::of_int(q.date)};
+    const serial::request s{q.command, q.parameter, pac::value::of_int(q.date).value()};
     g_frames[i].len = serial::encode_request(s, g_frames[i].b).value();
   }
 }
@@ -186,7 +186,7 @@ bench::registry make_registry() {
       r, "serial/encode_request (integer date)",
       [](const req &q) {
         frame f;
-        const serial::request s{q.command, q.parameter, pac::value::of_int(q.date)};
+        const serial::request s{q.command, q.parameter, pac::value::of_int(q.date).value()};
         f.len = serial::encode_request(s, f.b).value_or(0);
         return f;
       },
@@ -202,8 +202,8 @@ bench::registry make_registry() {
           auto k = d.push(f.b[i]);
           if (k && k.value() == pac::serial::frame_kind::request) {
             const auto &s = d.request();
-            q = {s.command, s.parameter, static_cast<std::int32_t>(s.date.number.mantissa),
-                 s.date.type == pac::data_type::integer};
+            q = {s.code, s.parameter, static_cast<std::int32_t>(s.date.number.mantissa),
+                 s.date.type == fieldcodec::od::command_value::integer};
           }
         }
         return q;

@@ -61,7 +61,7 @@ int main() {
 
   serial::acknowledgement ack{};
   ack.end_of_processing = true;
-  ack.status = 10;
+  ack.operating_status = 10;
   ack.date = date.value();
   auto m = serial::encode_acknowledgement(ack, frame);
   if (!m) return 1;

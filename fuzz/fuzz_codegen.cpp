@@ -2,8 +2,8 @@
 // reader of fieldcodec-gen). The generator is a host tool whose reader is a library target
 // (fieldcodec_codegen) that the fuzz build does not configure (FIELDCODEC_BUILD_CODEGEN=OFF),
 // so the harness compiles the reader and writer sources into itself (a unity build of
-// text.cpp, eds_reader.cpp, csv_reader.cpp and write_eds.cpp; read_file.cpp, emit_header.cpp
-// and main.cpp are not needed).
+// text.cpp, checks.cpp, eds_reader.cpp, csv_reader.cpp, options.cpp and write_eds.cpp;
+// read_file.cpp, emit_header.cpp and main.cpp are not needed).
 //
 // Byte 0 bit 0 selects the reader (0 EDS/DCF, 1 CSV); the rest is the file's text.
 //
@@ -13,15 +13,19 @@
 // * What reads re-writes to the writer's normalised EDS (hex indices, explicit sub-object
 //   sections, LF line endings, objects in index order — the canonical form), and that reads
 //   back without errors to the same objects (index, sub-index, data type, access, PDO mapping,
-//   limits, default) and re-writes to exactly the same text (the normalised form is a fixed
-//   point). CSV object tables go through the same EDS round trip; command tables only through
-//   the reader.
+//   limits and default with their node-ID flags, the bytes of a string's default and DCF
+//   value, a string's capacity, denotation, kept keys) and re-writes to exactly the same text
+//   (the normalised form is a fixed point). CSV object tables go through the same EDS round
+//   trip; command tables only through the reader.
+// * --compact-arrays changes nothing the EDS export says.
 #include "check.hpp"
 
 #include "../codegen/src/text.cpp"
 
+#include "../codegen/src/checks.cpp"
 #include "../codegen/src/csv_reader.cpp"
 #include "../codegen/src/eds_reader.cpp"
+#include "../codegen/src/options.cpp"
 #include "../codegen/src/write_eds.cpp"
 
 #include <algorithm>
@@ -71,8 +75,17 @@ bool same_entry(const gen::entry &a, const gen::entry &b) {
   return a.index == b.index && a.sub == b.sub && a.type_code == b.type_code &&
          a.access == b.access &&
          (a.pdo == fieldcodec::od::pdo_mapping::no) == (b.pdo == fieldcodec::od::pdo_mapping::no) &&
-         (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high))) &&
-         same_number(a.def, b.def) && a.def_nodeid == b.def_nodeid;
+         (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high) &&
+                       a.low_nodeid == b.low_nodeid && a.high_nodeid == b.high_nodeid)) &&
+         same_number(a.default_value, b.default_value) && a.default_nodeid == b.default_nodeid &&
+         a.default_text == b.default_text && a.size == b.size && a.other_keys == b.other_keys;
+}
+
+/// DCF data survives when the source was a DCF (the writer writes it only then).
+bool same_dcf(const gen::entry &a, const gen::entry &b) {
+  return same_number(a.parameter_value, b.parameter_value) &&
+         a.parameter_nodeid == b.parameter_nodeid && a.parameter_text == b.parameter_text &&
+         a.denotation == b.denotation;
 }
 
 void round_trip(const gen::dictionary &d, bool from_csv) {
@@ -91,11 +104,16 @@ void round_trip(const gen::dictionary &d, bool from_csv) {
     });
     FUZZ_CHECK(it != d2->entries.end());
     FUZZ_CHECK(same_entry(e, *it));
+    if (d.is_dcf) FUZZ_CHECK(same_dcf(e, *it));
   }
   // The normalised EDS is a fixed point, also for CSV input (F5, fixed: values of unsigned
   // types are written in hex whatever kind the CSV gave them).
   (void)from_csv;
   FUZZ_CHECK(gen::write_eds(*d2) == w1);
+  // runs of alike ARRAY sub-objects are written as every sub-object again
+  gen::dictionary compact = d;
+  gen::compact_arrays(compact);
+  FUZZ_CHECK(gen::write_eds(compact) == w1);
 }
 
 } // namespace

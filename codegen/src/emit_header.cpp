@@ -142,14 +142,14 @@ void emit_entry(std::string &o, const entry &e) {
     o += ", .high = ";
     o += number_literal(e.high);
   }
-  if (e.def) {
+  if (e.default_value) {
     o += ", .default_value = ";
-    o += number_literal(e.def);
+    o += number_literal(e.default_value);
   }
-  if (e.def_nodeid) o += ", .default_nodeid = true";
-  if (!e.def_text.empty()) {
+  if (e.default_nodeid) o += ", .default_nodeid = true";
+  if (!e.default_text.empty()) {
     o += ", .default_text = ";
-    append_cpp_string(o, e.def_text);
+    append_cpp_value_text(o, e.type, e.default_text);
   }
   if (e.scaled || e.offset.mantissa != 0) {
     o += ", .scale = {{" + std::to_string(e.scale.mantissa) + ", " +
@@ -181,14 +181,14 @@ void emit_entry(std::string &o, const entry &e) {
     append_cpp_string(o, e.remark);
   }
   if (e.has_obj_flags && e.obj_flags != 0U) o += ", .obj_flags = 0x" + hex(e.obj_flags, 1);
-  if (e.param) {
+  if (e.parameter_value) {
     o += ", .parameter_value = ";
-    o += number_literal(e.param);
+    o += number_literal(e.parameter_value);
   }
-  if (e.param_nodeid) o += ", .parameter_nodeid = true";
-  if (!e.param_text.empty()) {
+  if (e.parameter_nodeid) o += ", .parameter_nodeid = true";
+  if (!e.parameter_text.empty()) {
     o += ", .parameter_text = ";
-    append_cpp_string(o, e.param_text);
+    append_cpp_value_text(o, e.type, e.parameter_text);
   }
   if (!e.denotation.empty()) {
     o += ", .denotation = ";
@@ -201,7 +201,7 @@ std::string command_value_enum(od::command_value v) {
   switch (v) {
   case od::command_value::none: return "none";
   case od::command_value::integer: return "integer";
-  case od::command_value::floating: return "floating";
+  case od::command_value::real: return "real";
   }
   return "none";
 }
@@ -231,12 +231,24 @@ void emit_commands(std::string &o, const dictionary &d) {
       o += ", .parameter_max = ";
       o += number_literal(c.parameter_max);
     }
+    if (c.parameter_packing != od::packing::whole)
+      o += ", .parameter_packing = od::packing::" + std::string(od::name(c.parameter_packing));
     if (c.date_type != od::command_value::none)
       o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
     if (!c.date.empty()) {
       o += ", .date = ";
       append_cpp_string(o, c.date);
     }
+    if (c.date_min) {
+      o += ", .date_min = ";
+      o += number_literal(c.date_min);
+    }
+    if (c.date_max) {
+      o += ", .date_max = ";
+      o += number_literal(c.date_max);
+    }
+    if (c.date_packing != od::packing::whole)
+      o += ", .date_packing = od::packing::" + std::string(od::name(c.date_packing));
     if (c.reply_type != od::command_value::none)
       o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
     if (!c.reply.empty()) {

@@ -1,5 +1,6 @@
 // fieldcodec-gen — turns EDS/DCF files and CSV tables into constexpr C++ headers, and writes
 // EDS. Exit status: 0 success, 1 input errors (or --check found a difference), 2 usage errors.
+#include "options.hpp"
 #include "readers.hpp"
 #include "text.hpp"
 
@@ -24,14 +25,26 @@ options:
                       the input's file name, e.g. dpq_parameters)
       --check         do not write; exit 1 when an output file differs from what
                       would be written (drift check)
+      --only RANGES   keep only the objects in RANGES, e.g. 0x1000-0x1FFF,0x6000-0x67FF
+                      (indices in hex with 0x; a single index such as 0x1018 is a range)
+      --string-capacity BYTES
+                      capacity of every string / DOMAIN entry without a declared size:
+                      at least BYTES (the default's length when it is longer)
+      --string-capacity INDEX[:SUB]=BYTES
+                      capacity of the string / DOMAIN entries of one object (or one
+                      sub-index), e.g. 0x5011=30 or 0x2121:2=64; overrides the file
+      --compact-arrays
+                      keep runs of alike ARRAY sub-objects (CompactSubObj) as one
+                      entry each instead of one entry per sub-index
       --strict        treat warnings as errors
   -q, --quiet         do not print warnings
   -h, --help          show this text
       --version       show the version
 
 Without -o or --eds the input is only checked. Diagnostics are printed as
-file:line:column: error|warning: message. Exit status: 0 success, 1 errors in
-the input (or a difference under --check), 2 usage errors.
+file:line:column: error|warning: message, in line order, followed by a count
+("2 errors, 1 warning"). Exit status: 0 success, 1 errors in the input (or a
+difference under --check), 2 usage errors.
 )";
 
 int usage_error(const std::string &msg) {
@@ -74,9 +87,8 @@ int output(const std::string &path, const std::string &content, bool check) {
   return 0;
 }
 
-} // namespace
-
-int main(int argc, char **argv) {
+// What the command line asks for.
+struct command_line {
   std::string input;
   std::string header_out;
   std::string eds_out;
@@ -84,6 +96,12 @@ int main(int argc, char **argv) {
   bool check = false;
   bool strict = false;
   bool quiet = false;
+  fieldcodec::gen::generator_options opts;
+};
+
+// Parses argv into `cl`. Returns -1 to go on, otherwise the exit status (0 after --help or
+// --version, 2 after a usage error, which it printed).
+int parse_command_line(int argc, char **argv, command_line &cl) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&](std::string &dst) -> bool {
@@ -100,55 +118,105 @@ int main(int argc, char **argv) {
       return 0;
     }
     if (a == "-o" || a == "--output") {
-      if (!value(header_out)) return usage_error("option " + a + " needs a file name");
+      if (!value(cl.header_out)) return usage_error("option " + a + " needs a file name");
     } else if (a == "--eds") {
-      if (!value(eds_out)) return usage_error("option --eds needs a file name");
+      if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
     } else if (a == "--name") {
-      if (!value(name)) return usage_error("option --name needs a name");
-      if (!fieldcodec::gen::is_identifier(name) || name == "od" || name == "std" ||
-          name == "detail") {
-        return usage_error("--name '" + name + "' is not a C++ identifier");
+      if (!value(cl.name)) return usage_error("option --name needs a name");
+      if (!fieldcodec::gen::is_identifier(cl.name) || cl.name == "od" || cl.name == "std" ||
+          cl.name == "detail") {
+        return usage_error("--name '" + cl.name + "' is not a C++ identifier");
       }
+    } else if (a == "--only") {
+      std::string ranges;
+      if (!value(ranges)) return usage_error("option --only needs index ranges");
+      if (!cl.opts.only_text.empty()) return usage_error("option --only is given twice");
+      if (auto e = fieldcodec::gen::parse_index_ranges(ranges, cl.opts.only); !e.empty()) {
+        return usage_error("--only '" + ranges + "': " + e);
+      }
+      cl.opts.only_text = ranges;
+    } else if (a == "--string-capacity") {
+      std::string cap;
+      if (!value(cap)) return usage_error("option --string-capacity needs a capacity");
+      if (auto e = fieldcodec::gen::parse_string_capacity(cap, cl.opts); !e.empty()) {
+        return usage_error("--string-capacity '" + cap + "': " + e);
+      }
+    } else if (a == "--compact-arrays") {
+      cl.opts.compact_arrays = true;
     } else if (a == "--check") {
-      check = true;
+      cl.check = true;
     } else if (a == "--strict") {
-      strict = true;
+      cl.strict = true;
     } else if (a == "-q" || a == "--quiet") {
-      quiet = true;
+      cl.quiet = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
-    } else if (input.empty()) {
-      input = a;
+    } else if (cl.input.empty()) {
+      cl.input = a;
     } else {
-      return usage_error("more than one input file ('" + input + "', '" + a + "')");
+      return usage_error("more than one input file ('" + cl.input + "', '" + a + "')");
     }
   }
-  if (input.empty()) return usage_error("no input file");
+  if (cl.input.empty()) return usage_error("no input file");
+  return -1;
+}
 
-  fieldcodec::gen::diagnostics diag;
-  diag.strict = strict;
-  auto dict = fieldcodec::gen::read_file(input, diag);
-  for (const auto &d : diag.all()) {
-    if (quiet && d.sev == fieldcodec::gen::severity::warning) continue;
-    std::cerr << fieldcodec::gen::diagnostics::format(d) << '\n';
-  }
-  if (diag.too_many()) std::cerr << input << ": error: too many errors, stopped\n";
-  if (!dict || diag.has_errors()) return 1;
-  if (!name.empty()) dict->stem = name;
+// Writes the header and the EDS the command line asks for. Returns the exit status.
+int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
   int rc = 0;
-  if (!header_out.empty()) rc |= output(header_out, fieldcodec::gen::emit_header(*dict), check);
-  if (!eds_out.empty()) {
-    if (dict->is_command_table) {
-      std::cerr << input << ": error: a command table cannot be written as EDS\n";
+  if (!cl.header_out.empty()) {
+    // The emitter writes one od::entry per sub-index: the runs of --compact-arrays are expanded
+    // for it until od::entry can describe a run (docs/generator.md, "--compact-arrays").
+    fieldcodec::gen::dictionary for_header;
+    if (cl.opts.compact_arrays) {
+      for_header = dict;
+      fieldcodec::gen::expand_runs(for_header);
+    }
+    rc |=
+        output(cl.header_out,
+               fieldcodec::gen::emit_header(cl.opts.compact_arrays ? for_header : dict), cl.check);
+  }
+  if (!cl.eds_out.empty()) {
+    if (dict.is_command_table) {
+      std::cerr << cl.input << ": error: a command table cannot be written as EDS\n";
       return 1;
     }
     // A CSV table holds only the device's own parameters: the export adds the mandatory
     // communication objects so that CANopen tools load it.
-    if (input.size() >= 4 &&
-        (input.substr(input.size() - 4) == ".csv" || input.substr(input.size() - 4) == ".CSV")) {
-      fieldcodec::gen::add_mandatory_objects(*dict);
+    const std::string &in = cl.input;
+    if (in.size() >= 4 &&
+        (in.substr(in.size() - 4) == ".csv" || in.substr(in.size() - 4) == ".CSV")) {
+      fieldcodec::gen::add_mandatory_objects(dict);
     }
-    rc |= output(eds_out, fieldcodec::gen::write_eds(*dict), check);
+    rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
   }
   return rc;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  command_line cl;
+  if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
+  fieldcodec::gen::diagnostics diag;
+  diag.strict = cl.strict;
+  auto dict = fieldcodec::gen::read_file(cl.input, diag);
+  if (dict && !diag.has_errors()) {
+    const auto &o = cl.opts;
+    if (dict->is_command_table &&
+        (!o.only.empty() || o.compact_arrays || o.string_capacity || !o.capacities.empty())) {
+      return usage_error("--only, --string-capacity and --compact-arrays apply to object "
+                         "dictionaries, not to the command table '" +
+                         cl.input + "'");
+    }
+    (void)fieldcodec::gen::apply_options(*dict, o, cl.input, diag);
+  }
+  // in line order, then where reading stopped, then the count
+  diag.print(std::cerr, !cl.quiet);
+  if (diag.error_count() != 0U || (!cl.quiet && diag.warning_count() != 0U)) {
+    std::cerr << cl.input << ": " << diag.summary() << '\n';
+  }
+  if (!dict || diag.has_errors()) return 1;
+  if (!cl.name.empty()) dict->stem = cl.name;
+  return write_outputs(cl, *dict);
 }

@@ -15,22 +15,41 @@
 
 namespace fieldcodec::gen {
 
+/// Keys of a section as written (name, value), in file order.
+using key_list = std::vector<std::pair<std::string, std::string>>;
+
+/// Where an EDS lists an object: [MandatoryObjects], [OptionalObjects], [ManufacturerObjects].
+enum class object_list : std::uint8_t { mandatory, optional, manufacturer };
+
 /// One sub-object as read from an EDS/DCF or a CSV object table.
 struct entry {
   std::uint16_t index = 0;
   std::uint8_t sub = 0;
+  /// Sub-indices this entry stands for: sub .. sub + count - 1. 1 for every entry except a run of
+  /// CompactSubObj sub-objects kept compact (--keep-compact): those are alike in everything but
+  /// their names, sub-index i is named `name` followed by i in decimal ("TPDO 1 mapping5").
+  std::uint16_t count = 1;
   od::object_code object = od::object_code::var;
   std::uint16_t type_code = 0;                ///< data type as written (may be > 0x1B)
   od::data_type type = od::data_type::domain; ///< type_code if a basic type, DOMAIN otherwise
   od::access access = od::access::ro;
   od::pdo_mapping pdo = od::pdo_mapping::no;
   std::uint8_t flags = 0;
+  /// Capacity in bytes of a VISIBLE_STRING / OCTET_STRING / UNICODE_STRING / DOMAIN value (0: no
+  /// capacity known; docs/generator.md "String and DOMAIN capacity"); 0 for every other type.
   std::uint32_t size = 0;
+  bool size_declared = false; ///< `size` is given by the file (CSV `bytes`, EDS `Size=`)
   std::string name;
   std::string symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
-  od::number low, high, def, param;
-  bool def_nodeid = false, param_nodeid = false;
-  std::string def_text, param_text, denotation;
+  od::number low, high, default_value, parameter_value;
+  bool low_nodeid = false;       ///< low is "$NODEID + low"
+  bool high_nodeid = false;      ///< high is "$NODEID + high"
+  bool default_nodeid = false;   ///< default_value is "$NODEID + default_value"
+  bool parameter_nodeid = false; ///< parameter_value (DCF ParameterValue) is "$NODEID + ..."
+  /// Default / DCF ParameterValue of a byte-string entry: the value's bytes as a store holds them
+  /// (an EDS OCTET_STRING / DOMAIN written as hex digits is decoded, a UNICODE_STRING is UTF-16LE).
+  std::string default_text, parameter_text;
+  std::string denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};
   std::string unit, alt_name, acceptance, section, remark;
@@ -38,6 +57,9 @@ struct entry {
   od::bus_manager bus = od::bus_manager::unspecified;
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
+  /// Keys of the EDS section the reader does not interpret (UploadFile, SRDOMapping, a vendor's
+  /// Unit, ...): not in the header, written back unchanged by the EDS writer.
+  key_list other_keys;
   int line = 0; ///< source line (diagnostics)
 };
 
@@ -51,15 +73,32 @@ struct object_info {
   std::uint8_t compact_sub = 0; ///< EDS CompactSubObj (0: not compact)
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
-  int list = 0; ///< 0 mandatory, 1 optional, 2 manufacturer
+  object_list list = object_list::mandatory;
+  std::vector<std::uint16_t> object_links; ///< DCF/EDS [xxxxObjectLinks], in file order
+  key_list other_keys; ///< keys of a container's object section the reader does not interpret
   int line = 0;
 };
+
+/// A section of an EDS the reader keeps but does not interpret ([Tools], [M1ModuleInfo], a
+/// vendor's own section, ...): written back unchanged by the EDS writer.
+struct other_section {
+  std::string name;
+  key_list keys;
+};
+
+/// The list an object not listed anywhere belongs in: manufacturer-specific 2000h..5FFFh, optional
+/// otherwise.
+[[nodiscard]] constexpr object_list default_list(std::uint16_t index) noexcept {
+  return index >= 0x2000U && index < 0x6000U ? object_list::manufacturer : object_list::optional;
+}
 
 /// One row of a command table.
 struct command {
   std::uint16_t code = 0;
   std::string name, symbol, section, title, parameter, date, reply, modes, remark;
-  od::number parameter_min, parameter_max;
+  od::number parameter_min, parameter_max, date_min, date_max;
+  od::packing parameter_packing = od::packing::whole;
+  od::packing date_packing = od::packing::whole;
   od::command_value date_type = od::command_value::none;
   od::command_value reply_type = od::command_value::none;
   int line = 0;
@@ -74,8 +113,10 @@ struct dictionary {
   std::map<std::uint16_t, object_info> objects;
   std::vector<command> commands; ///< sorted by code
   // EDS header sections, kept for writing EDS (key, value in file order)
-  std::vector<std::pair<std::string, std::string>> file_info, device_info, dummy_usage;
+  key_list file_info, device_info, dummy_usage;
+  key_list commissioning; ///< [DeviceComissioning] as read (NodeID, NodeName, Baudrate, ...)
   std::vector<std::string> comments;
+  std::vector<other_section> other_sections; ///< in file order
   bool is_dcf = false;
   int node_id = -1; ///< [DeviceComissioning] NodeID, -1 when absent
   std::string node_name;

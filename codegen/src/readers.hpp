@@ -19,6 +19,10 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
 
+/// Warns about a PDO communication parameter (1400h..15FFh, 1800h..19FFh) without its mapping
+/// parameter (1600h..17FFh, 1A00h..1BFFh), and the reverse. Both readers call it.
+void check_pdo_pairs(const dictionary &d, const std::string &file, diagnostics &diag);
+
 /// Adds CiA 301's mandatory objects 1000h (device type), 1001h (error register) and 1018h
 /// (identity, vendor-ID) with neutral values where the dictionary lacks them — CSV tables have
 /// no communication objects, and CANopen tools refuse an EDS without them.

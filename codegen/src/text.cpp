@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <limits>
 
@@ -212,6 +213,207 @@ std::optional<double> parse_real(std::string_view s) {
   return d;
 }
 
+real_parse parse_real_value(std::string_view s, od::data_type type) {
+  real_parse r;
+  const std::string_view t = trim(s);
+  std::string_view digits = t;
+  const bool sign = !digits.empty() && (digits.front() == '-' || digits.front() == '+');
+  if (sign) digits.remove_prefix(1);
+  if (digits.size() >= 2U && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+    const bool single = type == od::data_type::real32;
+    if (sign) {
+      r.error = "expected a " + std::string(od::name(type)) + " bit pattern without a sign, got '" +
+                std::string(t) + "'";
+      return r;
+    }
+    const int_parse p = parse_int(t);
+    if (!p.ok || p.suffix) {
+      r.error = p.ok ? "expected hexadecimal digits, got '" + std::string(t) + "'" : p.error;
+      r.error_pos = p.error_pos;
+      return r;
+    }
+    const std::uint64_t bits = p.value.bits;
+    if (single && bits > 0xFFFF'FFFFU) {
+      r.error = "expected a REAL32 bit pattern of at most 8 hexadecimal digits, got '" +
+                std::string(t) + "'";
+      return r;
+    }
+    const double d =
+        single ? static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(bits)))
+               : std::bit_cast<double>(bits);
+    if (d != d || d > std::numeric_limits<double>::max() ||
+        d < -std::numeric_limits<double>::max()) {
+      r.error = "expected a finite " + std::string(od::name(type)) + ", got '" + std::string(t) +
+                "' (" + (d != d ? "NaN" : "infinity") + ")";
+      return r;
+    }
+    r.value = d;
+    r.ok = true;
+    return r;
+  }
+  if (auto d = parse_real(t)) {
+    r.value = *d;
+    r.ok = true;
+    return r;
+  }
+  const int_parse p = parse_int(t);
+  if (p.ok) {
+    r.value = p.value.to_double();
+    r.ok = true;
+    return r;
+  }
+  r.error = "expected a real number, got '" + std::string(t) + "'";
+  return r;
+}
+
+nodeid_expr split_nodeid(std::string_view s) noexcept {
+  nodeid_expr x;
+  constexpr std::string_view word = "$NODEID";
+  std::size_t at = std::string_view::npos;
+  for (std::size_t i = 0; i + word.size() <= s.size(); ++i) {
+    if (iequals(s.substr(i, word.size()), word)) {
+      at = i;
+      break;
+    }
+  }
+  if (at == std::string_view::npos) return x;
+  x.present = true;
+  const std::string_view before = trim(s.substr(0, at));
+  const std::string_view after = trim(s.substr(at + word.size()));
+  auto operand_of = [&](std::string_view part) {
+    x.operand = trim(part);
+    x.operand_pos = x.operand.empty() ? 0U : static_cast<std::size_t>(x.operand.data() - s.data());
+    x.ok = !x.operand.empty();
+  };
+  if (before.empty() && after.empty()) {
+    x.ok = true;
+  } else if (before.empty() && after.front() == '+') {
+    operand_of(after.substr(1));
+  } else if (after.empty() && before.back() == '+') {
+    operand_of(before.substr(0, before.size() - 1U));
+  }
+  return x;
+}
+
+namespace {
+int hex_value(char c) noexcept {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+} // namespace
+
+std::optional<std::string> byte_string_value(od::data_type type, std::string_view text) {
+  switch (type) {
+  case od::data_type::visible_string:
+  case od::data_type::unicode_string: {
+    if (text.size() >= 2U && text.front() == '"' && text.back() == '"') {
+      text = text.substr(1, text.size() - 2U);
+    }
+    if (type == od::data_type::visible_string) return std::string(text);
+    std::string out;
+    std::size_t i = 0;
+    while (i < text.size()) { // the text is UTF-8 (the readers convert every file)
+      const auto c = static_cast<unsigned char>(text[i]);
+      std::uint32_t cp = c;
+      std::size_t n = 0;
+      if (c >= 0xF0U) {
+        cp = c & 0x07U;
+        n = 3;
+      } else if (c >= 0xE0U) {
+        cp = c & 0x0FU;
+        n = 2;
+      } else if (c >= 0xC0U) {
+        cp = c & 0x1FU;
+        n = 1;
+      }
+      for (std::size_t k = 1; k <= n && i + k < text.size(); ++k) {
+        cp = (cp << 6U) | (static_cast<unsigned char>(text[i + k]) & 0x3FU);
+      }
+      i += n + 1U;
+      auto unit = [&](std::uint32_t u) {
+        out += static_cast<char>(u & 0xFFU);
+        out += static_cast<char>((u >> 8U) & 0xFFU);
+      };
+      if (cp >= 0x10000U) {
+        cp -= 0x10000U;
+        unit(0xD800U + (cp >> 10U));
+        unit(0xDC00U + (cp & 0x3FFU));
+      } else {
+        unit(cp);
+      }
+    }
+    return out;
+  }
+  case od::data_type::octet_string:
+  case od::data_type::domain: {
+    std::string out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+      if (text[i] == ' ' || text[i] == '\t') {
+        ++i;
+        continue;
+      }
+      if (i + 1U >= text.size()) return std::nullopt;
+      const int hi = hex_value(text[i]);
+      const int lo = hex_value(text[i + 1U]);
+      if (hi < 0 || lo < 0) return std::nullopt;
+      out += static_cast<char>(hi * 16 + lo);
+      i += 2;
+    }
+    return out;
+  }
+  default: return std::string(text);
+  }
+}
+
+std::string byte_string_text(od::data_type type, std::string_view bytes) {
+  switch (type) {
+  case od::data_type::octet_string:
+  case od::data_type::domain: {
+    std::string out;
+    for (const char c : bytes) out += hex(static_cast<unsigned char>(c), 2);
+    return out;
+  }
+  case od::data_type::unicode_string: {
+    std::string out;
+    for (std::size_t i = 0; i + 1U < bytes.size(); i += 2) {
+      std::uint32_t u =
+          static_cast<unsigned char>(bytes[i]) |
+          (static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1U])) << 8U);
+      if (u >= 0xD800U && u < 0xDC00U && i + 3U < bytes.size()) {
+        const std::uint32_t lo =
+            static_cast<unsigned char>(bytes[i + 2U]) |
+            (static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 3U])) << 8U);
+        if (lo >= 0xDC00U && lo < 0xE000U) {
+          u = 0x10000U + ((u - 0xD800U) << 10U) + (lo - 0xDC00U);
+          i += 2;
+        }
+      }
+      if (u >= 0xD800U && u < 0xE000U) u = 0xFFFDU;
+      if (u < 0x80U) {
+        out += static_cast<char>(u);
+      } else if (u < 0x800U) {
+        out += static_cast<char>(0xC0U | (u >> 6U));
+        out += static_cast<char>(0x80U | (u & 0x3FU));
+      } else if (u < 0x10000U) {
+        out += static_cast<char>(0xE0U | (u >> 12U));
+        out += static_cast<char>(0x80U | ((u >> 6U) & 0x3FU));
+        out += static_cast<char>(0x80U | (u & 0x3FU));
+      } else {
+        out += static_cast<char>(0xF0U | (u >> 18U));
+        out += static_cast<char>(0x80U | ((u >> 12U) & 0x3FU));
+        out += static_cast<char>(0x80U | ((u >> 6U) & 0x3FU));
+        out += static_cast<char>(0x80U | (u & 0x3FU));
+      }
+    }
+    return out;
+  }
+  default: return std::string(bytes);
+  }
+}
+
 bool is_cpp_keyword(std::string_view s) noexcept {
   static constexpr std::array<std::string_view, 97> kw{
       "alignas",       "alignof",     "and",
@@ -362,6 +564,27 @@ void append_cpp_string(std::string &out, std::string_view s) {
     }
   }
   out += '"';
+}
+
+void append_cpp_value_text(std::string &out, od::data_type type, std::string_view bytes) {
+  if (type == od::data_type::visible_string) {
+    append_cpp_string(out, bytes);
+    return;
+  }
+  out += "std::string_view{\"";
+  for (const char ch : bytes) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20U && c < 0x7FU && c != '"' && c != '\\' && c != '?') {
+      out += static_cast<char>(c);
+    } else {
+      constexpr char digits[] = "01234567";
+      out += '\\';
+      out += digits[(c >> 6U) & 7U];
+      out += digits[(c >> 3U) & 7U];
+      out += digits[c & 7U];
+    }
+  }
+  out += "\", " + std::to_string(bytes.size()) + "}";
 }
 
 std::string hex(std::uint64_t v, int digits) {

@@ -1,6 +1,7 @@
 // fieldcodec-gen — small text helpers shared by the readers and writers.
 #pragma once
 
+#include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/number.hpp>
 
 #include <cstdint>
@@ -33,6 +34,37 @@ struct int_parse {
 /// A real number: decimal with optional exponent (std::from_chars, C locale).
 [[nodiscard]] std::optional<double> parse_real(std::string_view s);
 
+/// A REAL32 / REAL64 value as dictionaries write it: `0x…` is the IEEE 754 bit pattern (how lely
+/// and other tools write a float exactly: REAL32 0x40490FDB is 3.14159274…), anything else a
+/// decimal number (`3.14`, `-1e3`, `10`). NaN and infinities are refused.
+struct real_parse {
+  bool ok = false;
+  double value = 0;
+  std::string error; ///< "expected ..." text when !ok
+  std::size_t error_pos = 0;
+};
+[[nodiscard]] real_parse parse_real_value(std::string_view s, od::data_type type);
+
+/// A `$NODEID` expression as CiA 306 writes node-ID relative values: `$NODEID`,
+/// `$NODEID+<number>` or `<number>+$NODEID`, any case, blanks around the parts.
+struct nodeid_expr {
+  bool present = false;     ///< the text names $NODEID
+  bool ok = false;          ///< in one of the accepted forms
+  std::string_view operand; ///< the number added, as written (empty: plain `$NODEID`)
+  std::size_t operand_pos = 0;
+};
+[[nodiscard]] nodeid_expr split_nodeid(std::string_view s) noexcept;
+
+/// The value of a byte string as written in a dictionary → the bytes a store holds:
+/// VISIBLE_STRING as is (surrounding double quotes removed), UNICODE_STRING UTF-8 → UTF-16LE,
+/// OCTET_STRING and DOMAIN hex digit pairs (blanks between pairs allowed) → bytes. Nothing when
+/// an OCTET_STRING / DOMAIN value is not hex digit pairs.
+[[nodiscard]] std::optional<std::string> byte_string_value(od::data_type type,
+                                                           std::string_view text);
+/// The inverse: bytes → text as an EDS writes it (hex digit pairs in upper case; UTF-16LE →
+/// UTF-8, an unpaired surrogate as U+FFFD).
+[[nodiscard]] std::string byte_string_text(od::data_type type, std::string_view bytes);
+
 /// A C++ identifier derived from `name`: lower case ASCII letters, digits and '_', German
 /// umlauts transliterated, other characters become '_', runs of '_' collapse, a leading digit
 /// gets the prefix "n_", keywords get a trailing '_'. Empty when nothing is left.
@@ -43,6 +75,12 @@ struct int_parse {
 /// A C++ string literal of `s` (UTF-8 kept, control characters and quotes escaped).
 [[nodiscard]] std::string cpp_string(std::string_view s);
 void append_cpp_string(std::string &out, std::string_view s);
+
+/// The value of a byte-string entry as C++: VISIBLE_STRING text as a string literal; the bytes
+/// of an OCTET_STRING / UNICODE_STRING / DOMAIN (any byte, NUL included) as
+/// `std::string_view{"\310=\273", 3}`, every byte outside printable ASCII as a 3-digit octal
+/// escape.
+void append_cpp_value_text(std::string &out, od::data_type type, std::string_view bytes);
 
 [[nodiscard]] std::string hex(std::uint64_t v, int digits);
 

@@ -1,5 +1,8 @@
 // fieldcodec-gen — CiA 306 EDS/DCF writer (normalised form: hex indices, explicit sub-object
-// sections instead of CompactSubObj, LF line endings, objects in index order).
+// sections instead of CompactSubObj, LF line endings, objects in index order). It writes
+// everything the EDS reader keeps: keys and sections it does not interpret are written back as
+// they were read.
+#include "options.hpp"
 #include "readers.hpp"
 #include "text.hpp"
 
@@ -51,9 +54,9 @@ std::string entry_number(const entry &e, const od::number &n, bool nodeid) {
 }
 
 // A limit as a raw value: CSV limits of scaled entries are engineering units.
-std::string eds_limit(const entry &e, const od::number &n) {
-  if (!n) return "";
-  if (e.scaled && od::is_integer(e.type)) {
+std::string eds_limit(const entry &e, const od::number &n, bool nodeid) {
+  if (!n && !nodeid) return "";
+  if (e.scaled && !nodeid && od::is_integer(e.type)) {
     auto d = n.to_decimal();
     if (d) {
       auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
@@ -73,7 +76,23 @@ std::string eds_limit(const entry &e, const od::number &n) {
       }
     }
   }
-  return entry_number(e, n, false);
+  return entry_number(e, n, nodeid);
+}
+
+// A byte string's value as text: OCTET_STRING / DOMAIN as hex digits, UNICODE_STRING as UTF-8.
+// Text the reader would change (surrounding blanks, which it trims; surrounding double quotes,
+// which it removes) is written in double quotes.
+std::string eds_string(const entry &e, const std::string &bytes) {
+  std::string t = byte_string_text(e.type, bytes);
+  if (e.type != od::data_type::visible_string && e.type != od::data_type::unicode_string) return t;
+  const bool blank =
+      !t.empty() && (t.front() == ' ' || t.front() == '\t' || t.back() == ' ' || t.back() == '\t');
+  const bool quoted = t.size() >= 2U && t.front() == '"' && t.back() == '"';
+  return blank || quoted ? '"' + t + '"' : t;
+}
+
+void other_keys(std::string &o, const key_list &keys) {
+  for (const auto &[k, v] : keys) o += k + "=" + v + "\n";
 }
 
 void var_keys(std::string &o, const entry &e, bool dcf) {
@@ -90,24 +109,28 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
   o += "DataType=0x" + hex(type, 4) + "\n";
   o += "AccessType=" + std::string(od::name(e.access)) + "\n";
   if (od::is_byte_string(e.type)) {
-    if (!e.def_text.empty()) o += "DefaultValue=" + eds_text(e.def_text) + "\n";
-  } else if (e.def || e.def_nodeid) {
-    o += "DefaultValue=" + entry_number(e, e.def, e.def_nodeid) + "\n";
+    if (!e.default_text.empty()) o += "DefaultValue=" + eds_string(e, e.default_text) + "\n";
+  } else if (e.default_value || e.default_nodeid) {
+    o += "DefaultValue=" + entry_number(e, e.default_value, e.default_nodeid) + "\n";
   }
   if (!od::is_byte_string(e.type)) { // limits of a string are not expressible in an EDS
-    if (e.low) o += "LowLimit=" + eds_limit(e, e.low) + "\n";
-    if (e.high) o += "HighLimit=" + eds_limit(e, e.high) + "\n";
+    if (e.low || e.low_nodeid) o += "LowLimit=" + eds_limit(e, e.low, e.low_nodeid) + "\n";
+    if (e.high || e.high_nodeid) o += "HighLimit=" + eds_limit(e, e.high, e.high_nodeid) + "\n";
   }
   o += std::string("PDOMapping=") + (e.pdo == od::pdo_mapping::no ? "0" : "1") + "\n";
+  if (od::is_byte_string(e.type) && e.size != 0U) o += "Size=" + std::to_string(e.size) + "\n";
   if (e.has_obj_flags) o += "ObjFlags=0x" + hex(e.obj_flags, 1) + "\n";
   if (dcf) {
     if (od::is_byte_string(e.type)) {
-      if (!e.param_text.empty()) o += "ParameterValue=" + eds_text(e.param_text) + "\n";
-    } else if (e.param || e.param_nodeid) {
-      o += "ParameterValue=" + entry_number(e, e.param, e.param_nodeid) + "\n";
+      if (!e.parameter_text.empty()) {
+        o += "ParameterValue=" + eds_string(e, e.parameter_text) + "\n";
+      }
+    } else if (e.parameter_value || e.parameter_nodeid) {
+      o += "ParameterValue=" + entry_number(e, e.parameter_value, e.parameter_nodeid) + "\n";
     }
     if (!e.denotation.empty()) o += "Denotation=" + eds_text(e.denotation) + "\n";
   }
+  other_keys(o, e.other_keys);
 }
 
 } // namespace
@@ -120,7 +143,7 @@ void add_mandatory_objects(dictionary &d) {
     info.index = index;
     info.code = code;
     info.name = name;
-    info.list = 0;
+    info.list = object_list::mandatory;
     info.sub_number = code == od::object_code::var ? 0 : static_cast<std::uint8_t>(subs.size());
     d.objects[index] = info;
     for (auto &e : subs) {
@@ -135,7 +158,7 @@ void add_mandatory_objects(dictionary &d) {
     e.type = t;
     e.type_code = static_cast<std::uint16_t>(t);
     e.access = od::access::ro;
-    e.def = def;
+    e.default_value = def;
     return e;
   };
   add(0x1000, od::object_code::var, "Device type",
@@ -153,11 +176,12 @@ void add_mandatory_objects(dictionary &d) {
   });
 }
 
-std::string write_eds(const dictionary &d) {
-  std::string o;
-  o.reserve(d.entries.size() * 120U + 2048U);
-  auto copy_or = [&](const std::vector<std::pair<std::string, std::string>> &kv,
-                     const std::vector<std::pair<std::string, std::string>> &fallback) {
+namespace {
+
+// [FileInfo], [DeviceInfo] (as read; CSV tables get a minimal set naming the source),
+// [DummyUsage], [Comments], [DeviceComissioning].
+void header_sections(std::string &o, const dictionary &d) {
+  auto copy_or = [&](const key_list &kv, const key_list &fallback) {
     for (const auto &[k, v] : kv.empty() ? fallback : kv) o += k + "=" + v + "\n";
   };
   o += "[FileInfo]\n";
@@ -196,52 +220,93 @@ std::string write_eds(const dictionary &d) {
       o += "Line" + std::to_string(i + 1U) + "=" + d.comments[i] + "\n";
     }
   }
-  if (d.is_dcf && d.node_id > 0) {
+  if (d.is_dcf && !d.commissioning.empty()) {
+    o += "\n[DeviceComissioning]\n";
+    other_keys(o, d.commissioning);
+  } else if (d.is_dcf && d.node_id > 0) {
     o += "\n[DeviceComissioning]\nNodeID=" + std::to_string(d.node_id) + "\n";
     if (!d.node_name.empty()) o += "NodeName=" + d.node_name + "\n";
   }
-  const char *list_names[] = {"MandatoryObjects", "OptionalObjects", "ManufacturerObjects"};
-  for (int l = 0; l < 3; ++l) {
+}
+
+void object_lists(std::string &o, const dictionary &d) {
+  const std::pair<const char *, object_list> lists[] = {
+      {"MandatoryObjects", object_list::mandatory},
+      {"OptionalObjects", object_list::optional},
+      {"ManufacturerObjects", object_list::manufacturer}};
+  for (const auto &[list_name, list] : lists) {
     std::vector<std::uint16_t> idx;
     for (const auto &[index, info] : d.objects) {
-      if (index >= 0x1000U && info.list == l) idx.push_back(index);
+      if (index >= 0x1000U && info.list == list) idx.push_back(index);
     }
-    o += std::string("\n[") + list_names[l] + "]\nSupportedObjects=" + std::to_string(idx.size()) +
-         "\n";
+    o +=
+        std::string("\n[") + list_name + "]\nSupportedObjects=" + std::to_string(idx.size()) + "\n";
     for (std::size_t i = 0; i < idx.size(); ++i) {
       o += std::to_string(i + 1U) + "=0x" + hex(idx[i], 4) + "\n";
     }
   }
+}
+
+// One object: its section, its sub-object sections (entries[first, first + n)), its links.
+void object_sections(std::string &o, const dictionary &d, std::uint16_t index,
+                     const object_info &info, std::size_t first, std::size_t n) {
+  const bool single_code = info.code == od::object_code::var ||
+                           info.code == od::object_code::domain ||
+                           info.code == od::object_code::deftype;
+  o += "\n[" + hex(index, 4) + "]\n";
+  if (single_code && n == 1U && d.entries[first].sub == 0U) {
+    var_keys(o, d.entries[first], d.is_dcf);
+  } else {
+    o += "ParameterName=" + eds_text(info.name) + "\n";
+    // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
+    // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
+    // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).
+    const auto code = single_code ? od::object_code::record : info.code;
+    o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
+    if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
+    o += "SubNumber=" + std::to_string(n) + "\n";
+    other_keys(o, info.other_keys);
+    for (std::size_t k = first; k < first + n; ++k) {
+      o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].sub, 1) + "]\n";
+      var_keys(o, d.entries[k], d.is_dcf);
+    }
+  }
+  if (!info.object_links.empty()) {
+    o += "\n[" + hex(index, 4) +
+         "ObjectLinks]\nObjectLinks=" + std::to_string(info.object_links.size()) + "\n";
+    for (std::size_t k = 0; k < info.object_links.size(); ++k) {
+      o += std::to_string(k + 1U) + "=0x" + hex(info.object_links[k], 4) + "\n";
+    }
+  }
+}
+
+} // namespace
+
+std::string write_eds(const dictionary &dict) {
+  // runs of alike sub-objects (--compact-arrays) are written one section per sub-object
+  const bool runs = std::any_of(dict.entries.begin(), dict.entries.end(),
+                                [](const entry &e) { return e.count > 1U; });
+  dictionary expanded;
+  if (runs) {
+    expanded = dict;
+    expand_runs(expanded);
+  }
+  const dictionary &d = runs ? expanded : dict;
+  std::string o;
+  o.reserve(d.entries.size() * 120U + 2048U);
+  header_sections(o, d);
+  object_lists(o, d);
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
     while (i < d.entries.size() && d.entries[i].index < index) ++i;
     std::size_t n = 0;
     while (i + n < d.entries.size() && d.entries[i + n].index == index) ++n;
-    const bool single =
-        (info.code == od::object_code::var || info.code == od::object_code::domain ||
-         info.code == od::object_code::deftype) &&
-        n == 1U && d.entries[i].sub == 0U;
-    o += "\n[" + hex(index, 4) + "]\n";
-    if (single) {
-      var_keys(o, d.entries[i], d.is_dcf);
-    } else {
-      o += "ParameterName=" + eds_text(info.name) + "\n";
-      // Written with sub-object sections: VAR, DOMAIN and DEFTYPE objects (which the reader
-      // accepts with a SubNumber, leniently) become RECORD, the code its reader expects for a
-      // container; DEFTYPE with SubNumber was written back unreadable (fuzz F12).
-      const bool single_code = info.code == od::object_code::var ||
-                               info.code == od::object_code::domain ||
-                               info.code == od::object_code::deftype;
-      const auto code = single_code ? od::object_code::record : info.code;
-      o += "ObjectType=0x" + hex(static_cast<std::uint8_t>(code), 1) + "\n";
-      if (info.has_obj_flags) o += "ObjFlags=0x" + hex(info.obj_flags, 1) + "\n";
-      o += "SubNumber=" + std::to_string(n) + "\n";
-      for (std::size_t k = i; k < i + n; ++k) {
-        o += "\n[" + hex(index, 4) + "sub" + hex(d.entries[k].sub, 1) + "]\n";
-        var_keys(o, d.entries[k], d.is_dcf);
-      }
-    }
+    object_sections(o, d, index, info, i, n);
     i += n;
+  }
+  for (const auto &s : d.other_sections) {
+    o += "\n[" + s.name + "]\n";
+    other_keys(o, s.keys);
   }
   return o;
 }

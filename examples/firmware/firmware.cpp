@@ -84,14 +84,16 @@ void compax_cycle() {
 void pacontrol_cycle(master &m) {
   // Move axis 2 to an absolute position (cmd 0A87), then feed received bytes to the decoder.
   std::array<std::uint8_t, serial::max_frame_size> tx{};
-  auto date = fieldcodec::pacontrol::value::of_int(static_cast<std::int32_t>(fw::rx_register[3]));
+  auto date =
+      fieldcodec::pacontrol::value::of_int(static_cast<std::int32_t>(fw::rx_register[3])).value();
   if (auto n = serial::encode_request({0x0A87, 2, date}, tx)) {
     fw::transmit(std::span(tx).first(n.value()));
   }
   for (int i = 0; i < 16; ++i) {
     auto r = m.pa_rx.push(fw::rx_register[40 + i]);
     if (r && r.value() == serial::frame_kind::acknowledgement) {
-      fw::tx_register[1] = static_cast<std::uint8_t>(m.pa_rx.acknowledgement().quit);
+      fw::tx_register[1] =
+          static_cast<std::uint8_t>(m.pa_rx.acknowledgement().command_error_number);
     }
   }
 }

@@ -121,3 +121,19 @@ TEST_CASE("fuzz F13: text values with surrounding spaces are written trimmed") {
   REQUIRE(d2.has_value());
   CHECK(gen::write_eds(*d2) == w1);
 }
+
+// F15 (2026-11-24, found in review; the harness's round-trip property covers it): a quoted CSV
+// name or VISIBLE_STRING default with a line break was written into the EDS export, which then
+// did not read back ("expected 'key=value'"). CSV names and string defaults are one line.
+TEST_CASE("fuzz F15: a CSV value with a line break is refused, not written into an EDS") {
+  gen::diagnostics diag;
+  auto d = read("index,name,data_type,bytes,default\n0x2000,\"a\nb\",UNSIGNED8,,\n"
+                "0x2001,c,VISIBLE_STRING,8,\"x\ny\"\n",
+                true, diag);
+  if (d) { // accepted: then the export must read back
+    gen::diagnostics diag2;
+    CHECK(gen::read_eds(gen::write_eds(*d), "w1.eds", diag2).has_value());
+  } else {
+    CHECK(diag.error_count() == 2);
+  }
+}

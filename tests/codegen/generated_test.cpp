@@ -1,4 +1,5 @@
 // The checked-in generated dictionaries: shapes other modules rely on.
+#include <fieldcodec/dictionaries/compax_objects.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
@@ -26,4 +27,20 @@ TEST_CASE("generated: xenax_canopen identity object") {
   REQUIRE(e != nullptr);
   CHECK(e->type == fieldcodec::od::data_type::unsigned32);
   CHECK(xc::dictionary.object(0x1018).size() >= 2);
+}
+
+// COMPAX manual 000, 2.10.4: OUTPUT_MASK (5FF5h, OCTET_STRING of 2 bytes) is 0 after power on.
+// The CSV writes it as the hex digits 0000: the default is two zero bytes, not the text "0".
+TEST_CASE("generated: an OCTET_STRING default is its bytes, NULs included") {
+  const auto *e = fieldcodec::dictionaries::compax_objects::dictionary.find(0x5FF5, 0);
+  REQUIRE(e != nullptr);
+  CHECK(e->size == 2);
+  CHECK(e->default_text == std::string_view("\0\0", 2));
+}
+
+TEST_CASE("generated: XENAX strings have a capacity (issue 12.1)") {
+  const auto *e = xc::dictionary.find(0x1008, 0);
+  REQUIRE(e != nullptr);
+  CHECK(e->default_text == "Servocontroller XENAX Xvi xxVx");
+  CHECK(e->size >= e->default_text.size()); // its default's length at least (30)
 }

@@ -60,12 +60,12 @@ void same_eds_content(const gen::dictionary &a, const gen::dictionary &b, bool l
     CHECK(x.access == y.access);
     CHECK((x.pdo == od::pdo_mapping::no) == (y.pdo == od::pdo_mapping::no));
     CHECK(x.name == y.name);
-    CHECK(x.def == y.def);
-    CHECK(x.def_nodeid == y.def_nodeid);
-    CHECK(x.def_text == y.def_text);
-    CHECK(x.param == y.param);
-    CHECK(x.param_nodeid == y.param_nodeid);
-    CHECK(x.param_text == y.param_text);
+    CHECK(x.default_value == y.default_value);
+    CHECK(x.default_nodeid == y.default_nodeid);
+    CHECK(x.default_text == y.default_text);
+    CHECK(x.parameter_value == y.parameter_value);
+    CHECK(x.parameter_nodeid == y.parameter_nodeid);
+    CHECK(x.parameter_text == y.parameter_text);
     CHECK(x.denotation == y.denotation);
     CHECK(x.obj_flags == y.obj_flags);
     if (limits) {
@@ -102,9 +102,12 @@ TEST_CASE("eds: every quirk of quirks.eds (CRLF, Latin-1, case, CompactSubObj, $
   auto o = read("codegen/fixtures/quirks.eds");
   CHECK(o.diags == std::vector<std::string>{
                        "codegen/fixtures/quirks.eds:72:2: warning: unknown section "
-                       "[Vendor_Private_Stuff] ignored",
+                       "[Vendor_Private_Stuff] not interpreted (kept in the EDS export)",
                        "codegen/fixtures/quirks.eds:408:10: warning: data type 0x0040 of [3000] is "
-                       "not a basic type (0x0001..0x001B); its value is kept as DOMAIN"});
+                       "not a basic type (0x0001..0x001B); its value is kept as DOMAIN",
+                       "codegen/fixtures/quirks.eds:179: warning: TPDO 1 has a mapping parameter "
+                       "0x1A00 but no communication parameter 0x1800 (CiA 301: a PDO has both; "
+                       "masters that configure the PDO fail on it)"});
   REQUIRE(o.dict);
   const auto &d = *o.dict;
   CHECK(d.entries.size() == 42);
@@ -117,31 +120,31 @@ TEST_CASE("eds: every quirk of quirks.eds (CRLF, Latin-1, case, CompactSubObj, $
   CHECK(err->type == od::data_type::unsigned8);
   CHECK(err->access == od::access::ro);
   // $NODEID in either operand order and any case
-  CHECK(find(d, 0x1014, 0)->def == od::num::u(0x80));
-  CHECK(find(d, 0x1014, 0)->def_nodeid);
+  CHECK(find(d, 0x1014, 0)->default_value == od::num::u(0x80));
+  CHECK(find(d, 0x1014, 0)->default_nodeid);
   CHECK(find(d, 0x1014, 0)->obj_flags == 1U);
-  CHECK(find(d, 0x1400, 1)->def == od::num::u(0x200));
-  CHECK(find(d, 0x1400, 1)->def_nodeid);
-  CHECK(find(d, 0x2006, 0)->def == od::num::u(384));
+  CHECK(find(d, 0x1400, 1)->default_value == od::num::u(0x200));
+  CHECK(find(d, 0x1400, 1)->default_nodeid);
+  CHECK(find(d, 0x2006, 0)->default_value == od::num::u(384));
   // sub-index gaps (SubNumber counts sub-objects), [1018Sub4], hex sub-index [1600subA]
   CHECK(find(d, 0x1018, 4) != nullptr);
   CHECK(find(d, 0x1018, 2) == nullptr);
-  CHECK(find(d, 0x1600, 10)->def == od::num::u(0x60400010));
+  CHECK(find(d, 0x1600, 10)->default_value == od::num::u(0x60400010));
   // CompactSubObj with a partial [1A00Name]
-  CHECK(find(d, 0x1A00, 0)->def == od::num::u(3));
+  CHECK(find(d, 0x1A00, 0)->default_value == od::num::u(3));
   CHECK(find(d, 0x1A00, 1)->name == "First mapped");
   CHECK(find(d, 0x1A00, 2)->name == "TPDO 1 mapping2");
   CHECK(find(d, 0x1A00, 3)->name == "Third mapped");
   // numbers: octal, negative hex, two's complement bit patterns of signed types
-  CHECK(find(d, 0x2002, 0)->def == od::num::i(8));
+  CHECK(find(d, 0x2002, 0)->default_value == od::num::i(8));
   CHECK(find(d, 0x2001, 0)->low == od::num::i(-16));
   CHECK(find(d, 0x2003, 0)->low == od::num::i(-2147483647 - 1));
-  CHECK(find(d, 0x2003, 0)->def == od::num::i(-1));
-  CHECK(find(d, 0x2014, 0)->def == od::num::i(INT64_MIN));
-  CHECK(find(d, 0x201A, 0)->def == od::num::u(UINT64_MAX));
+  CHECK(find(d, 0x2003, 0)->default_value == od::num::i(-1));
+  CHECK(find(d, 0x2014, 0)->default_value == od::num::i(INT64_MIN));
+  CHECK(find(d, 0x201A, 0)->default_value == od::num::u(UINT64_MAX));
   CHECK(find(d, 0x2007, 0)->low == od::num::f(-1000.0));
-  CHECK(find(d, 0x2008, 0)->def_text == "Quirk; not a comment");
-  CHECK(find(d, 0x200C, 0)->def == od::to_number({.ms = 1000, .days = 1}));
+  CHECK(find(d, 0x2008, 0)->default_text == "Quirk; not a comment");
+  CHECK(find(d, 0x200C, 0)->default_value == od::to_number({.ms = 1000, .days = 1}));
   CHECK(find(d, 0x200D, 0)->object == od::object_code::domain);
   CHECK(find(d, 0x0002, 0)->object == od::object_code::deftype);
   // Latin-1 converted to UTF-8
@@ -165,10 +168,10 @@ TEST_CASE("dcf: ParameterValue, Denotation, [DeviceCommissioning], [xxxxValue]")
   const auto &d = *o.dict;
   CHECK(d.is_dcf);
   CHECK(d.node_id == 5);
-  CHECK(find(d, 0x2100, 1)->param == od::num::i(-1000));
-  CHECK(find(d, 0x2100, 2)->param == od::num::i(1000));
-  CHECK(find(d, 0x2100, 2)->param_nodeid);
-  CHECK(find(d, 0x2101, 0)->param_text == "X axis, left");
+  CHECK(find(d, 0x2100, 1)->parameter_value == od::num::i(-1000));
+  CHECK(find(d, 0x2100, 2)->parameter_value == od::num::i(1000));
+  CHECK(find(d, 0x2100, 2)->parameter_nodeid);
+  CHECK(find(d, 0x2101, 0)->parameter_text == "X axis, left");
   CHECK(find(d, 0x2101, 0)->denotation == "Left X axis \xE2\x80\x94 5");
 }
 
@@ -236,8 +239,8 @@ TEST_CASE("eds/csv: malformed files get exact diagnostics") {
        true,
        {m + "missing_sections.eds:1:1: warning: missing section [FileInfo]",
         m + "missing_sections.eds:1:1: warning: missing section [DeviceInfo]",
-        m + "missing_sections.eds:4:3: warning: object 0x1001 listed in [MandatoryObjects] has no "
-            "section [1001]"}},
+        m + "missing_sections.eds:4:3: warning: object '0x1001' listed in [MandatoryObjects] has "
+            "no section [1001]"}},
       {"no_key_value.eds",
        false,
        {m + "no_key_value.eds:19:1: error: expected 'key=value', got 'this line has no equals "

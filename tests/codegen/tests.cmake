@@ -31,7 +31,12 @@ if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
       -P ${PROJECT_SOURCE_DIR}/tests/codegen/corpus.cmake)
 endif()
 
-# fieldcodec_generate_dictionary() in a user project (fieldcodec added as a subproject).
+# fieldcodec_generate_dictionary() in a user project (fieldcodec added as a subproject). The
+# project is configured afresh: a cache left by another compiler is reset by CMake, which drops
+# the -D options and fails the configuration.
+add_test(NAME codegen_cmake_function_clean
+  COMMAND ${CMAKE_COMMAND} -E rm -rf ${CMAKE_CURRENT_BINARY_DIR}/codegen_cmake_function)
+set_tests_properties(codegen_cmake_function_clean PROPERTIES FIXTURES_SETUP codegen_cmake_function)
 add_test(NAME codegen_cmake_function
   COMMAND ${CMAKE_CTEST_COMMAND} --build-and-test
     ${PROJECT_SOURCE_DIR}/tests/codegen/cmake_function
@@ -40,6 +45,7 @@ add_test(NAME codegen_cmake_function
     --build-options -DFIELDCODEC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
       -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
     --test-command user)
+set_tests_properties(codegen_cmake_function PROPERTIES FIXTURES_REQUIRED codegen_cmake_function)
 
 # The DPQ EDS export (dictionaries/export/) is a clean CiA 306 file: read back with --strict.
 add_test(NAME codegen_export_strict

@@ -93,10 +93,10 @@ fc::result<pac::value> text_value(const fc::od::command &c, command_value type,
                                   std::string_view text) {
   auto d = fc::parse_decimal(text);
   if (!d) return d.error();
-  if (type == command_value::floating) return pac::value::of_real(d.value());
+  if (type == command_value::real) return pac::value::of_real(d.value());
   if (d.value().places != 0) return errc::type_mismatch;
   (void)c;
-  return pac::value::of_int(static_cast<std::int32_t>(d.value().mantissa));
+  return pac::value::of_int(d.value().mantissa);
 }
 
 } // namespace
@@ -137,12 +137,11 @@ TEST_CASE("pacontrol command examples of 5.2 (Profibus and RS232 side by side)")
     const pac::profibus::cmd_reply reply{e.pb_ack, false, 1, true, false, true, 0};
     auto got = pac::reply_value(c, reply);
     REQUIRE(got);
-    auto want = text_value(c,
-                           c.reply_type == command_value::floating ? command_value::floating
-                                                                   : command_value::integer,
-                           e.rs_ack);
+    auto want = text_value(
+        c, c.reply_type == command_value::real ? command_value::real : command_value::integer,
+        e.rs_ack);
     REQUIRE(want);
-    if (c.reply_type == command_value::floating) {
+    if (c.reply_type == command_value::real) {
       CHECK(got->as_float() == want->as_float());
       if (e.printed_pb != 0) {
         CHECK(pac::profibus::date_from_float(want->as_float()).value() != e.printed_pb);
@@ -166,7 +165,7 @@ TEST_CASE("pacontrol command examples: 1915 / 1920 print IEEE acknowledgements f
   // keeps integer (errata "Overview against description"), so the bits read as an integer.
   const pac::profibus::cmd_reply r{0x41200000, false, 1, true, false, true, 0};
   CHECK(pac::reply_value(cmds::cmd_get_axis_following_error, r)->as_int().value() == 0x41200000);
-  CHECK(pac::reply_value(cmds::cmd_get_temperature, r)->type == pac::data_type::integer);
+  CHECK(pac::reply_value(cmds::cmd_get_temperature, r)->type == fc::od::command_value::integer);
 }
 
 #endif

@@ -36,10 +36,9 @@ constexpr auto start_online = make(0x0603, -1, -1, command_value::none, command_
 constexpr auto get_input = make(0x1900, 1, 1024, command_value::none, command_value::integer);
 constexpr auto put_int_reg = make(0x0906, 1, 1024, command_value::integer, command_value::integer);
 constexpr auto get_int_reg = make(0x1906, 1, 1024, command_value::none, command_value::integer);
-constexpr auto put_float_reg =
-    make(0x0907, 1, 1024, command_value::floating, command_value::floating);
-constexpr auto get_float_reg = make(0x1907, 1, 1024, command_value::none, command_value::floating);
-constexpr auto pos_absolute = make(0x0A87, 1, 16, command_value::floating, command_value::floating);
+constexpr auto put_float_reg = make(0x0907, 1, 1024, command_value::real, command_value::real);
+constexpr auto get_float_reg = make(0x1907, 1, 1024, command_value::none, command_value::real);
+constexpr auto pos_absolute = make(0x0A87, 1, 16, command_value::real, command_value::real);
 
 constexpr pactest::bytes encode(const fc::result<pac::serial::request> &r) {
   pactest::bytes b;
@@ -108,13 +107,13 @@ TEST_CASE("pacontrol command: replies checked against the table") {
   REQUIRE(v);
   CHECK(v->as_float() == 640.0F);
   CHECK(pac::reply_value(get_int_reg, r1).error() == errc::type_mismatch);
-  const acknowledgement online{0, true, 31, 0, pac::value::of_int(0)};
+  const acknowledgement online{0, true, 31, 0, pac::value::of_int(0).value()};
   CHECK(pac::reply_value(start_online, online));
 }
 
 TEST_CASE("pacontrol command: Profibus dates and handshake") {
   pac::profibus::cmd_handshake hs;
-  auto req = pac::start_command(hs, put_int_reg, 3, pac::value::of_int(333));
+  auto req = pac::start_command(hs, put_int_reg, 3, pac::value::of_int(333).value());
   REQUIRE(req);
   // 4.2.4: write N3 = 333 → 00 00 01 4D 00 03 89 06.
   auto bytes = pac::profibus::encode_cmd_request(req.value());
@@ -123,14 +122,14 @@ TEST_CASE("pacontrol command: Profibus dates and handshake") {
   req = pac::start_command(hs, pos_absolute, 2, pac::value::of_float(200.0F).value());
   REQUIRE(req);
   CHECK(req->date == 0x43480000U); // 200.0 (0A87, l. 3445)
-  CHECK(pac::start_command(hs, pos_absolute, 2, pac::value::of_int(200)).error() ==
+  CHECK(pac::start_command(hs, pos_absolute, 2, pac::value::of_int(200).value()).error() ==
         errc::type_mismatch);
   CHECK(hs.update({0x449CE666U, false, 31, false, false, true, 0}) ==
         pac::profibus::cmd_progress::done);
   req = pac::start_command(hs, get_float_reg, 1);
   REQUIRE(req);
   CHECK(req->date == 0);
-  CHECK(pac::start_command(hs, put_int_reg, 1, pac::value::of_int(5)).error() ==
+  CHECK(pac::start_command(hs, put_int_reg, 1, pac::value::of_int(5).value()).error() ==
         errc::bad_state); // the previous toggle not seen yet
   const pac::profibus::cmd_reply r1{0x44200000U, false, 1, true, false, true, 0};
   CHECK(hs.update(r1) == pac::profibus::cmd_progress::done);
@@ -142,7 +141,7 @@ TEST_CASE("pacontrol command: Profibus dates and handshake") {
       12345678);
   CHECK(pac::reply_value(get_float_reg, {0x7F800000U, false, 1, true, false, true, 0}).error() ==
         errc::not_representable);
-  CHECK(pac::start_command(hs, put_int_reg, 0, pac::value::of_int(1)).error() ==
+  CHECK(pac::start_command(hs, put_int_reg, 0, pac::value::of_int(1).value()).error() ==
         errc::out_of_range);
   CHECK(pac::start_command(hs, put_int_reg).error() == errc::type_mismatch);
 }
@@ -151,8 +150,8 @@ TEST_CASE("pacontrol codes: tables are sorted, unique and described") {
   for (std::size_t i = 1; i < pac::command_errors.size(); ++i) {
     CHECK(pac::command_errors[i - 1].code < pac::command_errors[i].code);
   }
-  for (std::size_t i = 1; i < pac::status_codes.size(); ++i) {
-    CHECK(pac::status_codes[i - 1].code < pac::status_codes[i].code);
+  for (std::size_t i = 1; i < pac::operating_status_codes.size(); ++i) {
+    CHECK(pac::operating_status_codes[i - 1].code < pac::operating_status_codes[i].code);
   }
   for (const auto &e : pac::command_errors) CHECK(!e.text.empty());
   // 6.5 corrections (errata "Other examples and tables"): 30 = 1E, 37 = 25, 46 = 2E, 47 = 2F.
@@ -165,22 +164,25 @@ TEST_CASE("pacontrol codes: tables are sorted, unique and described") {
   CHECK(pac::describe_command_error(60).error() == errc::unknown_object);
   CHECK(pac::describe_command_error(0x1FFF).error() == errc::unknown_object);
   // Status: decimal codes (190B's "hex" label is wrong, errata "Protocol text").
-  CHECK(pac::describe_status(31).value() == "ONLINE");
-  CHECK(pac::describe_status(pac::operating_status::online_stopped).value() == "ONLINE stopped");
-  CHECK(pac::describe_status(0x1F).value() == "ONLINE");
-  CHECK(pac::describe_status(16).value() == "AUTOMATIC, start-after-stop program running");
-  CHECK(pac::describe_status(4).error() == errc::unknown_object);
+  CHECK(pac::describe_operating_status(31).value() == "ONLINE");
+  CHECK(pac::describe_operating_status(pac::operating_status::online_stopped).value() ==
+        "ONLINE stopped");
+  CHECK(pac::describe_operating_status(0x1F).value() == "ONLINE");
+  CHECK(pac::describe_operating_status(16).value() ==
+        "AUTOMATIC, start-after-stop program running");
+  CHECK(pac::describe_operating_status(4).error() == errc::unknown_object);
   // PA-CONTROL error numbers.
-  CHECK(pac::classify_error(0) == pac::error_class::none);
-  CHECK(pac::classify_error(99) == pac::error_class::cpu);
-  CHECK(pac::classify_error(100) == pac::error_class::system);
-  CHECK(pac::classify_error(499) == pac::error_class::system);
-  CHECK(pac::classify_error(500) == pac::error_class::operation);
-  CHECK(pac::classify_error(999) == pac::error_class::operation);
-  CHECK(pac::classify_error(1000) == pac::error_class::out_of_list);
-  CHECK(pac::describe_error(529).value() == "positive limit switch reached or cable broken");
-  CHECK(pac::describe_error(530).value() == "fault in AUTOMATIC or ONLINE mode");
-  CHECK(pac::describe_error(1000).error() == errc::unknown_object);
+  CHECK(pac::classify_controller_error(0) == pac::controller_error_class::none);
+  CHECK(pac::classify_controller_error(99) == pac::controller_error_class::cpu);
+  CHECK(pac::classify_controller_error(100) == pac::controller_error_class::system);
+  CHECK(pac::classify_controller_error(499) == pac::controller_error_class::system);
+  CHECK(pac::classify_controller_error(500) == pac::controller_error_class::operation);
+  CHECK(pac::classify_controller_error(999) == pac::controller_error_class::operation);
+  CHECK(pac::classify_controller_error(1000) == pac::controller_error_class::out_of_list);
+  CHECK(pac::describe_controller_error(529).value() ==
+        "positive limit switch reached or cable broken");
+  CHECK(pac::describe_controller_error(530).value() == "fault in AUTOMATIC or ONLINE mode");
+  CHECK(pac::describe_controller_error(1000).error() == errc::unknown_object);
   // The QUIT a device-side receiver answers for decoder errors.
   CHECK(pac::command_error_for(errc::bad_checksum) == 16);
   CHECK(pac::command_error_for(errc::truncated) == 17);

@@ -32,15 +32,15 @@ struct device {
   static constexpr std::array<float, 4> path{1255.0F, 1516.95F, 2634.75F, 5552.0F};
 
   serial::acknowledgement answer(const serial::request &r) {
-    if (r.command == cmds::cmd_start_online.code) {
+    if (r.code == cmds::cmd_start_online.code) {
       status = pac::operating_status::online;
-      return {0, true, status, 0, pac::value::of_int(0)};
+      return {0, true, status, 0, pac::value::of_int(0).value()};
     }
-    if (r.command == cmds::cmd_pos_axis_absolut.code) {
+    if (r.code == cmds::cmd_pos_axis_absolut.code) {
       step = 0;
       return {0, false, status, 0, pac::value::of_float(path[0], pac::float_style::device).value()};
     }
-    return {pac::command_error::unknown_command, true, status, 0, pac::value::of_int(0)};
+    return {pac::command_error::unknown_command, true, status, 0, pac::value::of_int(0).value()};
   }
   serial::acknowledgement poll() {
     if (step < 3) ++step;
@@ -55,7 +55,7 @@ struct device {
       auto r = rx.push(b);
       serial::acknowledgement a{};
       if (!r) {
-        a = {pac::command_error_for(r.error()), true, status, 0, pac::value::of_int(0)};
+        a = {pac::command_error_for(r.error()), true, status, 0, pac::value::of_int(0).value()};
         if (r.error() != fc::errc::bad_syntax) append(out, a); // noise is ignored
         continue;
       }
@@ -100,8 +100,8 @@ TEST_CASE("pacontrol conversation over RS232 (3.4.3)") {
   // Start ONLINE.
   auto acks = master_receive(rx, dev.receive(bytes_of(pac::make_request(cmds::cmd_start_online))));
   REQUIRE(acks.size() == 1);
-  CHECK(acks[0].status == 31);
-  CHECK(pac::describe_status(acks[0].status).value() == "ONLINE");
+  CHECK(acks[0].operating_status == 31);
+  CHECK(pac::describe_operating_status(acks[0].operating_status).value() == "ONLINE");
 
   // Move axis 2 to 5552.0, with noise before the request.
   auto line = std::vector<std::uint8_t>{0x7E, 0x00, 0x55};
@@ -129,8 +129,9 @@ TEST_CASE("pacontrol conversation over RS232 (3.4.3)") {
   req[req.size() - 2] = '9';
   acks = master_receive(rx, dev.receive(req));
   REQUIRE(acks.size() == 1);
-  CHECK(acks[0].quit == 16);
-  CHECK(pac::describe_command_error(acks[0].quit).value() == "RS232 check sum wrong");
+  CHECK(acks[0].command_error_number == 16);
+  CHECK(pac::describe_command_error(acks[0].command_error_number).value() ==
+        "RS232 check sum wrong");
 }
 
 TEST_CASE("pacontrol conversation over Profibus CMD (2.4)") {

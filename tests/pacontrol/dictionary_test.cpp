@@ -60,7 +60,7 @@ TEST_CASE("pacontrol command table: every command builds with its own type only"
   std::size_t built = 0;
   for (const auto &c : cmds::table) {
     INFO("command ", c.name);
-    const auto par = static_cast<std::uint16_t>(c.parameter_min.to_int64().value_or(0));
+    const auto par = c.parameter_min.to_int64().value_or(0);
     std::array<std::uint8_t, pac::serial::max_frame_size> buf{};
     fc::result<pac::serial::request> r = errc::truncated;
     switch (c.date_type) {
@@ -70,11 +70,11 @@ TEST_CASE("pacontrol command table: every command builds with its own type only"
       CHECK(pac::make_request(c, par, 1.0F).error() == errc::type_mismatch);
       break;
     case command_value::integer:
-      r = pac::make_request(c, par, -7);
+      r = pac::make_request(c, par, c.date_max.to_int64().value_or(-7));
       CHECK(pac::make_request(c, par, 1.5F).error() == errc::type_mismatch);
       CHECK(pac::make_request(c, par).error() == errc::type_mismatch);
       break;
-    case command_value::floating:
+    case command_value::real:
       r = pac::make_request(c, par, -7.25F);
       CHECK(pac::make_request(c, par, 7).error() == errc::type_mismatch);
       CHECK(pac::make_request(c, par).error() == errc::type_mismatch);
@@ -86,9 +86,9 @@ TEST_CASE("pacontrol command table: every command builds with its own type only"
     auto d = pac::serial::decode_frame(std::span<const std::uint8_t>(buf.data(), n.value()));
     REQUIRE(d);
     CHECK(d.value().req == r.value());
-    CHECK(d.value().req.date.type == pac::request_type(c));
+    CHECK(d.value().req.date.type == pac::request_date_type(c));
     if (auto hi = c.parameter_max.to_int64(); hi && hi.value() < 65535) {
-      CHECK(pac::make_request(c, static_cast<std::uint16_t>(hi.value() + 1)).error() ==
+      CHECK(pac::make_request(c, hi.value() + 1).error() ==
             (c.date_type == command_value::none ? errc::out_of_range : errc::type_mismatch));
     }
     ++built;

@@ -26,7 +26,7 @@ namespace {
 // What the encoder writes, the decoder reads back to the same acknowledgement — or the encoder
 // refuses it.
 void check_ack_round_trip(fc::decimal date) {
-  const serial::acknowledgement ack{0, true, 31, 0, {pac::data_type::real, date}};
+  const serial::acknowledgement ack{0, true, 31, 0, {fc::od::command_value::real, date}};
   std::array<std::uint8_t, serial::max_frame_size> out{};
   auto n = serial::encode_acknowledgement(ack, out);
   if (!n) return; // refusing is a valid fix

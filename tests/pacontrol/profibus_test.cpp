@@ -73,7 +73,7 @@ TEST_CASE("pacontrol CMD: Interbus example 4.2.4 decodes") {
   auto printed = pb::decode_cmd_reply(hex("44 20 20 00 00 01 02 00").span());
   REQUIRE(printed);
   CHECK_FALSE(printed->end_of_processing);
-  CHECK(printed->error_number == 0x0200);
+  CHECK(printed->command_error_number == 0x0200);
   CHECK(pb::date_as_float(printed->date).value() == 640.5F);
 }
 
@@ -87,13 +87,13 @@ TEST_CASE("pacontrol CMD: fields at their limits and bad input") {
   CHECK(pb::decode_cmd_reply(hex("80 00 00 00 80 FF FF FF").span()).value() == full);
   CHECK(pb::encode_cmd_reply({0, false, 0, false, false, false, 0x2000}).error() == errc::overflow);
   // Unused bits 14-8 of word 2 are ignored.
-  CHECK(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->status == 0x1F);
-  CHECK_FALSE(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->pac_error);
+  CHECK(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->operating_status == 0x1F);
+  CHECK_FALSE(pb::decode_cmd_reply(hex("00 00 00 00 7F 1F 00 00").span())->controller_error);
   // Command error 19 (unknown command) with RF 1 and KF 1: word 3 = C0 13.
   auto err = pb::decode_cmd_reply(hex("00 00 00 00 00 01 C0 13").span());
   REQUIRE(err);
   CHECK(err->command_error);
-  CHECK(err->error_number == 19);
+  CHECK(err->command_error_number == 19);
   CHECK(pb::decode_cmd_reply(hex("00 00 00 00 00 01 C0").span()).error() == errc::truncated);
   CHECK(pb::decode_cmd_request(hex("").span()).error() == errc::truncated);
   CHECK(pb::date_from_float(std::numeric_limits<float>::quiet_NaN()).error() ==
@@ -101,7 +101,15 @@ TEST_CASE("pacontrol CMD: fields at their limits and bad input") {
   CHECK(pb::date_from_float(-std::numeric_limits<float>::infinity()).error() ==
         errc::not_representable);
   CHECK(pb::date_as_float(0x7FC00000U).error() == errc::not_representable);
-  CHECK(pb::date_from_int(-1) == 0xFFFFFFFFU);
+  CHECK(pb::date_from_int(-1).value() == 0xFFFFFFFFU);
+  CHECK(pb::date_from_int(std::int64_t{1} << 31).error() == errc::overflow);
+  CHECK(pb::date_from_int(-2147483648LL).value() == 0x80000000U);
+  CHECK(pb::date_from_float(640.0).value() == 0x44200000U); // a double: its nearest float
+  CHECK(pb::date_from_float(1.0e39).error() == errc::not_representable);
+  CHECK(pb::raw_date(0xFFFFFFFFU).value() == 0xFFFFFFFFU);
+  CHECK(pb::raw_date(-1).value() == 0xFFFFFFFFU);
+  CHECK(pb::raw_date(std::int64_t{1} << 32).error() == errc::overflow);
+  CHECK(pb::raw_date(-(std::int64_t{1} << 31) - 1).error() == errc::overflow);
   CHECK(pb::date_as_int(0x80000000U) == std::numeric_limits<std::int32_t>::min());
 }
 
@@ -139,6 +147,12 @@ TEST_CASE("pacontrol CMD: handshake (acknowledgement mechanism 2.4)") {
   const pb::cmd_reply unknown{0, false, 31, false, true, false, 19};
   CHECK(hs.update(unknown) == pb::cmd_progress::failed);
   CHECK(hs.start(0x8000, 0, 0).error() == errc::overflow);
+  // Any integer types, checked, never wrapped; a refused start does not toggle.
+  CHECK(hs.start(-1, 0, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, 65536, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, -1, 0).error() == errc::overflow);
+  CHECK(hs.start(0x1906, 2, std::int64_t{1} << 32).error() == errc::overflow);
+  CHECK(hs.stage(0x1906U, std::uint8_t{2}, -1).value().date == 0xFFFFFFFFU);
   CHECK(hs.send_flag() == false);
 }
 
@@ -255,9 +269,9 @@ TEST_CASE("pacontrol axis status, active-low limit switches") {
   REQUIRE(lim);
   CHECK(lim->positive_limit_actuated());
   CHECK_FALSE(lim->negative_limit_actuated());
-  CHECK(lim->has(as::axis_error | as::cmd_error | as::fault));
-  CHECK(lim->cmd_error == 43);
-  CHECK(lim->axis_error == 529);
+  CHECK(lim->has(as::axis_error | as::command_error | as::fault));
+  CHECK(lim->command_error_number == 43);
+  CHECK(lim->axis_error_number == 529);
   CHECK(lim->position == 5552.0F);
   CHECK(same(pb::encode_axis_status(lim.value(), position_format::milli_integer).value(),
              hex("00 00 C3 41 00 2B 02 11 00 54 B7 80")));

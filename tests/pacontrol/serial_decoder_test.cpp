@@ -93,7 +93,7 @@ TEST_CASE("pacontrol serial decoder: field errors are precise") {
   // An integer text in a real date is fine (3.4.2 frame 9 sends "0" with TYP 1).
   auto d = serial::decode_frame(frame("0907;1;1;-12", "0").span());
   REQUIRE(d);
-  CHECK(d.value().req.date.type == fc::pacontrol::data_type::real);
+  CHECK(d.value().req.date.type == fc::od::command_value::real);
   CHECK(d.value().req.date.as_float() == -12.0F);
   CHECK(d.value().req.date.as_int().error() == errc::type_mismatch);
 }
@@ -169,7 +169,7 @@ TEST_CASE("pacontrol serial decoder: streams, cuts and noise") {
   auto ev = feed(d, s);
   REQUIRE(ev.size() == 3);
   CHECK(ev[0].kind == frame_kind::request);
-  CHECK(d.request().command == 0x1900);
+  CHECK(d.request().code == 0x1900);
   CHECK(ev[1].kind == frame_kind::acknowledgement);
   CHECK(ev[2].kind == frame_kind::poll);
   CHECK(d.acknowledgement().date.as_int().value() == 1);

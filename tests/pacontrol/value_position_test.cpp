@@ -61,16 +61,18 @@ static_assert(pac::float_to_decimal(-inf_f, float_style::master).error() ==
               errc::not_representable);
 
 // Typed values.
-static_assert(pac::value::of_int(-5).as_int().value() == -5);
+static_assert(pac::value::of_int(-5).value().as_int().value() == -5);
 static_assert(pac::value::of_float(5552.0F).value().as_int().error() == errc::type_mismatch);
 static_assert(pac::value::of_float(5552.0F).value().as_float() == 5552.0F);
 static_assert(pac::value::of_float(nan_f).error() == errc::not_representable);
 static_assert(pac::value::of_real(decimal{1, 19}).error() == errc::invalid_argument);
-static_assert(pac::validate(pac::value{pac::data_type::integer, decimal{1, 1}}).error() ==
+static_assert(pac::validate(pac::value{fc::od::command_value::integer, decimal{1, 1}}).error() ==
               errc::type_mismatch);
-static_assert(pac::validate(pac::value{pac::data_type::integer, decimal{-2147483649, 0}}).error() ==
-              errc::overflow);
-static_assert(pac::validate(pac::value{static_cast<pac::data_type>(2), decimal{}}).error() ==
+static_assert(pac::validate(pac::value{fc::od::command_value::integer, decimal{-2147483649, 0}})
+                  .error() == errc::overflow);
+static_assert(pac::validate(pac::value{fc::od::command_value::none, decimal{}}).error() ==
+              errc::invalid_argument);
+static_assert(pac::validate(pac::value{static_cast<fc::od::command_value>(3), decimal{}}).error() ==
               errc::invalid_argument);
 
 // --- IEEE-754 examples that the manual prints correctly.
@@ -175,6 +177,23 @@ TEST_CASE("pacontrol positions: ×1000 integers both ways") {
   CHECK(pac::encode_position(12.345F, position_format::milli_integer).value() == be32(12345U));
   CHECK(pac::encode_position(-12.345F, position_format::milli_integer).value() ==
         be32(static_cast<std::uint32_t>(-12345)));
+  // A double is not read through a float (the float nearest 1234567.891 is 1234567.875,
+  // shortest text 1234567.9); an integer is whole units.
+  CHECK(pac::encode_position(1234567.891, position_format::milli_integer).value() ==
+        be32(1234567891U));
+  CHECK(pac::encode_position(1234567.891F, position_format::milli_integer).value() ==
+        be32(1234567900U));
+  CHECK(pac::encode_position(640.0, position_format::ieee_float).value() ==
+        pac::encode_position(640.0F, position_format::ieee_float).value());
+  CHECK(pac::encode_position(1.0e39, position_format::ieee_float).error() ==
+        errc::not_representable);
+  CHECK(pac::encode_position(5, position_format::milli_integer).value() == be32(5000U));
+  CHECK(pac::encode_position(std::uint8_t{5}, position_format::ieee_float).value() ==
+        pac::encode_position(5.0F, position_format::ieee_float).value());
+  CHECK(pac::encode_position(2147484, position_format::milli_integer).error() == errc::overflow);
+  CHECK(pac::encode_position(std::numeric_limits<std::uint64_t>::max(),
+                             position_format::milli_integer)
+            .error() == errc::overflow);
   CHECK(pac::encode_position(decimal{25045, 3}, position_format::milli_integer).value() ==
         be32(25045U));
   CHECK(pac::decode_position(be32(12345U), position_format::milli_integer).value() == 12.345F);

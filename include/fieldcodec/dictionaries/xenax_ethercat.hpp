@@ -19,9 +19,9 @@ inline constexpr const char *source_file = "xenax_ethercat.eds";
 inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Device Type", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(4325778U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Error Register", .low = od::num::u(0U), .high = od::num::u(255U), .default_value = od::num::u(0U)},
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Device Name", .default_text = "Servocontroller XENAX Xvi xxVx"},
-    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Hardware Version", .default_text = "BUS Module HW Vxxx.xxx"},
-    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Manufacturer Software Version", .default_text = "BUS Protocol SW Vxxx.xxx"},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 30, .name = "Manufacturer Device Name", .default_text = "Servocontroller XENAX Xvi xxVx"},
+    {.index = 0x1009, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 22, .name = "Manufacturer Hardware Version", .default_text = "BUS Module HW Vxxx.xxx"},
+    {.index = 0x100A, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 24, .name = "Manufacturer Software Version", .default_text = "BUS Protocol SW Vxxx.xxx"},
     {.index = 0x1018, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .name = "Nbr of Entries", .low = od::num::u(1U), .high = od::num::u(4U), .default_value = od::num::u(4U)},
     {.index = 0x1018, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Vendor Id", .low = od::num::u(0U), .high = od::num::u(4294967295U)},
     {.index = 0x1018, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Product Code", .low = od::num::u(0U), .high = od::num::u(4294967295U)},
@@ -336,7 +336,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .name = "FTPES Forceteq Pro Elastic Spring Constant", .low = od::num::i(1), .high = od::num::i(10000000), .default_value = od::num::i(1000)},
     {.index = 0x5011, .type = od::data_type::visible_string, .name = "Signateq Sensor Model Type (SQSMT)"},
     {.index = 0x5012, .type = od::data_type::visible_string, .name = "Signateq Sensor Serial Number (SQSSN)"},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Tell Error String (TES)", .default_text = "no error"},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 8, .name = "Tell Error String (TES)", .default_text = "no error"},
     {.index = 0x5021, .type = od::data_type::visible_string, .name = "Servo identification string (SID)"},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .name = "Error Code", .low = od::num::u(0U), .high = od::num::u(65535U), .default_value = od::num::u(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .name = "Controlword", .low = od::num::u(0U), .high = od::num::u(65535U), .default_value = od::num::u(0U)},
@@ -374,7 +374,7 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x60FE, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned32, .name = "Output Mask (not supported)", .low = od::num::u(0U), .high = od::num::u(4294967295U), .default_value = od::num::u(0U)},
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .name = "Target Velocity", .low = od::num::i(-9000000), .high = od::num::i(9000000), .default_value = od::num::i(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Supported Modes of Operation", .low = od::num::u(65697U), .high = od::num::u(65697U), .default_value = od::num::u(65697U)},
-    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .name = "Product Website Address", .default_text = "http://www.jennyscience.ch"},
+    {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .name = "Product Website Address", .default_text = "http://www.jennyscience.ch"},
 }};
 
 inline constexpr od::dictionary dictionary{entries};

@@ -1,6 +1,13 @@
 // fieldcodec — CiA 301 data types (0x0001..0x001B), object codes, access types, PDO mapping.
+//
+// One table per idea: `data_types` (code, CiA name, C++ enumerator name, size, class),
+// `access_types` (EDS name, enumerator name, readable, writable), `object_codes` and
+// `pdo_mappings`. The predicates below, the generator's readers and writers and the emitted
+// headers all read these tables; nothing else spells a type or access name.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -36,121 +43,132 @@ enum class data_type : std::uint16_t {
   unsigned64 = 0x001B,
 };
 
+/// What a data type's value is.
+enum class type_class : std::uint8_t {
+  boolean,          ///< BOOLEAN (one byte on the wire)
+  signed_integer,   ///< INTEGER8..INTEGER64, two's complement
+  unsigned_integer, ///< UNSIGNED8..UNSIGNED64
+  real,             ///< REAL32, REAL64 (IEEE 754)
+  byte_string,      ///< VISIBLE_STRING, OCTET_STRING, UNICODE_STRING, DOMAIN: size per entry
+  time,             ///< TIME_OF_DAY, TIME_DIFFERENCE (28-bit ms, 4 reserved bits, 16-bit days)
+  unassigned,       ///< a value of the enumeration that is no type (0x000E, 0x0017, > 0x001B)
+};
+
+/// One row of the data type table.
+struct data_type_info {
+  data_type type;
+  std::string_view name;       ///< CiA 301 / CiA 306 name, upper case ("UNSIGNED16")
+  std::string_view identifier; ///< the enumerator's C++ name ("unsigned16")
+  std::uint8_t size;           ///< bytes on the wire; 0 for byte strings (size per entry)
+  type_class kind;
+};
+
+/// The 25 basic data types, in code order.
+inline constexpr std::array<data_type_info, 25> data_types{{
+    {data_type::boolean, "BOOLEAN", "boolean", 1, type_class::boolean},
+    {data_type::integer8, "INTEGER8", "integer8", 1, type_class::signed_integer},
+    {data_type::integer16, "INTEGER16", "integer16", 2, type_class::signed_integer},
+    {data_type::integer32, "INTEGER32", "integer32", 4, type_class::signed_integer},
+    {data_type::unsigned8, "UNSIGNED8", "unsigned8", 1, type_class::unsigned_integer},
+    {data_type::unsigned16, "UNSIGNED16", "unsigned16", 2, type_class::unsigned_integer},
+    {data_type::unsigned32, "UNSIGNED32", "unsigned32", 4, type_class::unsigned_integer},
+    {data_type::real32, "REAL32", "real32", 4, type_class::real},
+    {data_type::visible_string, "VISIBLE_STRING", "visible_string", 0, type_class::byte_string},
+    {data_type::octet_string, "OCTET_STRING", "octet_string", 0, type_class::byte_string},
+    {data_type::unicode_string, "UNICODE_STRING", "unicode_string", 0, type_class::byte_string},
+    {data_type::time_of_day, "TIME_OF_DAY", "time_of_day", 6, type_class::time},
+    {data_type::time_difference, "TIME_DIFFERENCE", "time_difference", 6, type_class::time},
+    {data_type::domain, "DOMAIN", "domain", 0, type_class::byte_string},
+    {data_type::integer24, "INTEGER24", "integer24", 3, type_class::signed_integer},
+    {data_type::real64, "REAL64", "real64", 8, type_class::real},
+    {data_type::integer40, "INTEGER40", "integer40", 5, type_class::signed_integer},
+    {data_type::integer48, "INTEGER48", "integer48", 6, type_class::signed_integer},
+    {data_type::integer56, "INTEGER56", "integer56", 7, type_class::signed_integer},
+    {data_type::integer64, "INTEGER64", "integer64", 8, type_class::signed_integer},
+    {data_type::unsigned24, "UNSIGNED24", "unsigned24", 3, type_class::unsigned_integer},
+    {data_type::unsigned40, "UNSIGNED40", "unsigned40", 5, type_class::unsigned_integer},
+    {data_type::unsigned48, "UNSIGNED48", "unsigned48", 6, type_class::unsigned_integer},
+    {data_type::unsigned56, "UNSIGNED56", "unsigned56", 7, type_class::unsigned_integer},
+    {data_type::unsigned64, "UNSIGNED64", "unsigned64", 8, type_class::unsigned_integer},
+}};
+
 /// True for the 25 assigned codes 0x01..0x1B.
 [[nodiscard]] constexpr bool is_data_type(std::uint16_t code) noexcept {
   return code >= 0x01U && code <= 0x1BU && code != 0x0EU && code != 0x17U;
 }
 
+namespace detail {
+/// Row of an assigned code in `data_types` (codes in order, two gaps: 0x0E and 0x17).
+[[nodiscard]] constexpr std::size_t data_type_row(std::uint16_t code) noexcept {
+  return std::size_t{code} - 1U - (code > 0x0EU ? 1U : 0U) - (code > 0x17U ? 1U : 0U);
+}
+/// What info() answers for a value of the enumeration that is no type.
+inline constexpr data_type_info unassigned_type{data_type::domain, "", "", 0,
+                                                type_class::unassigned};
+} // namespace detail
+
+/// The table row of a data type (an empty row of class `unassigned` for a value of the
+/// enumeration that is no type).
+[[nodiscard]] constexpr const data_type_info &info(data_type t) noexcept {
+  const auto code = static_cast<std::uint16_t>(t);
+  return is_data_type(code) ? data_types[detail::data_type_row(code)] : detail::unassigned_type;
+}
+
+/// The row of a code as written in a file; nullptr when the code is not a basic type.
+[[nodiscard]] constexpr const data_type_info *find_data_type(std::uint16_t code) noexcept {
+  return is_data_type(code) ? &data_types[detail::data_type_row(code)] : nullptr;
+}
+
+/// The row of a CiA name ("UNSIGNED16", exact spelling); nullptr when there is none.
+[[nodiscard]] constexpr const data_type_info *find_data_type(std::string_view name) noexcept {
+  for (const auto &row : data_types) {
+    if (row.name == name) return &row;
+  }
+  return nullptr;
+}
+
 /// Two's complement integers INTEGER8..INTEGER64.
 [[nodiscard]] constexpr bool is_signed_integer(data_type t) noexcept {
-  switch (t) {
-  case data_type::integer8:
-  case data_type::integer16:
-  case data_type::integer24:
-  case data_type::integer32:
-  case data_type::integer40:
-  case data_type::integer48:
-  case data_type::integer56:
-  case data_type::integer64: return true;
-  default: return false;
-  }
+  return info(t).kind == type_class::signed_integer;
 }
-
 /// UNSIGNED8..UNSIGNED64.
 [[nodiscard]] constexpr bool is_unsigned_integer(data_type t) noexcept {
-  switch (t) {
-  case data_type::unsigned8:
-  case data_type::unsigned16:
-  case data_type::unsigned24:
-  case data_type::unsigned32:
-  case data_type::unsigned40:
-  case data_type::unsigned48:
-  case data_type::unsigned56:
-  case data_type::unsigned64: return true;
-  default: return false;
-  }
+  return info(t).kind == type_class::unsigned_integer;
 }
-
 [[nodiscard]] constexpr bool is_integer(data_type t) noexcept {
   return is_signed_integer(t) || is_unsigned_integer(t);
 }
 [[nodiscard]] constexpr bool is_real(data_type t) noexcept {
-  return t == data_type::real32 || t == data_type::real64;
+  return info(t).kind == type_class::real;
 }
 /// VISIBLE_STRING, OCTET_STRING, UNICODE_STRING and DOMAIN: byte strings of variable size.
 [[nodiscard]] constexpr bool is_byte_string(data_type t) noexcept {
-  return t == data_type::visible_string || t == data_type::octet_string ||
-         t == data_type::unicode_string || t == data_type::domain;
+  return info(t).kind == type_class::byte_string;
 }
 /// TIME_OF_DAY and TIME_DIFFERENCE (6 bytes: 28-bit milliseconds, 4 reserved bits, 16-bit days).
 [[nodiscard]] constexpr bool is_time(data_type t) noexcept {
-  return t == data_type::time_of_day || t == data_type::time_difference;
+  return info(t).kind == type_class::time;
 }
 
 /// Size in bytes of a value of fixed size; 0 for the byte-string types (size per entry).
 /// BOOLEAN travels as one byte.
-[[nodiscard]] constexpr std::uint8_t fixed_size(data_type t) noexcept {
-  switch (t) {
-  case data_type::boolean:
-  case data_type::integer8:
-  case data_type::unsigned8: return 1;
-  case data_type::integer16:
-  case data_type::unsigned16: return 2;
-  case data_type::integer24:
-  case data_type::unsigned24: return 3;
-  case data_type::integer32:
-  case data_type::unsigned32:
-  case data_type::real32: return 4;
-  case data_type::integer40:
-  case data_type::unsigned40: return 5;
-  case data_type::integer48:
-  case data_type::unsigned48:
-  case data_type::time_of_day:
-  case data_type::time_difference: return 6;
-  case data_type::integer56:
-  case data_type::unsigned56: return 7;
-  case data_type::integer64:
-  case data_type::unsigned64:
-  case data_type::real64: return 8;
-  case data_type::visible_string:
-  case data_type::octet_string:
-  case data_type::unicode_string:
-  case data_type::domain: return 0;
-  }
-  return 0;
-}
+[[nodiscard]] constexpr std::uint8_t fixed_size(data_type t) noexcept { return info(t).size; }
 
 /// The CiA 301 name, upper case ("UNSIGNED16").
-[[nodiscard]] constexpr std::string_view name(data_type t) noexcept {
-  switch (t) {
-  case data_type::boolean: return "BOOLEAN";
-  case data_type::integer8: return "INTEGER8";
-  case data_type::integer16: return "INTEGER16";
-  case data_type::integer24: return "INTEGER24";
-  case data_type::integer32: return "INTEGER32";
-  case data_type::integer40: return "INTEGER40";
-  case data_type::integer48: return "INTEGER48";
-  case data_type::integer56: return "INTEGER56";
-  case data_type::integer64: return "INTEGER64";
-  case data_type::unsigned8: return "UNSIGNED8";
-  case data_type::unsigned16: return "UNSIGNED16";
-  case data_type::unsigned24: return "UNSIGNED24";
-  case data_type::unsigned32: return "UNSIGNED32";
-  case data_type::unsigned40: return "UNSIGNED40";
-  case data_type::unsigned48: return "UNSIGNED48";
-  case data_type::unsigned56: return "UNSIGNED56";
-  case data_type::unsigned64: return "UNSIGNED64";
-  case data_type::real32: return "REAL32";
-  case data_type::real64: return "REAL64";
-  case data_type::visible_string: return "VISIBLE_STRING";
-  case data_type::octet_string: return "OCTET_STRING";
-  case data_type::unicode_string: return "UNICODE_STRING";
-  case data_type::time_of_day: return "TIME_OF_DAY";
-  case data_type::time_difference: return "TIME_DIFFERENCE";
-  case data_type::domain: return "DOMAIN";
+[[nodiscard]] constexpr std::string_view name(data_type t) noexcept { return info(t).name; }
+
+// The table is in code order and its row function finds every type.
+static_assert([] {
+  for (std::size_t i = 0; i < data_types.size(); ++i) {
+    const auto code = static_cast<std::uint16_t>(data_types[i].type);
+    if (!is_data_type(code) || detail::data_type_row(code) != i) return false;
+    if ((data_types[i].size == 0U) != (data_types[i].kind == type_class::byte_string) ||
+        data_types[i].kind == type_class::unassigned) {
+      return false;
+    }
   }
-  return "";
-}
+  return true;
+}());
 
 /// CiA 306 object codes.
 enum class object_code : std::uint8_t {
@@ -163,44 +181,113 @@ enum class object_code : std::uint8_t {
   record = 0x9,
 };
 
-[[nodiscard]] constexpr std::string_view name(object_code c) noexcept {
-  switch (c) {
-  case object_code::null: return "NULL";
-  case object_code::domain: return "DOMAIN";
-  case object_code::deftype: return "DEFTYPE";
-  case object_code::defstruct: return "DEFSTRUCT";
-  case object_code::var: return "VAR";
-  case object_code::array: return "ARRAY";
-  case object_code::record: return "RECORD";
+/// One row of the object code table.
+struct object_code_info {
+  object_code code;
+  std::string_view name;       ///< CiA 306 name ("VAR")
+  std::string_view identifier; ///< the enumerator's C++ name ("var")
+};
+
+inline constexpr std::array<object_code_info, 7> object_codes{{
+    {object_code::null, "NULL", "null"},
+    {object_code::domain, "DOMAIN", "domain"},
+    {object_code::deftype, "DEFTYPE", "deftype"},
+    {object_code::defstruct, "DEFSTRUCT", "defstruct"},
+    {object_code::var, "VAR", "var"},
+    {object_code::array, "ARRAY", "array"},
+    {object_code::record, "RECORD", "record"},
+}};
+
+namespace detail {
+inline constexpr object_code_info unassigned_object_code{object_code::null, "", ""};
+} // namespace detail
+
+/// The table row of an object code (a row with empty names for a value of the enumeration that
+/// is no code).
+[[nodiscard]] constexpr const object_code_info &info(object_code c) noexcept {
+  for (const auto &row : object_codes) {
+    if (row.code == c) return row;
   }
-  return "";
+  return detail::unassigned_object_code;
 }
+/// The row of a code as written in a file (0x0..0x9); nullptr when it is not assigned.
+[[nodiscard]] constexpr const object_code_info *find_object_code(std::uint32_t code) noexcept {
+  for (const auto &row : object_codes) {
+    if (static_cast<std::uint32_t>(row.code) == code) return &row;
+  }
+  return nullptr;
+}
+/// The row of a CiA 306 name ("VAR", exact spelling); nullptr when there is none.
+[[nodiscard]] constexpr const object_code_info *find_object_code(std::string_view name) noexcept {
+  for (const auto &row : object_codes) {
+    if (row.name == name) return &row;
+  }
+  return nullptr;
+}
+
+[[nodiscard]] constexpr std::string_view name(object_code c) noexcept { return info(c).name; }
 
 /// Access type of a sub-object. rwr: read/write, read on process input (TPDO) side;
 /// rww: read/write, written on process output (RPDO) side; constant: read only, never changes.
 enum class access : std::uint8_t { ro, wo, rw, rwr, rww, constant };
 
-[[nodiscard]] constexpr bool readable(access a) noexcept { return a != access::wo; }
-[[nodiscard]] constexpr bool writable(access a) noexcept {
-  return a == access::wo || a == access::rw || a == access::rwr || a == access::rww;
+/// One row of the access type table.
+struct access_info {
+  access value;
+  std::string_view name;       ///< the EDS spelling, lower case ("const")
+  std::string_view identifier; ///< the enumerator's C++ name ("constant")
+  bool readable;
+  bool writable;
+};
+
+/// In enumerator order.
+inline constexpr std::array<access_info, 6> access_types{{
+    {access::ro, "ro", "ro", true, false},
+    {access::wo, "wo", "wo", false, true},
+    {access::rw, "rw", "rw", true, true},
+    {access::rwr, "rwr", "rwr", true, true},
+    {access::rww, "rww", "rww", true, true},
+    {access::constant, "const", "constant", true, false},
+}};
+
+static_assert([] {
+  for (std::size_t i = 0; i < access_types.size(); ++i) {
+    if (static_cast<std::size_t>(access_types[i].value) != i) return false;
+  }
+  return true;
+}());
+
+namespace detail {
+inline constexpr access_info unassigned_access{access::ro, "", "", true, false};
+} // namespace detail
+
+/// The table row of an access type (a read-only row with empty names for a value of the
+/// enumeration that is none).
+[[nodiscard]] constexpr const access_info &info(access a) noexcept {
+  const auto i = static_cast<std::size_t>(a);
+  return i < access_types.size() ? access_types[i] : detail::unassigned_access;
+}
+/// The row of an EDS spelling ("ro", "wo", "rw", "rwr", "rww", "const"; lower case, exact);
+/// nullptr when there is none.
+[[nodiscard]] constexpr const access_info *find_access(std::string_view name) noexcept {
+  for (const auto &row : access_types) {
+    if (row.name == name) return &row;
+  }
+  return nullptr;
 }
 
+[[nodiscard]] constexpr bool readable(access a) noexcept { return info(a).readable; }
+[[nodiscard]] constexpr bool writable(access a) noexcept { return info(a).writable; }
+
 /// The EDS spelling ("ro", "wo", "rw", "rwr", "rww", "const").
-[[nodiscard]] constexpr std::string_view name(access a) noexcept {
-  switch (a) {
-  case access::ro: return "ro";
-  case access::wo: return "wo";
-  case access::rw: return "rw";
-  case access::rwr: return "rwr";
-  case access::rww: return "rww";
-  case access::constant: return "const";
-  }
-  return "";
-}
+[[nodiscard]] constexpr std::string_view name(access a) noexcept { return info(a).name; }
 
 /// PDO mappability. `rx`: only into receive PDOs (process output data, written by the master);
 /// `tx`: only into transmit PDOs (process input data); `yes`: either direction.
 enum class pdo_mapping : std::uint8_t { no, yes, rx, tx };
+
+/// The names of the CSV `pdo_mapping` column and of the enumerators, in enumerator order.
+inline constexpr std::array<std::string_view, 4> pdo_mapping_names{"no", "yes", "rx", "tx"};
 
 [[nodiscard]] constexpr bool mappable_rx(pdo_mapping p) noexcept {
   return p == pdo_mapping::yes || p == pdo_mapping::rx;
@@ -210,13 +297,19 @@ enum class pdo_mapping : std::uint8_t { no, yes, rx, tx };
 }
 
 [[nodiscard]] constexpr std::string_view name(pdo_mapping p) noexcept {
-  switch (p) {
-  case pdo_mapping::no: return "no";
-  case pdo_mapping::yes: return "yes";
-  case pdo_mapping::rx: return "rx";
-  case pdo_mapping::tx: return "tx";
+  const auto i = static_cast<std::size_t>(p);
+  return i < pdo_mapping_names.size() ? pdo_mapping_names[i] : std::string_view{};
+}
+
+/// The mapping of a name ("no", "yes", "rx", "tx"); false when there is none.
+[[nodiscard]] constexpr bool find_pdo_mapping(std::string_view name, pdo_mapping &out) noexcept {
+  for (std::size_t i = 0; i < pdo_mapping_names.size(); ++i) {
+    if (pdo_mapping_names[i] == name) {
+      out = static_cast<pdo_mapping>(i);
+      return true;
+    }
   }
-  return "";
+  return false;
 }
 
 } // namespace fieldcodec::od

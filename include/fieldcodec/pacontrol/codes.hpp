@@ -1,15 +1,18 @@
 // fieldcodec — PA-CONTROL numbers with short texts: command error numbers (QUIT on RS232,
-// bits 12-0 of CMD word 3 on Profibus; manual 001, 6.5), PA-CONTROL error number classes
-// (ERROR field, command 1909) and operating status codes (STATUS field, CMD word 2 bits 7-0,
-// command 190B; 2.4, 4.2, 6.4). All codes are decimal. The texts are fieldcodec's own.
+// bits 12-0 of CMD word 3 on Profibus; manual 001, 6.5), PA-CONTROL error numbers and their
+// classes ("controller errors": ERROR field, command 1909) and operating status codes (STATUS
+// field, CMD word 2 bits 7-0, command 190B; 2.4, 4.2, 6.4). All codes are decimal. The texts
+// are fieldcodec's own. Every describe_* function takes any integer type.
 #pragma once
 
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <utility>
 
 namespace fieldcodec::pacontrol {
 
@@ -99,8 +102,8 @@ inline constexpr std::array<code_text, 74> command_errors{{
     {262, "AS-i configuration faulty"},
 }};
 
-/// Operating status codes, sorted.
-inline constexpr std::array<code_text, 21> status_codes{{
+/// Operating status codes, sorted. 6.4 lists 14 without a text; it is kept as a known code.
+inline constexpr std::array<code_text, 22> operating_status_codes{{
     {0, "bus interface not initialised"},
     {1, "home position"},
     {2, "manual mode at the front panel"},
@@ -110,6 +113,7 @@ inline constexpr std::array<code_text, 21> status_codes{{
     {11, "AUTOMATIC running"},
     {12, "AUTOMATIC, stop seen"},
     {13, "AUTOMATIC, stop program running"},
+    {14, "AUTOMATIC (listed without a meaning)"},
     {15, "AUTOMATIC stopped"},
     {16, "AUTOMATIC, start-after-stop program running"},
     {17, "AUTOMATIC, fault seen"},
@@ -124,25 +128,27 @@ inline constexpr std::array<code_text, 21> status_codes{{
     {39, "ONLINE stopped after a fault"},
 }};
 
-/// PA-CONTROL error number classes (the full E001 … E999 list is in the operating manual).
-enum class error_class : std::uint8_t {
+/// Classes of PA-CONTROL error numbers (5.2.4.15; the full E001 … E999 list is in the
+/// operating manual).
+enum class controller_error_class : std::uint8_t {
   none,        ///< 0
   cpu,         ///< 1-99: CPU fault, cleared only by power cycling
   system,      ///< 100-499: hardware/system fault, partly cleared in home position
   operation,   ///< 500-999: fault in AUTOMATIC or ONLINE, cleared by returning home
-  out_of_list, ///< above 999
+  out_of_list, ///< negative or above 999: not a PA-CONTROL error number
 };
 
-[[nodiscard]] constexpr error_class classify_error(std::uint16_t e) noexcept {
-  if (e == 0U) return error_class::none;
-  if (e < 100U) return error_class::cpu;
-  if (e < 500U) return error_class::system;
-  if (e < 1000U) return error_class::operation;
-  return error_class::out_of_list;
+template <integer_argument T>
+[[nodiscard]] constexpr controller_error_class classify_controller_error(T e) noexcept {
+  if (!in_closed_range(e, 0, 999)) return controller_error_class::out_of_list;
+  if (in_closed_range(e, 0, 0)) return controller_error_class::none;
+  if (in_closed_range(e, 1, 99)) return controller_error_class::cpu;
+  if (in_closed_range(e, 100, 499)) return controller_error_class::system;
+  return controller_error_class::operation;
 }
 
 /// The PA-CONTROL error numbers this manual names.
-inline constexpr std::array<code_text, 4> known_errors{{
+inline constexpr std::array<code_text, 4> controller_errors{{
     {205, "Profibus rotary switch setting impossible"},
     {525, "axis not referenced"},
     {529, "positive limit switch reached or cable broken"},
@@ -150,39 +156,41 @@ inline constexpr std::array<code_text, 4> known_errors{{
 }};
 
 namespace detail {
-template <std::size_t N>
-constexpr const code_text *find_code(const std::array<code_text, N> &table,
-                                     std::uint16_t code) noexcept {
+template <std::size_t N, integer_argument T>
+constexpr const code_text *find_code(const std::array<code_text, N> &table, T code) noexcept {
   for (const auto &e : table) {
-    if (e.code == code) return &e;
+    if (in_closed_range(code, e.code, e.code)) return &e;
   }
   return nullptr;
 }
 } // namespace detail
 
 /// Text of a command error number. Errors: unknown_object (not defined in the manual).
-[[nodiscard]] constexpr result<std::string_view>
-describe_command_error(std::uint16_t code) noexcept {
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::string_view> describe_command_error(T code) noexcept {
   if (const auto *e = detail::find_code(command_errors, code)) return e->text;
   return errc::unknown_object;
 }
 
 /// Text of an operating status code. Errors: unknown_object.
-[[nodiscard]] constexpr result<std::string_view> describe_status(std::uint16_t code) noexcept {
-  if (const auto *e = detail::find_code(status_codes, code)) return e->text;
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::string_view> describe_operating_status(T code) noexcept {
+  if (const auto *e = detail::find_code(operating_status_codes, code)) return e->text;
   return errc::unknown_object;
 }
 
 /// Text of a PA-CONTROL error number: the number's own text where the manual names it,
-/// otherwise the text of its class. Errors: unknown_object (above 999).
-[[nodiscard]] constexpr result<std::string_view> describe_error(std::uint16_t code) noexcept {
-  if (const auto *e = detail::find_code(known_errors, code)) return e->text;
-  switch (classify_error(code)) {
-  case error_class::none: return std::string_view("no error");
-  case error_class::cpu: return std::string_view("CPU fault (power cycle to clear)");
-  case error_class::system: return std::string_view("system fault");
-  case error_class::operation: return std::string_view("fault in AUTOMATIC or ONLINE mode");
-  case error_class::out_of_list: break;
+/// otherwise the text of its class. Errors: unknown_object (negative or above 999).
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::string_view> describe_controller_error(T code) noexcept {
+  if (const auto *e = detail::find_code(controller_errors, code)) return e->text;
+  switch (classify_controller_error(code)) {
+  case controller_error_class::none: return std::string_view("no error");
+  case controller_error_class::cpu: return std::string_view("CPU fault (power cycle to clear)");
+  case controller_error_class::system: return std::string_view("system fault");
+  case controller_error_class::operation:
+    return std::string_view("fault in AUTOMATIC or ONLINE mode");
+  case controller_error_class::out_of_list: break;
   }
   return errc::unknown_object;
 }

@@ -16,12 +16,14 @@
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/ieee754.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/pacontrol/value.hpp>
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 namespace fieldcodec::pacontrol {
@@ -91,6 +93,34 @@ encode_position(decimal v, position_format format) noexcept {
   auto raw = to_milli(v);
   if (!raw) return raw.error();
   return to_bytes<std::int32_t>(raw.value(), byte_order::big);
+}
+
+/// The 4 bytes of a position given as a double: the float format carries its nearest float,
+/// the ×1000 format rounds the double itself (15 significant digits, as to_milli(double)) —
+/// never through a float first (1234567.891 → 1234567891, not the float's 1234567900).
+/// Errors: not_representable (NaN, ±∞, beyond float range in float format), overflow.
+[[nodiscard]] constexpr result<std::array<std::uint8_t, 4>>
+encode_position(double v, position_format format) noexcept {
+  if (format == position_format::ieee_float) {
+    if (!(v <= static_cast<double>(std::numeric_limits<float>::max()) &&
+          v >= static_cast<double>(std::numeric_limits<float>::lowest()))) {
+      return errc::not_representable; // also NaN
+    }
+    return encode_position(static_cast<float>(v), format);
+  }
+  auto raw = to_milli(v);
+  if (!raw) return raw.error();
+  return to_bytes<std::int32_t>(raw.value(), byte_order::big);
+}
+
+/// The 4 bytes of a whole-unit position of any integer type (5 → 5.0, 5000 in ×1000 format).
+/// Errors: overflow (×1000 outside int32, or beyond int64).
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::array<std::uint8_t, 4>>
+encode_position(T v, position_format format) noexcept {
+  auto i = checked_narrow<std::int64_t>(v);
+  if (!i) return i.error();
+  return encode_position(decimal{i.value(), 0}, format);
 }
 
 /// A position from the first 4 bytes of `in`. In integer format the result is the float

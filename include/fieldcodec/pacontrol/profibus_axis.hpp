@@ -65,8 +65,8 @@ inline constexpr std::uint32_t positive_limit_n = 1U << 10U; ///< 0 = limit swit
 inline constexpr std::uint32_t stopped_by_g123 = 1U << 11U;
 inline constexpr std::uint32_t displaced_while_off = 1U << 12U;
 inline constexpr std::uint32_t group_displaced_while_off = 1U << 13U;
-inline constexpr std::uint32_t cmd_error = 1U << 14U;
-inline constexpr std::uint32_t axis_error = 1U << 15U;
+inline constexpr std::uint32_t command_error = 1U << 14U; ///< read command_error_number
+inline constexpr std::uint32_t axis_error = 1U << 15U;    ///< read axis_error_number
 } // namespace axis_state
 
 /// Acceleration and speed are per mill of the axis parameter (2.7.5, 2.7.6).
@@ -85,10 +85,10 @@ struct axis_command {
 
 /// One axis, PA-CONTROL → master.
 struct axis_status {
-  std::uint32_t status = 0;     ///< axis_state bits
-  std::uint16_t cmd_error = 0;  ///< axis command error number
-  std::uint16_t axis_error = 0; ///< axis error number (Exxx)
-  float position = 0.0F;        ///< current position
+  std::uint32_t status = 0;               ///< axis_state bits
+  std::uint16_t command_error_number = 0; ///< the axis's command error number (QUIT numbers)
+  std::uint16_t axis_error_number = 0;    ///< the axis's error number (Exxx)
+  float position = 0.0F;                  ///< current position
 
   [[nodiscard]] constexpr bool has(std::uint32_t bits) const noexcept {
     return (status & bits) == bits;
@@ -145,8 +145,8 @@ encode_axis_status(const axis_status &s, position_format format) noexcept {
   std::array<std::uint8_t, module_size> out{};
   byte_writer w(out);
   FIELDCODEC_TRY_STATUS(w.write<std::uint32_t>(s.status, byte_order::big));
-  FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(s.cmd_error, byte_order::big));
-  FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(s.axis_error, byte_order::big));
+  FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(s.command_error_number, byte_order::big));
+  FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(s.axis_error_number, byte_order::big));
   FIELDCODEC_TRY_STATUS(w.write_bytes(pos.value()));
   return out;
 }

@@ -14,11 +14,15 @@
 
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/ieee754.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
+#include <limits>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::pacontrol::profibus {
 
@@ -28,15 +32,35 @@ inline constexpr std::size_t cmd_size = 8;
 inline constexpr std::uint16_t max_command_code = 0x7FFF;
 inline constexpr std::uint16_t max_command_error = 0x1FFF;
 
-/// The command date of an integer command (two's complement).
-[[nodiscard]] constexpr std::uint32_t date_from_int(std::int32_t v) noexcept {
-  return static_cast<std::uint32_t>(v);
+/// The command date of an integer command (int32, two's complement), from any integer type.
+/// Errors: overflow (outside int32).
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::uint32_t> date_from_int(T v) noexcept {
+  auto i = checked_narrow<std::int32_t>(v);
+  if (!i) return i.error();
+  return static_cast<std::uint32_t>(i.value());
 }
-/// The command date of a float command (IEEE-754 single). Errors: not_representable.
-[[nodiscard]] constexpr result<std::uint32_t> date_from_float(float v) noexcept {
-  const std::uint32_t bits = ieee754::to_bits(v);
+/// The command date of a float command (IEEE-754 single); a double or long double is sent as
+/// its nearest float. Errors: not_representable (NaN, ±∞, beyond float range).
+template <std::floating_point F>
+[[nodiscard]] constexpr result<std::uint32_t> date_from_float(F v) noexcept {
+  if constexpr (!std::is_same_v<F, float>) {
+    if (!(v <= static_cast<F>(std::numeric_limits<float>::max()) &&
+          v >= static_cast<F>(std::numeric_limits<float>::lowest()))) {
+      return errc::not_representable; // also NaN
+    }
+  }
+  const std::uint32_t bits = ieee754::to_bits(static_cast<float>(v));
   if (ieee754::is_nonfinite_bits(bits)) return errc::not_representable;
   return bits;
+}
+
+/// A raw 32-bit date from any integer type: an int32 (two's complement) or a uint32.
+/// Errors: overflow (outside −2^31 … 2^32 − 1).
+template <integer_argument T>
+[[nodiscard]] constexpr result<std::uint32_t> raw_date(T v) noexcept {
+  if (auto u = checked_narrow<std::uint32_t>(v)) return u;
+  return date_from_int(v);
 }
 /// A date read as a signed integer.
 [[nodiscard]] constexpr std::int32_t date_as_int(std::uint32_t date) noexcept {
@@ -60,13 +84,13 @@ struct cmd_request {
 
 /// PA-CONTROL → master.
 struct cmd_reply {
-  std::uint32_t date = 0;         ///< acknowledgement date
-  bool pac_error = false;         ///< FE: read the number with command 1909
-  std::uint8_t status = 0;        ///< operating status (codes.hpp)
-  bool receive_flag = false;      ///< RF: copy of the SEND flag once the command was seen
-  bool command_error = false;     ///< KF
-  bool end_of_processing = false; ///< BF
-  std::uint16_t error_number = 0; ///< command error number (QUIT), 0 … 0x1FFF
+  std::uint32_t date = 0;                 ///< acknowledgement date
+  bool controller_error = false;          ///< FE: a PA-CONTROL error is pending (read it: 1909)
+  std::uint8_t operating_status = 0;      ///< operating status (codes.hpp)
+  bool receive_flag = false;              ///< RF: copy of the SEND flag once the command was seen
+  bool command_error = false;             ///< KF: the command failed
+  bool end_of_processing = false;         ///< BF
+  std::uint16_t command_error_number = 0; ///< why it failed (QUIT), 0 … 0x1FFF
 
   friend constexpr bool operator==(const cmd_reply &, const cmd_reply &) noexcept = default;
 };
@@ -100,15 +124,16 @@ decode_cmd_request(std::span<const std::uint8_t> in) noexcept {
 /// Errors: overflow (error number above 0x1FFF).
 [[nodiscard]] constexpr result<std::array<std::uint8_t, cmd_size>>
 encode_cmd_reply(const cmd_reply &r) noexcept {
-  if (r.error_number > max_command_error) return errc::overflow;
+  if (r.command_error_number > max_command_error) return errc::overflow;
   std::array<std::uint8_t, cmd_size> out{};
   byte_writer w(out);
   FIELDCODEC_TRY_STATUS(w.write<std::uint32_t>(r.date, byte_order::big));
-  const auto word2 = static_cast<std::uint16_t>((r.pac_error ? 0x8000U : 0U) | r.status);
+  const auto word2 =
+      static_cast<std::uint16_t>((r.controller_error ? 0x8000U : 0U) | r.operating_status);
   FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(word2, byte_order::big));
   const auto word3 = static_cast<std::uint16_t>(
       (r.receive_flag ? 0x8000U : 0U) | (r.command_error ? 0x4000U : 0U) |
-      (r.end_of_processing ? 0x2000U : 0U) | r.error_number);
+      (r.end_of_processing ? 0x2000U : 0U) | r.command_error_number);
   FIELDCODEC_TRY_STATUS(w.write<std::uint16_t>(word3, byte_order::big));
   return out;
 }
@@ -137,7 +162,7 @@ enum class cmd_progress : std::uint8_t {
   waiting, ///< SF ≠ RF: the PA-CONTROL has not seen the command yet
   running, ///< SF = RF, no error, end of processing 0
   done,    ///< SF = RF, no error, end of processing 1: the reply date is the result
-  failed,  ///< SF = RF, command error: error_number says why
+  failed,  ///< SF = RF, command error: command_error_number says why
 };
 
 /// Non-blocking bookkeeping of the SEND / RECEIVE flags for one master.
@@ -159,27 +184,34 @@ public:
     seen_ = true;
   }
 
-  /// The request that starts a command: the SEND flag toggled.
+  /// The request that starts a command: the SEND flag toggled. Takes any integer types; the
+  /// date is a raw 32-bit pattern (an int32 or a uint32: see raw_date).
   /// Errors: bad_state (the previous command has not been seen yet, so toggling again would
   /// undo that toggle; or an idle reply showed RF ≠ SF and synchronize() is needed),
-  /// overflow (code above 0x7FFF).
-  [[nodiscard]] constexpr result<cmd_request> start(std::uint16_t code, std::uint16_t parameter,
-                                                    std::uint32_t date) noexcept {
+  /// overflow (code outside 0 … 0x7FFF, parameter outside 16 bits, date outside 32 bits).
+  template <integer_argument C, integer_argument P, integer_argument D>
+  [[nodiscard]] constexpr result<cmd_request> start(C code, P parameter, D date) noexcept {
     if (!seen_) return errc::bad_state;
-    if (code > max_command_code) return errc::overflow;
+    auto r = stage(code, parameter, date);
+    if (!r) return r.error();
     send_flag_ = !send_flag_;
     started_ = true;
     seen_ = false;
-    return cmd_request{date, parameter, code, send_flag_};
+    r.value().send_flag = send_flag_;
+    return r;
   }
 
   /// The same data with the SEND flag not toggled, for masters that write the command
   /// first and toggle in a later cycle (as the Interbus example of 4.2.4 does).
-  /// Errors: overflow (code above 0x7FFF).
-  [[nodiscard]] constexpr result<cmd_request> stage(std::uint16_t code, std::uint16_t parameter,
-                                                    std::uint32_t date) const noexcept {
-    if (code > max_command_code) return errc::overflow;
-    return cmd_request{date, parameter, code, send_flag_};
+  /// Errors: overflow (as start).
+  template <integer_argument C, integer_argument P, integer_argument D>
+  [[nodiscard]] constexpr result<cmd_request> stage(C code, P parameter, D date) const noexcept {
+    if (!in_closed_range(code, 0, max_command_code)) return errc::overflow;
+    auto par = checked_narrow<std::uint16_t>(parameter);
+    if (!par) return par.error();
+    auto d = raw_date(date);
+    if (!d) return d.error();
+    return cmd_request{d.value(), par.value(), static_cast<std::uint16_t>(code), send_flag_};
   }
 
   /// Evaluates a reply against the current command.

@@ -42,6 +42,11 @@ struct check_options {
   /// CHECK "0" passes without a check (the manual allows "0" instead of the sum). When false,
   /// "0" must equal the computed check like any other value.
   bool zero_means_unchecked = true;
+  /// Accept an acknowledgement whose CHECK matches either rule, `body` or `body_and_etx` (the
+  /// manual's own acknowledgements mix them: 3.4.3 command 1 uses `body`, docs/errata.md).
+  bool acknowledgement_either_rule = false;
+  /// The same for requests.
+  bool request_either_rule = false;
 };
 
 struct decoder_options {
@@ -202,8 +207,13 @@ private:
     if (is_request && options_.frames == accept::acknowledgements) return errc::unexpected_frame;
     if (!is_request && options_.frames == accept::requests) return errc::unexpected_frame;
     const check_rule rule = is_request ? options_.check.request : options_.check.acknowledgement;
+    const bool either = is_request ? options_.check.request_either_rule
+                                   : options_.check.acknowledgement_either_rule;
     const bool unchecked = check_value_ == 0U && options_.check.zero_means_unchecked;
-    if (!unchecked && compute_check(body, rule) != check_value_) return errc::bad_checksum;
+    if (!unchecked && compute_check(body, rule) != check_value_ &&
+        !(either && compute_check(body, other_rule(rule)) == check_value_)) {
+      return errc::bad_checksum;
+    }
     if (is_request) {
       auto r = parse_request_body(body);
       if (!r) return r.error();

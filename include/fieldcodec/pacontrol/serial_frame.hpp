@@ -15,6 +15,7 @@
 #include <fieldcodec/core/checksum.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/command.hpp>
 #include <fieldcodec/pacontrol/value.hpp>
 
 #include <array>
@@ -53,6 +54,11 @@ enum class check_rule : std::uint8_t {
   body_and_etx, ///< those bytes and the ETX byte, i.e. XOR ^ 0x03 (its acknowledgements)
 };
 
+/// The rule that is not `r`.
+[[nodiscard]] constexpr check_rule other_rule(check_rule r) noexcept {
+  return r == check_rule::body ? check_rule::body_and_etx : check_rule::body;
+}
+
 /// Whether the encoder writes the real check or "0" (not checked).
 enum class check_mode : std::uint8_t { computed, unchecked };
 
@@ -64,24 +70,36 @@ enum class check_mode : std::uint8_t { computed, unchecked };
 
 /// A command from the master (3.3).
 struct request {
-  std::uint16_t command = 0;   ///< CMD, e.g. 0x0A87
+  std::uint16_t code = 0;      ///< CMD, the command code, e.g. 0x0A87
   std::uint16_t parameter = 0; ///< PAR_1: axis, register, input number …
   value date{};                ///< TYP_PAR_2 and PAR_2
 
+  /// Same fields; dates compare as numbers (see value::same_text for the text).
   friend constexpr bool operator==(const request &, const request &) noexcept = default;
 };
 
 /// The PA-CONTROL's answer to a request or a poll (3.3.1).
 struct acknowledgement {
-  std::uint16_t quit = 0;         ///< command error number, 0 = no error
-  bool end_of_processing = false; ///< BE: the command has finished
-  std::uint16_t status = 0;       ///< operating status (status_codes in codes.hpp)
-  std::uint16_t error = 0;        ///< PA-CONTROL error number (Exxx), 0 = none
-  value date{};                   ///< TYP_QUIT and Q_PAR
+  std::uint16_t command_error_number = 0;    ///< QUIT: command error number, 0 = no error
+  bool end_of_processing = false;            ///< BE: the command has finished
+  std::uint16_t operating_status = 0;        ///< STATUS (operating_status_codes in codes.hpp)
+  std::uint16_t controller_error_number = 0; ///< ERROR: PA-CONTROL error number (Exxx), 0 = none
+  value date{};                              ///< TYP_QUIT and Q_PAR
 
+  /// Same fields; dates compare as numbers (see value::same_text for the text).
   friend constexpr bool operator==(const acknowledgement &,
                                    const acknowledgement &) noexcept = default;
 };
+
+/// The TYP field of a date type: 0 integer, 1 real. Errors: invalid_argument (none).
+[[nodiscard]] constexpr result<char> typ_field(od::command_value type) noexcept {
+  switch (type) {
+  case od::command_value::integer: return '0';
+  case od::command_value::real: return '1';
+  case od::command_value::none: break;
+  }
+  return errc::invalid_argument;
+}
 
 namespace detail {
 
@@ -149,13 +167,13 @@ encode_request(const request &r, std::span<std::uint8_t> out, check_rule rule = 
   FIELDCODEC_TRY_STATUS(validate(r.date));
   return detail::write_frame(out, rule, mode, [&](detail::text_writer &w) -> status {
     char cmd[4]{};
-    auto n = ascii::format_hex(r.command, 4, cmd, true);
+    auto n = ascii::format_hex(r.code, 4, cmd, true);
     if (!n) return n.error();
     FIELDCODEC_TRY_STATUS(w.put_text(cmd));
     FIELDCODEC_TRY_STATUS(w.put(separator));
     FIELDCODEC_TRY_STATUS(w.put_unsigned(r.parameter));
     FIELDCODEC_TRY_STATUS(w.put(separator));
-    FIELDCODEC_TRY_STATUS(w.put_unsigned(static_cast<std::uint8_t>(r.date.type)));
+    FIELDCODEC_TRY_STATUS(w.put(typ_field(r.date.type).value())); // validated above
     FIELDCODEC_TRY_STATUS(w.put(separator));
     return w.put_value(r.date);
   });
@@ -169,15 +187,15 @@ encode_acknowledgement(const acknowledgement &a, std::span<std::uint8_t> out,
                        check_mode mode = check_mode::computed) noexcept {
   FIELDCODEC_TRY_STATUS(validate(a.date));
   return detail::write_frame(out, rule, mode, [&](detail::text_writer &w) -> status {
-    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.quit));
+    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.command_error_number));
     FIELDCODEC_TRY_STATUS(w.put(separator));
     FIELDCODEC_TRY_STATUS(w.put(a.end_of_processing ? '1' : '0'));
     FIELDCODEC_TRY_STATUS(w.put(separator));
-    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.status));
+    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.operating_status));
     FIELDCODEC_TRY_STATUS(w.put(separator));
-    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.error));
+    FIELDCODEC_TRY_STATUS(w.put_unsigned(a.controller_error_number));
     FIELDCODEC_TRY_STATUS(w.put(separator));
-    FIELDCODEC_TRY_STATUS(w.put_unsigned(static_cast<std::uint8_t>(a.date.type)));
+    FIELDCODEC_TRY_STATUS(w.put(typ_field(a.date.type).value())); // validated above
     FIELDCODEC_TRY_STATUS(w.put(separator));
     return w.put_value(a.date);
   });
@@ -229,19 +247,14 @@ constexpr result<bool> parse_flag(std::string_view f) noexcept {
   return v.value() == 1U;
 }
 
-/// The date of type `type`. Errors: bad_syntax, bad_digit, overflow (integer outside int32),
-/// type_mismatch (a fraction in an integer date).
+/// The date, real when `real` (TYP 1). Errors: bad_syntax, bad_digit, overflow (integer
+/// outside int32), type_mismatch (a fraction in an integer date).
 constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
   auto d = parse_decimal(f);
   if (!d) return d.error();
-  if (real) return value{data_type::real, d.value()};
+  if (real) return value{od::command_value::real, d.value()};
   if (d.value().places != 0U) return errc::type_mismatch;
-  const auto m = d.value().mantissa;
-  if (m < std::numeric_limits<std::int32_t>::min() ||
-      m > std::numeric_limits<std::int32_t>::max()) {
-    return errc::overflow;
-  }
-  return value::of_int(static_cast<std::int32_t>(m));
+  return value::of_int(d.value().mantissa);
 }
 
 } // namespace detail

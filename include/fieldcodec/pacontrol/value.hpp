@@ -1,7 +1,8 @@
 // fieldcodec — PA-CONTROL typed command and acknowledgement dates.
 //
 // A date (PAR_2 of a request, Q_PAR of an acknowledgement) is either an integer (TYP 0, a
-// signed 32-bit number) or a real number (TYP 1). Real numbers are kept as exact decimals, so
+// signed 32-bit number) or a real number (TYP 1); its type is od::command_value, the type the
+// command table gives each command's date and reply. Real numbers are kept as exact decimals, so
 // "5552.0" and "1516.950" travel back out exactly as they came in; binary floats are turned
 // into decimals in one of two styles:
 //
@@ -12,19 +13,15 @@
 #pragma once
 
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/core/scaling.hpp>
+#include <fieldcodec/od/command.hpp>
 
 #include <cstdint>
 #include <limits>
 
 namespace fieldcodec::pacontrol {
-
-/// TYP_PAR_2 / TYP_QUIT: how the date is to be read.
-enum class data_type : std::uint8_t {
-  integer = 0, ///< signed 32-bit integer (N registers, inputs, outputs, parameters)
-  real = 1,    ///< floating point number (positions, R registers, axis parameters)
-};
 
 /// How a binary float becomes decimal text.
 enum class float_style : std::uint8_t {
@@ -36,12 +33,6 @@ enum class float_style : std::uint8_t {
 inline constexpr unsigned device_significant_digits = 7;
 
 namespace detail {
-
-[[nodiscard]] constexpr std::int64_t pow10_i64(unsigned k) noexcept {
-  std::int64_t v = 1;
-  for (unsigned i = 0; i < k; ++i) v *= 10;
-  return v;
-}
 
 /// Number of digits of the integer part of |d| (at least 1).
 [[nodiscard]] constexpr unsigned integer_digits(decimal d) noexcept {
@@ -72,7 +63,8 @@ namespace detail {
 
 /// The nearest double to an exact decimal (one correctly rounded division).
 [[nodiscard]] constexpr double to_double(decimal d) noexcept {
-  return scaling::to_eu(d.mantissa, scaling::linear{decimal{detail::pow10_i64(d.places), 0}, {}});
+  return scaling::to_eu(d.mantissa,
+                        scaling::linear{decimal{fieldcodec::detail::pow10_i64(d.places), 0}, {}});
 }
 
 /// The float a decimal stands for (through the nearest double).
@@ -111,54 +103,63 @@ namespace detail {
 
 /// A typed date: an int32 (places 0) or an exact decimal real number.
 struct value {
-  data_type type = data_type::integer;
+  od::command_value type = od::command_value::integer; ///< integer or real (none is invalid)
   decimal number{};
 
-  /// An integer date.
-  [[nodiscard]] static constexpr value of_int(std::int32_t v) noexcept {
-    return value{data_type::integer, decimal{v, 0}};
+  /// An integer date. Errors: overflow (outside int32).
+  template <integer_argument T>
+  [[nodiscard]] static constexpr result<value> of_int(T v) noexcept {
+    auto i = checked_narrow<std::int32_t>(v);
+    if (!i) return i.error();
+    return value{od::command_value::integer, decimal{i.value(), 0}};
   }
   /// A real date, written exactly as `d` (trailing zeros included).
   /// Errors: invalid_argument (more than 18 places).
   [[nodiscard]] static constexpr result<value> of_real(decimal d) noexcept {
     if (d.places > decimal_max_places) return errc::invalid_argument;
-    return value{data_type::real, d};
+    return value{od::command_value::real, d};
   }
   /// A real date from a float. Errors: not_representable (NaN, infinity), overflow.
   [[nodiscard]] static constexpr result<value>
   of_float(float v, float_style style = float_style::master) noexcept {
     auto d = float_to_decimal(v, style);
     if (!d) return d.error();
-    return value{data_type::real, d.value()};
+    return value{od::command_value::real, d.value()};
   }
 
-  /// The integer. Errors: type_mismatch (a real date).
+  /// The integer. Errors: type_mismatch (a real date), overflow (not an int32: an invalid
+  /// value, see validate()).
   [[nodiscard]] constexpr result<std::int32_t> as_int() const noexcept {
-    if (type != data_type::integer) return errc::type_mismatch;
-    return static_cast<std::int32_t>(number.mantissa);
+    if (type != od::command_value::integer || number.places != 0U) return errc::type_mismatch;
+    return checked_narrow<std::int32_t>(number.mantissa);
   }
   /// The value as a float (integers convert too).
   [[nodiscard]] constexpr float as_float() const noexcept { return to_float(number); }
 
-  /// Same type and same text (5552.0 and 5552.000 differ: they are different frames).
+  /// Same type and the same number: 5552.0 == 5552.000 (use same_text to compare the text a
+  /// frame carries).
   friend constexpr bool operator==(const value &a, const value &b) noexcept {
-    return a.type == b.type && a.number.mantissa == b.number.mantissa &&
-           a.number.places == b.number.places;
+    return a.type == b.type && equal(a.number, b.number);
+  }
+  /// Same type and the same text: 5552.0 and 5552.000 differ (they are different frames).
+  [[nodiscard]] constexpr bool same_text(const value &other) const noexcept {
+    return type == other.type && number.mantissa == other.number.mantissa &&
+           number.places == other.number.places;
   }
 };
 
 /// Checks the invariants of a value: an integer has no places and fits int32; a real has at
 /// most 18 places. Errors: overflow (integer outside int32), type_mismatch (integer with a
-/// fraction), invalid_argument (too many places).
+/// fraction), invalid_argument (too many places, or the type `none`).
 [[nodiscard]] constexpr status validate(const value &v) noexcept {
   if (v.number.places > decimal_max_places) return errc::invalid_argument;
-  if (v.type == data_type::integer) {
+  if (v.type == od::command_value::integer) {
     if (v.number.places != 0U) return errc::type_mismatch;
     if (v.number.mantissa < std::numeric_limits<std::int32_t>::min() ||
         v.number.mantissa > std::numeric_limits<std::int32_t>::max()) {
       return errc::overflow;
     }
-  } else if (v.type != data_type::real) {
+  } else if (v.type != od::command_value::real) {
     return errc::invalid_argument;
   }
   return {};
