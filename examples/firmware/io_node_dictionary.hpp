@@ -26,7 +26,7 @@ inline constexpr std::array<od::entry, 164> entries{{
     {.index = 0x1003, .sub = 4, .object = od::object_code::array, .type = od::data_type::unsigned32, .access_type = od::access::ro, .name = "Standard error field 4", .default_value = od::num::u(0U)},
     {.index = 0x1005, .type = od::data_type::unsigned32, .name = "COB-ID SYNC", .default_value = od::num::u(128U)},
     {.index = 0x1007, .type = od::data_type::unsigned32, .name = "Synchronous window length", .default_value = od::num::u(0U)},
-    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::constant, .name = "Manufacturer device name", .default_text = "fieldcodec IO"},
+    {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::constant, .size = 13, .name = "Manufacturer device name", .default_text = "fieldcodec IO"},
     {.index = 0x100C, .type = od::data_type::unsigned16, .name = "Guard time", .default_value = od::num::u(0U)},
     {.index = 0x100D, .type = od::data_type::unsigned8, .name = "Life time factor", .default_value = od::num::u(0U)},
     {.index = 0x1014, .type = od::data_type::unsigned32, .name = "COB-ID EMCY", .default_value = od::num::u(128U), .default_nodeid = true},

@@ -632,8 +632,11 @@ private:
 
   // ----- members ---------------------------------------------------------------------------
 
+  // one call sends at most: boot-up or heartbeat, a guarding response, each TPDO once, one
+  // frame per SDO channel, and the EMCY messages (the queue, or the raises and clears of the
+  // five node-managed codes when no inhibit time holds them back)
   static constexpr std::size_t out_capacity =
-      3U + C.tpdos + C.sdo_servers + C.sdo_clients + C.emcy_queue;
+      2U + C.tpdos + C.sdo_servers + C.sdo_clients + (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
   static constexpr std::size_t event_capacity =
       4U + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
