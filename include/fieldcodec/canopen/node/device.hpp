@@ -592,24 +592,24 @@ private:
   /// Raise or clear the node-managed codes as their conditions are now.
   constexpr void update_errors(std::uint32_t now) noexcept {
     if (!started_) return;
-    condition(0, managed_code::guarding, consumer_.any_lost() || life_.state() == guard_state::lost,
-              now);
-    condition(1, managed_code::rpdo_short, pdo_.any_too_short(), now);
-    condition(2, managed_code::rpdo_long, pdo_.any_too_long(), now);
-    condition(3, managed_code::sync_length, sync_.length_error(), now);
-    condition(4, managed_code::rpdo_timeout, pdo_.any_timed_out(), now);
-  }
-  constexpr void condition(unsigned bit, std::uint16_t code, bool on, std::uint32_t now) noexcept {
-    const auto mask = static_cast<std::uint8_t>(1U << bit);
-    const bool mine = (own_errors_ & mask) != 0U;
-    if (on && !mine) {
-      if (auto r = emcy_.raise(code, now)) {
-        take(r.value());
-        own_errors_ = static_cast<std::uint8_t>(own_errors_ | mask);
+    constexpr std::uint16_t codes[] = {managed_code::guarding, managed_code::rpdo_short,
+                                       managed_code::rpdo_long, managed_code::sync_length,
+                                       managed_code::rpdo_timeout};
+    const bool on[] = {consumer_.any_lost() || life_.state() == guard_state::lost,
+                       pdo_.any_too_short(), pdo_.any_too_long(), sync_.length_error(),
+                       pdo_.any_timed_out()};
+    for (std::size_t i = 0; i < std::size(codes); ++i) {
+      const auto mask = static_cast<std::uint8_t>(1U << i);
+      const bool mine = (own_errors_ & mask) != 0U;
+      if (on[i] && !mine) {
+        if (auto r = emcy_.raise(codes[i], now)) {
+          take(r.value());
+          own_errors_ = static_cast<std::uint8_t>(own_errors_ | mask);
+        }
+      } else if (!on[i] && mine) {
+        own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~mask);
+        if (auto r = emcy_.clear(codes[i], now)) take(r.value());
       }
-    } else if (!on && mine) {
-      own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~mask);
-      if (auto r = emcy_.clear(code, now)) take(r.value());
     }
   }
   /// Write 1001h and 1003h after the EMCY producer changed.

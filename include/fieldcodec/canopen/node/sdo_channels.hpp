@@ -57,8 +57,11 @@ public:
   /// the predefined connection.
   constexpr sdo_channels(Store &store, std::uint8_t node, std::uint32_t timeout_ms = 1000,
                          sdo::server_options o = {}) noexcept
-      : sdo_channels(store, node, timeout_ms, o, std::make_index_sequence<Servers>{},
-                     std::make_index_sequence<Clients>{}) {}
+      : store_(&store), node_(node), servers_(make_servers(store, node, timeout_ms, o, buffers_,
+                                                           std::make_index_sequence<Servers>{})),
+        clients_(make_clients(timeout_ms, std::make_index_sequence<Clients>{})) {
+    server_ok_[0] = sdo::channel::default_for(node).has_value();
+  }
 
   sdo_channels(const sdo_channels &) = delete;
   sdo_channels &operator=(const sdo_channels &) = delete;
@@ -190,17 +193,20 @@ public:
   static constexpr std::size_t client_capacity() noexcept { return Clients; }
 
 private:
-  template <std::size_t... S, std::size_t... C>
-  constexpr sdo_channels(Store &store, std::uint8_t node, std::uint32_t timeout_ms,
-                         sdo::server_options o, std::index_sequence<S...>,
-                         std::index_sequence<C...>) noexcept
-      : store_(&store),
-        node_(node), servers_{{sdo::server<Store>(
-                         S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{})
-                                 : sdo::channel{},
-                         store, std::span<std::uint8_t>(buffers_[S]), timeout_ms, o)...}},
-        clients_{{(static_cast<void>(C), sdo::client(sdo::channel{}, timeout_ms))...}} {
-    server_ok_[0] = sdo::channel::default_for(node).has_value();
+  template <std::size_t... S>
+  [[nodiscard]] static constexpr std::array<sdo::server<Store>, Servers>
+  make_servers(Store &store, std::uint8_t node, std::uint32_t timeout_ms, sdo::server_options o,
+               std::array<std::array<std::uint8_t, Buffer>, Servers> &buffers,
+               std::index_sequence<S...>) noexcept {
+    // server 0 starts on the predefined connection, the others without one (until reload)
+    return {{sdo::server<Store>(S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{})
+                                        : sdo::channel{},
+                                store, std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
+  }
+  template <std::size_t... C>
+  [[nodiscard]] static constexpr std::array<sdo::client, Clients>
+  make_clients([[maybe_unused]] std::uint32_t timeout_ms, std::index_sequence<C...>) noexcept {
+    return {{(static_cast<void>(C), sdo::client(sdo::channel{}, timeout_ms))...}};
   }
 
   [[nodiscard]] constexpr bool serves(std::uint16_t index) const noexcept {
