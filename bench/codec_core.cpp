@@ -9,6 +9,7 @@
 
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -416,7 +417,44 @@ constexpr std::int64_t hand_round_div(std::int64_t num, std::int64_t den) {
   return q;
 }
 
+/// A decimal as (mantissa, places) with trailing zeros removed, comparable with ==.
+struct short_decimal {
+  std::int64_t mantissa = 0;
+  int places = 0;
+  bool operator==(const short_decimal &) const = default;
+};
+
+/// The hand-written way to read a float as its shortest decimal: std::to_chars (shortest round
+/// trip) and a parse of its digits.
+short_decimal hand_shortest(float v) {
+  std::array<char, 32> buf{};
+  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  std::int64_t m = 0;
+  int places = -1;
+  bool neg = false;
+  for (const char *c = buf.data(); c != res.ptr; ++c) {
+    if (*c == '-') {
+      neg = true;
+    } else if (*c == '.') {
+      places = 0;
+    } else if (*c == 'e') {
+      return {0, -100}; // exponent form: not among the bench inputs
+    } else {
+      m = m * 10 + (*c - '0');
+      if (places >= 0) ++places;
+    }
+  }
+  return {neg ? -m : m, places < 0 ? 0 : places};
+}
+
 void add_scaling(bench::registry &r) {
+  bench::add<g_f32>(
+      r, "decimal/decimal_from_float",
+      [](float v) {
+        const auto d = fieldcodec::decimal_from_float(v);
+        return d ? short_decimal{d->mantissa, d->places} : short_decimal{0, -1};
+      },
+      [](float v) { return hand_shortest(v); });
   bench::add<g_eu_plimit>(
       r, "scaling/to_raw decimal x327.67 u16",
       [](fieldcodec::decimal eu) {

@@ -46,12 +46,10 @@ enum class hex_case : std::uint8_t { upper, lower, any };
 [[nodiscard]] constexpr result<std::int64_t> parse_signed(std::string_view s) noexcept {
   const bool neg = !s.empty() && s.front() == '-';
   if (neg) s.remove_prefix(1);
-  auto m = parse_unsigned(s);
-  if (!m) return m.error();
+  FIELDCODEC_TRY(const std::uint64_t m, parse_unsigned(s));
   const std::uint64_t limit = neg ? std::uint64_t{1} << 63U : (std::uint64_t{1} << 63U) - 1U;
-  if (m.value() > limit) return errc::overflow;
-  return neg ? static_cast<std::int64_t>(std::uint64_t{0} - m.value())
-             : static_cast<std::int64_t>(m.value());
+  if (m > limit) return errc::overflow;
+  return neg ? static_cast<std::int64_t>(std::uint64_t{0} - m) : static_cast<std::int64_t>(m);
 }
 
 /// Parse a non-empty string of hex digits, no prefix.
@@ -89,10 +87,10 @@ enum class hex_case : std::uint8_t { upper, lower, any };
                                                           std::span<char> out) noexcept {
   if (v >= 0) return format_unsigned(static_cast<std::uint64_t>(v), out);
   if (out.empty()) return errc::buffer_too_small;
-  auto n = format_unsigned(std::uint64_t{0} - static_cast<std::uint64_t>(v), out.subspan(1));
-  if (!n) return n.error();
+  FIELDCODEC_TRY(const std::size_t n,
+                 format_unsigned(std::uint64_t{0} - static_cast<std::uint64_t>(v), out.subspan(1)));
   out[0] = '-';
-  return n.value() + 1U;
+  return n + 1U;
 }
 
 /// Write `v` in hex, zero-padded to at least `min_digits` digits.

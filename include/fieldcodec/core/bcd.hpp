@@ -71,7 +71,7 @@ template <std::size_t N>
 [[nodiscard]] constexpr result<std::array<std::uint8_t, N>> encode(std::uint64_t value) noexcept {
   static_assert(N >= 1 && N <= max_bytes);
   std::array<std::uint8_t, N> out{};
-  if (auto s = encode(value, out); !s) return s.error();
+  FIELDCODEC_TRY_STATUS(encode(value, out));
   return out;
 }
 
@@ -83,9 +83,8 @@ decode_signed(std::span<const std::uint8_t> in) noexcept {
   if (in.size() < 2U || in.size() > 1U + max_bytes) return errc::bad_length;
   const std::uint8_t sign = in[0];
   if (sign != sign_positive && sign != sign_negative) return errc::bad_sign;
-  auto mag = decode(in.subspan(1));
-  if (!mag) return mag.error();
-  const auto m = static_cast<std::int64_t>(mag.value()); // < 10^18, fits
+  FIELDCODEC_TRY(const std::uint64_t mag, decode(in.subspan(1)));
+  const auto m = static_cast<std::int64_t>(mag); // < 10^18, fits
   return sign == sign_negative ? -m : m;
 }
 
@@ -97,7 +96,7 @@ decode_signed(std::span<const std::uint8_t> in) noexcept {
   // magnitude without overflow for INT64_MIN
   const std::uint64_t mag = value < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(value)
                                       : static_cast<std::uint64_t>(value);
-  if (auto s = encode(mag, out.subspan(1)); !s) return s.error();
+  FIELDCODEC_TRY_STATUS(encode(mag, out.subspan(1)));
   out[0] = value < 0 ? sign_negative : sign_positive;
   return {};
 }
@@ -108,7 +107,7 @@ template <std::size_t N>
 encode_signed(std::int64_t value) noexcept {
   static_assert(N >= 2 && N <= 1 + max_bytes);
   std::array<std::uint8_t, N> out{};
-  if (auto s = encode_signed(value, out); !s) return s.error();
+  FIELDCODEC_TRY_STATUS(encode_signed(value, out));
   return out;
 }
 

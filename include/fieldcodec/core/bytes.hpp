@@ -111,9 +111,7 @@ load_unsigned(std::span<const std::uint8_t> in, std::size_t width, byte_order or
 /// Read a two's complement signed integer of `width` bytes (1..8), sign-extended.
 [[nodiscard]] constexpr result<std::int64_t>
 load_signed(std::span<const std::uint8_t> in, std::size_t width, byte_order order) noexcept {
-  auto u = load_unsigned(in, width, order);
-  if (!u) return u.error();
-  std::uint64_t v = u.value();
+  FIELDCODEC_TRY(std::uint64_t v, load_unsigned(in, width, order));
   if (width < 8U) { // sign extension without a branch: (v ^ s) − s, s the sign bit
     const std::uint64_t sign = std::uint64_t{1} << (8U * width - 1U);
     v = (v ^ sign) - sign;
@@ -165,13 +163,11 @@ template <wire_integer T>
 [[nodiscard]] constexpr result<T> load(std::span<const std::uint8_t> in,
                                        byte_order order) noexcept {
   if constexpr (std::is_signed_v<T>) {
-    auto v = load_signed(in, sizeof(T), order);
-    if (!v) return v.error();
-    return static_cast<T>(v.value());
+    FIELDCODEC_TRY(const std::int64_t v, load_signed(in, sizeof(T), order));
+    return static_cast<T>(v);
   } else {
-    auto v = load_unsigned(in, sizeof(T), order);
-    if (!v) return v.error();
-    return static_cast<T>(v.value());
+    FIELDCODEC_TRY(const std::uint64_t v, load_unsigned(in, sizeof(T), order));
+    return static_cast<T>(v);
   }
 }
 

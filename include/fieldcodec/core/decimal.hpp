@@ -9,11 +9,14 @@
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
+#include <bit>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace fieldcodec {
 
@@ -373,9 +376,8 @@ namespace detail {
 /// not_representable (non-zero digits beyond `places`), overflow.
 [[nodiscard]] constexpr result<std::int64_t> parse_fixed(std::string_view s,
                                                          unsigned places) noexcept {
-  auto d = parse_decimal(s);
-  if (!d) return d.error();
-  return to_fixed(d.value(), places);
+  FIELDCODEC_TRY(const decimal d, parse_decimal(s));
+  return to_fixed(d, places);
 }
 
 /// Write `units` × 10^-places with exactly `places` fractional digits.
@@ -442,6 +444,157 @@ constexpr double pow10_double(unsigned k) noexcept {
   auto m = static_cast<std::int64_t>(scaled);
   if (scaled - static_cast<double>(m) >= 0.5) ++m; // half away from zero on the magnitude
   return normalize(decimal{neg ? -m : m, static_cast<std::uint8_t>(places)});
+}
+
+/// An integer as a decimal with no places, exactly (any integer type but bool).
+/// Errors: not_representable (an unsigned value above INT64_MAX).
+template <std::integral I>
+requires(!std::same_as<I, bool>)
+    [[nodiscard]] constexpr result<decimal> decimal_from_integer(I v) noexcept {
+  if constexpr (std::is_unsigned_v<I>) {
+    if (static_cast<std::uint64_t>(v) >
+        static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+      return errc::not_representable;
+    }
+  }
+  return decimal{static_cast<std::int64_t>(v), 0};
+}
+
+namespace detail {
+/// floor(x · log10 2) for |x| < 2^20 (log10 2 · 2^32 = 1292913986.08; the error stays far
+/// below the distance of any x · log10 2 from an integer in that range, except x = 0).
+[[nodiscard]] constexpr int floor_log10_pow2(int x) noexcept {
+  return static_cast<int>((static_cast<std::int64_t>(x) * 1'292'913'986) >> 32U);
+}
+
+/// floor(n × 10^s × 2^e2) for n < 2^27 and s ≤ 19, which the caller knows to be below 2^64;
+/// `exact` tells whether nothing was cut off.
+constexpr std::uint64_t scaled_floor(std::uint64_t n, unsigned s, int e2, bool &exact) noexcept {
+  // n × 10^s as hi·2^64 + lo, from 32-bit halves (no __int128: works on 32-bit targets).
+  const std::uint64_t b = pow10_u64[s];
+  const std::uint64_t low = n * (b & 0xFFFF'FFFFU); // < 2^59
+  const std::uint64_t high = n * (b >> 32U);        // < 2^59
+  const std::uint64_t lo = low + (high << 32U);
+  const std::uint64_t hi = (high >> 32U) + (lo < low ? 1U : 0U);
+  if (e2 >= 0) { // v ≥ 2^25 here, so s ≤ 2 and n × 10^s fits 64 bits
+    exact = true;
+    return lo << static_cast<unsigned>(e2);
+  }
+  const auto k = static_cast<unsigned>(-e2);
+  if (k >= 128U) {
+    exact = (hi | lo) == 0U;
+    return 0;
+  }
+  if (k >= 64U) {
+    const unsigned r = k - 64U;
+    exact = lo == 0U && (r == 0U || (hi & ((std::uint64_t{1} << r) - 1U)) == 0U);
+    return hi >> r;
+  }
+  exact = (lo & ((std::uint64_t{1} << k) - 1U)) == 0U;
+  return (lo >> k) | (k == 0U ? 0U : hi << (64U - k));
+}
+} // namespace detail
+
+/// The shortest decimal that reads back as the same float: 90.73f is 90.73 (not the
+/// 90.7300033569336 that widening to double first would give), 1e-5f is 0.00001, 16777216.0f is
+/// 16777216. Of several shortest candidates the one nearest the float wins (ties: even last
+/// digit), as with std::to_chars. Exact integer arithmetic, no tables, constexpr.
+/// Limits of `decimal`: a float whose shortest form needs more than 18 decimal places
+/// (|v| < 1e-9 or so) is rounded to 18 places instead (|v| < 5e-19 becomes 0), like
+/// decimal_from_double. Errors: not_representable (NaN, infinity, or a mantissa beyond int64:
+/// |v| > 9.223372e18).
+[[nodiscard]] constexpr result<decimal> decimal_from_float(float v) noexcept {
+  const auto bits = std::bit_cast<std::uint32_t>(v);
+  const bool neg = (bits >> 31U) != 0U;
+  const std::uint32_t biased = (bits >> 23U) & 0xFFU;
+  const std::uint32_t frac = bits & 0x7F'FFFFU;
+  if (biased == 0xFFU) return errc::not_representable;  // NaN, infinity
+  if (biased == 0U && frac == 0U) return decimal{0, 0}; // ±0
+  // v = m × 2^e exactly, m < 2^24.
+  const std::uint64_t m = biased == 0U ? frac : (frac | 0x80'0000U);
+  const int e = biased == 0U ? -149 : static_cast<int>(biased) - 150;
+  if (e > 40) return errc::not_representable; // |v| >= 2^64: far beyond int64
+
+  // The floats near v round to v on the interval between the midpoints to its neighbours, in
+  // units of 2^(e-2): low = 4m − 2 (4m − 1 at the bottom of a binade, where the gap below is
+  // half as wide), high = 4m + 2. The midpoints themselves belong to v when m is even
+  // (round-half-even on reading).
+  const int e2 = e - 2;
+  const std::uint64_t mv = 4U * m;
+  const bool binade_bottom = frac == 0U && biased > 1U;
+  const std::uint64_t mm = mv - (binade_bottom ? 1U : 2U);
+  const std::uint64_t mp = mv + 2U;
+  const bool accept_bounds = (m & 1U) == 0U;
+
+  // Count in units of 10^-p. A float needs at most 9 significant digits, and v ≥ 2^(e+23) ≥
+  // 10^f with f = floor((e + 23) · log10 2), so its shortest form has at most 8 − f places:
+  // p = 9 − f is one digit finer (that digit decides the rounding), capped at 19 places (one
+  // more than a decimal holds). v < 2^(e+24) < 10^(f+2), so v × 10^p < 10^11: no overflow.
+  const int f = detail::floor_log10_pow2(e + 23);
+  const auto p = static_cast<unsigned>(9 - f < 0 ? 0 : (9 - f > 19 ? 19 : 9 - f));
+  bool vr_exact = false;
+  bool vp_exact = false;
+  bool vm_exact = false;
+  std::uint64_t vr = detail::scaled_floor(mv, p, e2, vr_exact);
+  std::uint64_t vp = detail::scaled_floor(mp, p, e2, vp_exact);
+  std::uint64_t vm = detail::scaled_floor(mm, p, e2, vm_exact);
+
+  // Cut digits while the interval still holds a candidate (Ryu's general case, with exact
+  // values instead of its tables), then round what is left to the nearest candidate.
+  bool vm_trailing_zeros = accept_bounds && vm_exact; // vm itself is a candidate
+  bool vr_trailing_zeros = vr_exact;                  // all digits cut off vr so far are 0
+  if (!accept_bounds && vp_exact) --vp;               // the upper midpoint is excluded
+  unsigned removed = 0;
+  unsigned last_removed = 0;
+  while (vp / 10U > vm / 10U) {
+    vm_trailing_zeros = vm_trailing_zeros && vm % 10U == 0U;
+    vr_trailing_zeros = vr_trailing_zeros && last_removed == 0U;
+    last_removed = static_cast<unsigned>(vr % 10U);
+    vr /= 10U;
+    vp /= 10U;
+    vm /= 10U;
+    ++removed;
+  }
+  if (vm_trailing_zeros) {
+    while (vm % 10U == 0U) {
+      vr_trailing_zeros = vr_trailing_zeros && last_removed == 0U;
+      last_removed = static_cast<unsigned>(vr % 10U);
+      vr /= 10U;
+      vp /= 10U;
+      vm /= 10U;
+      ++removed;
+    }
+  }
+  std::uint64_t out = 0;
+  if (p > removed + decimal_max_places) {
+    // Nothing was cut at 19 places: no decimal of at most 18 places reads back as v (only for
+    // |v| < 1e-9 or so). Round v itself to 18 places, half up (an exact tie cannot occur this
+    // far below 1).
+    out = vr / 10U + (vr % 10U >= 5U ? 1U : 0U);
+    removed = 1;
+  } else {
+    // At least one digit was cut (with p ≤ 18 the shortest form is coarser than 10^-p, and for
+    // p = 19 the branch above caught the other case), so last_removed and vr_trailing_zeros
+    // describe the exact remainder.
+    if (vr_trailing_zeros && last_removed == 5U && vr % 2U == 0U) last_removed = 4U; // tie: even
+    const bool below_interval = vr == vm && (!accept_bounds || !vm_trailing_zeros);
+    out = vr + ((below_interval || last_removed >= 5U) ? 1U : 0U);
+  }
+  // out × 10^(removed − p); fewer than 10 significant digits, so out < 2^63 when places remain.
+  decimal d{};
+  if (removed >= p) {
+    std::int64_t mant = 0;
+    if (removed - p > decimal_max_places ||
+        out > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()) ||
+        !detail::mul_i64(static_cast<std::int64_t>(out), detail::pow10_i64(removed - p), mant)) {
+      return errc::not_representable;
+    }
+    d = decimal{mant, 0};
+  } else {
+    d = decimal{static_cast<std::int64_t>(out), static_cast<std::uint8_t>(p - removed)};
+  }
+  if (neg) d.mantissa = -d.mantissa;
+  return normalize(d);
 }
 
 } // namespace fieldcodec

@@ -60,12 +60,9 @@ encode_float32(float v, byte_order order, nonfinite policy = nonfinite::reject) 
 [[nodiscard]] constexpr result<float>
 decode_float32(std::span<const std::uint8_t> in, byte_order order,
                nonfinite policy = nonfinite::reject) noexcept {
-  auto bits = load<std::uint32_t>(in, order);
-  if (!bits) return bits.error();
-  if (policy == nonfinite::reject && is_nonfinite_bits(bits.value())) {
-    return errc::not_representable;
-  }
-  return from_bits(bits.value());
+  FIELDCODEC_TRY(const std::uint32_t bits, load<std::uint32_t>(in, order));
+  if (policy == nonfinite::reject && is_nonfinite_bits(bits)) return errc::not_representable;
+  return from_bits(bits);
 }
 
 /// The 8 bytes of `v`. Errors: not_representable (NaN/infinity under nonfinite::reject).
@@ -81,12 +78,9 @@ encode_float64(double v, byte_order order, nonfinite policy = nonfinite::reject)
 [[nodiscard]] constexpr result<double>
 decode_float64(std::span<const std::uint8_t> in, byte_order order,
                nonfinite policy = nonfinite::reject) noexcept {
-  auto bits = load<std::uint64_t>(in, order);
-  if (!bits) return bits.error();
-  if (policy == nonfinite::reject && is_nonfinite_bits(bits.value())) {
-    return errc::not_representable;
-  }
-  return from_bits64(bits.value());
+  FIELDCODEC_TRY(const std::uint64_t bits, load<std::uint64_t>(in, order));
+  if (policy == nonfinite::reject && is_nonfinite_bits(bits)) return errc::not_representable;
+  return from_bits64(bits);
 }
 
 } // namespace fieldcodec::ieee754

@@ -8,16 +8,23 @@
 // checked against the allowed range (errc::out_of_range) before it is converted and against
 // the field's width and signedness (errc::overflow) after, so it can never wrap.
 //
-// Binary floating-point inputs: a double is first turned into the decimal it stands for with
-// 15 significant digits (decimal_from_double), then converted exactly. So 1.001 × 500 is
-// 500.5 and rounds to 501, as a person computing by hand expects, although the nearest
-// double to 1.001 is slightly smaller than 1.001.
+// The engineering value may be a decimal, a double, a float or any integer type; each is read
+// as the number it is, then converted exactly:
+//  * a double is the decimal it stands for with 15 significant digits (decimal_from_double):
+//    1.001 × 500 is 500.5 and rounds to 501, as a person computing by hand expects, although
+//    the nearest double to 1.001 is slightly smaller than 1.001;
+//  * a float (a PLC REAL) is its shortest round-trip decimal (decimal_from_float), never
+//    widened to double first: 90.73f × 327.67 = 29729.4991 gives 29729 (through double,
+//    90.7300033569336 × 327.67 would give 29730);
+//  * an integer is exact (a value beyond int64 is not_representable).
+// Each kind has its own overload, so a call never converts one into another.
 #pragma once
 
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -100,33 +107,59 @@ struct range {
 /// Errors: out_of_range, overflow, invalid_argument.
 [[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu, linear s, field f,
                                                     range r) noexcept {
-  if (auto c = check_range(eu, r); !c) return c.error();
-  auto raw = scale_to_raw(eu, s);
-  if (!raw) return raw.error();
-  if (auto c = check_field(raw.value(), f); !c) return c.error();
+  FIELDCODEC_TRY_STATUS(check_range(eu, r));
+  FIELDCODEC_TRY(const std::int64_t raw, scale_to_raw(eu, s));
+  FIELDCODEC_TRY_STATUS(check_field(raw, f));
   return raw;
 }
 
 /// PLC → device without an engineering range (only the field limits apply).
 [[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu, linear s, field f) noexcept {
-  auto raw = scale_to_raw(eu, s);
-  if (!raw) return raw.error();
-  if (auto c = check_field(raw.value(), f); !c) return c.error();
+  FIELDCODEC_TRY(const std::int64_t raw, scale_to_raw(eu, s));
+  FIELDCODEC_TRY_STATUS(check_field(raw, f));
   return raw;
 }
 
-/// The same from a double (see the header comment). Errors: also not_representable (NaN, ∞).
+/// The same from a double, read with 15 significant digits (see the header comment).
+/// Errors: also not_representable (NaN, ∞, |eu| ≥ 9e18).
 [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f,
                                                     range r) noexcept {
-  auto d = decimal_from_double(eu);
-  if (!d) return d.error();
-  return to_raw(d.value(), s, f, r);
+  FIELDCODEC_TRY(const decimal d, decimal_from_double(eu));
+  return to_raw(d, s, f, r);
 }
 [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f) noexcept {
-  auto d = decimal_from_double(eu);
-  if (!d) return d.error();
-  return to_raw(d.value(), s, f);
+  FIELDCODEC_TRY(const decimal d, decimal_from_double(eu));
+  return to_raw(d, s, f);
 }
+
+/// The same from a float, read as its shortest round-trip decimal (90.73f is 90.73).
+/// Errors: also not_representable (NaN, ∞, |eu| > 9.2e18).
+[[nodiscard]] constexpr result<std::int64_t> to_raw(float eu, linear s, field f, range r) noexcept {
+  FIELDCODEC_TRY(const decimal d, decimal_from_float(eu));
+  return to_raw(d, s, f, r);
+}
+[[nodiscard]] constexpr result<std::int64_t> to_raw(float eu, linear s, field f) noexcept {
+  FIELDCODEC_TRY(const decimal d, decimal_from_float(eu));
+  return to_raw(d, s, f);
+}
+
+/// An integer engineering value, exactly (any integer type; bool is refused at compile time).
+/// Errors: also not_representable (an unsigned value above INT64_MAX).
+template <std::integral I>
+requires(!std::same_as<I, bool>)
+    [[nodiscard]] constexpr result<std::int64_t> to_raw(I eu, linear s, field f, range r) noexcept {
+  FIELDCODEC_TRY(const decimal d, decimal_from_integer(eu));
+  return to_raw(d, s, f, r);
+}
+template <std::integral I>
+requires(!std::same_as<I, bool>)
+    [[nodiscard]] constexpr result<std::int64_t> to_raw(I eu, linear s, field f) noexcept {
+  FIELDCODEC_TRY(const decimal d, decimal_from_integer(eu));
+  return to_raw(d, s, f);
+}
+// A bool is not an engineering value (it would otherwise convert to float and double alike).
+result<std::int64_t> to_raw(bool, linear, field, range) = delete;
+result<std::int64_t> to_raw(bool, linear, field) = delete;
 
 /// Device → PLC as a double: raw / scale + offset. Each decimal becomes a double with one
 /// division by an exact power of ten (327.67 is 32767 / 100, the nearest double to 327.67),
@@ -186,9 +219,8 @@ struct range {
     if (!detail::add(n.mag, detail::u128::from(1))) return errc::overflow;
   }
   if (s.scale.mantissa < 0) n.negative = !n.negative;
-  auto m = detail::round_div_pow10(n, 0);
-  if (!m) return m.error();
-  return decimal{m.value(), static_cast<std::uint8_t>(places)};
+  FIELDCODEC_TRY(const std::int64_t m, detail::round_div_pow10(n, 0));
+  return decimal{m, static_cast<std::uint8_t>(places)};
 }
 
 } // namespace fieldcodec::scaling
