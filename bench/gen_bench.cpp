@@ -3,6 +3,7 @@
 //   cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release
 //   cmake --build build-bench --target fieldcodec_gen_bench
 //   ./build-bench/codegen/fieldcodec_gen_bench [target-bytes] [runs]
+//   ./build-bench/codegen/fieldcodec_gen_bench [target-bytes] --dcf FILE   (write the DCF, exit)
 //
 // The DCF is generated deterministically in memory: CiA 301 communication objects, PDO
 // parameters and a manufacturer area of VAR, ARRAY and RECORD objects with ParameterValue,
@@ -101,8 +102,13 @@ std::string make_dcf(std::size_t target) {
 
 int main(int argc, char **argv) {
   const std::size_t target = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 300000U;
-  const int runs = argc > 2 ? std::atoi(argv[2]) : 50;
   const std::string dcf = make_dcf(target);
+  if (argc > 3 && std::string(argv[2]) == "--dcf") { // the input of the header compile-time test
+    std::FILE *f = std::fopen(argv[3], "wb");
+    if (f == nullptr || std::fwrite(dcf.data(), 1, dcf.size(), f) != dcf.size()) return 1;
+    return std::fclose(f) == 0 ? 0 : 1;
+  }
+  const int runs = argc > 2 ? std::atoi(argv[2]) : 50;
   std::vector<double> ms;
   std::vector<double> parse_ms;
   std::size_t header_bytes = 0;

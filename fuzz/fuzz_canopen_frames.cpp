@@ -97,8 +97,11 @@ void check_nmt(const co::can_frame &f, const co::can_frame &canon) {
     FUZZ_CHECK(co::nmt::decode_heartbeat(canon).value() == v);
   }
   if (auto n = co::nmt::decode_guard_request(f)) {
-    // A remote frame carries no data: canonical = id, RTR, DLC 1.
-    same_frame(co::nmt::encode_guard_request(n.value()), canon);
+    // A remote frame carries no data, and the request is accepted with any DLC (masters send
+    // DLC 0 or 1): the encoder's canonical form is id, RTR, DLC 1.
+    co::can_frame request = canon;
+    request.dlc = 1;
+    same_frame(co::nmt::encode_guard_request(n.value()), request);
   }
   if (auto g = co::nmt::decode_guard_response(f)) {
     const auto &v = g.value();

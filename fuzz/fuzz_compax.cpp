@@ -284,7 +284,8 @@ void check_control(bytes in) {
 void check_objects(bytes in) {
   if (in.size() < 2) return;
   constexpr auto d = fieldcodec::dictionaries::compax_objects::dictionary;
-  const fieldcodec::od::entry &e = d.entries()[(std::size_t{in[0]} << 8U | in[1]) % d.size()];
+  const fieldcodec::od::descriptor e =
+      d.describe(d.entries()[(std::size_t{in[0]} << 8U | in[1]) % d.size()]).value();
   const bytes value = in.subspan(2);
   auto eu = cx::decode_object(e, value);
   if (!eu) return;

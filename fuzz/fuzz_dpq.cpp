@@ -1,8 +1,9 @@
-// Fuzz harness for the DPQ parameter conversions (dpq/conversion.hpp, dpq/parameter.hpp) over
-// the generated DPQ dictionary and over arbitrary scale / offset / field / range conversions.
+// Fuzz harness for the DPQ parameter conversions (od::descriptor's scaling methods and
+// dpq/parameter.hpp) over the generated DPQ dictionary and over arbitrary scale / offset / field /
+// range descriptors.
 //
 // Byte 0 bit 0 selects the mode: 0 = an entry of the generated DPQ dictionary (bytes 1-2 pick
-// it), 1 = a fuzzed dpq::conversion (scale, offset, field, range from the input). The rest
+// it), 1 = a fuzzed od::descriptor (scale, offset, integer type, range from the input). The rest
 // gives an engineering value (decimal mantissa + places, and the same bytes as a double) and
 // the field's bytes. With bit 1 set in the entry mode, the rest is instead the 8 data bytes of
 // the card's SDO answer (dpq/sdo.hpp) on 0x585.
@@ -27,10 +28,10 @@
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
-#include <fieldcodec/dpq/conversion.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
 #include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -75,8 +76,10 @@ bool allowed_error(errc e) {
          e == errc::not_representable || e == errc::type_mismatch;
 }
 
-bool in_range(decimal eu, const fc::scaling::range &r) {
-  return fc::compare(eu, r.low) >= 0 && fc::compare(eu, r.high) <= 0;
+bool in_range(decimal eu, const od::descriptor &d) {
+  const auto lo = d.low.to_decimal();
+  const auto hi = d.high.to_decimal();
+  return (!lo || fc::compare(eu, lo.value()) >= 0) && (!hi || fc::compare(eu, hi.value()) <= 0);
 }
 
 // Reference model of core/scaling in 128-bit integers (only where every intermediate fits):
@@ -162,71 +165,72 @@ void check_to_eu_decimal(std::int64_t raw, const fc::scaling::linear &s, unsigne
   }
 }
 
-void check_conversion(const dpq::conversion &c, decimal eu, double eu_d,
+/// A fuzzed descriptor (any scale, offset, integer type and range).
+void check_descriptor(const od::descriptor &c, decimal eu, double eu_d,
                       std::span<const std::uint8_t> bytes) {
   check_scale_to_raw(eu, c.scale);
-  const bool field_ok = c.field.bytes >= 1U && c.field.bytes <= 8U;
+  const fc::scaling::field field = c.raw_field().value();
+  const bool has_range = c.low.has_value();
   for (const auto raw : {c.to_raw(eu), c.to_raw(eu_d)}) {
     if (!raw) {
       FUZZ_CHECK(allowed_error(raw.error()));
       continue;
     }
-    FUZZ_CHECK(field_ok);
-    FUZZ_CHECK(fc::scaling::check_field(raw.value(), c.field).has_value());
-    FUZZ_CHECK(raw.value() >= c.field.min() && raw.value() <= c.field.max());
-    auto p = c.encode_raw(raw.value());
-    FUZZ_CHECK(p.has_value() && p.value().size == c.field.bytes);
-    FUZZ_CHECK(c.decode_raw(p.value().span()).value() == raw.value());
+    FUZZ_CHECK(fc::scaling::check_field(raw.value(), field).has_value());
+    FUZZ_CHECK(raw.value() >= field.min() && raw.value() <= field.max());
+    auto p = dpq::raw_to_bytes(c, raw.value());
+    FUZZ_CHECK(p.has_value() && p.value().size == field.bytes);
+    FUZZ_CHECK(dpq::raw_from_bytes(c, p.value().span()).value() == raw.value());
     // F3/F8 (fixed): round_trip_places refuses offsets beyond 18 places (invalid_argument) and
     // scales above 10^18 (not_representable) instead of overflowing or breaking the promise.
-    auto back = c.to_eu_decimal(raw.value());
+    auto back = dpq::to_eu_decimal(c, raw.value());
     if (!back) {
       FUZZ_CHECK(allowed_error(back.error()));
     } else {
-      auto again = fc::scaling::to_raw(back.value(), c.scale, c.field);
+      auto again = fc::scaling::to_raw(back.value(), c.scale, field);
       FUZZ_CHECK(again.has_value() && again.value() == raw.value());
     }
   }
-  if (c.has_range) {
-    if (auto raw = c.to_raw(eu)) FUZZ_CHECK(in_range(eu, c.range));
+  if (has_range) {
+    if (auto raw = c.to_raw(eu)) FUZZ_CHECK(in_range(eu, c));
   }
 
   // bytes → raw → EU → raw → bytes
-  if (!field_ok) {
-    FUZZ_CHECK(c.decode_raw(bytes).is(errc::invalid_argument));
-    return;
-  }
-  const auto in = bytes.first(std::min<std::size_t>(bytes.size(), c.field.bytes));
-  auto raw = c.decode_raw(in);
-  if (in.size() < c.field.bytes) {
+  const auto in = bytes.first(std::min<std::size_t>(bytes.size(), field.bytes));
+  auto raw = dpq::raw_from_bytes(c, in);
+  if (in.size() < field.bytes) {
     FUZZ_CHECK(raw.is(errc::truncated));
     return;
   }
   if (!raw) {
-    FUZZ_CHECK(raw.is(errc::overflow) && !c.field.is_signed && c.field.bytes == 8U);
+    FUZZ_CHECK(raw.is(errc::overflow) && !field.is_signed && field.bytes == 8U);
     return;
   }
-  auto p = c.encode_raw(raw.value());
-  FUZZ_CHECK(p.has_value() && std::equal(in.begin(), in.end(), p.value().span().begin()));
+  // raw_to_bytes also checks the printed range (converted to raw): a value read from the card
+  // may lie outside it
+  auto p = dpq::raw_to_bytes(c, raw.value());
+  FUZZ_CHECK(p.has_value() || (p.is(errc::out_of_range) && has_range));
+  if (p) FUZZ_CHECK(std::equal(in.begin(), in.end(), p.value().span().begin()));
   check_to_eu_decimal(raw.value(), c.scale, eu.places % 19U);
-  auto e = c.decode(in);
+  auto e = dpq::from_bytes(c, in);
   if (!e) return; // scaling::to_eu_decimal overflow (huge scale/offset)
   auto back = c.to_raw(e.value());
   if (back) {
     FUZZ_CHECK(back.value() == raw.value());
-    FUZZ_CHECK(c.encode(e.value()).value() == p.value());
+    FUZZ_CHECK(p.has_value() && dpq::to_bytes(c, e.value()).value() == p.value());
   } else {
-    FUZZ_CHECK(back.is(errc::out_of_range) && c.has_range && !in_range(e.value(), c.range));
+    FUZZ_CHECK(back.is(errc::out_of_range) && has_range && !in_range(e.value(), c));
   }
 }
 
-void check_entry(const od::entry &e, decimal eu, double eu_d, std::span<const std::uint8_t> bytes) {
+void check_entry(const od::descriptor &e, decimal eu, double eu_d,
+                 std::span<const std::uint8_t> bytes) {
   auto f = e.raw_field();
   if (!f) {
-    FUZZ_CHECK(dpq::to_raw(e, eu).is(errc::type_mismatch));
+    FUZZ_CHECK(e.to_raw(eu).is(errc::type_mismatch));
     return;
   }
-  for (const auto raw : {dpq::to_raw(e, eu), dpq::to_raw(e, eu_d)}) {
+  for (const auto raw : {e.to_raw(eu), e.to_raw(eu_d)}) {
     if (!raw) {
       FUZZ_CHECK(allowed_error(raw.error()));
       continue;
@@ -237,7 +241,7 @@ void check_entry(const od::entry &e, decimal eu, double eu_d, std::span<const st
     FUZZ_CHECK(dpq::raw_from_bytes(e, p.value().span()).value() == raw.value());
     auto back = dpq::from_bytes(e, p.value().span());
     FUZZ_CHECK(back.has_value());
-    auto again = dpq::to_raw(e, back.value());
+    auto again = e.to_raw(back.value());
     // The EU read back may round to just outside the printed range at its ends (e.g. 4.001
     // for raw 1311); without the range it converts to the same raw value.
     if (!again) {
@@ -255,7 +259,7 @@ void check_entry(const od::entry &e, decimal eu, double eu_d, std::span<const st
   }
   auto eu_back = dpq::from_bytes(e, in);
   FUZZ_CHECK(eu_back.has_value());
-  auto again = dpq::to_raw(e, eu_back.value());
+  auto again = e.to_raw(eu_back.value());
   if (again) {
     FUZZ_CHECK(again.value() == raw.value());
     auto p = dpq::to_bytes(e, eu_back.value());
@@ -267,7 +271,7 @@ void check_entry(const od::entry &e, decimal eu, double eu_d, std::span<const st
 }
 
 /// The card's answers to reads and writes of `e` (dpq/sdo.hpp), from 8 fuzzed data bytes.
-void check_sdo(const od::entry &e, reader &r) {
+void check_sdo(const od::descriptor &e, reader &r) {
   fieldcodec::canopen::can_frame f;
   f.id = 0x585;
   f.dlc = 8;
@@ -309,7 +313,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   reader r{std::span<const std::uint8_t>(data + 1, size - 1)};
   if ((data[0] & 1U) == 0U) {
     constexpr auto dict = fieldcodec::dictionaries::dpq_parameters::dictionary;
-    const od::entry &e = dict.entries()[r.take(2) % dict.size()];
+    const od::descriptor e = dict.describe(dict.entries()[r.take(2) % dict.size()]).value();
     if ((data[0] & 2U) != 0U) {
       check_sdo(e, r);
       return 0;
@@ -327,18 +331,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     }
     return 0;
   }
-  dpq::conversion c;
+  // 1..8-byte integer types, signed or unsigned
+  static constexpr od::data_type types[2][8] = {
+      {od::data_type::unsigned8, od::data_type::unsigned16, od::data_type::unsigned24,
+       od::data_type::unsigned32, od::data_type::unsigned40, od::data_type::unsigned48,
+       od::data_type::unsigned56, od::data_type::unsigned64},
+      {od::data_type::integer8, od::data_type::integer16, od::data_type::integer24,
+       od::data_type::integer32, od::data_type::integer40, od::data_type::integer48,
+       od::data_type::integer56, od::data_type::integer64}};
+  od::descriptor c;
+  c.flags = od::flag::scaled;
   c.scale.scale = decimal_of(r);
   c.scale.offset = decimal_of(r);
   const auto fb = r.take(1);
-  c.field = {static_cast<std::uint8_t>(fb % 10U), (fb & 0x10U) != 0U}; // 0, 9: invalid widths
-  c.has_range = (fb & 0x20U) != 0U;
-  c.range.low = decimal_of(r);
-  c.range.high = decimal_of(r);
+  c.type = types[(fb & 0x10U) != 0U ? 1 : 0][fb % 8U];
+  const decimal low = decimal_of(r);
+  const decimal high = decimal_of(r);
+  if ((fb & 0x20U) != 0U) {
+    c.low = od::decimal_number(low);
+    c.high = od::decimal_number(high);
+  }
   const decimal eu = decimal_of(r);
   double eu_d = 0;
   const auto bits = r.take(8);
   std::memcpy(&eu_d, &bits, sizeof eu_d);
-  check_conversion(c, eu, eu_d, r.in);
+  check_descriptor(c, eu, eu_d, r.in);
   return 0;
 }

@@ -45,11 +45,14 @@ constexpr std::array<od::dictionary, 5> dictionaries{
     dict::xenax_powerlink::dictionary, dict::dpq_parameters::dictionary,
     dict::compax_objects::dictionary};
 
-void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte_order order) {
+/// The node-ID the SDO frames are for; node-ID-relative limits are checked for it.
+constexpr std::uint8_t node = 5;
+
+void check_fixed(const od::descriptor &e, std::span<const std::uint8_t> all, fc::byte_order order) {
   const std::size_t w = od::fixed_size(e.type);
   const auto in = all.first(std::min(all.size(), w));
-  auto checked = od::decode(e, in, order, od::limits::check);
-  auto any = od::decode(e, in, order, od::limits::ignore);
+  auto checked = od::decode(e, in, order, od::limits::check, node);
+  auto any = od::decode(e, in, order, od::limits::ignore, node);
   if (in.size() < w) {
     FUZZ_CHECK(checked.is(errc::truncated) && any.is(errc::truncated));
     return;
@@ -60,7 +63,7 @@ void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte
     return;
   }
   std::array<std::uint8_t, 8> out{};
-  auto n = od::encode(e, any.value(), out, order);
+  auto n = od::encode(e, any.value(), out, order, node);
   if (checked) {
     FUZZ_CHECK(checked.value() == any.value());
     FUZZ_CHECK(n.has_value() && n.value() == w);
@@ -72,13 +75,13 @@ void check_fixed(const od::entry &e, std::span<const std::uint8_t> all, fc::byte
 
   // SDO: expedited upload response with the bytes (little-endian on CANopen) → the value.
   if (order != fc::byte_order::little || w > 4U) return;
-  auto f = sdo::channel::default_for(5).value().response(
+  auto f = sdo::channel::default_for(node).value().response(
       sdo::expedited_upload_response({e.index, e.sub}, in));
   FUZZ_CHECK(f.has_value());
   auto v = sdo::upload_value(e, f.value());
   FUZZ_CHECK(v.has_value() && v.value() == any.value());
   if (checked && od::writable(e.access_type)) {
-    auto d = sdo::download(5, e, any.value().to_double()); // typed path through a double
+    auto d = sdo::download(node, e, any.value().to_double()); // typed path through a double
     if (od::is_integer(e.type) || e.type == od::data_type::boolean) {
       // integers above 2^53 do not survive the double; compare only exact ones
       const auto i = any.value().to_int64();
@@ -118,7 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   const od::dictionary &d = dictionaries[(data[0] & 7U) % dictionaries.size()];
   const auto order = (data[0] & 8U) != 0U ? fc::byte_order::big : fc::byte_order::little;
   const std::size_t k = (std::size_t{data[1]} << 8U | data[2]) % d.size();
-  const od::entry &e = d.entries()[k];
+  const od::descriptor e = d.describe(d.entries()[k]).value(); // with its scale
   const std::span<const std::uint8_t> in(data + 3, size - 3);
 
   const od::entry *found = d.find(e.index, e.sub);

@@ -351,7 +351,7 @@ private:
         bad(f, column, "expected a decimal number such as 327.67, got '" + f.text + "'");
         return false;
       }
-      out = od::num::d(normalize(d.value()));
+      out = od::decimal_number(normalize(d.value()));
       return true;
     }
     return int_text(f, column, f.text, 0, out);
@@ -572,7 +572,7 @@ private:
       }
       nodeid = true;
       if (x.operand.empty()) {
-        out = od::num::u(0);
+        out = od::unsigned_number(0);
         return true;
       }
       return int_text(*f, column, x.operand, x.operand_pos, out);
@@ -583,7 +583,7 @@ private:
         bad(*f, column, p.error, p.error_pos);
         return false;
       }
-      out = od::num::f(p.value);
+      out = od::real_number(p.value);
       return true;
     }
     return csv_number(*f, column, out);

@@ -263,11 +263,11 @@ bool fits(od::data_type t, od::number n) {
 std::optional<od::number> plus_node(od::number n, std::uint8_t node) {
   if (n.kind == od::number_kind::unsigned_) {
     if (n.bits > ~std::uint64_t{0} - node) return std::nullopt;
-    return od::num::u(n.bits + node);
+    return od::unsigned_number(n.bits + node);
   }
   auto i = n.to_int64();
   if (!i || i.value() > std::numeric_limits<std::int64_t>::max() - node) return std::nullopt;
-  return od::num::i(i.value() + node);
+  return od::signed_number(i.value() + node);
 }
 
 // The value keys of an entry: where a key's number, node-ID flag and text go.
@@ -572,7 +572,7 @@ private:
         bad_value(s, k, r.error, v, r.error_pos);
         return false;
       }
-      out = od::num::f(r.value);
+      out = od::real_number(r.value);
       return true;
     }
     return integer_value(s, k, v, type, out);
@@ -593,7 +593,7 @@ private:
     out = p.value;
     if (od::is_unsigned_integer(type) && out.kind == od::number_kind::signed_ &&
         static_cast<std::int64_t>(out.bits) >= 0) {
-      out = od::num::u(out.bits);
+      out = od::unsigned_number(out.bits);
     }
     if (od::is_integer(type)) {
       for (const std::uint8_t node : {std::uint8_t{1}, std::uint8_t{127}}) {
@@ -635,7 +635,7 @@ private:
       if (auto d = parse_decimal(v); d && v.find('.') != std::string_view::npos) {
         diag_.warning(file_, k.line, column(k, v, 0),
                       "expected an integer, got '" + v + "' in " + k.name + " of [" + s.name + "]");
-        out = od::num::d(d.value());
+        out = od::decimal_number(d.value());
         return true;
       }
       bad_value(s, k, p.error, v, p.error_pos);
@@ -652,15 +652,15 @@ private:
           p.value.bits > static_cast<std::uint64_t>(signed_max(w))) {
         std::uint64_t b = p.value.bits;
         if (w < 8U) b |= ~detail::width_mask(w);
-        p.value = od::num::i(static_cast<std::int64_t>(b));
+        p.value = od::signed_number(static_cast<std::int64_t>(b));
       } else if (p.value.bits <= static_cast<std::uint64_t>(signed_max(w))) {
-        p.value = od::num::i(static_cast<std::int64_t>(p.value.bits));
+        p.value = od::signed_number(static_cast<std::int64_t>(p.value.bits));
       }
     }
     if (od::is_integer(type) || type == od::data_type::boolean) {
       if (p.value.kind == od::number_kind::signed_ &&
           static_cast<std::int64_t>(p.value.bits) >= 0 && od::is_unsigned_integer(type)) {
-        p.value = od::num::u(p.value.bits);
+        p.value = od::unsigned_number(p.value.bits);
       }
       if (!fits(type, p.value)) {
         diag_.warning(file_, k.line, column(k, v, 0),
@@ -1118,7 +1118,7 @@ private:
     sub0.type_code = 0x0005;
     sub0.type = od::data_type::unsigned8;
     sub0.access = od::access::ro;
-    sub0.default_value = od::num::u(compact);
+    sub0.default_value = od::unsigned_number(compact);
     dict_.entries.push_back(sub0);
 
     const auto names = indexed_keys(names_, index, compact);

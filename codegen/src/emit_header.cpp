@@ -3,105 +3,96 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace fieldcodec::gen {
 
 namespace {
 
-std::string number_literal(const od::number &n) {
+// Appenders that write straight into the header (no temporary strings: the emitter runs once
+// per entry and table).
+template <class Int>
+void append_int(std::string &o, Int v) {
+  std::array<char, 24> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  o.append(buf.data(), r.ptr);
+}
+/// Upper-case hex with at least `digits` digits.
+void append_hex(std::string &o, std::uint64_t v, int digits) {
+  std::array<char, 16> buf{};
+  int n = 0;
+  while (v != 0U || n < digits) {
+    buf[static_cast<std::size_t>(15 - n)] = "0123456789ABCDEF"[v & 0xFU];
+    v >>= 4U;
+    ++n;
+  }
+  o.append(buf.data() + 16 - n, static_cast<std::size_t>(n));
+}
+
+void append_number(std::string &o, const od::number &n) {
   switch (n.kind) {
-  case od::number_kind::none: return "{}";
+  case od::number_kind::none: o += "{}"; return;
   case od::number_kind::signed_: {
     const auto v = static_cast<std::int64_t>(n.bits);
-    if (v == std::numeric_limits<std::int64_t>::min())
-      return "od::num::i(-9223372036854775807 - 1)";
-    return "od::num::i(" + std::to_string(v) + ")";
+    if (v == std::numeric_limits<std::int64_t>::min()) {
+      o += "od::signed_number(-9223372036854775807 - 1)";
+      return;
+    }
+    o += "od::signed_number(";
+    append_int(o, v);
+    o += ')';
+    return;
   }
-  case od::number_kind::unsigned_: return "od::num::u(" + std::to_string(n.bits) + "U)";
+  case od::number_kind::unsigned_:
+    o += "od::unsigned_number(";
+    append_int(o, n.bits);
+    o += "U)";
+    return;
   case od::number_kind::real: {
     std::array<char, 64> buf{};
     const double d = n.to_double();
     auto [p, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), d);
-    std::string s(buf.data(), p);
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return "od::num::f(" + s + ")";
+    std::string_view t(buf.data(), static_cast<std::size_t>(p - buf.data()));
+    o += "od::real_number(";
+    o += t;
+    if (t.find_first_of(".e") == std::string_view::npos) o += ".0";
+    o += ')';
+    return;
   }
   case od::number_kind::decimal_:
-    return "od::num::d(" + std::to_string(static_cast<std::int64_t>(n.bits)) + ", " +
-           std::to_string(n.places) + ")";
+    o += "od::decimal_number(";
+    append_int(o, static_cast<std::int64_t>(n.bits));
+    o += ", ";
+    append_int(o, n.places);
+    o += ')';
+    return;
   }
-  return "{}";
+  o += "{}";
+}
+std::string number_literal(const od::number &n) {
+  std::string o;
+  append_number(o, n);
+  return o;
 }
 
 std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(v, digits)); }
 
-const char *data_type_enum(od::data_type t) {
-  switch (t) {
-  case od::data_type::boolean: return "boolean";
-  case od::data_type::integer8: return "integer8";
-  case od::data_type::integer16: return "integer16";
-  case od::data_type::integer24: return "integer24";
-  case od::data_type::integer32: return "integer32";
-  case od::data_type::integer40: return "integer40";
-  case od::data_type::integer48: return "integer48";
-  case od::data_type::integer56: return "integer56";
-  case od::data_type::integer64: return "integer64";
-  case od::data_type::unsigned8: return "unsigned8";
-  case od::data_type::unsigned16: return "unsigned16";
-  case od::data_type::unsigned24: return "unsigned24";
-  case od::data_type::unsigned32: return "unsigned32";
-  case od::data_type::unsigned40: return "unsigned40";
-  case od::data_type::unsigned48: return "unsigned48";
-  case od::data_type::unsigned56: return "unsigned56";
-  case od::data_type::unsigned64: return "unsigned64";
-  case od::data_type::real32: return "real32";
-  case od::data_type::real64: return "real64";
-  case od::data_type::visible_string: return "visible_string";
-  case od::data_type::octet_string: return "octet_string";
-  case od::data_type::unicode_string: return "unicode_string";
-  case od::data_type::time_of_day: return "time_of_day";
-  case od::data_type::time_difference: return "time_difference";
-  case od::data_type::domain: return "domain";
-  }
-  return "domain";
-}
-
-const char *object_enum(od::object_code c) {
-  switch (c) {
-  case od::object_code::null: return "null";
-  case od::object_code::domain: return "domain";
-  case od::object_code::deftype: return "deftype";
-  case od::object_code::defstruct: return "defstruct";
-  case od::object_code::var: return "var";
-  case od::object_code::array: return "array";
-  case od::object_code::record: return "record";
-  }
-  return "var";
-}
-
-const char *access_enum(od::access a) {
-  switch (a) {
-  case od::access::ro: return "ro";
-  case od::access::wo: return "wo";
-  case od::access::rw: return "rw";
-  case od::access::rwr: return "rwr";
-  case od::access::rww: return "rww";
-  case od::access::constant: return "constant";
-  }
-  return "rw";
-}
+// The enumerators' C++ names come from od/data_type.hpp's tables (od::info(…).identifier: one
+// table per idea, shared by the readers, the EDS writer and this emitter).
 
 /// Assigns unique identifiers in a deterministic order.
 class symbols {
 public:
   symbols() {
-    for (const char *r : {"entries", "dictionary", "commands", "table", "od", "std", "fieldcodec",
-                          "node_id", "source_file", "detail"}) {
+    for (const char *r : {"entries", "infos", "scales", "dictionary", "commands", "table", "od",
+                          "std", "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
       used_.insert(r);
     }
   }
@@ -120,81 +111,161 @@ private:
   std::set<std::string> used_;
 };
 
-void emit_entry(std::string &o, const entry &e) {
-  o += "    {.index = 0x" + hex(e.index, 4);
-  if (e.sub != 0U) o += ", .sub = " + std::to_string(e.sub);
-  if (e.object != od::object_code::var)
-    o += std::string(", .object = od::object_code::") + object_enum(e.object);
-  o += std::string(", .type = od::data_type::") + data_type_enum(e.type);
-  if (e.access != od::access::rw)
-    o += std::string(", .access_type = od::access::") + access_enum(e.access);
-  if (e.pdo != od::pdo_mapping::no)
-    o += ", .pdo = od::pdo_mapping::" + std::string(od::name(e.pdo));
-  if (e.flags != 0U) o += ", .flags = 0x" + hex(e.flags, 2);
-  if (e.size != 0U) o += ", .size = " + std::to_string(e.size);
-  o += ", .name = ";
-  append_cpp_string(o, e.name);
+/// A std::string_view literal, `"text"sv`: its length is known without the compiler counting
+/// the characters in constant evaluation, and there is no constructor overload to resolve (both
+/// are a measurable part of compiling a big dictionary). Embedded NULs are kept.
+void append_view(std::string &o, const std::string &v) {
+  append_cpp_string(o, v);
+  o += "sv";
+}
+
+/// The value of a byte-string entry: a visible string as `"text"sv`, other bytes (OCTET_STRING,
+/// UNICODE_STRING, DOMAIN) with every byte escaped and the length written out.
+void append_value_view(std::string &o, od::data_type type, const std::string &bytes) {
+  if (type == od::data_type::visible_string) {
+    append_view(o, bytes);
+  } else {
+    append_cpp_value_text(o, type, bytes);
+  }
+}
+
+/// The od::flag bits of an entry, as a C++ expression ("" when none).
+void append_flags(std::string &o, const entry &e) {
+  struct bit {
+    bool set;
+    const char *name;
+  };
+  const bit bits[] = {
+      {(e.flags & od::flag::range_exceeds_field) != 0U, "range_exceeds_field"},
+      {(e.flags & od::flag::index_anomaly) != 0U, "index_anomaly"},
+      {(e.flags & od::flag::signedness_guess) != 0U, "signedness_guess"},
+      {e.scaled, "scaled"},
+      {e.default_nodeid, "default_nodeid"},
+      {e.low_nodeid, "low_nodeid"},
+      {e.high_nodeid, "high_nodeid"},
+      {e.parameter_nodeid, "parameter_nodeid"},
+  };
+  bool first = true;
+  for (const bit &b : bits) {
+    if (!b.set) continue;
+    o += first ? ", .flags = od::flag::" : " | od::flag::";
+    o += b.name;
+    first = false;
+  }
+}
+
+/// `{...}` initialising the od::entry part.
+void emit_core(std::string &o, const entry &e) {
+  o += "{.index = 0x";
+  append_hex(o, e.index, 4);
+  if (e.sub != 0U) {
+    o += ", .sub = ";
+    append_int(o, e.sub);
+  }
+  if (e.object != od::object_code::var) {
+    o += ", .object = od::object_code::";
+    o += od::info(e.object).identifier;
+  }
+  o += ", .type = od::data_type::";
+  o += od::info(e.type).identifier;
+  if (e.access != od::access::rw) {
+    o += ", .access_type = od::access::";
+    o += od::info(e.access).identifier;
+  }
+  if (e.pdo != od::pdo_mapping::no) {
+    o += ", .pdo = od::pdo_mapping::";
+    o += od::name(e.pdo);
+  }
+  append_flags(o, e);
+  if (e.size != 0U) {
+    o += ", .size = ";
+    append_int(o, e.size);
+  }
   if (e.low) {
     o += ", .low = ";
-    o += number_literal(e.low);
+    append_number(o, e.low);
   }
   if (e.high) {
     o += ", .high = ";
-    o += number_literal(e.high);
+    append_number(o, e.high);
   }
   if (e.default_value) {
     o += ", .default_value = ";
-    o += number_literal(e.default_value);
+    append_number(o, e.default_value);
   }
-  if (e.default_nodeid) o += ", .default_nodeid = true";
   if (!e.default_text.empty()) {
     o += ", .default_text = ";
-    append_cpp_value_text(o, e.type, e.default_text);
+    append_value_view(o, e.type, e.default_text);
   }
-  if (e.scaled || e.offset.mantissa != 0) {
-    o += ", .scale = {{" + std::to_string(e.scale.mantissa) + ", " +
-         std::to_string(e.scale.places) + "}, {" + std::to_string(e.offset.mantissa) + ", " +
-         std::to_string(e.offset.places) + "}}";
+  o += '}';
+}
+
+/// `{...}` initialising the od::entry_info part ("{}" when the entry has no descriptive column).
+void emit_info(std::string &o, const entry &e) {
+  o += "{";
+  bool first = true;
+  auto field = [&](const char *name) {
+    o += first ? "." : ", .";
+    o += name;
+    o += " = ";
+    first = false;
+  };
+  auto text = [&](const char *name, const std::string &v) {
+    if (v.empty()) return;
+    field(name);
+    append_view(o, v);
+  };
+  text("name", e.name);
+  text("unit", e.unit);
+  text("alt_name", e.alt_name);
+  text("section", e.section);
+  text("remark", e.remark);
+  text("acceptance", e.acceptance);
+  text("denotation", e.denotation);
+  if (e.pointer != od::no_pointer) {
+    field("pointer");
+    append_int(o, e.pointer);
   }
-  if (e.scaled) o += ", .scaled = true";
-  if (!e.unit.empty()) {
-    o += ", .unit = ";
-    append_cpp_string(o, e.unit);
+  if (e.bus != od::bus_manager::unspecified) {
+    field("bus");
+    o += e.bus == od::bus_manager::available ? "od::bus_manager::available"
+                                             : "od::bus_manager::not_available";
   }
-  if (!e.alt_name.empty()) {
-    o += ", .alt_name = ";
-    append_cpp_string(o, e.alt_name);
+  if (e.has_obj_flags && e.obj_flags != 0U) {
+    field("obj_flags");
+    o += "0x";
+    append_hex(o, e.obj_flags, 1);
   }
-  if (e.pointer != od::no_pointer) o += ", .pointer = " + std::to_string(e.pointer);
-  if (e.bus == od::bus_manager::available) o += ", .bus = od::bus_manager::available";
-  if (e.bus == od::bus_manager::not_available) o += ", .bus = od::bus_manager::not_available";
-  if (!e.acceptance.empty()) {
-    o += ", .acceptance = ";
-    append_cpp_string(o, e.acceptance);
-  }
-  if (!e.section.empty()) {
-    o += ", .section = ";
-    append_cpp_string(o, e.section);
-  }
-  if (!e.remark.empty()) {
-    o += ", .remark = ";
-    append_cpp_string(o, e.remark);
-  }
-  if (e.has_obj_flags && e.obj_flags != 0U) o += ", .obj_flags = 0x" + hex(e.obj_flags, 1);
   if (e.parameter_value) {
-    o += ", .parameter_value = ";
-    o += number_literal(e.parameter_value);
+    field("parameter_value");
+    append_number(o, e.parameter_value);
   }
-  if (e.parameter_nodeid) o += ", .parameter_nodeid = true";
   if (!e.parameter_text.empty()) {
-    o += ", .parameter_text = ";
-    append_cpp_value_text(o, e.type, e.parameter_text);
+    field("parameter_text");
+    append_value_view(o, e.type, e.parameter_text);
   }
-  if (!e.denotation.empty()) {
-    o += ", .denotation = ";
-    append_cpp_string(o, e.denotation);
+  o += "}";
+}
+
+bool has_scale(const entry &e) {
+  return e.scaled || e.offset.mantissa != 0 || e.scale.mantissa != 1 || e.scale.places != 0;
+}
+
+/// `{{scale}, {offset}}`, or "{}" for the identity.
+void emit_scale(std::string &o, const entry &e) {
+  if (!has_scale(e)) {
+    o += "{}";
+    return;
   }
-  o += "},\n";
+  o += "{{";
+  append_int(o, e.scale.mantissa);
+  o += ", ";
+  append_int(o, e.scale.places);
+  o += "}, {";
+  append_int(o, e.offset.mantissa);
+  o += ", ";
+  append_int(o, e.offset.places);
+  o += "}}";
 }
 
 std::string command_value_enum(od::command_value v) {
@@ -210,18 +281,19 @@ void emit_commands(std::string &o, const dictionary &d) {
   o += "inline constexpr std::array<od::command, " + std::to_string(d.commands.size()) +
        "> commands{{\n";
   for (const auto &c : d.commands) {
-    o += "    {.code = 0x" + hex(c.code, 4) + ", .name = " + cpp_string(c.name);
+    o += "    {.code = 0x" + hex(c.code, 4) + ", .name = ";
+    append_view(o, c.name);
     if (!c.section.empty()) {
       o += ", .section = ";
-      append_cpp_string(o, c.section);
+      append_view(o, c.section);
     }
     if (!c.title.empty()) {
       o += ", .title = ";
-      append_cpp_string(o, c.title);
+      append_view(o, c.title);
     }
     if (!c.parameter.empty()) {
       o += ", .parameter = ";
-      append_cpp_string(o, c.parameter);
+      append_view(o, c.parameter);
     }
     if (c.parameter_min) {
       o += ", .parameter_min = ";
@@ -237,7 +309,7 @@ void emit_commands(std::string &o, const dictionary &d) {
       o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
     if (!c.date.empty()) {
       o += ", .date = ";
-      append_cpp_string(o, c.date);
+      append_view(o, c.date);
     }
     if (c.date_min) {
       o += ", .date_min = ";
@@ -253,15 +325,15 @@ void emit_commands(std::string &o, const dictionary &d) {
       o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
     if (!c.reply.empty()) {
       o += ", .reply = ";
-      append_cpp_string(o, c.reply);
+      append_view(o, c.reply);
     }
     if (!c.modes.empty()) {
       o += ", .modes = ";
-      append_cpp_string(o, c.modes);
+      append_view(o, c.modes);
     }
     if (!c.remark.empty()) {
       o += ", .remark = ";
-      append_cpp_string(o, c.remark);
+      append_view(o, c.remark);
     }
     o += "},\n";
   }
@@ -287,20 +359,23 @@ std::string stem_identifier(std::string_view stem) {
 
 std::string emit_header(const dictionary &d) {
   std::string o;
-  o.reserve(d.entries.size() * 160U + 4096U);
+  o.reserve(d.entries.size() * 400U + 4096U); // about 370 bytes per entry (three tables + names)
   o += "// Generated from " + d.source_name + " by fieldcodec-gen \xE2\x80\x94 do not edit.\n";
   o += "// Regenerate with codegen/regenerate.sh (or the fieldcodec_generate_dictionary CMake "
        "function).\n";
   o += "// clang-format off\n#pragma once\n\n";
   if (d.is_command_table) {
     o += "#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
-         "<array>\n\n";
+         "<array>\n#include <string_view>\n\n";
   } else {
-    o += "#include <fieldcodec/od/data_type.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
+    o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
+         "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-         "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n\n";
+         "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n"
+         "#include <string_view>\n\n";
   }
   o += "namespace fieldcodec::dictionaries::" + d.stem + " {\n\n";
+  o += "using namespace std::string_view_literals;\n\n";
   o += "inline constexpr const char *source_file = " + cpp_string(d.source_name) + ";\n\n";
   if (d.is_command_table) {
     emit_commands(o, d);
@@ -311,12 +386,17 @@ std::string emit_header(const dictionary &d) {
     o += "/// [DeviceComissioning] NodeID\ninline constexpr std::uint8_t node_id = " +
          std::to_string(d.node_id) + ";\n\n";
   }
-  o += "inline constexpr std::array<od::entry, " + std::to_string(d.entries.size()) +
-       "> entries{{\n";
-  for (const auto &e : d.entries) emit_entry(o, e);
-  o += "}};\n\ninline constexpr od::dictionary dictionary{entries};\n"
-       "static_assert(dictionary.is_valid());\n\n";
-  // descriptors, one per object, in index order
+  // Names, assigned in index order (object, then its named sub-objects): a VAR object's single
+  // entry and every named sub-object become standalone od::descriptor constants, ARRAY/RECORD
+  // objects od::object views into the tables.
+  struct view {
+    std::string symbol;
+    const object_info *info;
+    std::size_t first, count;
+  };
+  std::vector<std::string> named(d.entries.size());
+  std::vector<bool> is_var(d.entries.size(), false);
+  std::vector<view> views;
   symbols sym;
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
@@ -328,26 +408,72 @@ std::string emit_header(const dictionary &d) {
     const bool single = info.code == od::object_code::var || info.code == od::object_code::domain ||
                         info.code == od::object_code::deftype || info.code == od::object_code::null;
     if (single && n == 1U) {
-      o += "inline constexpr const od::entry &" + s + " = entries[" + std::to_string(i) +
-           "]; // 0x" + hex(index, 4) + "\n";
+      named[i] = s;
+      is_var[i] = true;
     } else {
-      o += "inline constexpr od::object " + s + "{0x" + hex(index, 4) +
-           ", od::object_code::" + object_enum(info.code) + ", " + cpp_string(info.name) +
-           ", {entries.data() + " + std::to_string(i) + ", " + std::to_string(n) + "}};\n";
+      views.push_back({s, &info, i, n});
       // named sub-entries: every sub-object of a RECORD/DEFSTRUCT, explicit symbols of arrays
       for (std::size_t k = i; k < i + n; ++k) {
         const entry &e = d.entries[k];
-        const bool named = info.code != od::object_code::array || !e.symbol.empty();
-        if (!named) continue;
+        const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
+        if (!is_named) continue;
         std::string sub = !e.symbol.empty() ? e.symbol : s + "_" + make_identifier(e.name);
         if (e.symbol.empty() && make_identifier(e.name).empty()) {
           sub = s + "_sub" + std::to_string(e.sub);
         }
-        const std::string ss = sym.take(sub, "sub" + std::to_string(e.sub));
-        o += "inline constexpr const od::entry &" + ss + " = entries[" + std::to_string(k) + "];\n";
+        named[k] = sym.take(sub, "sub" + std::to_string(e.sub));
       }
     }
     i += n;
+  }
+  bool scales = false;
+  for (const auto &e : d.entries) scales = scales || has_scale(e);
+
+  const std::string size = std::to_string(d.entries.size());
+  auto table = [&](const char *type, const char *name,
+                   void (*literal)(std::string &, const entry &)) {
+    o += std::string("inline constexpr std::array<") + type + ", " + size + "> " + name + "{{\n";
+    for (const entry &e : d.entries) {
+      o += "    ";
+      literal(o, e);
+      o += ",\n";
+    }
+    o += "}};\n\n";
+  };
+  table("od::entry", "entries", emit_core);
+  table("od::entry_info", "infos", emit_info);
+  if (scales) table("scaling::linear", "scales", emit_scale);
+  o += std::string("inline constexpr od::dictionary dictionary{entries, infos") +
+       (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
+  // a standalone descriptor: a copy of table row k, not a reference into the tables
+  auto descriptor = [&](std::size_t k) {
+    const std::string at = std::to_string(k);
+    o += "inline constexpr od::descriptor ";
+    o += named[k];
+    o += "{entries[" + at + "], infos[" + at + "]";
+    if (scales) o += ", scales[" + at + "]";
+    o += "}; // 0x" + hex(d.entries[k].index, 4);
+    if (!is_var[k]) o += " sub " + std::to_string(d.entries[k].sub);
+    o += "\n";
+  };
+  o += "\n// VAR objects: standalone descriptors (firmware that names one keeps only that one).\n";
+  for (std::size_t k = 0; k < d.entries.size(); ++k) {
+    if (is_var[k]) descriptor(k);
+  }
+  if (!views.empty()) o += "\n// ARRAY and RECORD objects: views into the tables.\n";
+  for (const view &v : views) {
+    const std::string at = std::to_string(v.first);
+    const std::string n = std::to_string(v.count);
+    o += "inline constexpr od::object " + v.symbol + "{0x" + hex(v.info->index, 4) +
+         ", od::object_code::" + std::string(od::info(v.info->code).identifier) + ", ";
+    append_view(o, v.info->name);
+    o += ", {entries.data() + " + at + ", " + n + "}, {infos.data() + " + at + ", " + n + "}";
+    if (scales) o += ", {scales.data() + " + at + ", " + n + "}";
+    o += "};\n";
+    // named sub-objects of the view: standalone descriptors too (as `view[sub]`)
+    for (std::size_t k = v.first; k < v.first + v.count; ++k) {
+      if (!named[k].empty()) descriptor(k);
+    }
   }
   o += "\n} // namespace fieldcodec::dictionaries::" + d.stem + "\n// clang-format on\n";
   return o;

@@ -189,12 +189,12 @@ int_parse parse_int(std::string_view s) {
       r.error = "number '" + std::string(s) + "' does not fit 64 bits";
       return r;
     }
-    r.value = od::num::i(static_cast<std::int64_t>(std::uint64_t{0} - v));
+    r.value = od::signed_number(static_cast<std::int64_t>(std::uint64_t{0} - v));
   } else if (base == 10 &&
              v <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-    r.value = od::num::i(static_cast<std::int64_t>(v));
+    r.value = od::signed_number(static_cast<std::int64_t>(v));
   } else {
-    r.value = od::num::u(v);
+    r.value = od::unsigned_number(v);
   }
   r.ok = true;
   return r;

@@ -24,7 +24,7 @@ namespace fieldcodec::gen {
 /// C suffixes (U, L, LL, UL) are accepted and reported in `suffix`.
 struct int_parse {
   bool ok = false;
-  od::number value;  ///< num::i for negatives and signed decimals, num::u otherwise
+  od::number value;  ///< signed_number for negatives and signed decimals, unsigned_number otherwise
   std::string error; ///< "expected ..." text when !ok
   std::size_t error_pos = 0;
   bool suffix = false;

@@ -48,7 +48,7 @@ std::string eds_text(const std::string &s) { return std::string(trim(s)); }
 std::string entry_number(const entry &e, const od::number &n, bool nodeid) {
   if (n.kind == od::number_kind::signed_ && od::is_unsigned_integer(e.type) &&
       static_cast<std::int64_t>(n.bits) >= 0) {
-    return eds_number(od::num::u(n.bits), nodeid);
+    return eds_number(od::unsigned_number(n.bits), nodeid);
   }
   return eds_number(n, nodeid);
 }
@@ -72,7 +72,7 @@ std::string eds_limit(const entry &e, const od::number &n, bool nodeid) {
         }
         return v < 0 || od::is_signed_integer(e.type)
                    ? std::to_string(v)
-                   : eds_number(od::num::u(static_cast<std::uint64_t>(v)), false);
+                   : eds_number(od::unsigned_number(static_cast<std::uint64_t>(v)), false);
       }
     }
   }
@@ -162,12 +162,12 @@ void add_mandatory_objects(dictionary &d) {
     return e;
   };
   add(0x1000, od::object_code::var, "Device type",
-      {var(0, "Device type", od::data_type::unsigned32, od::num::u(0))});
+      {var(0, "Device type", od::data_type::unsigned32, od::unsigned_number(0))});
   add(0x1001, od::object_code::var, "Error register",
-      {var(0, "Error register", od::data_type::unsigned8, od::num::u(0))});
+      {var(0, "Error register", od::data_type::unsigned8, od::unsigned_number(0))});
   add(0x1018, od::object_code::record, "Identity object",
-      {var(0, "Highest sub-index supported", od::data_type::unsigned8, od::num::u(1)),
-       var(1, "Vendor-ID", od::data_type::unsigned32, od::num::u(0))});
+      {var(0, "Highest sub-index supported", od::data_type::unsigned8, od::unsigned_number(1)),
+       var(1, "Vendor-ID", od::data_type::unsigned32, od::unsigned_number(0))});
   for (auto &e : d.entries) {
     if (e.index == 0x1018U) e.object = od::object_code::var;
   }

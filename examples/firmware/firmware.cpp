@@ -21,9 +21,8 @@ namespace serial = fieldcodec::pacontrol::serial;
 namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 namespace dpqp = fieldcodec::dictionaries::dpq_parameters;
 
-// Copies of the descriptors the firmware uses: referring to the generated table directly would
-// keep all 221 entries (names and all) in flash.
-constexpr fieldcodec::od::entry inj_p_limit_1 = dpqp::inj_p_limit_1;
+// Generated descriptors are standalone constants: naming one keeps only that one in flash.
+using dpqp::inj_p_limit_1;
 
 namespace {
 

@@ -6,9 +6,9 @@
 
 namespace p = fieldcodec::dictionaries::dpq_parameters;
 
-// A copy of the one descriptor this firmware uses: referring to p::inj_p_limit_1 directly
-// would keep the whole 221-entry table (names and all) in flash.
-static constexpr fieldcodec::od::entry inj_p_limit_1 = p::inj_p_limit_1;
+// Generated descriptors are standalone constants: naming one keeps only that one in flash, not
+// the dictionary's tables.
+using p::inj_p_limit_1;
 
 int main() {
   const fieldcodec::decimal bar{static_cast<std::int64_t>(fw::rx_register[0]), 1};

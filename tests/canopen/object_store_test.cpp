@@ -25,12 +25,14 @@ constexpr od::entry entries[] = {
      .access_type = od::access::constant,
      .size = 20,
      .default_text = "XENAX Xvi 75V8S"},
-    {.index = 0x2000, .type = od::data_type::unsigned16, .default_value = od::num::u(0x1234)},
+    {.index = 0x2000,
+     .type = od::data_type::unsigned16,
+     .default_value = od::unsigned_number(0x1234)},
     {.index = 0x2001, .type = od::data_type::domain, .size = 300},
     {.index = 0x2002,
      .type = od::data_type::integer8,
-     .low = od::num::i(-5),
-     .high = od::num::i(5)},
+     .low = od::signed_number(-5),
+     .high = od::signed_number(5)},
     {.index = 0x2003, .type = od::data_type::octet_string, .size = 4, .default_text = "too long"},
 };
 constexpr od::dictionary dict{entries};
@@ -247,4 +249,40 @@ TEST_CASE("XENAX CAN dictionary: strings served with their default text" * docte
   MESSAGE("XENAX CAN strings: " << strings << ", with a capacity: " << served);
   CHECK(strings > 0);
   CHECK(served == strings);
+}
+
+TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 14)") {
+  // LowLimit = HighLimit = $NODEID+0x600: the server's own COB-ID and nothing else
+  static constexpr std::array<od::entry, 2> rel{{
+      {.index = 0x1200,
+       .sub = 1,
+       .object = od::object_code::record,
+       .type = od::data_type::unsigned32,
+       .flags = od::flag::low_nodeid | od::flag::high_nodeid | od::flag::default_nodeid,
+       .low = od::unsigned_number(0x600),
+       .high = od::unsigned_number(0x600),
+       .default_value = od::unsigned_number(0x600)},
+      // scaled: 0..100 % at scale 10 → raw 0..1000
+      {.index = 0x2100,
+       .type = od::data_type::unsigned16,
+       .flags = od::flag::scaled,
+       .low = od::signed_number(0),
+       .high = od::signed_number(100)},
+  }};
+  static constexpr std::array<fieldcodec::scaling::linear, 2> scales{{{}, {{10, 0}, {0, 0}}}};
+  static constexpr od::dictionary d{rel, {}, scales};
+  static_assert(d.is_valid());
+  constexpr auto l = sdo::make_layout<2>(d);
+  std::vector<std::uint8_t> storage(l.storage_size());
+  sdo::dictionary_store<> s{d, l, storage};
+  REQUIRE(s.init_defaults(1) == fieldcodec::status{});
+  CHECK(s.value({0x1200, 1}).value()[0] == 0x01); // default 0x601 stored: within its limits
+  const std::array<std::uint8_t, 4> own{0x01, 0x06, 0, 0};
+  const std::array<std::uint8_t, 4> other{0x02, 0x06, 0, 0};
+  CHECK(s.set({0x1200, 1}, own) == abort_code::none);
+  CHECK(s.set({0x1200, 1}, other) == abort_code::value_too_high);
+  const std::array<std::uint8_t, 2> raw1000{0xE8, 0x03};
+  const std::array<std::uint8_t, 2> raw1001{0xE9, 0x03};
+  CHECK(s.set({0x2100, 0}, raw1000) == abort_code::none);
+  CHECK(s.set({0x2100, 0}, raw1001) == abort_code::invalid_value); // scaled: no high/low code
 }

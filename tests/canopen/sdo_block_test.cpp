@@ -28,7 +28,7 @@ constexpr co::can_frame F(std::uint16_t id, std::initializer_list<std::uint8_t> 
 constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_code>(v); }
 
 constexpr od::entry block_entries[] = {
-    {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::num::u(7)},
+    {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(7)},
     {.index = 0x2000, .type = od::data_type::domain, .size = 5000},
     {.index = 0x2001,
      .type = od::data_type::visible_string,

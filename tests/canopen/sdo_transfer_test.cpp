@@ -40,7 +40,7 @@ constexpr od::entry test_entries[] = {
     {.index = 0x1000,
      .type = data_type::unsigned32,
      .access_type = od::access::ro,
-     .default_value = od::num::u(0x00020192)},
+     .default_value = od::unsigned_number(0x00020192)},
     {.index = 0x1008,
      .type = data_type::visible_string,
      .access_type = od::access::constant,
@@ -76,7 +76,7 @@ constexpr od::entry test_entries[] = {
      .object = od::object_code::record,
      .type = data_type::unsigned8,
      .access_type = od::access::ro,
-     .default_value = od::num::u(2)},
+     .default_value = od::unsigned_number(2)},
     {.index = 0x3000,
      .sub = 1,
      .object = od::object_code::record,
@@ -86,8 +86,8 @@ constexpr od::entry test_entries[] = {
      .sub = 2,
      .object = od::object_code::record,
      .type = data_type::integer16,
-     .low = od::num::i(-20),
-     .high = od::num::i(20)},
+     .low = od::signed_number(-20),
+     .high = od::signed_number(20)},
     {.index = 0x3001, .type = data_type::domain}, // no size: not storable
 };
 constexpr od::dictionary test_dict{test_entries};

@@ -45,15 +45,16 @@ TEST_CASE("command table: ranges and packings are read and emitted") {
   CHECK(c[0].date_type == od::command_value::real);
   CHECK(c[0].reply_type == od::command_value::real); // "real" is read like "float"
   CHECK(!c[0].date_min);
-  CHECK(c[1].date_min == od::num::i(0));
-  CHECK(c[1].date_max == od::num::i(1));
+  CHECK(c[1].date_min == od::signed_number(0));
+  CHECK(c[1].date_max == od::signed_number(1));
   CHECK(c[1].date_packing == od::packing::whole);
   CHECK(c[2].date_packing == od::packing::byte_byte_word);
   CHECK(c[2].date_max.to_uint64().value() == 0x01030400U);
   const std::string h = gen::emit_header(*o.dict);
   CHECK(h.find(".parameter_packing = od::packing::byte_byte,") != std::string::npos);
   CHECK(h.find(".date_type = od::command_value::real") != std::string::npos);
-  CHECK(h.find(".date_min = od::num::i(0), .date_max = od::num::i(1)") != std::string::npos);
+  CHECK(h.find(".date_min = od::signed_number(0), .date_max = od::signed_number(1)") !=
+        std::string::npos);
   CHECK(h.find(".date_packing = od::packing::byte_byte_word") != std::string::npos);
   CHECK(h.find("od::packing::whole") == std::string::npos); // the default is not written
 }

@@ -16,7 +16,9 @@ using fieldcodec::errc;
 static_assert(dpq::inj_p_limit_1.index == 0x2023);
 static_assert(dpq::inj_p_limit_1.to_raw(4.0).value() == 1311);
 static_assert(dpq::inj_p_limit_1.to_raw(5000.5).error() == errc::out_of_range);
-static_assert(dpq::dictionary.lookup(0x2023, 0).value() == &dpq::inj_p_limit_1);
+// a named descriptor is a standalone copy of its table row (entry, info, scale)
+static_assert(dpq::dictionary.info(*dpq::dictionary.lookup(0x2023, 0).value()).name ==
+              dpq::inj_p_limit_1.info.name);
 static_assert(dpq::dictionary.size() == 221);
 
 static_assert(pac::table.find(0x0600) == &pac::cmd_stop);

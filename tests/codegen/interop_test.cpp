@@ -229,14 +229,14 @@ TEST_CASE("issue 12.3: REAL values in hex are IEEE 754 bit patterns, decimals st
   const auto &d = *r.dict;
   // before the fix: 1078530011.0 and 4.6e18
   CHECK(find_entry(d, 0x2000, 0)->default_value ==
-        od::num::f(static_cast<double>(std::bit_cast<float>(0x40490FDBU))));
+        od::real_number(static_cast<double>(std::bit_cast<float>(0x40490FDBU))));
   CHECK(find_entry(d, 0x2000, 0)->default_value.to_double() == doctest::Approx(3.14159274));
-  CHECK(find_entry(d, 0x2000, 0)->low == od::num::f(-100.0));
-  CHECK(find_entry(d, 0x2000, 0)->high == od::num::f(100.5));
+  CHECK(find_entry(d, 0x2000, 0)->low == od::real_number(-100.0));
+  CHECK(find_entry(d, 0x2000, 0)->high == od::real_number(100.5));
   CHECK(find_entry(d, 0x2001, 0)->default_value ==
-        od::num::f(std::bit_cast<double>(0x400921FB54442D18ULL)));
-  CHECK(find_entry(d, 0x2002, 0)->default_value == od::num::f(3.14));
-  CHECK(find_entry(d, 0x2003, 0)->default_value == od::num::f(10.0));
+        od::real_number(std::bit_cast<double>(0x400921FB54442D18ULL)));
+  CHECK(find_entry(d, 0x2002, 0)->default_value == od::real_number(3.14));
+  CHECK(find_entry(d, 0x2003, 0)->default_value == od::real_number(10.0));
   // the export writes the value, which reads back to the same bits
   const auto again = gen::test::reread(d);
   CHECK(find_entry(again, 0x2000, 0)->default_value == find_entry(d, 0x2000, 0)->default_value);
@@ -272,8 +272,8 @@ TEST_CASE("issue 12.3: CSV REAL values in hex are bit patterns") {
                          "0x2000,Pi,REAL32,0x40490FDB,-1.5\n");
   REQUIRE(r.dict);
   CHECK(find_entry(*r.dict, 0x2000, 0)->default_value ==
-        od::num::f(static_cast<double>(std::bit_cast<float>(0x40490FDBU))));
-  CHECK(find_entry(*r.dict, 0x2000, 0)->low == od::num::f(-1.5));
+        od::real_number(static_cast<double>(std::bit_cast<float>(0x40490FDBU))));
+  CHECK(find_entry(*r.dict, 0x2000, 0)->low == od::real_number(-1.5));
 }
 
 // ---- 4: $NODEID in LowLimit / HighLimit ----------------------------------------------------
@@ -287,9 +287,9 @@ TEST_CASE("issue 12.4: node-ID relative limits stay node-relative in the model a
   CHECK(r.diags.empty());
   const gen::entry *e = find_entry(*r.dict, 0x1200, 0);
   // before the fix: low 0x600 without a flag, so node 1's own 0x601 was out of range
-  CHECK(e->low == od::num::u(0x600));
+  CHECK(e->low == od::unsigned_number(0x600));
   CHECK(e->low_nodeid);
-  CHECK(e->high == od::num::u(0x67F));
+  CHECK(e->high == od::unsigned_number(0x67F));
   CHECK(e->high_nodeid);
   CHECK(e->default_nodeid);
   const std::string w = gen::write_eds(*r.dict);
@@ -322,7 +322,7 @@ TEST_CASE("issue 12.4: CSV limits may be node-relative") {
   const gen::entry *e = find_entry(*r.dict, 0x1200, 0);
   CHECK(e->low_nodeid);
   CHECK(e->high_nodeid);
-  CHECK(e->low == od::num::u(0x600));
+  CHECK(e->low == od::unsigned_number(0x600));
   CHECK(gen::write_eds(*r.dict).find("LowLimit=$NODEID+0x600\n") != std::string::npos);
 }
 
@@ -388,11 +388,11 @@ TEST_CASE("issue 12.7: a comment after a value is ignored with a warning (an err
                var("2002", "0x0005", "LowLimit=1;min\n"));
   auto r = read_eds_text(text);
   REQUIRE(r.dict); // before the fix: hard errors
-  CHECK(find_entry(*r.dict, 0x2000, 0)->default_value == od::num::u(0x3ED));
-  CHECK(find_entry(*r.dict, 0x2003, 0)->default_value == od::num::u(0x80000300));
+  CHECK(find_entry(*r.dict, 0x2000, 0)->default_value == od::unsigned_number(0x3ED));
+  CHECK(find_entry(*r.dict, 0x2003, 0)->default_value == od::unsigned_number(0x80000300));
   CHECK(find_entry(*r.dict, 0x2003, 0)->default_nodeid);
   CHECK(find_entry(*r.dict, 0x2001, 0)->default_text == "Quirk; not a comment"); // text keeps ';'
-  CHECK(find_entry(*r.dict, 0x2002, 0)->low == od::num::u(1));
+  CHECK(find_entry(*r.dict, 0x2002, 0)->low == od::unsigned_number(1));
   const std::string l2000 = std::to_string(line_of(text, "0x3ED"));
   const std::string l2003 = std::to_string(line_of(text, "0x80000300"));
   const std::string l2002 = std::to_string(line_of(text, "1;min"));
@@ -473,7 +473,7 @@ TEST_CASE("issue 12.9: DCF sections and keys the reader does not interpret survi
   const auto &d = *r.dict;
   CHECK(find_entry(d, 0x1A00, 1)->denotation == "Status word");
   CHECK(find_entry(d, 0x1A00, 2)->denotation == "Spare");
-  CHECK(find_entry(d, 0x1A00, 1)->parameter_value == od::num::u(0x60410010));
+  CHECK(find_entry(d, 0x1A00, 1)->parameter_value == od::unsigned_number(0x60410010));
   CHECK(d.objects.at(0x1A00).object_links == std::vector<std::uint16_t>{0x6041, 0x6064});
   CHECK(find_entry(d, 0x1800, 0)->other_keys == gen::key_list{{"UploadFile", "pdo.bin"}});
   const std::string w = gen::write_eds(d);
@@ -516,7 +516,7 @@ TEST_CASE("a key given twice in a section is reported; the last value is used") 
                            "AccessType=rw\nDefaultValue=1\ndefaultvalue=2\nPDOMapping=0\n";
   auto r = read_eds_text(text);
   REQUIRE(r.dict);
-  CHECK(find_entry(*r.dict, 0x2000, 0)->default_value == od::num::u(2));
+  CHECK(find_entry(*r.dict, 0x2000, 0)->default_value == od::unsigned_number(2));
   CHECK(r.diags ==
         std::vector<std::string>{
             "t.eds:" + std::to_string(line_of(text, "7=0x2000\n\n")) +

@@ -91,12 +91,12 @@ TEST_CASE("--compact-arrays: a CompactSubObj array stays one run, the export exp
   const gen::entry &sub0 = r.dict->entries[0];
   CHECK(sub0.sub == 0);
   CHECK(sub0.count == 1);
-  CHECK(sub0.default_value == od::num::u(254));
+  CHECK(sub0.default_value == od::unsigned_number(254));
   const gen::entry &run = r.dict->entries[1];
   CHECK(run.sub == 1);
   CHECK(run.count == 254);
   CHECK(run.name == "Map"); // sub-index i is named "Map<i>"
-  CHECK(run.default_value == od::num::u(0));
+  CHECK(run.default_value == od::unsigned_number(0));
   // the EDS export is the same as without the option
   CHECK(gen::write_eds(*r.dict) == gen::write_eds(expanded));
   gen::dictionary back = *r.dict;
@@ -117,7 +117,7 @@ TEST_CASE("--compact-arrays: sub-objects with their own name or value stay apart
   for (const auto &e : r.dict->entries) runs.emplace_back(e.sub, e.count);
   CHECK(runs == std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {3, 1}, {4, 1}, {5, 1}, {6, 1}});
   CHECK(find_entry(*r.dict, 0x1A00, 3)->name == "Status word");
-  CHECK(find_entry(*r.dict, 0x1A00, 5)->parameter_value == od::num::u(0x60410010));
+  CHECK(find_entry(*r.dict, 0x1A00, 5)->parameter_value == od::unsigned_number(0x60410010));
   gen::expand_runs(*r.dict);
   CHECK(gen::write_eds(*r.dict) == gen::write_eds(expanded));
 }

@@ -120,29 +120,29 @@ TEST_CASE("eds: every quirk of quirks.eds (CRLF, Latin-1, case, CompactSubObj, $
   CHECK(err->type == od::data_type::unsigned8);
   CHECK(err->access == od::access::ro);
   // $NODEID in either operand order and any case
-  CHECK(find(d, 0x1014, 0)->default_value == od::num::u(0x80));
+  CHECK(find(d, 0x1014, 0)->default_value == od::unsigned_number(0x80));
   CHECK(find(d, 0x1014, 0)->default_nodeid);
   CHECK(find(d, 0x1014, 0)->obj_flags == 1U);
-  CHECK(find(d, 0x1400, 1)->default_value == od::num::u(0x200));
+  CHECK(find(d, 0x1400, 1)->default_value == od::unsigned_number(0x200));
   CHECK(find(d, 0x1400, 1)->default_nodeid);
-  CHECK(find(d, 0x2006, 0)->default_value == od::num::u(384));
+  CHECK(find(d, 0x2006, 0)->default_value == od::unsigned_number(384));
   // sub-index gaps (SubNumber counts sub-objects), [1018Sub4], hex sub-index [1600subA]
   CHECK(find(d, 0x1018, 4) != nullptr);
   CHECK(find(d, 0x1018, 2) == nullptr);
-  CHECK(find(d, 0x1600, 10)->default_value == od::num::u(0x60400010));
+  CHECK(find(d, 0x1600, 10)->default_value == od::unsigned_number(0x60400010));
   // CompactSubObj with a partial [1A00Name]
-  CHECK(find(d, 0x1A00, 0)->default_value == od::num::u(3));
+  CHECK(find(d, 0x1A00, 0)->default_value == od::unsigned_number(3));
   CHECK(find(d, 0x1A00, 1)->name == "First mapped");
   CHECK(find(d, 0x1A00, 2)->name == "TPDO 1 mapping2");
   CHECK(find(d, 0x1A00, 3)->name == "Third mapped");
   // numbers: octal, negative hex, two's complement bit patterns of signed types
-  CHECK(find(d, 0x2002, 0)->default_value == od::num::i(8));
-  CHECK(find(d, 0x2001, 0)->low == od::num::i(-16));
-  CHECK(find(d, 0x2003, 0)->low == od::num::i(-2147483647 - 1));
-  CHECK(find(d, 0x2003, 0)->default_value == od::num::i(-1));
-  CHECK(find(d, 0x2014, 0)->default_value == od::num::i(INT64_MIN));
-  CHECK(find(d, 0x201A, 0)->default_value == od::num::u(UINT64_MAX));
-  CHECK(find(d, 0x2007, 0)->low == od::num::f(-1000.0));
+  CHECK(find(d, 0x2002, 0)->default_value == od::signed_number(8));
+  CHECK(find(d, 0x2001, 0)->low == od::signed_number(-16));
+  CHECK(find(d, 0x2003, 0)->low == od::signed_number(-2147483647 - 1));
+  CHECK(find(d, 0x2003, 0)->default_value == od::signed_number(-1));
+  CHECK(find(d, 0x2014, 0)->default_value == od::signed_number(INT64_MIN));
+  CHECK(find(d, 0x201A, 0)->default_value == od::unsigned_number(UINT64_MAX));
+  CHECK(find(d, 0x2007, 0)->low == od::real_number(-1000.0));
   CHECK(find(d, 0x2008, 0)->default_text == "Quirk; not a comment");
   CHECK(find(d, 0x200C, 0)->default_value == od::to_number({.ms = 1000, .days = 1}));
   CHECK(find(d, 0x200D, 0)->object == od::object_code::domain);
@@ -168,8 +168,8 @@ TEST_CASE("dcf: ParameterValue, Denotation, [DeviceCommissioning], [xxxxValue]")
   const auto &d = *o.dict;
   CHECK(d.is_dcf);
   CHECK(d.node_id == 5);
-  CHECK(find(d, 0x2100, 1)->parameter_value == od::num::i(-1000));
-  CHECK(find(d, 0x2100, 2)->parameter_value == od::num::i(1000));
+  CHECK(find(d, 0x2100, 1)->parameter_value == od::signed_number(-1000));
+  CHECK(find(d, 0x2100, 2)->parameter_value == od::signed_number(1000));
   CHECK(find(d, 0x2100, 2)->parameter_nodeid);
   CHECK(find(d, 0x2101, 0)->parameter_text == "X axis, left");
   CHECK(find(d, 0x2101, 0)->denotation == "Left X axis \xE2\x80\x94 5");

@@ -25,54 +25,39 @@ using bytes = std::vector<std::uint8_t>;
 
 namespace {
 
-constexpr od::entry lage_ziel{.index = 0x607A,
-                              .type = od::data_type::integer32,
-                              .name = "LAGE_ZIEL",
-                              .scale = {{1000, 0}, {0, 0}},
-                              .scaled = true};
-constexpr od::entry posa{.index = 0x5FF0,
-                         .type = od::data_type::octet_string,
-                         .size = 6,
-                         .name = "POSA",
-                         .scale = {{1000, 0}, {0, 0}},
-                         .scaled = true};
-constexpr od::entry posr0speed{
-    .index = 0x5FED, .type = od::data_type::octet_string, .size = 3, .name = "POSR0SPEED"};
-constexpr od::entry speed{.index = 0x5FEC,
-                          .type = od::data_type::integer16,
-                          .name = "SPEED",
-                          .scale = {{64, 0}, {0, 0}},
-                          .scaled = true};
-constexpr od::entry out_enable{
-    .index = 0x5FFF, .type = od::data_type::boolean, .name = "OUT_ENABLE"};
-constexpr od::entry accel_pos{.index = 0x5FEA,
-                              .type = od::data_type::unsigned16,
-                              .name = "ACCEL_POS",
-                              .low = od::num::i(0),
-                              .high = od::num::i(65000)};
+constexpr od::descriptor lage_ziel{
+    {.index = 0x607A, .type = od::data_type::integer32, .flags = od::flag::scaled},
+    {.name = "LAGE_ZIEL"},
+    {{1000, 0}, {0, 0}}};
+constexpr od::descriptor posa{
+    {.index = 0x5FF0, .type = od::data_type::octet_string, .flags = od::flag::scaled, .size = 6},
+    {.name = "POSA"},
+    {{1000, 0}, {0, 0}}};
+constexpr od::descriptor posr0speed{
+    {.index = 0x5FED, .type = od::data_type::octet_string, .size = 3}, {.name = "POSR0SPEED"}};
+constexpr od::descriptor speed{
+    {.index = 0x5FEC, .type = od::data_type::integer16, .flags = od::flag::scaled},
+    {.name = "SPEED"},
+    {{64, 0}, {0, 0}}};
+constexpr od::descriptor out_enable{{.index = 0x5FFF, .type = od::data_type::boolean},
+                                    {.name = "OUT_ENABLE"}};
+constexpr od::descriptor accel_pos{{.index = 0x5FEA,
+                                    .type = od::data_type::unsigned16,
+                                    .low = od::signed_number(0),
+                                    .high = od::signed_number(65000)},
+                                   {.name = "ACCEL_POS"}};
 constexpr std::array<od::entry, 3> px_entries{{
-    {.index = 0x5FD4,
-     .sub = 11,
-     .type = od::data_type::integer32,
-     .name = "Px",
-     .scale = {{1000, 0}, {0, 0}},
-     .scaled = true},
-    {.index = 0x5FD4,
-     .sub = 21,
-     .type = od::data_type::integer32,
-     .name = "Px",
-     .scale = {{1000000, 0}, {0, 0}},
-     .scaled = true},
-    {.index = 0x5FD4,
-     .sub = 100,
-     .type = od::data_type::integer32,
-     .name = "Px",
-     .scale = {{1, 0}, {0, 0}},
-     .scaled = true},
+    {.index = 0x5FD4, .sub = 11, .type = od::data_type::integer32, .flags = od::flag::scaled},
+    {.index = 0x5FD4, .sub = 21, .type = od::data_type::integer32, .flags = od::flag::scaled},
+    {.index = 0x5FD4, .sub = 100, .type = od::data_type::integer32, .flags = od::flag::scaled},
 }};
-constexpr od::dictionary px_dict{px_entries};
+constexpr std::array<od::entry_info, 3> px_infos{{{.name = "Px"}, {.name = "Px"}, {.name = "Px"}}};
+constexpr std::array<fieldcodec::scaling::linear, 3> px_scales{
+    {{{1000, 0}, {0, 0}}, {{1000000, 0}, {0, 0}}, {{1, 0}, {0, 0}}}};
+constexpr od::dictionary px_dict{px_entries, px_infos, px_scales};
+static_assert(px_dict.is_valid());
 
-bytes enc(const od::entry &e, decimal v) {
+bytes enc(const od::descriptor &e, decimal v) {
   std::array<std::uint8_t, 8> b{};
   auto n = cx::encode_object(e, v, b);
   REQUIRE(n.has_value());
@@ -109,7 +94,7 @@ TEST_CASE("objects by entry: integers, BCD, boolean") {
   CHECK(cx::encode_object(accel_pos, decimal{65001, 0}, b4).error() == errc::out_of_range);
   std::array<std::uint8_t, 1> b1{};
   CHECK(cx::encode_object(lage_ziel, decimal{1, 0}, b1).error() == errc::buffer_too_small);
-  const od::entry text{.index = 0x5FE6, .type = od::data_type::visible_string, .size = 20};
+  const od::descriptor text{{.index = 0x5FE6, .type = od::data_type::visible_string, .size = 20}};
   CHECK(cx::encode_object(text, decimal{1, 0}, b4).error() == errc::type_mismatch);
 }
 
@@ -166,10 +151,10 @@ TEST_CASE("generated COMPAX dictionary: manual examples by name") {
   for (unsigned n = 1; n <= 250; ++n) {
     auto e = d::dictionary.lookup(cx::index::px, static_cast<std::uint8_t>(n));
     REQUIRE(e.has_value());
-    CHECK(e.value()->scaled);
+    CHECK(e.value()->has(od::flag::scaled));
   }
   // pointers for OBJECT_REQ
-  CHECK(d::lage_ist.pointer == 67);
-  CHECK(d::speed.pointer == 38);
+  CHECK(d::lage_ist.info.pointer == 67);
+  CHECK(d::speed.info.pointer == 38);
 }
 #endif

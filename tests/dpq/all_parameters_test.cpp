@@ -5,7 +5,7 @@
 // range_exceeds_field is refused with overflow exactly at the ends that do not fit.
 #include "dpq_csv.hpp"
 
-#include <fieldcodec/dpq/conversion.hpp>
+#include <fieldcodec/dpq/parameter.hpp>
 
 #include <doctest/doctest.h>
 
@@ -92,18 +92,18 @@ std::string what(const dpq_test::row &r) { return r.section + " " + r.index + " 
 // One value: to_raw must agree with the reference (or refuse with overflow when the reference
 // does not fit), bytes and read-back must round-trip.
 void check_value(const dpq_test::row &r, decimal eu, std::size_t &converted, std::size_t &refused) {
-  const dpq::conversion c = r.conversion();
+  const fieldcodec::od::descriptor c = r.descriptor();
   const i128 want = reference_raw(eu, r.offset, r.scale);
   auto raw = c.to_raw(eu);
   if (!fits(want, r)) {
     CHECK_MESSAGE(raw.is(errc::overflow), what(r));
-    CHECK_MESSAGE(c.encode(eu).is(errc::overflow), what(r));
+    CHECK_MESSAGE(dpq::to_bytes(c, eu).is(errc::overflow), what(r));
     ++refused;
     return;
   }
   REQUIRE_MESSAGE(raw.has_value(), what(r));
   CHECK_MESSAGE(i128{raw.value()} == want, what(r));
-  auto bytes = c.encode(eu);
+  auto bytes = dpq::to_bytes(c, eu);
   REQUIRE_MESSAGE(bytes.has_value(), what(r));
   CHECK(bytes.value().size == r.bytes);
   // Little-endian, two's complement for signed fields, zero padded.
@@ -111,17 +111,18 @@ void check_value(const dpq_test::row &r, decimal eu, std::size_t &converted, std
   for (std::size_t i = 0; i < static_cast<std::size_t>(r.bytes); ++i) {
     CHECK_MESSAGE(bytes.value().bytes[i] == static_cast<std::uint8_t>(u >> (8U * i)), what(r));
   }
-  auto back_raw = c.decode_raw(bytes.value().span());
+  auto back_raw = dpq::raw_from_bytes(c, bytes.value().span());
   REQUIRE(back_raw.has_value());
   CHECK(back_raw.value() == raw.value());
-  auto back = c.decode(bytes.value().span());
+  auto back = dpq::from_bytes(c, bytes.value().span());
   REQUIRE_MESSAGE(back.has_value(), what(r));
   // The read-back EU converts to the same raw value (round trip), and lies within half a
   // count of the value sent: |back − eu| × scale ≤ ½ ⇔ reference_raw(back) == raw.
   CHECK_MESSAGE(reference_raw(back.value(), r.offset, r.scale) == want, what(r));
   // Without a range check (read-back of a printed limit may round outside it by < 1 count).
-  dpq::conversion open = c;
-  open.has_range = false;
+  fieldcodec::od::descriptor open = c;
+  open.low = {};
+  open.high = {};
   CHECK_MESSAGE(open.to_raw(back.value()).value() == raw.value(), what(r));
   // The double path agrees for values with ≤ 15 significant digits.
   CHECK_MESSAGE(
@@ -187,7 +188,7 @@ TEST_CASE("dpq all parameters: min, max and mid convert exactly and round-trip")
     check_value(r, r.high, converted, refused);
     check_value(r, midpoint(r.low, r.high), converted, refused);
     // Just outside the printed range: out_of_range, also where the field would hold it.
-    const dpq::conversion c = r.conversion();
+    const fieldcodec::od::descriptor c = r.descriptor();
     CHECK_MESSAGE(c.to_raw(add(r.high, decimal{1, 6})).is(errc::out_of_range), what(r));
     CHECK_MESSAGE(c.to_raw(add(r.low, decimal{-1, 6})).is(errc::out_of_range), what(r));
   }
@@ -202,7 +203,7 @@ TEST_CASE("dpq all parameters: exact halves round away from zero, both signs") {
   REQUIRE(rows.size() == 221);
   std::size_t positive = 0, negative = 0, none = 0;
   for (const auto &r : rows) {
-    const dpq::conversion c = r.conversion();
+    const fieldcodec::od::descriptor c = r.descriptor();
     std::int64_t g = 0;
     const decimal h = half_step(r.scale, g); // (offset ± h) × scale hits ±g/2 exactly
     bool any = false;
@@ -242,13 +243,14 @@ TEST_CASE("dpq all parameters: every field boundary refuses one count beyond") {
   const auto rows = dpq_test::load();
   REQUIRE(rows.size() == 221);
   for (const auto &r : rows) {
-    dpq::conversion c = r.conversion();
-    c.has_range = false;
-    const std::int64_t max = c.field.max();
-    const std::int64_t min = c.field.min();
-    CHECK(c.encode_raw(max).has_value());
-    CHECK(c.encode_raw(min).has_value());
-    CHECK(c.encode_raw(max + 1).is(errc::overflow));
-    CHECK(c.encode_raw(min - 1).is(errc::overflow));
+    fieldcodec::od::descriptor c = r.descriptor();
+    c.low = {};
+    c.high = {};
+    const std::int64_t max = c.raw_field().value().max();
+    const std::int64_t min = c.raw_field().value().min();
+    CHECK(dpq::raw_to_bytes(c, max).has_value());
+    CHECK(dpq::raw_to_bytes(c, min).has_value());
+    CHECK(dpq::raw_to_bytes(c, max + 1).is(errc::overflow));
+    CHECK(dpq::raw_to_bytes(c, min - 1).is(errc::overflow));
   }
 }

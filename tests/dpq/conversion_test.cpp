@@ -1,7 +1,9 @@
-// DPQ parameter conversion (dpq/conversion.hpp): the manual's worked example, rounding of exact
-// halves in both signs, the offset parameter, double inputs, bytes and their errors.
+// DPQ parameter conversion (od::descriptor's scaling methods and dpq/parameter.hpp): the
+// manual's worked example, rounding of exact halves in both signs, the offset parameter, double
+// inputs, bytes and their errors.
 // Manual: ../shared/seeds/004_…txt (RE 30146-02-Z), 3.3 / 3.4 "Parameter conversion".
-#include <fieldcodec/dpq/conversion.hpp>
+#include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 
 #include <doctest/doctest.h>
 
@@ -12,24 +14,48 @@
 
 namespace fc = fieldcodec;
 namespace dpq = fieldcodec::dpq;
+namespace od = fieldcodec::od;
 using fc::decimal;
 using fc::errc;
 
 namespace {
+/// A DPQ parameter as the generator emits it: type, scale and offset, printed range.
+constexpr od::descriptor param(od::data_type t, fc::scaling::linear s, decimal lo, decimal hi) {
+  return {{.index = 0x2000,
+           .type = t,
+           .flags = od::flag::scaled,
+           .low = od::decimal_number(lo),
+           .high = od::decimal_number(hi)},
+          {},
+          s};
+}
+/// The same without a printed range (only the field applies).
+constexpr od::descriptor no_range(od::descriptor d) {
+  d.low = {};
+  d.high = {};
+  return d;
+}
 // 4.100 Inj. P Limit 1: 0x2023, 4 bytes, 0…5000, scale 327,67, offset 0 (UNSIGNED32).
-constexpr dpq::conversion inj_p_limit_1{{{32767, 2}, {0, 0}}, {4, false}, {{0, 0}, {5000, 0}}};
+constexpr od::descriptor inj_p_limit_1 =
+    param(od::data_type::unsigned32, {{32767, 2}, {0, 0}}, {0, 0}, {5000, 0});
 // 4.197 Program Block: 2 bytes, 0…32, scale 1, offset 1 (INTEGER16) — the only offset.
-constexpr dpq::conversion program_block{{{1, 0}, {1, 0}}, {2, true}, {{0, 0}, {32, 0}}};
+constexpr od::descriptor program_block =
+    param(od::data_type::integer16, {{1, 0}, {1, 0}}, {0, 0}, {32, 0});
 // 4.66 Hist. Time 1 family: 4 bytes, −100…100, scale 500 (INTEGER32).
-constexpr dpq::conversion hist_time{{{500, 0}, {0, 0}}, {4, true}, {{-100, 0}, {100, 0}}};
+constexpr od::descriptor hist_time =
+    param(od::data_type::integer32, {{500, 0}, {0, 0}}, {-100, 0}, {100, 0});
 // 4.24 Cavity Press Max Fau family: 2 bytes, −150…150, scale 163,83 (INTEGER16).
-constexpr dpq::conversion fau{{{16383, 2}, {0, 0}}, {2, true}, {{-150, 0}, {150, 0}}};
+constexpr od::descriptor fau =
+    param(od::data_type::integer16, {{16383, 2}, {0, 0}}, {-150, 0}, {150, 0});
 // 4.35 Decompres.: Limit-: 2 bytes, −100…100, scale 327,7 (INTEGER16, range_exceeds_field).
-constexpr dpq::conversion limit_minus{{{3277, 1}, {0, 0}}, {2, true}, {{-100, 0}, {100, 0}}};
+constexpr od::descriptor limit_minus =
+    param(od::data_type::integer16, {{3277, 1}, {0, 0}}, {-100, 0}, {100, 0});
 // 4.26 Cavity Press Min: 2 bytes, −100…100, scale 16383,5 (INTEGER16, range_exceeds_field).
-constexpr dpq::conversion press_min{{{163835, 1}, {0, 0}}, {2, true}, {{-100, 0}, {100, 0}}};
+constexpr od::descriptor press_min =
+    param(od::data_type::integer16, {{163835, 1}, {0, 0}}, {-100, 0}, {100, 0});
 // 4.2 BackP: Decomp Rate 2: 2 bytes, 0…5000, scale 10,5 (UNSIGNED16: raw up to 52500).
-constexpr dpq::conversion decomp_rate{{{105, 1}, {0, 0}}, {2, false}, {{0, 0}, {5000, 0}}};
+constexpr od::descriptor decomp_rate =
+    param(od::data_type::unsigned16, {{105, 1}, {0, 0}}, {0, 0}, {5000, 0});
 
 constexpr bool same(fc::result<decimal> r, decimal d) {
   return r.has_value() && r.value().mantissa == d.mantissa && r.value().places == d.places;
@@ -48,10 +74,10 @@ constexpr bool bytes_are(fc::result<dpq::payload> p, std::array<std::uint8_t, 4>
 // 0x051F; 4 bytes LSB first: 1F 05 00 00. Back: 1311 / 327.67 = 4.000976… → 4.001 at 3 places.
 static_assert(inj_p_limit_1.to_raw(decimal{40, 1}).value() == 1311);
 static_assert(inj_p_limit_1.to_raw(4.0).value() == 0x051F);
-static_assert(bytes_are(inj_p_limit_1.encode(4.0), {0x1F, 0x05, 0x00, 0x00}, 4));
-static_assert(inj_p_limit_1.decode_raw(std::array<std::uint8_t, 4>{0x1F, 0x05, 0, 0}).value() ==
-              1311);
-static_assert(same(inj_p_limit_1.decode(std::array<std::uint8_t, 4>{0x1F, 0x05, 0, 0}),
+static_assert(bytes_are(dpq::to_bytes(inj_p_limit_1, 4.0), {0x1F, 0x05, 0x00, 0x00}, 4));
+static_assert(dpq::raw_from_bytes(inj_p_limit_1, std::array<std::uint8_t, 4>{0x1F, 0x05, 0, 0})
+                  .value() == 1311);
+static_assert(same(dpq::from_bytes(inj_p_limit_1, std::array<std::uint8_t, 4>{0x1F, 0x05, 0, 0}),
                    decimal{4001, 3}));
 static_assert(inj_p_limit_1.to_raw(5000.0).value() == 1'638'350);
 static_assert(inj_p_limit_1.to_raw(5000.001).error() == errc::out_of_range);
@@ -73,15 +99,15 @@ TEST_CASE("dpq: worked example of the manual, 4.0 bar -> 1311 -> 1F 05 00 00 -> 
   REQUIRE(raw.has_value());
   CHECK(raw.value() == 1311);
   CHECK(raw.value() == 0x051F);
-  auto p = inj_p_limit_1.encode(4.0);
+  auto p = dpq::to_bytes(inj_p_limit_1, 4.0);
   REQUIRE(p.has_value());
   CHECK(p.value().size == 4);
   CHECK(p.value().bytes[0] == 0x1F);
   CHECK(p.value().bytes[1] == 0x05);
   CHECK(p.value().bytes[2] == 0x00);
   CHECK(p.value().bytes[3] == 0x00);
-  CHECK(inj_p_limit_1.decode_raw(p.value().span()).value() == 1311);
-  CHECK(same(inj_p_limit_1.decode(p.value().span()), decimal{4001, 3}));
+  CHECK(dpq::raw_from_bytes(inj_p_limit_1, p.value().span()).value() == 1311);
+  CHECK(same(dpq::from_bytes(inj_p_limit_1, p.value().span()), decimal{4001, 3}));
   CHECK(inj_p_limit_1.to_eu(1311) == doctest::Approx(4.000976592303232).epsilon(1e-14));
   // The exact intermediate 1310.68 rounds up; 1310.5 (EU 3.999450…) would round up too.
   CHECK(inj_p_limit_1.to_raw(decimal{3999450, 6}).value() == 1310); // 1310.4998…
@@ -121,15 +147,16 @@ TEST_CASE("dpq: the offset parameter (4.197 Program Block, offset 1)") {
   CHECK(program_block.to_raw(decimal{33, 0}).error() == errc::out_of_range);
   CHECK(program_block.to_raw(decimal{3201, 2}).error() == errc::out_of_range);
   // raw −1 = FF FF on the wire; read back as EU 0 (INTEGER16), not 65536.
-  auto p = program_block.encode(decimal{0, 0});
+  auto p = dpq::to_bytes(program_block, decimal{0, 0});
   REQUIRE(p.has_value());
   CHECK(p.value().size == 2);
   CHECK(p.value().bytes[0] == 0xFF);
   CHECK(p.value().bytes[1] == 0xFF);
-  CHECK(same(program_block.decode(p.value().span()), decimal{0, 0}));
+  CHECK(same(dpq::from_bytes(program_block, p.value().span()), decimal{0, 0}));
   CHECK(program_block.to_eu(-1) == 0.0);
   CHECK(program_block.to_eu(31) == 32.0);
-  CHECK(same(program_block.to_eu_decimal(7), decimal{8, 0}));
+  CHECK(same(dpq::to_eu_decimal(program_block, 7), decimal{8, 0}));
+  CHECK(same(program_block.to_eu_decimal(7, 2), decimal{800, 2}));
 }
 
 TEST_CASE("dpq: binary floating-point inputs are read as 15-digit decimals") {
@@ -159,7 +186,7 @@ TEST_CASE("dpq: values that would wrap are refused with overflow, never wrapped"
   // 327.7 × 100 = 32770 does not fit INTEGER16: the manual's warning about negative values.
   CHECK(limit_minus.to_raw(decimal{100, 0}).error() == errc::overflow);
   CHECK(limit_minus.to_raw(decimal{-100, 0}).error() == errc::overflow);
-  CHECK(limit_minus.encode(100.0).error() == errc::overflow);
+  CHECK(dpq::to_bytes(limit_minus, 100.0).error() == errc::overflow);
   // Exact edges: 32767.5 / 327.7 = 99.99237…, −32768.5 / 327.7 = −99.99542…
   CHECK(limit_minus.to_raw(decimal{9999237, 5}).value() == 32767);          // 32767.4996…
   CHECK(limit_minus.to_raw(decimal{9999238, 5}).error() == errc::overflow); // 32767.5029…
@@ -175,40 +202,40 @@ TEST_CASE("dpq: values that would wrap are refused with overflow, never wrapped"
   // Range is checked before the field: outside the printed range is out_of_range.
   CHECK(limit_minus.to_raw(decimal{1001, 1}).error() == errc::out_of_range);
   // An unsigned field refuses a negative raw value even without a printed range.
-  dpq::conversion no_range = decomp_rate;
-  no_range.has_range = false;
-  CHECK(no_range.to_raw(decimal{-1, 0}).error() == errc::overflow);
-  CHECK(no_range.to_raw(decimal{6241, 0}).value() == 65531);          // 65530.5 → 65531
-  CHECK(no_range.to_raw(decimal{6242, 0}).error() == errc::overflow); // 65541
+  constexpr od::descriptor open = no_range(decomp_rate);
+  CHECK(open.to_raw(decimal{-1, 0}).error() == errc::overflow);
+  CHECK(open.to_raw(decimal{6241, 0}).value() == 65531);          // 65530.5 → 65531
+  CHECK(open.to_raw(decimal{6242, 0}).error() == errc::overflow); // 65541
   CHECK(decomp_rate.to_raw(decimal{5000, 0}).value() == 52500);
 }
 
-TEST_CASE("dpq: encode_raw / decode_raw check the field and the length") {
-  CHECK(decomp_rate.encode_raw(65535).has_value());
-  CHECK(decomp_rate.encode_raw(65536).error() == errc::overflow);
-  CHECK(decomp_rate.encode_raw(-1).error() == errc::overflow);
-  CHECK(fau.encode_raw(-32768).has_value());
-  CHECK(fau.encode_raw(-32769).error() == errc::overflow);
-  CHECK(fau.encode_raw(32768).error() == errc::overflow);
+TEST_CASE("dpq: raw_to_bytes / raw_from_bytes check the range, the field and the length") {
+  constexpr od::descriptor rate = no_range(decomp_rate);
+  constexpr od::descriptor fau_field = no_range(fau);
+  CHECK(dpq::raw_to_bytes(rate, 65535).has_value());
+  CHECK(dpq::raw_to_bytes(rate, 65536).error() == errc::overflow);
+  CHECK(dpq::raw_to_bytes(rate, -1).error() == errc::overflow);
+  CHECK(dpq::raw_to_bytes(fau_field, -32768).has_value());
+  CHECK(dpq::raw_to_bytes(fau_field, -32769).error() == errc::overflow);
+  CHECK(dpq::raw_to_bytes(fau_field, 32768).error() == errc::overflow);
+  // with the printed range: 0…5000 EU is raw 0…52500
+  CHECK(dpq::raw_to_bytes(decomp_rate, 52500).has_value());
+  CHECK(dpq::raw_to_bytes(decomp_rate, 52501).error() == errc::out_of_range);
   const std::array<std::uint8_t, 2> ffff{0xFF, 0xFF};
-  CHECK(decomp_rate.decode_raw(ffff).value() == 65535);
-  CHECK(fau.decode_raw(ffff).value() == -1);
+  CHECK(dpq::raw_from_bytes(decomp_rate, ffff).value() == 65535);
+  CHECK(dpq::raw_from_bytes(fau, ffff).value() == -1);
   const std::array<std::uint8_t, 1> one{0x01};
   const std::array<std::uint8_t, 3> three{0x01, 0x02, 0x03};
-  CHECK(fau.decode_raw(one).error() == errc::truncated);
-  CHECK(fau.decode_raw(three).error() == errc::bad_length);
-  CHECK(fau.decode_raw({}).error() == errc::truncated);
-  CHECK(inj_p_limit_1.decode_raw(std::array<std::uint8_t, 4>{0xFF, 0xFF, 0xFF, 0xFF}).value() ==
-        4294967295);
+  CHECK(dpq::raw_from_bytes(fau, one).error() == errc::truncated);
+  CHECK(dpq::raw_from_bytes(fau, three).error() == errc::bad_length);
+  CHECK(dpq::raw_from_bytes(fau, {}).error() == errc::truncated);
+  CHECK(dpq::raw_from_bytes(inj_p_limit_1, std::array<std::uint8_t, 4>{0xFF, 0xFF, 0xFF, 0xFF})
+            .value() == 4294967295);
   // Read-back values outside the printed range still decode (actual values, display range).
-  CHECK(same(inj_p_limit_1.decode(std::array<std::uint8_t, 4>{0xFF, 0xFF, 0xFF, 0x7F}),
+  CHECK(same(dpq::from_bytes(inj_p_limit_1, std::array<std::uint8_t, 4>{0xFF, 0xFF, 0xFF, 0x7F}),
              decimal{6553800003, 3})); // 2147483647 / 327.67 = 6553800.00305…
-  dpq::conversion bad = fau;
-  bad.field.bytes = 0;
-  CHECK(bad.to_raw(decimal{1, 0}).error() == errc::invalid_argument);
-  CHECK(bad.decode_raw(ffff).error() == errc::invalid_argument);
-  dpq::conversion zero_scale = fau;
+  od::descriptor zero_scale = fau;
   zero_scale.scale.scale = {0, 0};
   CHECK(zero_scale.to_raw(decimal{1, 0}).error() == errc::invalid_argument);
-  CHECK(zero_scale.to_eu_decimal(1).error() == errc::invalid_argument);
+  CHECK(dpq::to_eu_decimal(zero_scale, 1).error() == errc::invalid_argument);
 }

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <fieldcodec/core/decimal.hpp>
-#include <fieldcodec/dpq/conversion.hpp>
+#include <fieldcodec/od/data_type.hpp>
+#include <fieldcodec/od/descriptor.hpp>
+#include <fieldcodec/od/number.hpp>
 
 #include <cstdint>
 #include <fstream>
@@ -24,12 +26,18 @@ struct row {
     return (";" + flags + ";").find(";" + f + ";") != std::string::npos;
   }
   [[nodiscard]] bool is_signed() const { return data_type.rfind("INTEGER", 0) == 0; }
-  [[nodiscard]] fieldcodec::dpq::conversion conversion() const {
-    fieldcodec::dpq::conversion c;
-    c.scale = {scale, offset};
-    c.field = {static_cast<std::uint8_t>(bytes), is_signed()};
-    c.range = {low, high};
-    return c;
+  /// The row as a descriptor built here from the CSV (independent of the generator): type
+  /// from bytes and signedness, scale and offset, printed range.
+  [[nodiscard]] fieldcodec::od::descriptor descriptor() const {
+    namespace od = fieldcodec::od;
+    od::descriptor d;
+    d.type = bytes == 2 ? (is_signed() ? od::data_type::integer16 : od::data_type::unsigned16)
+                        : (is_signed() ? od::data_type::integer32 : od::data_type::unsigned32);
+    d.flags = od::flag::scaled;
+    d.low = od::decimal_number(low);
+    d.high = od::decimal_number(high);
+    d.scale = {scale, offset};
+    return d;
   }
 };
 

@@ -25,44 +25,44 @@ using fc::errc;
 
 namespace {
 // CiA 301 0x1800 sub 5, event timer of TPDO1, UNSIGNED16 in ms (unscaled).
-constexpr od::entry event_timer{.index = 0x1800,
-                                .sub = 5,
-                                .object = od::object_code::record,
-                                .type = od::data_type::unsigned16,
-                                .name = "Event timer"};
+constexpr od::descriptor event_timer{{.index = 0x1800,
+                                      .sub = 5,
+                                      .object = od::object_code::record,
+                                      .type = od::data_type::unsigned16},
+                                     {.name = "Event timer"}};
 // 4.100 Inj. P Limit 1.
-constexpr od::entry inj_p_limit_1{.index = 0x2023,
-                                  .type = od::data_type::unsigned32,
-                                  .name = "Inj. P Limit 1",
-                                  .low = od::num::d(0, 0),
-                                  .high = od::num::d(5000, 0),
-                                  .scale = {{32767, 2}, {0, 0}},
-                                  .scaled = true};
+constexpr od::descriptor inj_p_limit_1{{.index = 0x2023,
+                                        .type = od::data_type::unsigned32,
+                                        .flags = od::flag::scaled,
+                                        .low = od::decimal_number(0, 0),
+                                        .high = od::decimal_number(5000, 0)},
+                                       {.name = "Inj. P Limit 1"},
+                                       {{32767, 2}, {0, 0}}};
 // 4.2 BackP: Decomp Rate 2 (2 bytes, 10.5).
-constexpr od::entry decomp_rate_2{.index = 0x219C,
-                                  .type = od::data_type::unsigned16,
-                                  .name = "BackP: Decomp Rate 2",
-                                  .low = od::num::d(0, 0),
-                                  .high = od::num::d(5000, 0),
-                                  .scale = {{105, 1}, {0, 0}},
-                                  .scaled = true};
+constexpr od::descriptor decomp_rate_2{{.index = 0x219C,
+                                        .type = od::data_type::unsigned16,
+                                        .flags = od::flag::scaled,
+                                        .low = od::decimal_number(0, 0),
+                                        .high = od::decimal_number(5000, 0)},
+                                       {.name = "BackP: Decomp Rate 2"},
+                                       {{105, 1}, {0, 0}}};
 // 4.168 Position FB : and 4.194 Pressure FB : (read-only, INTEGER32, 327.67).
-constexpr od::entry position_fb{.index = 0x2F07,
-                                .type = od::data_type::integer32,
-                                .access_type = od::access::ro,
-                                .name = "Position FB :",
-                                .low = od::num::d(0, 0),
-                                .high = od::num::d(1000, 0),
-                                .scale = {{32767, 2}, {0, 0}},
-                                .scaled = true};
-constexpr od::entry pressure_fb{.index = 0x2F11,
-                                .type = od::data_type::integer32,
-                                .access_type = od::access::ro,
-                                .name = "Pressure FB :",
-                                .low = od::num::d(0, 0),
-                                .high = od::num::d(200, 0),
-                                .scale = {{32767, 2}, {0, 0}},
-                                .scaled = true};
+constexpr od::descriptor position_fb{{.index = 0x2F07,
+                                      .type = od::data_type::integer32,
+                                      .access_type = od::access::ro,
+                                      .flags = od::flag::scaled,
+                                      .low = od::decimal_number(0, 0),
+                                      .high = od::decimal_number(1000, 0)},
+                                     {.name = "Position FB :"},
+                                     {{32767, 2}, {0, 0}}};
+constexpr od::descriptor pressure_fb{{.index = 0x2F11,
+                                      .type = od::data_type::integer32,
+                                      .access_type = od::access::ro,
+                                      .flags = od::flag::scaled,
+                                      .low = od::decimal_number(0, 0),
+                                      .high = od::decimal_number(200, 0)},
+                                     {.name = "Pressure FB :"},
+                                     {{32767, 2}, {0, 0}}};
 
 constexpr co::can_frame frame8(std::uint16_t id, std::array<std::uint8_t, 8> d) {
   co::can_frame f;

@@ -7,7 +7,8 @@
 // undefined behaviour is not a constant expression, so `evaluable` is false while F3 is open.
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/scaling.hpp>
-#include <fieldcodec/dpq/conversion.hpp>
+#include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 
 #include <doctest/doctest.h>
 
@@ -38,7 +39,8 @@ static_assert(round_trip_places_evaluable<1, 18>);
 // F3 (2026-11-21, fuzz_dpq, conversion mode): dpq::round_trip_places(scale) computes 10^p in an
 // int64 — an offset with more than 18 places (invalid, but a conversion is a plain struct)
 // overflows it (10^18 × 10), and a scale mantissa of INT64_MIN overflows its negation. Reached
-// through conversion::to_eu_decimal(raw) and conversion::decode(bytes) before
+// through conversion::to_eu_decimal(raw) and conversion::decode(bytes) (today
+// dpq::to_eu_decimal(descriptor, raw) and dpq::from_bytes) before
 // scaling::to_eu_decimal can refuse the arguments with invalid_argument.
 TEST_CASE("fuzz F3: round_trip_places is defined for every scale") {
   CHECK(round_trip_places_evaluable<1, 19>);
@@ -51,18 +53,19 @@ TEST_CASE("fuzz F3: round_trip_places is defined for every scale") {
   CHECK(fieldcodec::dpq::round_trip_places({{-32767, 2}, {0, 0}}).value() == 3);
 }
 
-// F8 (2026-11-21, fuzz_dpq, conversion mode): conversion::to_eu_decimal(raw) promises that the
+// F8 (2026-11-21, fuzz_dpq, conversion mode): conversion::to_eu_decimal(raw) (today
+// dpq::to_eu_decimal(descriptor, raw)) promises that the
 // EU it returns converts back to `raw`. round_trip_places needs 10^p >= |scale|; for a scale
 // above 10^18 no p <= 18 does, it returns 18 anyway, and the read-back is off by one. Either an
 // error (not_representable) or a correct round trip fixes it.
 TEST_CASE("fuzz F8: to_eu_decimal(raw) refuses scales that cannot round-trip") {
-  fieldcodec::dpq::conversion c;
-  c.scale = {{1'508'283'684'162'011'643, 0}, {0, 1}};
-  c.field = {8, true};
-  c.has_range = false;
+  const fieldcodec::od::descriptor c{
+      {.type = fieldcodec::od::data_type::integer64, .flags = fieldcodec::od::flag::scaled},
+      {},
+      {{1'508'283'684'162'011'643, 0}, {0, 1}}};
   const std::int64_t raw = 2'387'286'014'124'100'095;
   // Fixed: no p <= 18 satisfies 10^p >= |scale|, so the promise cannot be kept: refused.
-  CHECK(c.to_eu_decimal(raw).error() == fc::errc::not_representable);
+  CHECK(fieldcodec::dpq::to_eu_decimal(c, raw).error() == fc::errc::not_representable);
   // An explicit precision is still available and honest about its rounding.
   CHECK(c.to_eu_decimal(raw, 18).has_value());
 }

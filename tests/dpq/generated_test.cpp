@@ -54,10 +54,10 @@ TEST_CASE("dpq generated: the issue's example by name") {
   CHECK(dpq::write_request(5, p::program_block, 1.0).error() == errc::access_denied);
   // An overflowing range (4.35 Decompres.: Limit-; looked up by index, its symbol depends on how
   // the generator spells the '-').
-  const od::entry *limit_minus = p::dictionary.find(0x2FA5, 0);
-  REQUIRE(limit_minus != nullptr);
-  CHECK(dpq::to_bytes(*limit_minus, 100.0).error() == errc::overflow);
-  CHECK(dpq::to_bytes(*limit_minus, 99.99).has_value());
+  const auto limit_minus = p::dictionary.at(0x2FA5, 0);
+  REQUIRE(limit_minus.has_value());
+  CHECK(dpq::to_bytes(limit_minus.value(), 100.0).error() == errc::overflow);
+  CHECK(dpq::to_bytes(limit_minus.value(), 99.99).has_value());
 }
 
 TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same way") {
@@ -67,15 +67,16 @@ TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same 
   REQUIRE(p::dictionary.size() == 221);
   for (const auto &r : rows) {
     const auto index = static_cast<std::uint16_t>(std::stoul(r.index, nullptr, 16));
-    const od::entry *e = p::dictionary.find(index, 0);
-    REQUIRE_MESSAGE(e != nullptr, r.section);
-    CHECK_MESSAGE(e->name == r.name, r.section);
+    const auto found = p::dictionary.at(index, 0);
+    REQUIRE_MESSAGE(found.has_value(), r.section);
+    const od::descriptor *e = &found.value();
+    CHECK_MESSAGE(e->info.name == r.name, r.section);
     CHECK_MESSAGE(od::name(e->type) == r.data_type, r.section);
     CHECK_MESSAGE(e->width() == static_cast<std::uint32_t>(r.bytes), r.section);
     CHECK_MESSAGE(od::name(e->access_type) == r.access, r.section);
-    CHECK_MESSAGE(e->unit == r.unit, r.section);
-    CHECK_MESSAGE(e->section == r.section, r.section);
-    CHECK_MESSAGE(e->scaled, r.section);
+    CHECK_MESSAGE(e->info.unit == r.unit, r.section);
+    CHECK_MESSAGE(e->info.section == r.section, r.section);
+    CHECK_MESSAGE(e->has(od::flag::scaled), r.section);
     CHECK_MESSAGE(fc::equal(e->scale.scale, r.scale), r.section);
     CHECK_MESSAGE(fc::equal(e->scale.offset, r.offset), r.section);
     CHECK_MESSAGE(fc::equal(e->low.to_decimal().value(), r.low), r.section);
@@ -87,17 +88,17 @@ TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same 
                   r.section);
     CHECK_MESSAGE(((e->flags & od::flag::signedness_guess) != 0) == r.has_flag("signedness_guess"),
                   r.section);
-    // Same results through the descriptor and through the CSV-built conversion.
-    const dpq::conversion c = r.conversion();
+    // Same results through the generated descriptor and through one built from the CSV here.
+    const od::descriptor c = r.descriptor();
     for (const decimal eu : {r.low, r.high, decimal{r.low.mantissa + 1, r.low.places}}) {
-      const auto a = dpq::to_raw(*e, eu);
+      const auto a = e->to_raw(eu);
       const auto b = c.to_raw(eu);
       CHECK_MESSAGE(a == b, r.section);
       if (a) {
-        CHECK_MESSAGE(dpq::to_bytes(*e, eu) == c.encode(eu), r.section);
-        const auto bytes = c.encode(eu).value();
+        CHECK_MESSAGE(dpq::to_bytes(*e, eu) == dpq::to_bytes(c, eu), r.section);
+        const auto bytes = dpq::to_bytes(c, eu).value();
         CHECK_MESSAGE(dpq::from_bytes(*e, bytes.span()).value().mantissa ==
-                          c.decode(bytes.span()).value().mantissa,
+                          dpq::from_bytes(c, bytes.span()).value().mantissa,
                       r.section);
       }
     }

@@ -1,5 +1,5 @@
-// DPQ parameters by descriptor (dpq/parameter.hpp over od::entry). The entries below are
-// written the way fieldcodec-gen emits rows of dictionaries/dpq_parameters.csv.
+// DPQ parameters by descriptor (dpq/parameter.hpp over od::descriptor). The descriptors below
+// hold what fieldcodec-gen emits for rows of dictionaries/dpq_parameters.csv.
 #include <fieldcodec/dpq/parameter.hpp>
 
 #include <doctest/doctest.h>
@@ -15,39 +15,33 @@ using fc::errc;
 
 namespace {
 // 4.100
-constexpr od::entry inj_p_limit_1{.index = 0x2023,
-                                  .type = od::data_type::unsigned32,
-                                  .access_type = od::access::rw,
-                                  .flags = od::flag::signedness_guess,
-                                  .name = "Inj. P Limit 1",
-                                  .low = od::num::d(0, 0),
-                                  .high = od::num::d(5000, 0),
-                                  .scale = {{32767, 2}, {0, 0}},
-                                  .scaled = true,
-                                  .section = "4.100"};
+constexpr od::descriptor inj_p_limit_1{{.index = 0x2023,
+                                        .type = od::data_type::unsigned32,
+                                        .access_type = od::access::rw,
+                                        .flags = od::flag::signedness_guess | od::flag::scaled,
+                                        .low = od::decimal_number(0, 0),
+                                        .high = od::decimal_number(5000, 0)},
+                                       {.name = "Inj. P Limit 1", .section = "4.100"},
+                                       {{32767, 2}, {0, 0}}};
 // 4.197 (offset 1)
-constexpr od::entry program_block{.index = 0x2F25,
-                                  .type = od::data_type::integer16,
-                                  .access_type = od::access::ro,
-                                  .flags = od::flag::signedness_guess,
-                                  .name = "Program Block",
-                                  .low = od::num::d(0, 0),
-                                  .high = od::num::d(32, 0),
-                                  .scale = {{1, 0}, {1, 0}},
-                                  .scaled = true,
-                                  .section = "4.197"};
+constexpr od::descriptor program_block{{.index = 0x2F25,
+                                        .type = od::data_type::integer16,
+                                        .access_type = od::access::ro,
+                                        .flags = od::flag::signedness_guess | od::flag::scaled,
+                                        .low = od::decimal_number(0, 0),
+                                        .high = od::decimal_number(32, 0)},
+                                       {.name = "Program Block", .section = "4.197"},
+                                       {{1, 0}, {1, 0}}};
 // 4.35 (range_exceeds_field)
-constexpr od::entry decompres_limit_minus{.index = 0x2FA5,
-                                          .type = od::data_type::integer16,
-                                          .access_type = od::access::rw,
-                                          .flags = od::flag::signedness_guess |
-                                                   od::flag::range_exceeds_field,
-                                          .name = "Decompres.: Limit-",
-                                          .low = od::num::d(-100, 0),
-                                          .high = od::num::d(100, 0),
-                                          .scale = {{3277, 1}, {0, 0}},
-                                          .scaled = true,
-                                          .section = "4.35"};
+constexpr od::descriptor decompres_limit_minus{
+    {.index = 0x2FA5,
+     .type = od::data_type::integer16,
+     .access_type = od::access::rw,
+     .flags = od::flag::signedness_guess | od::flag::range_exceeds_field | od::flag::scaled,
+     .low = od::decimal_number(-100, 0),
+     .high = od::decimal_number(100, 0)},
+    {.name = "Decompres.: Limit-", .section = "4.35"},
+    {{3277, 1}, {0, 0}}};
 
 constexpr bool payload_is(fc::result<dpq::payload> p, std::array<std::uint8_t, 4> b,
                           std::uint8_t n) {
@@ -61,7 +55,6 @@ constexpr bool payload_is(fc::result<dpq::payload> p, std::array<std::uint8_t, 4
 
 // The shape: inj_p_limit_1.to_raw(4.0) → 1311, bytes 1F 05 00 00, and back.
 static_assert(inj_p_limit_1.to_raw(4.0).value() == 1311);
-static_assert(dpq::to_raw(inj_p_limit_1, 4.0).value() == 1311);
 static_assert(payload_is(dpq::to_bytes(inj_p_limit_1, 4.0), {0x1F, 0x05, 0x00, 0x00}, 4));
 static_assert(dpq::raw_from_bytes(inj_p_limit_1, std::array<std::uint8_t, 4>{0x1F, 0x05, 0, 0})
                   .value() == 1311);
@@ -80,7 +73,8 @@ TEST_CASE("dpq parameter: Inj. P Limit 1, 4.0 -> 1311 -> 1F 05 00 00 -> 4.001") 
   REQUIRE(back.has_value());
   CHECK(back.value().mantissa == 4001);
   CHECK(back.value().places == 3);
-  CHECK(dpq::to_raw(inj_p_limit_1, back.value()).value() == 1311);
+  CHECK(inj_p_limit_1.to_raw(back.value()).value() == 1311);
+  CHECK(dpq::to_eu_decimal(inj_p_limit_1, 1311).value().mantissa == 4001);
   CHECK(inj_p_limit_1.to_eu(1311) == doctest::Approx(4.000976592303232));
   // Limits and errors.
   CHECK(dpq::to_bytes(inj_p_limit_1, 5000.0).has_value());
@@ -118,20 +112,43 @@ TEST_CASE("dpq parameter: range that exceeds the field (Decompres.: Limit-)") {
   CHECK(payload_is(p, {0x01, 0x80, 0, 0}, 2)); // −99.99 × 327.7 = −32766.723 → −32767 = 0x8001
 }
 
-TEST_CASE("dpq parameter: conversion_of carries scale, field and range") {
-  auto c = dpq::conversion_of(inj_p_limit_1);
-  REQUIRE(c.has_value());
-  CHECK(c.value().field.bytes == 4);
-  CHECK(!c.value().field.is_signed);
-  CHECK(c.value().range.high.mantissa == 5000);
-  CHECK(c.value().to_raw(4.0).value() == 1311);
-  od::entry text{.index = 0x1008, .type = od::data_type::visible_string, .size = 8};
-  CHECK(dpq::conversion_of(text).error() == errc::type_mismatch);
+TEST_CASE("dpq parameter: every kind of engineering value, each as the number it is") {
+  // decimal, double, float (its shortest decimal) and integers give the same raw value
+  const auto want = dpq::to_bytes(inj_p_limit_1, decimal{4, 0});
+  REQUIRE(want.has_value());
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4.0) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4.0F) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 4) == want);
+  CHECK(dpq::to_bytes(inj_p_limit_1, std::uint16_t{4}) == want);
+  CHECK(dpq::write_bytes(inj_p_limit_1, 4U) == want);
+  // 90.73 as a PLC REAL: 29729.4991 → 29729 (widened to double first it would be 29730)
+  CHECK(inj_p_limit_1.to_raw(90.73F).value() == 29729);
+  CHECK(dpq::to_bytes(inj_p_limit_1, 90.73F).value().bytes[0] == (29729 & 0xFF));
+  static_assert(!dpq::engineering_value<bool>);
+  static_assert(dpq::engineering_value<float> && dpq::engineering_value<long long>);
+}
+
+TEST_CASE("dpq parameter: types and fields") {
+  const od::descriptor text{{.index = 0x1008, .type = od::data_type::visible_string, .size = 8}};
+  CHECK(text.to_raw(1.0).error() == errc::type_mismatch);
   CHECK(dpq::to_bytes(text, 1.0).error() == errc::type_mismatch);
+  CHECK(dpq::raw_to_bytes(text, 1).error() == errc::type_mismatch);
   CHECK(dpq::raw_from_bytes(text, std::array<std::uint8_t, 1>{0}).error() == errc::type_mismatch);
-  od::entry open{.index = 0x2000, .type = od::data_type::integer16};
-  auto o = dpq::conversion_of(open);
-  REQUIRE(o.has_value());
-  CHECK(o.value().to_raw(decimal{32767, 0}).value() == 32767);
-  CHECK(o.value().to_raw(decimal{32768, 0}).error() == errc::overflow);
+  const od::descriptor open{{.index = 0x2000, .type = od::data_type::integer16}};
+  CHECK(open.to_raw(decimal{32767, 0}).value() == 32767); // no range: only the field
+  CHECK(open.to_raw(decimal{32768, 0}).error() == errc::overflow);
+  CHECK(dpq::round_trip_places(inj_p_limit_1.scale).value() == 3);
+}
+
+TEST_CASE("dpq parameter: a scaled entry without its scale refuses to check its limits") {
+  // The engineering limits of a scaled entry need the scale; a plain od::entry (here the
+  // descriptor seen through its base) cannot turn them into raw limits.
+  const od::entry &plain = inj_p_limit_1;
+  std::array<std::uint8_t, 4> out{};
+  CHECK(od::encode(plain, 1311, out).error() == errc::invalid_argument);
+  CHECK(od::encode(inj_p_limit_1, 1311, out).value() == 4);
+  CHECK(od::decode(plain, out).error() == errc::invalid_argument);
+  CHECK(od::decode(plain, out, fc::byte_order::little, od::limits::ignore).value() ==
+        od::unsigned_number(1311));
+  CHECK(od::decode(inj_p_limit_1, out).value() == od::unsigned_number(1311));
 }

@@ -45,7 +45,7 @@ constexpr std::array<listed, 6> from_dpq{{{"Position FB :", 4},
 
 const od::entry *by_name(std::string_view name) {
   for (const od::entry &e : p::entries) {
-    if (e.name == name) return &e;
+    if (p::dictionary.info(e).name == name) return &e;
   }
   return nullptr;
 }
@@ -73,7 +73,7 @@ TEST_CASE("dpq pdo: the example's parameters against the dictionary") {
     const od::entry *e = by_name(l.name);
     REQUIRE_MESSAGE(e != nullptr, l.name);
     CHECK_MESSAGE(e->width() == l.bytes, l.name);
-    CHECK_MESSAGE(e->bus == od::bus_manager::available, l.name);
+    CHECK_MESSAGE(p::dictionary.info(*e).bus == od::bus_manager::available, l.name);
     CHECK_MESSAGE(od::writable(e->access_type), l.name);
     rx.push_back(e);
     rx_bytes += e->width();
@@ -82,7 +82,7 @@ TEST_CASE("dpq pdo: the example's parameters against the dictionary") {
     const od::entry *e = by_name(l.name);
     REQUIRE_MESSAGE(e != nullptr, l.name);
     CHECK_MESSAGE(e->width() == l.bytes, l.name);
-    CHECK_MESSAGE(e->bus == od::bus_manager::available, l.name);
+    CHECK_MESSAGE(p::dictionary.info(*e).bus == od::bus_manager::available, l.name);
     CHECK_MESSAGE(od::readable(e->access_type), l.name);
     tx.push_back(e);
     tx_bytes += e->width();
@@ -92,8 +92,8 @@ TEST_CASE("dpq pdo: the example's parameters against the dictionary") {
   CHECK(tx_bytes == 18);
   CHECK(layout(rx).size() == 4); // 4+4 | 2+2+2+2 | 4+4 | 4
   CHECK(layout(tx).size() == 3); // 4+4 | 4+2+2 | 2
-  CHECK(layout(tx)[0][0] == &p::position_fb);
-  CHECK(layout(tx)[0][1] == &p::pressure_fb);
+  CHECK(layout(tx)[0][0]->index == p::position_fb.index);
+  CHECK(layout(tx)[0][1]->index == p::pressure_fb.index);
 }
 
 TEST_CASE("dpq pdo: TPDO1 of the example (Position FB, Pressure FB)") {
@@ -101,8 +101,8 @@ TEST_CASE("dpq pdo: TPDO1 of the example (Position FB, Pressure FB)") {
   CHECK(p::position_fb.index == 0x2F07);
   CHECK(p::pressure_fb.index == 0x2F11);
   // 100.0 mm → 32767, 50.0 bar → 16383.5 → 16384.
-  const auto pos = dpq::to_raw(p::position_fb, 100.0);
-  const auto prs = dpq::to_raw(p::pressure_fb, 50.0);
+  const auto pos = p::position_fb.to_raw(100.0);
+  const auto prs = p::pressure_fb.to_raw(50.0);
   REQUIRE(pos.has_value());
   REQUIRE(prs.has_value());
   const std::array<std::uint64_t, 2> raws{static_cast<std::uint64_t>(pos.value()),
@@ -130,7 +130,7 @@ TEST_CASE("PDO mappability follows the Bus Manager column") {
   // dictionaries/dpq_parameters.csv: bus_manager "available" → pdo_mapping yes (read/write)
   // or tx (read-only); "not available" → no. The example's parameters validate as mappings.
   for (const od::entry &e : p::entries) {
-    const bool available = e.bus == od::bus_manager::available;
+    const bool available = p::dictionary.info(e).bus == od::bus_manager::available;
     CHECK(od::mappable_tx(e.pdo) == available);
     CHECK(od::mappable_rx(e.pdo) == (available && od::writable(e.access_type)));
   }

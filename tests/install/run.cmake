@@ -63,6 +63,17 @@ foreach(f include/fieldcodec/core/result.hpp bin/fieldcodec-gen
     message(FATAL_ERROR "install-sh did not install ${f}")
   endif()
 endforeach()
+# The command-line tool is installed beside the generator (Linux: host adapters available).
+if(CMAKE_HOST_SYSTEM_NAME STREQUAL "Linux")
+  if(NOT EXISTS ${prefix}/bin/fieldcodec)
+    message(FATAL_ERROR "install-sh did not install bin/fieldcodec")
+  endif()
+  execute_process(COMMAND ${prefix}/bin/fieldcodec decode --help RESULT_VARIABLE rc
+    OUTPUT_VARIABLE help ERROR_VARIABLE help)
+  if(NOT rc EQUAL 0 OR NOT help MATCHES "usage: fieldcodec decode")
+    message(FATAL_ERROR "the installed fieldcodec does not run (${rc}): ${help}")
+  endif()
+endif()
 
 # A consumer project: the recipe's CMake block after `add_executable(<target> <main>)`.
 function(consumer dir target main block)

@@ -17,68 +17,71 @@ using fc::errc;
 namespace {
 
 constexpr std::array<od::entry, 7> test_entries{{
-    {.index = 0x1000,
-     .type = od::data_type::unsigned32,
-     .access_type = od::access::ro,
-     .name = "Device type"},
+    {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro},
     {.index = 0x1014,
      .type = od::data_type::unsigned32,
-     .name = "COB-ID EMCY",
-     .default_value = od::num::u(0x80),
-     .default_nodeid = true},
+     .flags = od::flag::default_nodeid,
+     .default_value = od::unsigned_number(0x80)},
     {.index = 0x1018,
      .object = od::object_code::record,
      .access_type = od::access::ro,
-     .name = "Number of entries",
-     .default_value = od::num::u(2)},
+     .default_value = od::unsigned_number(2)},
     {.index = 0x1018,
      .sub = 1,
      .object = od::object_code::record,
      .type = od::data_type::unsigned32,
-     .access_type = od::access::ro,
-     .name = "Vendor-ID"},
+     .access_type = od::access::ro},
     {.index = 0x1018,
      .sub = 3,
      .object = od::object_code::record,
      .type = od::data_type::unsigned32,
-     .access_type = od::access::ro,
-     .name = "Revision"},
+     .access_type = od::access::ro},
     {.index = 0x2023,
      .type = od::data_type::unsigned32,
-     .name = "Inj. P Limit 1",
-     .low = od::num::i(0),
-     .high = od::num::i(5000),
-     .scale = {{32767, 2}, {0, 0}},
-     .scaled = true,
-     .unit = "bar"},
+     .flags = od::flag::scaled,
+     .low = od::signed_number(0),
+     .high = od::signed_number(5000)},
     {.index = 0x6060,
      .type = od::data_type::integer8,
      .pdo = od::pdo_mapping::yes,
-     .name = "Modes of operation",
-     .low = od::num::i(-1),
-     .high = od::num::i(10)},
+     .low = od::signed_number(-1),
+     .high = od::signed_number(10)},
 }};
-constexpr od::dictionary dict{test_entries};
+constexpr std::array<od::entry_info, 7> test_infos{{
+    {.name = "Device type"},
+    {.name = "COB-ID EMCY"},
+    {.name = "Number of entries"},
+    {.name = "Vendor-ID"},
+    {.name = "Revision"},
+    {.name = "Inj. P Limit 1", .unit = "bar"},
+    {.name = "Modes of operation"},
+}};
+constexpr std::array<fc::scaling::linear, 7> test_scales{
+    {{}, {}, {}, {}, {}, {{32767, 2}, {0, 0}}, {}}};
+constexpr od::dictionary dict{test_entries, test_infos, test_scales};
 static_assert(dict.is_valid());
 static_assert(dict.size() == 7);
 static_assert(dict.object_count() == 5);
-static_assert(dict.find(0x1018, 1)->name == "Vendor-ID");
+static_assert(dict.info(*dict.find(0x1018, 1)).name == "Vendor-ID");
 static_assert(dict.find(0x1018, 2) == nullptr); // gap in the sub-indices
 static_assert(dict.lookup(0x1018, 2).error() == errc::unknown_object);
 static_assert(dict.lookup(0x0FFF, 0).error() == errc::unknown_object);
 static_assert(dict.lookup(0xFFFF, 0xFF).error() == errc::unknown_object);
+static_assert(dict.lookup(od::address{0x1018, 3}).value() == &test_entries[4]);
 static_assert(dict.object(0x1018).size() == 3);
 static_assert(dict.object(0x1019).empty());
 static_assert(dict.object(0x6060).size() == 1);
 
-constexpr const od::entry &inj = test_entries[5];
+constexpr od::descriptor inj = dict.at(0x2023, 0).value();
 // DPQ manual 004 chapter 3: 4.0 bar × 327.67 = 1310.68 → 1311.
 static_assert(inj.to_raw(4.0).value() == 1311);
 static_assert(inj.to_raw(5000.001).error() == errc::out_of_range);
 static_assert(inj.to_raw(-0.5).error() == errc::out_of_range);
-static_assert(test_entries[0].to_raw(1.0).value() == 1); // identity scale
-static_assert(od::entry{.type = od::data_type::real32}.to_raw(1.0).error() == errc::type_mismatch);
-static_assert(test_entries[1].default_for(5).value() == od::num::u(0x85));
+static_assert(inj.info.unit == "bar");
+static_assert(dict.at(0x1000, 0).value().to_raw(1.0).value() == 1); // identity scale
+static_assert(od::descriptor{{.type = od::data_type::real32}}.to_raw(1.0).error() ==
+              errc::type_mismatch);
+static_assert(test_entries[1].default_for(5).value() == od::unsigned_number(0x85));
 static_assert(test_entries[0].default_for(5).error() == errc::unknown_object);
 
 template <std::size_t N>
@@ -88,8 +91,8 @@ constexpr std::array<std::uint8_t, N> enc(const od::entry &e, od::number v) {
   if (!n || n.value() != N) return {0xEE};
   return out;
 }
-static_assert(enc<1>(test_entries[6], od::num::i(-1)) == std::array<std::uint8_t, 1>{0xFF});
-static_assert(enc<4>(test_entries[0], od::num::u(0x00020192)) ==
+static_assert(enc<1>(test_entries[6], od::signed_number(-1)) == std::array<std::uint8_t, 1>{0xFF});
+static_assert(enc<4>(test_entries[0], od::unsigned_number(0x00020192)) ==
               std::array<std::uint8_t, 4>{0x92, 0x01, 0x02, 0x00});
 
 template <class T>
@@ -125,13 +128,16 @@ constexpr std::array<od::command, 2> cmds{{
     {.code = 0x0600, .name = "cmd_stop", .modes = "automatic;online"},
     {.code = 0x0700,
      .name = "cmd_set_system_parameter",
-     .parameter_min = od::num::i(1),
-     .parameter_max = od::num::i(65535),
+     .parameter_min = od::signed_number(1),
+     .parameter_max = od::signed_number(65535),
      .date_type = od::command_value::integer},
 }};
 constexpr od::command_table table{cmds};
 static_assert(table.is_valid());
 static_assert(table.find(0x0700)->name == "cmd_set_system_parameter");
+static_assert(table.find(0x0600) == &cmds[0]);
+static_assert(table.find(0x0650) == nullptr);
+static_assert(table.find(0x0800) == nullptr);
 static_assert(table.lookup(0x0601).error() == errc::unknown_command);
 static_assert(cmds[0].allowed_in("online") && !cmds[0].allowed_in("home"));
 static_assert(cmds[1].check_parameter(0).error() == errc::out_of_range);
@@ -161,7 +167,8 @@ TEST_CASE("od: lookup") {
     REQUIRE(r);
     CHECK(r.value() == &e);
   }
-  CHECK(dict.object(0x1018)[2].name == "Revision");
+  CHECK(dict.info(*dict.object(0x1018).find(3)).name == "Revision");
+  CHECK(dict.object(0x1018)[3].info.name == "Revision"); // [sub], not [position]
   CHECK_FALSE(od::dictionary{}.contains(0, 0));
   constexpr std::array<od::entry, 2> unsorted{{{.index = 2}, {.index = 1}}};
   CHECK_FALSE(od::dictionary{unsorted}.is_valid());
@@ -197,6 +204,8 @@ TEST_CASE("od: encode range checks") {
   // scaled entry: raw limits are round(low × scale), round(high × scale)
   CHECK(od::encode(inj, std::uint32_t{1638350}, buf).value() == 4);
   CHECK(od::encode(inj, std::uint32_t{1638351}, buf).error() == errc::out_of_range);
+  // ... which a plain entry cannot know
+  CHECK(od::encode(test_entries[5], std::uint32_t{1}, buf).error() == errc::invalid_argument);
 }
 
 TEST_CASE("od: decode") {
@@ -214,7 +223,7 @@ TEST_CASE("od: decode") {
   const std::array<std::uint8_t, 1> eleven{11};
   CHECK(od::decode(mode, eleven).error() == errc::out_of_range);
   CHECK(od::decode(mode, eleven, fc::byte_order::little, od::limits::ignore).value() ==
-        od::num::i(11));
+        od::signed_number(11));
   const od::entry b{.type = od::data_type::boolean};
   const std::array<std::uint8_t, 1> two{2};
   CHECK(od::decode(b, two).error() == errc::out_of_range);
@@ -263,11 +272,11 @@ TEST_CASE("od: byte strings") {
 }
 
 TEST_CASE("od: numbers") {
-  CHECK(od::num::d(32767, 2).to_double() == doctest::Approx(327.67));
-  CHECK(od::num::u(~std::uint64_t{0}).to_int64().error() == errc::overflow);
-  CHECK(od::num::f(2.5).to_int64().error() == errc::not_representable);
-  CHECK(od::num::f(2.0).to_int64().value() == 2);
-  CHECK(od::num::i(-1).to_uint64().error() == errc::overflow);
+  CHECK(od::decimal_number(32767, 2).to_double() == doctest::Approx(327.67));
+  CHECK(od::unsigned_number(~std::uint64_t{0}).to_int64().error() == errc::overflow);
+  CHECK(od::real_number(2.5).to_int64().error() == errc::not_representable);
+  CHECK(od::real_number(2.0).to_int64().value() == 2);
+  CHECK(od::signed_number(-1).to_uint64().error() == errc::overflow);
   CHECK(od::number{}.to_decimal().error() == errc::unknown_object);
   CHECK_FALSE(od::number{});
 }

@@ -25,8 +25,8 @@ constexpr od::command make(std::uint16_t code, std::int64_t lo, std::int64_t hi,
                            command_value reply) {
   od::command c{};
   c.code = code;
-  c.parameter_min = lo < 0 ? od::number{} : od::num::i(lo);
-  c.parameter_max = hi < 0 ? od::number{} : od::num::i(hi);
+  c.parameter_min = lo < 0 ? od::number{} : od::signed_number(lo);
+  c.parameter_max = hi < 0 ? od::number{} : od::signed_number(hi);
   c.date_type = date;
   c.reply_type = reply;
   return c;

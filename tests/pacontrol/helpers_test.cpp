@@ -220,8 +220,8 @@ static_assert(pac::value::of_int(-2147483648LL).value().as_int().value() == -214
 TEST_CASE("pacontrol helpers: axis parameter requests (5.2.3 examples)") {
   namespace serial = pac::serial;
   const fc::od::command set_axis_parameter{.code = 0x0800,
-                                           .parameter_min = fc::od::num::i(0x0101),
-                                           .parameter_max = fc::od::num::i(0x1032),
+                                           .parameter_min = fc::od::signed_number(0x0101),
+                                           .parameter_max = fc::od::signed_number(0x1032),
                                            .parameter_packing = fc::od::packing::byte_byte,
                                            .date_type = fc::od::command_value::real,
                                            .reply_type = fc::od::command_value::real};
@@ -240,11 +240,11 @@ TEST_CASE("pacontrol helpers: axis parameter requests (5.2.3 examples)") {
 
 TEST_CASE("pacontrol helpers: 0AA3 with an element condition") {
   const fc::od::command condition_move{.code = 0x0AA3,
-                                       .parameter_min = fc::od::num::i(0),
-                                       .parameter_max = fc::od::num::i(16),
+                                       .parameter_min = fc::od::signed_number(0),
+                                       .parameter_max = fc::od::signed_number(16),
                                        .date_type = fc::od::command_value::integer,
-                                       .date_min = fc::od::num::u(0x00010001),
-                                       .date_max = fc::od::num::u(0x01030400),
+                                       .date_min = fc::od::unsigned_number(0x00010001),
+                                       .date_max = fc::od::unsigned_number(0x01030400),
                                        .date_packing = fc::od::packing::byte_byte_word};
   auto r =
       pac::make_request(condition_move, 2, pac::element_condition{true, element_type::flag, 11});

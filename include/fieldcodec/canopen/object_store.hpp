@@ -264,7 +264,10 @@ private:
       return fits;
     }
     if (auto d = e.default_for(node_)) {
-      (void)od::encode(e, d.value(), slot); // an out-of-limit default stays zero
+      // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
+      if (auto desc = dict_.describe(e)) {
+        (void)od::encode(desc.value(), d.value(), slot, byte_order::little, node_);
+      }
     }
     return true;
   }
@@ -323,10 +326,12 @@ private:
     }
     if (data.size() > l.slot.size()) return abort_code::length_too_high;
     if (data.size() < l.slot.size()) return abort_code::length_too_low;
-    auto v = od::decode(e, data, byte_order::little, od::limits::check);
+    auto desc = dict_.describe(e); // a scaled entry's limits need its scale
+    if (!desc) return abort_code::general_error;
+    auto v = od::decode(desc.value(), data, byte_order::little, od::limits::check, node_);
     if (!v) {
       if (v.error() != errc::out_of_range) return abort_code::invalid_value;
-      return out_of_range_code(e, data);
+      return out_of_range_code(e, data, node_);
     }
     if (ask_hook) {
       if (const auto c = on_write_(e, data); c != abort_code::none) return c;
@@ -335,16 +340,21 @@ private:
     return abort_code::none;
   }
 
-  [[nodiscard]] static constexpr abort_code
-  out_of_range_code(const od::entry &e, std::span<const std::uint8_t> data) noexcept {
-    if (e.type == od::data_type::boolean || e.scaled) return abort_code::invalid_value;
+  [[nodiscard]] static constexpr abort_code out_of_range_code(const od::entry &e,
+                                                              std::span<const std::uint8_t> data,
+                                                              std::uint8_t node) noexcept {
+    if (e.type == od::data_type::boolean || e.has(od::flag::scaled)) {
+      return abort_code::invalid_value;
+    }
     auto raw = od::decode(e, data, byte_order::little, od::limits::ignore);
     if (!raw) return abort_code::invalid_value;
     auto v = raw.value().to_decimal();
-    auto hi = e.high.to_decimal();
-    if (v && hi && compare(v.value(), hi.value()) > 0) return abort_code::value_too_high;
-    auto lo = e.low.to_decimal();
-    if (v && lo && compare(v.value(), lo.value()) < 0) return abort_code::value_too_low;
+    auto hi = od::detail::checked_limit(e, true, node);
+    auto hd = hi ? hi.value().to_decimal() : result<decimal>{errc::unknown_object};
+    if (v && hd && compare(v.value(), hd.value()) > 0) return abort_code::value_too_high;
+    auto lo = od::detail::checked_limit(e, false, node);
+    auto ld = lo ? lo.value().to_decimal() : result<decimal>{errc::unknown_object};
+    if (v && ld && compare(v.value(), ld.value()) < 0) return abort_code::value_too_low;
     return abort_code::invalid_value;
   }
 

@@ -15,40 +15,48 @@
 #include <fieldcodec/od/value.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <span>
 
 namespace fieldcodec::canopen::sdo {
 
-/// Expedited download of `value` to entry `e`. `value` may be of any arithmetic type: it is
-/// taken as the number it is (never converted to the entry's type first) and checked against
-/// the entry's limits and field (od::encode rules), so nothing narrows or wraps silently
+/// Expedited download of `value` to entry `e`. `value` may be of any arithmetic or enumeration
+/// type: it is taken as the number it is (never converted to the entry's type first) and checked
+/// against the entry's limits and field (od::encode rules), so nothing narrows or wraps silently
 /// (0xFF as a uint8_t is 255, too large for an INTEGER8; −1 for an UNSIGNED8 overflows).
-/// Errors: those of od::encode (out_of_range, overflow, type_mismatch, not_representable),
-/// access_denied (read-only or constant entry), too_long (more than 4 bytes: use the client).
-template <od::value_type T>
-[[nodiscard]] constexpr result<payload> download(const od::entry &e, T value) noexcept {
+/// `e` is an od::entry or an od::descriptor (a scaled entry's limits need the descriptor);
+/// node-ID-relative limits are checked for `node` (od::any_node: for any node).
+/// Errors: those of od::encode (out_of_range, overflow, type_mismatch, not_representable,
+/// invalid_argument), access_denied (read-only or constant entry), too_long (more than 4 bytes:
+/// use the client).
+template <class E, od::value_type T>
+requires std::derived_from<E, od::entry>
+[[nodiscard]] constexpr result<payload> download(const E &e, T value,
+                                                 std::uint8_t node = od::any_node) noexcept {
   if (!od::writable(e.access_type)) return errc::access_denied;
   if (od::fixed_size(e.type) > 4U || od::fixed_size(e.type) == 0U) return errc::too_long;
   std::array<std::uint8_t, 8> b{};
-  auto n = od::encode(e, value, b);
+  auto n = od::encode(e, value, b, byte_order::little, node);
   if (!n) return n.error();
   return expedited_download({e.index, e.sub}, std::span<const std::uint8_t>(b).first(n.value()));
 }
 /// The same as a frame on channel `ch`.
-template <od::value_type T>
-[[nodiscard]] constexpr result<can_frame> download(const channel &ch, const od::entry &e,
+template <class E, od::value_type T>
+requires std::derived_from<E, od::entry>
+[[nodiscard]] constexpr result<can_frame> download(const channel &ch, const E &e,
                                                    T value) noexcept {
   return ch.request(download(e, value));
 }
 /// The same as a frame to the server of `node` (predefined channel). Errors: invalid_argument
 /// (node not 1..127) and those above.
-template <od::value_type T>
-[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const od::entry &e,
+template <class E, od::value_type T>
+requires std::derived_from<E, od::entry>
+[[nodiscard]] constexpr result<can_frame> download(std::uint8_t node, const E &e,
                                                    T value) noexcept {
   auto ch = channel::default_for(node);
   if (!ch) return ch.error();
-  return download(ch.value(), e, value);
+  return ch.value().request(download(e, value, node));
 }
 
 /// Initiate upload of entry `e`. Errors: access_denied (write-only).

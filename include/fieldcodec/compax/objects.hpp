@@ -14,6 +14,7 @@
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
 
@@ -55,11 +56,11 @@ enum class coding : std::uint8_t {
 
 /// Write the object's data bytes for the engineering value `eu` (mm, %, ms, … as the entry's
 /// scale says; booleans: 0 or 1) to the front of `out`; returns the number of bytes. Values
-/// finer than the resolution are rounded half away from zero, like od::entry::to_raw.
+/// finer than the resolution are rounded half away from zero, like od::descriptor::to_raw.
 /// Errors: out_of_range (outside the entry's limits or the coding's range), overflow (does not
 /// fit the field, or is the Integer32 overflow marker), type_mismatch (coding::other),
 /// buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> encode_object(const od::entry &e, decimal eu,
+[[nodiscard]] constexpr result<std::size_t> encode_object(const od::descriptor &e, decimal eu,
                                                           std::span<std::uint8_t> out) noexcept {
   switch (coding_of(e)) {
   case coding::integer: {
@@ -117,8 +118,9 @@ enum class coding : std::uint8_t {
 /// exact for every COMPAX resolution except OVERRIDE's 1/2.55).
 /// Errors: truncated, bad_length, overflow (Integer32 0x80000000), bad_sign, bad_digit,
 /// out_of_range, type_mismatch (coding::other).
-[[nodiscard]] constexpr result<decimal>
-decode_object(const od::entry &e, std::span<const std::uint8_t> in, unsigned places = 6) noexcept {
+[[nodiscard]] constexpr result<decimal> decode_object(const od::descriptor &e,
+                                                      std::span<const std::uint8_t> in,
+                                                      unsigned places = 6) noexcept {
   switch (coding_of(e)) {
   case coding::integer: {
     const std::size_t w = od::fixed_size(e.type);
@@ -165,17 +167,17 @@ decode_object(const od::entry &e, std::span<const std::uint8_t> in, unsigned pla
 [[nodiscard]] constexpr result<std::size_t> encode_px(const od::dictionary &d, std::uint8_t n,
                                                       decimal eu,
                                                       std::span<std::uint8_t> out) noexcept {
-  auto e = d.lookup(index::px, n);
+  auto e = d.at(index::px, n);
   if (!e) return e.error();
-  return encode_object(*e.value(), eu, out);
+  return encode_object(e.value(), eu, out);
 }
 
 /// Px parameter `n` from its 4 bytes. Errors: unknown_object, and those of decode_object.
 [[nodiscard]] constexpr result<decimal> decode_px(const od::dictionary &d, std::uint8_t n,
                                                   std::span<const std::uint8_t> in) noexcept {
-  auto e = d.lookup(index::px, n);
+  auto e = d.at(index::px, n);
   if (!e) return e.error();
-  return decode_object(*e.value(), in);
+  return decode_object(e.value(), in);
 }
 
 } // namespace fieldcodec::compax

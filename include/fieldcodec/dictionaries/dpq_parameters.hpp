@@ -3,7 +3,9 @@
 // clang-format off
 #pragma once
 
+#include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/od/data_type.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/number.hpp>
@@ -11,459 +13,911 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace fieldcodec::dictionaries::dpq_parameters {
+
+using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "dpq_parameters.csv";
 
 inline constexpr std::array<od::entry, 221> entries{{
-    {.index = 0x200D, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Vel.Limit 1", .low = od::num::i(0), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.92", .remark = "signed although the printed range is not negative: Holding: Vel.Limit 2..5 are -100..100 (docs/dpq.md)"},
-    {.index = 0x200E, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Vel.Limit 2", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.93"},
-    {.index = 0x200F, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Vel.Limit 3", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.94"},
-    {.index = 0x2010, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Vel.Limit 4", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.95"},
-    {.index = 0x2011, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Vel.Limit 5", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.96"},
-    {.index = 0x2012, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "JogMode:Vel.Forward", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.141", .remark = "name follows the Name line; the table of contents prints \"Jog Mode: Vel. Forward\""},
-    {.index = 0x2013, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "JogMode:Vel.Backward", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.140", .remark = "name follows the Name line; the table of contents prints \"Jog Mode: Vel. Backward\""},
-    {.index = 0x2014, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Screw Speed 2", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.199"},
-    {.index = 0x2015, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Screw Speed 3", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.200"},
-    {.index = 0x2017, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Pre.Decomp: Velocity", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.172"},
-    {.index = 0x2018, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Screw Speed 4", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.201"},
-    {.index = 0x201F, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Post.Decomp: Velocit", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.170"},
-    {.index = 0x2023, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 1", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.100"},
-    {.index = 0x2025, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.102"},
-    {.index = 0x2026, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.103"},
-    {.index = 0x2027, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.104"},
-    {.index = 0x2028, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 5", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.105"},
-    {.index = 0x202F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Pressure 1", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.82"},
-    {.index = 0x2030, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Pressure 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.83"},
-    {.index = 0x2031, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Pressure 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.84"},
-    {.index = 0x2032, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Pressure 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.85"},
-    {.index = 0x2033, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Pressure 5", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.86"},
-    {.index = 0x2036, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackPress: Press 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.20"},
-    {.index = 0x2037, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackPress: Press 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.21"},
-    {.index = 0x2039, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Press: PreDecompress", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.191"},
-    {.index = 0x203A, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackPress: Press 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.22"},
-    {.index = 0x203C, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 6", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.106"},
-    {.index = 0x203D, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 7", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.107"},
-    {.index = 0x203E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 8", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.108"},
-    {.index = 0x203F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 9", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.109"},
-    {.index = 0x2040, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. P Limit 10", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.101"},
-    {.index = 0x2041, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Press: PostDecompres", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.190", .remark = "name follows the Name line; the table of contents prints \"Press: PostDecompress\""},
-    {.index = 0x2114, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Vel. Ramp 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .unit = "%/sec", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.17"},
-    {.index = 0x2130, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Press Rate 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.158"},
-    {.index = 0x2131, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Press Rate 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.159"},
-    {.index = 0x2132, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Press Rate 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.160"},
-    {.index = 0x2133, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Press Rate 5", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .unit = "bar/sec", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.161"},
-    {.index = 0x2136, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press Rate 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.14"},
-    {.index = 0x2137, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press Rate 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.15"},
-    {.index = 0x213A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press Rate 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .unit = "bar/sec", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.16"},
-    {.index = 0x2167, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 1", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.119"},
-    {.index = 0x2169, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.121"},
-    {.index = 0x216A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.122"},
-    {.index = 0x216B, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.123"},
-    {.index = 0x216C, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 5", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.124"},
-    {.index = 0x2180, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 6", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.125"},
-    {.index = 0x2181, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 7", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.126"},
-    {.index = 0x2182, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 8", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.127"},
-    {.index = 0x2183, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 9", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.128"},
-    {.index = 0x2184, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Velocity 10", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.120"},
-    {.index = 0x2195, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Decomp Rate 1", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.153"},
-    {.index = 0x2196, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Decomp Rate 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.154"},
-    {.index = 0x2197, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Decomp Rate 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.155"},
-    {.index = 0x2198, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Decomp Rate 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.156"},
-    {.index = 0x2199, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Decomp Rate 5", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .unit = "bar/sec", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.157"},
-    {.index = 0x219C, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Decomp Rate 2", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.2"},
-    {.index = 0x219D, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Decomp Rate 3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.3"},
-    {.index = 0x21A0, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Decomp Rate 4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{105, 1}, {0, 0}}, .scaled = true, .unit = "bar/sec", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.4"},
-    {.index = 0x2201, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Accel.Ramp", .low = od::num::i(0), .high = od::num::i(65), .scale = {{500, 0}, {0, 0}}, .scaled = true, .unit = "[s]", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.99"},
-    {.index = 0x2301, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj.: Velocity P", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.131"},
-    {.index = 0x2323, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Pressure P", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.164"},
-    {.index = 0x2336, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press P 2", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.11"},
-    {.index = 0x2337, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press P 3", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.12"},
-    {.index = 0x233A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press P 4", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.13"},
-    {.index = 0x2423, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Pressure I", .low = od::num::i(0), .high = od::num::i(30000), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "ms", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.163"},
-    {.index = 0x2436, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press I 2", .low = od::num::i(0), .high = od::num::i(30000), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.8"},
-    {.index = 0x2437, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press I 3", .low = od::num::i(0), .high = od::num::i(30000), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.9"},
-    {.index = 0x243A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press I 4", .low = od::num::i(0), .high = od::num::i(30000), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "ms", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.10"},
-    {.index = 0x2701, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj.: Velocity D", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "Hz", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.130"},
-    {.index = 0x2723, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: Pressure D", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "Hz", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.162"},
-    {.index = 0x2736, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press D 2", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.5"},
-    {.index = 0x2737, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press D 3", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.6"},
-    {.index = 0x273A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackP: Press D 4", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "Hz", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.7"},
-    {.index = 0x2923, .type = od::data_type::unsigned16, .flags = 0x04, .name = "FWD: Inject", .low = od::num::i(0), .high = od::num::i(1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.46"},
-    {.index = 0x2936, .type = od::data_type::unsigned16, .flags = 0x04, .name = "FWD: BackPress 1", .low = od::num::i(0), .high = od::num::i(1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.43"},
-    {.index = 0x2937, .type = od::data_type::unsigned16, .flags = 0x04, .name = "FWD: BackPress 2", .low = od::num::i(0), .high = od::num::i(1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.44"},
-    {.index = 0x293A, .type = od::data_type::unsigned16, .flags = 0x04, .name = "FWD: BackPress 3", .low = od::num::i(0), .high = od::num::i(1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.45"},
-    {.index = 0x2A01, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 2", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.111"},
-    {.index = 0x2A03, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 3", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.112"},
-    {.index = 0x2A04, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 4", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.113"},
-    {.index = 0x2A05, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 5", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.114"},
-    {.index = 0x2A06, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 6", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.115"},
-    {.index = 0x2A14, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackPress: Position3", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.18"},
-    {.index = 0x2A15, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "BackPress: Position4", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.19"},
-    {.index = 0x2A17, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Pre.Decomp: Position", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.171"},
-    {.index = 0x2A1A, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 7", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.116"},
-    {.index = 0x2A1B, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 8", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.117"},
-    {.index = 0x2A1C, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 9", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.118"},
-    {.index = 0x2A1D, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj. Position 10", .low = od::num::i(-100), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.110"},
-    {.index = 0x2A64, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x06, .name = "Post.Decomp: Positio", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.169", .remark = "index_anomaly: Pre/Post pairs differ by 8 (0x2017/0x201F, 0x2039/0x2041) and Pre.Decomp: Position is 0x2A17, so 0x2A1F would be expected; as printed, see docs/errata.md"},
-    {.index = 0x2B2F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Time 1", .low = od::num::i(0), .high = od::num::d(99999, 2), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.87"},
-    {.index = 0x2B30, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Time 2", .low = od::num::i(0), .high = od::num::d(99999, 2), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.88"},
-    {.index = 0x2B31, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Time 3", .low = od::num::i(0), .high = od::num::d(99999, 2), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.89"},
-    {.index = 0x2B32, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Time 4", .low = od::num::i(0), .high = od::num::d(99999, 2), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.90"},
-    {.index = 0x2B33, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Holding: Time 5", .low = od::num::i(0), .high = od::num::d(99999, 2), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.91"},
-    {.index = 0x2C67, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Trigger", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.212"},
-    {.index = 0x2C68, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Status", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.207"},
-    {.index = 0x2C69, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Analog Vel Max", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm/s", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.1"},
-    {.index = 0x2C78, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Set SSI/INCR to zero", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.202"},
-    {.index = 0x2D02, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: act.Damp. Freq.", .low = od::num::i(0), .high = od::num::i(640), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "Hz", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.151", .remark = "name follows the Name line; the table of contents prints \"PaH: act.Damp. Freq\""},
-    {.index = 0x2D04, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Inj.: Vel.ActiveDamp", .low = od::num::i(0), .high = od::num::d(2559, 1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.129"},
-    {.index = 0x2D05, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "PaH: act.Damp. Gain", .low = od::num::i(0), .high = od::num::d(9999, 2), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.152"},
-    {.index = 0x2D0E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Shot Size Position", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.203"},
-    {.index = 0x2D0F, .type = od::data_type::unsigned32, .flags = 0x04, .name = "DO7: At Press Level", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.42"},
-    {.index = 0x2D17, .type = od::data_type::unsigned16, .flags = 0x04, .name = "DO7: At Press Delay", .low = od::num::i(0), .high = od::num::i(60), .scale = {{500, 0}, {0, 0}}, .scaled = true, .unit = "sec", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.41"},
-    {.index = 0x2D3B, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Transfer Position", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.211"},
-    {.index = 0x2D3C, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Transfer Cavity Pres", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.208"},
-    {.index = 0x2D3D, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Transfer Hydr.Press", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.210"},
-    {.index = 0x2D3E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = 0x04, .name = "Transfer Hydr.Pos.", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::available, .acceptance = "also with active enabling", .section = "4.209", .remark = "name follows the Name line; the table of contents prints \"Transfer Hydr.Pos\" (a trailing dot cannot be told apart from the dot leader)"},
-    {.index = 0x2D71, .type = od::data_type::integer16, .flags = 0x05, .name = "Press CMD Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.177", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D72, .type = od::data_type::integer16, .flags = 0x05, .name = "Press FB #1 Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.182", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D73, .type = od::data_type::integer16, .flags = 0x05, .name = "Cavity Press Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.26", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D74, .type = od::data_type::integer16, .flags = 0x05, .name = "Press FB #2 Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.187", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D75, .type = od::data_type::integer16, .flags = 0x05, .name = "Cyl Pos FB Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.32", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D76, .type = od::data_type::integer16, .flags = 0x05, .name = "Vel. CMD Min", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{163835, 1}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.219", .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2D7C, .type = od::data_type::integer16, .flags = 0x04, .name = "Press CMD Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.174"},
-    {.index = 0x2D7D, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #1 Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.179"},
-    {.index = 0x2D7E, .type = od::data_type::integer16, .flags = 0x04, .name = "Cavity Press Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.23"},
-    {.index = 0x2D7F, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #2 Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.184"},
-    {.index = 0x2D80, .type = od::data_type::integer16, .flags = 0x04, .name = "Cyl Pos FB Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.30"},
-    {.index = 0x2D81, .type = od::data_type::integer16, .flags = 0x04, .name = "Vel. CMD Max", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.217"},
-    {.index = 0x2D87, .type = od::data_type::integer16, .flags = 0x04, .name = "Press CMD Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.178"},
-    {.index = 0x2D88, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #1 Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.183"},
-    {.index = 0x2D89, .type = od::data_type::integer16, .flags = 0x04, .name = "Cavity Press Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.27"},
-    {.index = 0x2D8A, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #2 Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.188"},
-    {.index = 0x2D8B, .type = od::data_type::integer16, .flags = 0x04, .name = "Cyl Pos FB Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.33"},
-    {.index = 0x2D8C, .type = od::data_type::integer16, .flags = 0x04, .name = "Vel. CMD Min Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "mm/s", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.220"},
-    {.index = 0x2D92, .type = od::data_type::integer16, .flags = 0x04, .name = "Press CMD Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.175"},
-    {.index = 0x2D93, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #1 Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.180"},
-    {.index = 0x2D94, .type = od::data_type::integer16, .flags = 0x04, .name = "Cavity Press Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.24"},
-    {.index = 0x2D95, .type = od::data_type::integer16, .flags = 0x04, .name = "Press FB #2 Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.185"},
-    {.index = 0x2D96, .type = od::data_type::integer16, .flags = 0x04, .name = "Cyl Pos FB Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.31"},
-    {.index = 0x2D97, .type = od::data_type::integer16, .flags = 0x04, .name = "Vel. CMD Max Fau", .low = od::num::i(-150), .high = od::num::i(150), .scale = {{16383, 2}, {0, 0}}, .scaled = true, .unit = "mm/s", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.218"},
-    {.index = 0x2D9D, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Press CMD Max Uni", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.176"},
-    {.index = 0x2D9E, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Press FB #1 Max Uni", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.181"},
-    {.index = 0x2D9F, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Cavity Press Max Uni", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.25"},
-    {.index = 0x2DA0, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Press FB #2 Max Uni", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.186"},
-    {.index = 0x2DA1, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Cyl Pos CMD Max Uni", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.29"},
-    {.index = 0x2DC1, .type = od::data_type::unsigned16, .flags = 0x04, .name = "SSI: Nb. of bits", .low = od::num::i(1), .high = od::num::i(25), .scale = {{1, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.204"},
-    {.index = 0x2DC4, .type = od::data_type::unsigned16, .flags = 0x04, .name = "SSI: Resolution", .low = od::num::i(0), .high = od::num::i(32767), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "count/mm", .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.206"},
-    {.index = 0x2DC5, .type = od::data_type::unsigned32, .flags = 0x04, .name = "SSI: Offset", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.205"},
-    {.index = 0x2DCB, .type = od::data_type::unsigned32, .flags = 0x04, .name = "INCR: Home Offset", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.97"},
-    {.index = 0x2DCC, .type = od::data_type::unsigned16, .flags = 0x04, .name = "INCR: Resolution", .low = od::num::i(0), .high = od::num::i(32767), .scale = {{1, 0}, {0, 0}}, .scaled = true, .unit = "count/mm", .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.98"},
-    {.index = 0x2E21, .type = od::data_type::integer16, .flags = 0x06, .name = "Injection: Scale", .low = od::num::d(-999, 1), .high = od::num::d(999, 1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.135", .remark = "index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"},
-    {.index = 0x2E2A, .type = od::data_type::integer16, .flags = 0x07, .name = "Injection: Limit+", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.133", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"},
-    {.index = 0x2E2D, .type = od::data_type::integer16, .flags = 0x07, .name = "Injection: Limit-", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.132", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"},
-    {.index = 0x2E2E, .type = od::data_type::integer16, .flags = 0x07, .name = "OUT2: Inject Limit-", .low = od::num::i(-100), .high = od::num::i(0), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.144", .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"},
-    {.index = 0x2F03, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Velocity CMD AI6:", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[mm/s]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.221"},
-    {.index = 0x2F04, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Vel Loop CMD :", .low = od::num::i(0), .high = od::num::i(1000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[mm]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.216", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md); unit printed [mm] although this is a velocity command"},
-    {.index = 0x2F07, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Position FB :", .low = od::num::i(0), .high = od::num::i(1000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[mm]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.168", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F09, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Position Error :", .low = od::num::i(-1000), .high = od::num::i(1000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[mm]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.167"},
-    {.index = 0x2F0B, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Pressure CMD AI1:", .low = od::num::i(0), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.192", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F0E, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Press Loop CMD :", .low = od::num::i(0), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.189", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F0F, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Pressure FB#1 AI2:", .low = od::num::i(0), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.195", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F10, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Pressure FB#2 AI4:", .low = od::num::i(0), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.196", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F11, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Pressure FB :", .low = od::num::i(0), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.194", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F13, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Pressure Error :", .low = od::num::i(-200), .high = od::num::i(200), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.193"},
-    {.index = 0x2F19, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Cavity Pressure AI3:", .low = od::num::i(0), .high = od::num::i(2000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[bar]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.28", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F1A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Position AI5:", .low = od::num::i(0), .high = od::num::i(1000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[mm]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.166", .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"},
-    {.index = 0x2F1F, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Valve Output 1 :", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[%]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.213"},
-    {.index = 0x2F20, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Valve Output 2 :", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[%]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.214"},
-    {.index = 0x2F21, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Valve Output 3 :", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "[%]", .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.215"},
-    {.index = 0x2F25, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Program Block", .low = od::num::i(0), .high = od::num::i(32), .scale = {{1, 0}, {1, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.197", .remark = "offset 1: printed minimum 0 is raw -1"},
-    {.index = 0x2F26, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Discrete Outputs", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.40"},
-    {.index = 0x2F27, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Discrete Inputs", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.39"},
-    {.index = 0x2F28, .type = od::data_type::unsigned16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Output Mode", .low = od::num::i(0), .high = od::num::i(32), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.146"},
-    {.index = 0x2F34, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = 0x04, .name = "Program Status", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::available, .acceptance = "only with deactivated enabling", .section = "4.198"},
-    {.index = 0x2F6D, .type = od::data_type::integer16, .flags = 0x07, .name = "Injection: Offset", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.134", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"},
-    {.index = 0x2F72, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Pos Max Length", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "mm", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.165"},
-    {.index = 0x2F78, .type = od::data_type::unsigned32, .flags = 0x04, .name = "Pres Max Inject", .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .unit = "bar", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.173"},
-    {.index = 0x2F7F, .type = od::data_type::integer16, .flags = 0x05, .name = "Jog Mode: Offset", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.138", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F80, .type = od::data_type::integer16, .flags = 0x04, .name = "Jog Mode: Scale", .low = od::num::d(-999, 1), .high = od::num::d(999, 1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.139"},
-    {.index = 0x2F81, .type = od::data_type::integer16, .flags = 0x05, .name = "Jog Mode: Limit-", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.136", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F82, .type = od::data_type::integer16, .flags = 0x05, .name = "Jog Mode: Limit+", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.137", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F87, .type = od::data_type::integer16, .flags = 0x05, .name = "OUT2: Jog Limit-", .low = od::num::i(-100), .high = od::num::i(0), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.145", .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F91, .type = od::data_type::integer16, .flags = 0x05, .name = "PaH/BackPres: Offset", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.149", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F92, .type = od::data_type::integer16, .flags = 0x04, .name = "PaH/BackPres: Scale", .low = od::num::d(-999, 1), .high = od::num::d(999, 1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.150"},
-    {.index = 0x2F93, .type = od::data_type::integer16, .flags = 0x05, .name = "PaH/BackPres: Limit-", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.147", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F94, .type = od::data_type::integer16, .flags = 0x05, .name = "PaH/BackPres: Limit+", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.148", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2F99, .type = od::data_type::integer16, .flags = 0x05, .name = "OUT2: BackPress Lim-", .low = od::num::i(-100), .high = od::num::i(0), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.142", .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2FA3, .type = od::data_type::integer16, .flags = 0x05, .name = "Decompres.: Offset", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.37", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2FA4, .type = od::data_type::integer16, .flags = 0x04, .name = "Decompres.: Scale", .low = od::num::d(-999, 1), .high = od::num::d(999, 1), .scale = {{128, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.38"},
-    {.index = 0x2FA5, .type = od::data_type::integer16, .flags = 0x05, .name = "Decompres.: Limit-", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.35", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2FA6, .type = od::data_type::integer16, .flags = 0x05, .name = "Decompres.: Limit+", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.36", .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x2FAB, .type = od::data_type::integer16, .flags = 0x05, .name = "OUT2: Decomp Limit-", .low = od::num::i(-100), .high = od::num::i(0), .scale = {{3277, 1}, {0, 0}}, .scaled = true, .unit = "%", .bus = od::bus_manager::not_available, .acceptance = "also with active enabling", .section = "4.143", .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"},
-    {.index = 0x3116, .type = od::data_type::integer16, .flags = 0x04, .name = "Cyl. Area Ratio", .low = od::num::d(-319, 1), .high = od::num::d(319, 1), .scale = {{102401, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.34"},
-    {.index = 0x3501, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Time 1", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.66"},
-    {.index = 0x3503, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Time 3", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.77"},
-    {.index = 0x3504, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Time 4", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.79"},
-    {.index = 0x3505, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Time 5", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.80"},
-    {.index = 0x3506, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Time 6", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.81"},
-    {.index = 0x350E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 13", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.67", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x350F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 14", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.68", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x3510, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 15", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.69", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x3511, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 16", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.70", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x3512, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 17", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.71", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x3518, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 23", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.72", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x351B, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 26", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.73", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x351C, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 27", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.74", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x351D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 28", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.75", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x351E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 29", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.76", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x351F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Time 30", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{500, 0}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.78", .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"},
-    {.index = 0x3571, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pres CMD 13", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.64"},
-    {.index = 0x3601, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 1", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.48"},
-    {.index = 0x3602, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 2", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.54"},
-    {.index = 0x3603, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 3", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.59"},
-    {.index = 0x3604, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 4", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.61"},
-    {.index = 0x3605, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 5", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.62"},
-    {.index = 0x3606, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 6", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.63"},
-    {.index = 0x360D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos. FB 13", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.47", .remark = "spelled \"Pos. FB\" with a space, unlike the other Hist. Pos.FB entries (same in TOC, heading and Name line)"},
-    {.index = 0x360E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 14", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.49"},
-    {.index = 0x360F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 15", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.50"},
-    {.index = 0x3610, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 16", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.51"},
-    {.index = 0x3611, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 17", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.52"},
-    {.index = 0x3617, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x06, .name = "Hist. Pos.FB 18", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.53", .remark = "index_anomaly: every other Hist. Pos.FB n is at 0x3600+n, so 18 would be 0x3612; as printed, see docs/errata.md"},
-    {.index = 0x361A, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 26", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.55"},
-    {.index = 0x361B, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 27", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.56"},
-    {.index = 0x361C, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 28", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.57"},
-    {.index = 0x361D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 29", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.58"},
-    {.index = 0x361E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pos.FB 30", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.60"},
-    {.index = 0x362E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = 0x04, .name = "Hist. Pres.FB 13", .low = od::num::i(-100), .high = od::num::i(100), .scale = {{32767, 2}, {0, 0}}, .scaled = true, .bus = od::bus_manager::not_available, .acceptance = "only with deactivated enabling", .section = "4.65"},
+    {.index = 0x200D, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(100)},
+    {.index = 0x200E, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x200F, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2010, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2011, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2012, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2013, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2014, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2015, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2017, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2018, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x201F, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2023, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2025, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2026, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2027, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2028, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x202F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2030, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2031, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2032, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2033, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2036, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2037, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2039, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x203A, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x203C, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x203D, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x203E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x203F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2040, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2041, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2114, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2130, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2131, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2132, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2133, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2136, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2137, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x213A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2167, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2169, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x216A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x216B, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x216C, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2180, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2181, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2182, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2183, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2184, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2195, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2196, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2197, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2198, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2199, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x219C, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x219D, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x21A0, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2201, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(65)},
+    {.index = 0x2301, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x2323, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x2336, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x2337, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x233A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x2423, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(30000)},
+    {.index = 0x2436, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(30000)},
+    {.index = 0x2437, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(30000)},
+    {.index = 0x243A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(30000)},
+    {.index = 0x2701, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x2723, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x2736, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x2737, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x273A, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x2923, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1)},
+    {.index = 0x2936, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1)},
+    {.index = 0x2937, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1)},
+    {.index = 0x293A, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1)},
+    {.index = 0x2A01, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A03, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A04, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A05, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A06, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A14, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2A15, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2A17, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2A1A, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A1B, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A1C, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A1D, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(5000)},
+    {.index = 0x2A64, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2B2F, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(99999, 2)},
+    {.index = 0x2B30, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(99999, 2)},
+    {.index = 0x2B31, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(99999, 2)},
+    {.index = 0x2B32, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(99999, 2)},
+    {.index = 0x2B33, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(99999, 2)},
+    {.index = 0x2C67, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2C68, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2C69, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2C78, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D02, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(640)},
+    {.index = 0x2D04, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(2559, 1)},
+    {.index = 0x2D05, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::decimal_number(9999, 2)},
+    {.index = 0x2D0E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D0F, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D17, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(60)},
+    {.index = 0x2D3B, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D3C, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D3D, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D3E, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D71, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D72, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D73, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D74, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D75, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D76, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D7C, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D7D, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D7E, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D7F, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D80, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D81, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2D87, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D88, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D89, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D8A, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D8B, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D8C, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D92, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D93, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D94, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D95, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D96, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D97, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-150), .high = od::signed_number(150)},
+    {.index = 0x2D9D, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D9E, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2D9F, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2DA0, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2DA1, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2DC1, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(1), .high = od::signed_number(25)},
+    {.index = 0x2DC4, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(32767)},
+    {.index = 0x2DC5, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2DCB, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2DCC, .type = od::data_type::unsigned16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(32767)},
+    {.index = 0x2E21, .type = od::data_type::integer16, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::decimal_number(-999, 1), .high = od::decimal_number(999, 1)},
+    {.index = 0x2E2A, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2E2D, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2E2E, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(0)},
+    {.index = 0x2F03, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F04, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1000)},
+    {.index = 0x2F07, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1000)},
+    {.index = 0x2F09, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-1000), .high = od::signed_number(1000)},
+    {.index = 0x2F0B, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(200)},
+    {.index = 0x2F0E, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(200)},
+    {.index = 0x2F0F, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(200)},
+    {.index = 0x2F10, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(200)},
+    {.index = 0x2F11, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(200)},
+    {.index = 0x2F13, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-200), .high = od::signed_number(200)},
+    {.index = 0x2F19, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(2000)},
+    {.index = 0x2F1A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(1000)},
+    {.index = 0x2F1F, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F20, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F21, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F25, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(32)},
+    {.index = 0x2F26, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F27, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F28, .type = od::data_type::unsigned16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(32)},
+    {.index = 0x2F34, .type = od::data_type::integer16, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F6D, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F72, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2F78, .type = od::data_type::unsigned32, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(5000)},
+    {.index = 0x2F7F, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F80, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::decimal_number(-999, 1), .high = od::decimal_number(999, 1)},
+    {.index = 0x2F81, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F82, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F87, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(0)},
+    {.index = 0x2F91, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F92, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::decimal_number(-999, 1), .high = od::decimal_number(999, 1)},
+    {.index = 0x2F93, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F94, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2F99, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(0)},
+    {.index = 0x2FA3, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2FA4, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::decimal_number(-999, 1), .high = od::decimal_number(999, 1)},
+    {.index = 0x2FA5, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2FA6, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x2FAB, .type = od::data_type::integer16, .flags = od::flag::range_exceeds_field | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(0)},
+    {.index = 0x3116, .type = od::data_type::integer16, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::decimal_number(-319, 1), .high = od::decimal_number(319, 1)},
+    {.index = 0x3501, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3503, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3504, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3505, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3506, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x350E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x350F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3510, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3511, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3512, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3518, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x351B, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x351C, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x351D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x351E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x351F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3571, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3601, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3602, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3603, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3604, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3605, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3606, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x360D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x360E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x360F, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3610, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3611, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x3617, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::index_anomaly | od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x361A, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x361B, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x361C, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x361D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x361E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
+    {.index = 0x362E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::signedness_guess | od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
 }};
 
-inline constexpr od::dictionary dictionary{entries};
+inline constexpr std::array<od::entry_info, 221> infos{{
+    {.name = "Holding: Vel.Limit 1"sv, .section = "4.92"sv, .remark = "signed although the printed range is not negative: Holding: Vel.Limit 2..5 are -100..100 (docs/dpq.md)"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Vel.Limit 2"sv, .section = "4.93"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Vel.Limit 3"sv, .section = "4.94"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Vel.Limit 4"sv, .section = "4.95"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Vel.Limit 5"sv, .section = "4.96"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "JogMode:Vel.Forward"sv, .unit = "%"sv, .section = "4.141"sv, .remark = "name follows the Name line; the table of contents prints \"Jog Mode: Vel. Forward\""sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "JogMode:Vel.Backward"sv, .unit = "%"sv, .section = "4.140"sv, .remark = "name follows the Name line; the table of contents prints \"Jog Mode: Vel. Backward\""sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Screw Speed 2"sv, .section = "4.199"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Screw Speed 3"sv, .section = "4.200"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pre.Decomp: Velocity"sv, .section = "4.172"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Screw Speed 4"sv, .section = "4.201"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Post.Decomp: Velocit"sv, .section = "4.170"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 1"sv, .section = "4.100"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 2"sv, .section = "4.102"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 3"sv, .section = "4.103"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 4"sv, .section = "4.104"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 5"sv, .section = "4.105"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Pressure 1"sv, .section = "4.82"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Pressure 2"sv, .section = "4.83"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Pressure 3"sv, .section = "4.84"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Pressure 4"sv, .section = "4.85"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Pressure 5"sv, .section = "4.86"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackPress: Press 2"sv, .section = "4.20"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackPress: Press 3"sv, .section = "4.21"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Press: PreDecompress"sv, .unit = "bar"sv, .section = "4.191"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "BackPress: Press 4"sv, .section = "4.22"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 6"sv, .section = "4.106"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 7"sv, .section = "4.107"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 8"sv, .section = "4.108"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 9"sv, .section = "4.109"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. P Limit 10"sv, .section = "4.101"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Press: PostDecompres"sv, .unit = "bar"sv, .section = "4.190"sv, .remark = "name follows the Name line; the table of contents prints \"Press: PostDecompress\""sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "BackP: Vel. Ramp 2"sv, .unit = "%/sec"sv, .section = "4.17"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Press Rate 2"sv, .section = "4.158"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Press Rate 3"sv, .section = "4.159"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Press Rate 4"sv, .section = "4.160"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Press Rate 5"sv, .unit = "bar/sec"sv, .section = "4.161"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press Rate 2"sv, .section = "4.14"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press Rate 3"sv, .section = "4.15"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press Rate 4"sv, .unit = "bar/sec"sv, .section = "4.16"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 1"sv, .section = "4.119"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 2"sv, .section = "4.121"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 3"sv, .section = "4.122"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 4"sv, .section = "4.123"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 5"sv, .section = "4.124"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 6"sv, .section = "4.125"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 7"sv, .section = "4.126"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 8"sv, .section = "4.127"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 9"sv, .section = "4.128"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Velocity 10"sv, .section = "4.120"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Decomp Rate 1"sv, .section = "4.153"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Decomp Rate 2"sv, .section = "4.154"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Decomp Rate 3"sv, .section = "4.155"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Decomp Rate 4"sv, .section = "4.156"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Decomp Rate 5"sv, .unit = "bar/sec"sv, .section = "4.157"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Decomp Rate 2"sv, .section = "4.2"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Decomp Rate 3"sv, .section = "4.3"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Decomp Rate 4"sv, .unit = "bar/sec"sv, .section = "4.4"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Accel.Ramp"sv, .unit = "[s]"sv, .section = "4.99"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj.: Velocity P"sv, .section = "4.131"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Pressure P"sv, .section = "4.164"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press P 2"sv, .section = "4.11"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press P 3"sv, .section = "4.12"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press P 4"sv, .section = "4.13"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Pressure I"sv, .unit = "ms"sv, .section = "4.163"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press I 2"sv, .section = "4.8"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press I 3"sv, .section = "4.9"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press I 4"sv, .unit = "ms"sv, .section = "4.10"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj.: Velocity D"sv, .unit = "Hz"sv, .section = "4.130"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: Pressure D"sv, .unit = "Hz"sv, .section = "4.162"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press D 2"sv, .section = "4.5"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press D 3"sv, .section = "4.6"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackP: Press D 4"sv, .unit = "Hz"sv, .section = "4.7"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "FWD: Inject"sv, .section = "4.46"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "FWD: BackPress 1"sv, .section = "4.43"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "FWD: BackPress 2"sv, .section = "4.44"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "FWD: BackPress 3"sv, .section = "4.45"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Inj. Position 2"sv, .section = "4.111"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 3"sv, .section = "4.112"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 4"sv, .section = "4.113"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 5"sv, .section = "4.114"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 6"sv, .section = "4.115"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackPress: Position3"sv, .section = "4.18"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "BackPress: Position4"sv, .section = "4.19"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pre.Decomp: Position"sv, .section = "4.171"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 7"sv, .section = "4.116"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 8"sv, .section = "4.117"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 9"sv, .section = "4.118"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj. Position 10"sv, .section = "4.110"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Post.Decomp: Positio"sv, .section = "4.169"sv, .remark = "index_anomaly: Pre/Post pairs differ by 8 (0x2017/0x201F, 0x2039/0x2041) and Pre.Decomp: Position is 0x2A17, so 0x2A1F would be expected; as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Time 1"sv, .section = "4.87"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Time 2"sv, .section = "4.88"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Time 3"sv, .section = "4.89"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Time 4"sv, .section = "4.90"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Holding: Time 5"sv, .section = "4.91"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Trigger"sv, .section = "4.212"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Status"sv, .section = "4.207"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Analog Vel Max"sv, .unit = "mm/s"sv, .section = "4.1"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Set SSI/INCR to zero"sv, .section = "4.202"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: act.Damp. Freq."sv, .unit = "Hz"sv, .section = "4.151"sv, .remark = "name follows the Name line; the table of contents prints \"PaH: act.Damp. Freq\""sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Inj.: Vel.ActiveDamp"sv, .section = "4.129"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "PaH: act.Damp. Gain"sv, .section = "4.152"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Shot Size Position"sv, .section = "4.203"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "DO7: At Press Level"sv, .unit = "bar"sv, .section = "4.42"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "DO7: At Press Delay"sv, .unit = "sec"sv, .section = "4.41"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Transfer Position"sv, .unit = "mm"sv, .section = "4.211"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Transfer Cavity Pres"sv, .unit = "bar"sv, .section = "4.208"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Transfer Hydr.Press"sv, .unit = "bar"sv, .section = "4.210"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Transfer Hydr.Pos."sv, .unit = "mm"sv, .section = "4.209"sv, .remark = "name follows the Name line; the table of contents prints \"Transfer Hydr.Pos\" (a trailing dot cannot be told apart from the dot leader)"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Press CMD Min"sv, .section = "4.177"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #1 Min"sv, .section = "4.182"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cavity Press Min"sv, .section = "4.26"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #2 Min"sv, .section = "4.187"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl Pos FB Min"sv, .section = "4.32"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Vel. CMD Min"sv, .section = "4.219"sv, .remark = "printed range gives raw -1638350..1638350, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press CMD Max"sv, .section = "4.174"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #1 Max"sv, .section = "4.179"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cavity Press Max"sv, .section = "4.23"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #2 Max"sv, .section = "4.184"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl Pos FB Max"sv, .section = "4.30"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Vel. CMD Max"sv, .section = "4.217"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press CMD Min Fau"sv, .unit = "bar"sv, .section = "4.178"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #1 Min Fau"sv, .unit = "bar"sv, .section = "4.183"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cavity Press Min Fau"sv, .unit = "bar"sv, .section = "4.27"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #2 Min Fau"sv, .unit = "bar"sv, .section = "4.188"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl Pos FB Min Fau"sv, .unit = "mm"sv, .section = "4.33"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Vel. CMD Min Fau"sv, .unit = "mm/s"sv, .section = "4.220"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press CMD Max Fau"sv, .unit = "bar"sv, .section = "4.175"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #1 Max Fau"sv, .unit = "bar"sv, .section = "4.180"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cavity Press Max Fau"sv, .unit = "bar"sv, .section = "4.24"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #2 Max Fau"sv, .unit = "bar"sv, .section = "4.185"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl Pos FB Max Fau"sv, .unit = "mm"sv, .section = "4.31"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Vel. CMD Max Fau"sv, .unit = "mm/s"sv, .section = "4.218"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press CMD Max Uni"sv, .unit = "bar"sv, .section = "4.176"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #1 Max Uni"sv, .unit = "bar"sv, .section = "4.181"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cavity Press Max Uni"sv, .unit = "bar"sv, .section = "4.25"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Press FB #2 Max Uni"sv, .unit = "bar"sv, .section = "4.186"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl Pos CMD Max Uni"sv, .unit = "mm"sv, .section = "4.29"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "SSI: Nb. of bits"sv, .section = "4.204"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "SSI: Resolution"sv, .unit = "count/mm"sv, .section = "4.206"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "SSI: Offset"sv, .unit = "mm"sv, .section = "4.205"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "INCR: Home Offset"sv, .unit = "mm"sv, .section = "4.97"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "INCR: Resolution"sv, .unit = "count/mm"sv, .section = "4.98"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Injection: Scale"sv, .section = "4.135"sv, .remark = "index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Injection: Limit+"sv, .unit = "%"sv, .section = "4.133"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Injection: Limit-"sv, .unit = "%"sv, .section = "4.132"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "OUT2: Inject Limit-"sv, .unit = "%"sv, .section = "4.144"sv, .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Velocity CMD AI6:"sv, .unit = "[mm/s]"sv, .section = "4.221"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Vel Loop CMD :"sv, .unit = "[mm]"sv, .section = "4.216"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md); unit printed [mm] although this is a velocity command"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Position FB :"sv, .unit = "[mm]"sv, .section = "4.168"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Position Error :"sv, .unit = "[mm]"sv, .section = "4.167"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pressure CMD AI1:"sv, .unit = "[bar]"sv, .section = "4.192"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Press Loop CMD :"sv, .unit = "[bar]"sv, .section = "4.189"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pressure FB#1 AI2:"sv, .unit = "[bar]"sv, .section = "4.195"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pressure FB#2 AI4:"sv, .unit = "[bar]"sv, .section = "4.196"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pressure FB :"sv, .unit = "[bar]"sv, .section = "4.194"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Pressure Error :"sv, .unit = "[bar]"sv, .section = "4.193"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Cavity Pressure AI3:"sv, .unit = "[bar]"sv, .section = "4.28"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Position AI5:"sv, .unit = "[mm]"sv, .section = "4.166"sv, .remark = "signed although the printed range is not negative: read-only actual value (docs/dpq.md)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Valve Output 1 :"sv, .unit = "[%]"sv, .section = "4.213"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Valve Output 2 :"sv, .unit = "[%]"sv, .section = "4.214"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Valve Output 3 :"sv, .unit = "[%]"sv, .section = "4.215"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Program Block"sv, .section = "4.197"sv, .remark = "offset 1: printed minimum 0 is raw -1"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Discrete Outputs"sv, .section = "4.40"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Discrete Inputs"sv, .section = "4.39"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Output Mode"sv, .section = "4.146"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Program Status"sv, .section = "4.198"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::available},
+    {.name = "Injection: Offset"sv, .unit = "%"sv, .section = "4.134"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow; index_anomaly: the Injection: block is split (Offset 0x2F6D; Scale, Limit+, Limit-, OUT2: Inject Limit- at 0x2E21/0x2E2A/0x2E2D/0x2E2E) while the Jog Mode, PaH/BackPres and Decompres. blocks sit together at 0x2F7F/0x2F91/0x2FA3 (stride 0x12); as printed, see docs/errata.md"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Pos Max Length"sv, .unit = "mm"sv, .section = "4.165"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Pres Max Inject"sv, .unit = "bar"sv, .section = "4.173"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Jog Mode: Offset"sv, .unit = "%"sv, .section = "4.138"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Jog Mode: Scale"sv, .section = "4.139"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Jog Mode: Limit-"sv, .unit = "%"sv, .section = "4.136"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Jog Mode: Limit+"sv, .unit = "%"sv, .section = "4.137"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "OUT2: Jog Limit-"sv, .unit = "%"sv, .section = "4.145"sv, .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "PaH/BackPres: Offset"sv, .unit = "%"sv, .section = "4.149"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "PaH/BackPres: Scale"sv, .section = "4.150"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "PaH/BackPres: Limit-"sv, .unit = "%"sv, .section = "4.147"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "PaH/BackPres: Limit+"sv, .unit = "%"sv, .section = "4.148"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "OUT2: BackPress Lim-"sv, .unit = "%"sv, .section = "4.142"sv, .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Decompres.: Offset"sv, .unit = "%"sv, .section = "4.37"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Decompres.: Scale"sv, .section = "4.38"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Decompres.: Limit-"sv, .unit = "%"sv, .section = "4.35"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Decompres.: Limit+"sv, .unit = "%"sv, .section = "4.36"sv, .remark = "printed range gives raw -32770..32770, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "OUT2: Decomp Limit-"sv, .unit = "%"sv, .section = "4.143"sv, .remark = "printed range gives raw -32770..0, outside INTEGER16; the encoder refuses such values with errc::overflow"sv, .acceptance = "also with active enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Cyl. Area Ratio"sv, .section = "4.34"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 1"sv, .section = "4.66"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 3"sv, .section = "4.77"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 4"sv, .section = "4.79"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 5"sv, .section = "4.80"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 6"sv, .section = "4.81"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 13"sv, .section = "4.67"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 14"sv, .section = "4.68"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 15"sv, .section = "4.69"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 16"sv, .section = "4.70"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 17"sv, .section = "4.71"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 23"sv, .section = "4.72"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 26"sv, .section = "4.73"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 27"sv, .section = "4.74"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 28"sv, .section = "4.75"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 29"sv, .section = "4.76"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Time 30"sv, .section = "4.78"sv, .remark = "index_anomaly: Hist. Time 13..30 are at 0x3501+n, Hist. Time 1..6 and Hist. Pos.FB at base+n; shift consistent over all 11, may be genuine; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pres CMD 13"sv, .section = "4.64"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 1"sv, .section = "4.48"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 2"sv, .section = "4.54"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 3"sv, .section = "4.59"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 4"sv, .section = "4.61"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 5"sv, .section = "4.62"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 6"sv, .section = "4.63"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos. FB 13"sv, .section = "4.47"sv, .remark = "spelled \"Pos. FB\" with a space, unlike the other Hist. Pos.FB entries (same in TOC, heading and Name line)"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 14"sv, .section = "4.49"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 15"sv, .section = "4.50"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 16"sv, .section = "4.51"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 17"sv, .section = "4.52"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 18"sv, .section = "4.53"sv, .remark = "index_anomaly: every other Hist. Pos.FB n is at 0x3600+n, so 18 would be 0x3612; as printed, see docs/errata.md"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 26"sv, .section = "4.55"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 27"sv, .section = "4.56"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 28"sv, .section = "4.57"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 29"sv, .section = "4.58"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pos.FB 30"sv, .section = "4.60"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+    {.name = "Hist. Pres.FB 13"sv, .section = "4.65"sv, .acceptance = "only with deactivated enabling"sv, .bus = od::bus_manager::not_available},
+}};
+
+inline constexpr std::array<scaling::linear, 221> scales{{
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{105, 1}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{163835, 1}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{16383, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{1, 0}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{1, 0}, {1, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{128, 0}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{3277, 1}, {0, 0}},
+    {{102401, 2}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{500, 0}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+    {{32767, 2}, {0, 0}},
+}};
+
+inline constexpr od::dictionary dictionary{entries, infos, scales};
 static_assert(dictionary.is_valid());
 
-inline constexpr const od::entry &holding_vel_limit_1 = entries[0]; // 0x200D
-inline constexpr const od::entry &holding_vel_limit_2 = entries[1]; // 0x200E
-inline constexpr const od::entry &holding_vel_limit_3 = entries[2]; // 0x200F
-inline constexpr const od::entry &holding_vel_limit_4 = entries[3]; // 0x2010
-inline constexpr const od::entry &holding_vel_limit_5 = entries[4]; // 0x2011
-inline constexpr const od::entry &jogmode_vel_forward = entries[5]; // 0x2012
-inline constexpr const od::entry &jogmode_vel_backward = entries[6]; // 0x2013
-inline constexpr const od::entry &screw_speed_2 = entries[7]; // 0x2014
-inline constexpr const od::entry &screw_speed_3 = entries[8]; // 0x2015
-inline constexpr const od::entry &pre_decomp_velocity = entries[9]; // 0x2017
-inline constexpr const od::entry &screw_speed_4 = entries[10]; // 0x2018
-inline constexpr const od::entry &post_decomp_velocit = entries[11]; // 0x201F
-inline constexpr const od::entry &inj_p_limit_1 = entries[12]; // 0x2023
-inline constexpr const od::entry &inj_p_limit_2 = entries[13]; // 0x2025
-inline constexpr const od::entry &inj_p_limit_3 = entries[14]; // 0x2026
-inline constexpr const od::entry &inj_p_limit_4 = entries[15]; // 0x2027
-inline constexpr const od::entry &inj_p_limit_5 = entries[16]; // 0x2028
-inline constexpr const od::entry &holding_pressure_1 = entries[17]; // 0x202F
-inline constexpr const od::entry &holding_pressure_2 = entries[18]; // 0x2030
-inline constexpr const od::entry &holding_pressure_3 = entries[19]; // 0x2031
-inline constexpr const od::entry &holding_pressure_4 = entries[20]; // 0x2032
-inline constexpr const od::entry &holding_pressure_5 = entries[21]; // 0x2033
-inline constexpr const od::entry &backpress_press_2 = entries[22]; // 0x2036
-inline constexpr const od::entry &backpress_press_3 = entries[23]; // 0x2037
-inline constexpr const od::entry &press_predecompress = entries[24]; // 0x2039
-inline constexpr const od::entry &backpress_press_4 = entries[25]; // 0x203A
-inline constexpr const od::entry &inj_p_limit_6 = entries[26]; // 0x203C
-inline constexpr const od::entry &inj_p_limit_7 = entries[27]; // 0x203D
-inline constexpr const od::entry &inj_p_limit_8 = entries[28]; // 0x203E
-inline constexpr const od::entry &inj_p_limit_9 = entries[29]; // 0x203F
-inline constexpr const od::entry &inj_p_limit_10 = entries[30]; // 0x2040
-inline constexpr const od::entry &press_postdecompres = entries[31]; // 0x2041
-inline constexpr const od::entry &backp_vel_ramp_2 = entries[32]; // 0x2114
-inline constexpr const od::entry &pah_press_rate_2 = entries[33]; // 0x2130
-inline constexpr const od::entry &pah_press_rate_3 = entries[34]; // 0x2131
-inline constexpr const od::entry &pah_press_rate_4 = entries[35]; // 0x2132
-inline constexpr const od::entry &pah_press_rate_5 = entries[36]; // 0x2133
-inline constexpr const od::entry &backp_press_rate_2 = entries[37]; // 0x2136
-inline constexpr const od::entry &backp_press_rate_3 = entries[38]; // 0x2137
-inline constexpr const od::entry &backp_press_rate_4 = entries[39]; // 0x213A
-inline constexpr const od::entry &inj_velocity_1 = entries[40]; // 0x2167
-inline constexpr const od::entry &inj_velocity_2 = entries[41]; // 0x2169
-inline constexpr const od::entry &inj_velocity_3 = entries[42]; // 0x216A
-inline constexpr const od::entry &inj_velocity_4 = entries[43]; // 0x216B
-inline constexpr const od::entry &inj_velocity_5 = entries[44]; // 0x216C
-inline constexpr const od::entry &inj_velocity_6 = entries[45]; // 0x2180
-inline constexpr const od::entry &inj_velocity_7 = entries[46]; // 0x2181
-inline constexpr const od::entry &inj_velocity_8 = entries[47]; // 0x2182
-inline constexpr const od::entry &inj_velocity_9 = entries[48]; // 0x2183
-inline constexpr const od::entry &inj_velocity_10 = entries[49]; // 0x2184
-inline constexpr const od::entry &pah_decomp_rate_1 = entries[50]; // 0x2195
-inline constexpr const od::entry &pah_decomp_rate_2 = entries[51]; // 0x2196
-inline constexpr const od::entry &pah_decomp_rate_3 = entries[52]; // 0x2197
-inline constexpr const od::entry &pah_decomp_rate_4 = entries[53]; // 0x2198
-inline constexpr const od::entry &pah_decomp_rate_5 = entries[54]; // 0x2199
-inline constexpr const od::entry &backp_decomp_rate_2 = entries[55]; // 0x219C
-inline constexpr const od::entry &backp_decomp_rate_3 = entries[56]; // 0x219D
-inline constexpr const od::entry &backp_decomp_rate_4 = entries[57]; // 0x21A0
-inline constexpr const od::entry &inj_accel_ramp = entries[58]; // 0x2201
-inline constexpr const od::entry &inj_velocity_p = entries[59]; // 0x2301
-inline constexpr const od::entry &pah_pressure_p = entries[60]; // 0x2323
-inline constexpr const od::entry &backp_press_p_2 = entries[61]; // 0x2336
-inline constexpr const od::entry &backp_press_p_3 = entries[62]; // 0x2337
-inline constexpr const od::entry &backp_press_p_4 = entries[63]; // 0x233A
-inline constexpr const od::entry &pah_pressure_i = entries[64]; // 0x2423
-inline constexpr const od::entry &backp_press_i_2 = entries[65]; // 0x2436
-inline constexpr const od::entry &backp_press_i_3 = entries[66]; // 0x2437
-inline constexpr const od::entry &backp_press_i_4 = entries[67]; // 0x243A
-inline constexpr const od::entry &inj_velocity_d = entries[68]; // 0x2701
-inline constexpr const od::entry &pah_pressure_d = entries[69]; // 0x2723
-inline constexpr const od::entry &backp_press_d_2 = entries[70]; // 0x2736
-inline constexpr const od::entry &backp_press_d_3 = entries[71]; // 0x2737
-inline constexpr const od::entry &backp_press_d_4 = entries[72]; // 0x273A
-inline constexpr const od::entry &fwd_inject = entries[73]; // 0x2923
-inline constexpr const od::entry &fwd_backpress_1 = entries[74]; // 0x2936
-inline constexpr const od::entry &fwd_backpress_2 = entries[75]; // 0x2937
-inline constexpr const od::entry &fwd_backpress_3 = entries[76]; // 0x293A
-inline constexpr const od::entry &inj_position_2 = entries[77]; // 0x2A01
-inline constexpr const od::entry &inj_position_3 = entries[78]; // 0x2A03
-inline constexpr const od::entry &inj_position_4 = entries[79]; // 0x2A04
-inline constexpr const od::entry &inj_position_5 = entries[80]; // 0x2A05
-inline constexpr const od::entry &inj_position_6 = entries[81]; // 0x2A06
-inline constexpr const od::entry &backpress_position3 = entries[82]; // 0x2A14
-inline constexpr const od::entry &backpress_position4 = entries[83]; // 0x2A15
-inline constexpr const od::entry &pre_decomp_position = entries[84]; // 0x2A17
-inline constexpr const od::entry &inj_position_7 = entries[85]; // 0x2A1A
-inline constexpr const od::entry &inj_position_8 = entries[86]; // 0x2A1B
-inline constexpr const od::entry &inj_position_9 = entries[87]; // 0x2A1C
-inline constexpr const od::entry &inj_position_10 = entries[88]; // 0x2A1D
-inline constexpr const od::entry &post_decomp_positio = entries[89]; // 0x2A64
-inline constexpr const od::entry &holding_time_1 = entries[90]; // 0x2B2F
-inline constexpr const od::entry &holding_time_2 = entries[91]; // 0x2B30
-inline constexpr const od::entry &holding_time_3 = entries[92]; // 0x2B31
-inline constexpr const od::entry &holding_time_4 = entries[93]; // 0x2B32
-inline constexpr const od::entry &holding_time_5 = entries[94]; // 0x2B33
-inline constexpr const od::entry &trigger = entries[95]; // 0x2C67
-inline constexpr const od::entry &status = entries[96]; // 0x2C68
-inline constexpr const od::entry &analog_vel_max = entries[97]; // 0x2C69
-inline constexpr const od::entry &set_ssi_incr_to_zero = entries[98]; // 0x2C78
-inline constexpr const od::entry &pah_act_damp_freq = entries[99]; // 0x2D02
-inline constexpr const od::entry &inj_vel_activedamp = entries[100]; // 0x2D04
-inline constexpr const od::entry &pah_act_damp_gain = entries[101]; // 0x2D05
-inline constexpr const od::entry &shot_size_position = entries[102]; // 0x2D0E
-inline constexpr const od::entry &do7_at_press_level = entries[103]; // 0x2D0F
-inline constexpr const od::entry &do7_at_press_delay = entries[104]; // 0x2D17
-inline constexpr const od::entry &transfer_position = entries[105]; // 0x2D3B
-inline constexpr const od::entry &transfer_cavity_pres = entries[106]; // 0x2D3C
-inline constexpr const od::entry &transfer_hydr_press = entries[107]; // 0x2D3D
-inline constexpr const od::entry &transfer_hydr_pos = entries[108]; // 0x2D3E
-inline constexpr const od::entry &press_cmd_min = entries[109]; // 0x2D71
-inline constexpr const od::entry &press_fb_1_min = entries[110]; // 0x2D72
-inline constexpr const od::entry &cavity_press_min = entries[111]; // 0x2D73
-inline constexpr const od::entry &press_fb_2_min = entries[112]; // 0x2D74
-inline constexpr const od::entry &cyl_pos_fb_min = entries[113]; // 0x2D75
-inline constexpr const od::entry &vel_cmd_min = entries[114]; // 0x2D76
-inline constexpr const od::entry &press_cmd_max = entries[115]; // 0x2D7C
-inline constexpr const od::entry &press_fb_1_max = entries[116]; // 0x2D7D
-inline constexpr const od::entry &cavity_press_max = entries[117]; // 0x2D7E
-inline constexpr const od::entry &press_fb_2_max = entries[118]; // 0x2D7F
-inline constexpr const od::entry &cyl_pos_fb_max = entries[119]; // 0x2D80
-inline constexpr const od::entry &vel_cmd_max = entries[120]; // 0x2D81
-inline constexpr const od::entry &press_cmd_min_fau = entries[121]; // 0x2D87
-inline constexpr const od::entry &press_fb_1_min_fau = entries[122]; // 0x2D88
-inline constexpr const od::entry &cavity_press_min_fau = entries[123]; // 0x2D89
-inline constexpr const od::entry &press_fb_2_min_fau = entries[124]; // 0x2D8A
-inline constexpr const od::entry &cyl_pos_fb_min_fau = entries[125]; // 0x2D8B
-inline constexpr const od::entry &vel_cmd_min_fau = entries[126]; // 0x2D8C
-inline constexpr const od::entry &press_cmd_max_fau = entries[127]; // 0x2D92
-inline constexpr const od::entry &press_fb_1_max_fau = entries[128]; // 0x2D93
-inline constexpr const od::entry &cavity_press_max_fau = entries[129]; // 0x2D94
-inline constexpr const od::entry &press_fb_2_max_fau = entries[130]; // 0x2D95
-inline constexpr const od::entry &cyl_pos_fb_max_fau = entries[131]; // 0x2D96
-inline constexpr const od::entry &vel_cmd_max_fau = entries[132]; // 0x2D97
-inline constexpr const od::entry &press_cmd_max_uni = entries[133]; // 0x2D9D
-inline constexpr const od::entry &press_fb_1_max_uni = entries[134]; // 0x2D9E
-inline constexpr const od::entry &cavity_press_max_uni = entries[135]; // 0x2D9F
-inline constexpr const od::entry &press_fb_2_max_uni = entries[136]; // 0x2DA0
-inline constexpr const od::entry &cyl_pos_cmd_max_uni = entries[137]; // 0x2DA1
-inline constexpr const od::entry &ssi_nb_of_bits = entries[138]; // 0x2DC1
-inline constexpr const od::entry &ssi_resolution = entries[139]; // 0x2DC4
-inline constexpr const od::entry &ssi_offset = entries[140]; // 0x2DC5
-inline constexpr const od::entry &incr_home_offset = entries[141]; // 0x2DCB
-inline constexpr const od::entry &incr_resolution = entries[142]; // 0x2DCC
-inline constexpr const od::entry &injection_scale = entries[143]; // 0x2E21
-inline constexpr const od::entry &injection_limit_plus = entries[144]; // 0x2E2A
-inline constexpr const od::entry &injection_limit_minus = entries[145]; // 0x2E2D
-inline constexpr const od::entry &out2_inject_limit_minus = entries[146]; // 0x2E2E
-inline constexpr const od::entry &velocity_cmd_ai6 = entries[147]; // 0x2F03
-inline constexpr const od::entry &vel_loop_cmd = entries[148]; // 0x2F04
-inline constexpr const od::entry &position_fb = entries[149]; // 0x2F07
-inline constexpr const od::entry &position_error = entries[150]; // 0x2F09
-inline constexpr const od::entry &pressure_cmd_ai1 = entries[151]; // 0x2F0B
-inline constexpr const od::entry &press_loop_cmd = entries[152]; // 0x2F0E
-inline constexpr const od::entry &pressure_fb_1_ai2 = entries[153]; // 0x2F0F
-inline constexpr const od::entry &pressure_fb_2_ai4 = entries[154]; // 0x2F10
-inline constexpr const od::entry &pressure_fb = entries[155]; // 0x2F11
-inline constexpr const od::entry &pressure_error = entries[156]; // 0x2F13
-inline constexpr const od::entry &cavity_pressure_ai3 = entries[157]; // 0x2F19
-inline constexpr const od::entry &position_ai5 = entries[158]; // 0x2F1A
-inline constexpr const od::entry &valve_output_1 = entries[159]; // 0x2F1F
-inline constexpr const od::entry &valve_output_2 = entries[160]; // 0x2F20
-inline constexpr const od::entry &valve_output_3 = entries[161]; // 0x2F21
-inline constexpr const od::entry &program_block = entries[162]; // 0x2F25
-inline constexpr const od::entry &discrete_outputs = entries[163]; // 0x2F26
-inline constexpr const od::entry &discrete_inputs = entries[164]; // 0x2F27
-inline constexpr const od::entry &output_mode = entries[165]; // 0x2F28
-inline constexpr const od::entry &program_status = entries[166]; // 0x2F34
-inline constexpr const od::entry &injection_offset = entries[167]; // 0x2F6D
-inline constexpr const od::entry &pos_max_length = entries[168]; // 0x2F72
-inline constexpr const od::entry &pres_max_inject = entries[169]; // 0x2F78
-inline constexpr const od::entry &jog_mode_offset = entries[170]; // 0x2F7F
-inline constexpr const od::entry &jog_mode_scale = entries[171]; // 0x2F80
-inline constexpr const od::entry &jog_mode_limit_minus = entries[172]; // 0x2F81
-inline constexpr const od::entry &jog_mode_limit_plus = entries[173]; // 0x2F82
-inline constexpr const od::entry &out2_jog_limit_minus = entries[174]; // 0x2F87
-inline constexpr const od::entry &pah_backpres_offset = entries[175]; // 0x2F91
-inline constexpr const od::entry &pah_backpres_scale = entries[176]; // 0x2F92
-inline constexpr const od::entry &pah_backpres_limit_minus = entries[177]; // 0x2F93
-inline constexpr const od::entry &pah_backpres_limit_plus = entries[178]; // 0x2F94
-inline constexpr const od::entry &out2_backpress_lim_minus = entries[179]; // 0x2F99
-inline constexpr const od::entry &decompres_offset = entries[180]; // 0x2FA3
-inline constexpr const od::entry &decompres_scale = entries[181]; // 0x2FA4
-inline constexpr const od::entry &decompres_limit_minus = entries[182]; // 0x2FA5
-inline constexpr const od::entry &decompres_limit_plus = entries[183]; // 0x2FA6
-inline constexpr const od::entry &out2_decomp_limit_minus = entries[184]; // 0x2FAB
-inline constexpr const od::entry &cyl_area_ratio = entries[185]; // 0x3116
-inline constexpr const od::entry &hist_time_1 = entries[186]; // 0x3501
-inline constexpr const od::entry &hist_time_3 = entries[187]; // 0x3503
-inline constexpr const od::entry &hist_time_4 = entries[188]; // 0x3504
-inline constexpr const od::entry &hist_time_5 = entries[189]; // 0x3505
-inline constexpr const od::entry &hist_time_6 = entries[190]; // 0x3506
-inline constexpr const od::entry &hist_time_13 = entries[191]; // 0x350E
-inline constexpr const od::entry &hist_time_14 = entries[192]; // 0x350F
-inline constexpr const od::entry &hist_time_15 = entries[193]; // 0x3510
-inline constexpr const od::entry &hist_time_16 = entries[194]; // 0x3511
-inline constexpr const od::entry &hist_time_17 = entries[195]; // 0x3512
-inline constexpr const od::entry &hist_time_23 = entries[196]; // 0x3518
-inline constexpr const od::entry &hist_time_26 = entries[197]; // 0x351B
-inline constexpr const od::entry &hist_time_27 = entries[198]; // 0x351C
-inline constexpr const od::entry &hist_time_28 = entries[199]; // 0x351D
-inline constexpr const od::entry &hist_time_29 = entries[200]; // 0x351E
-inline constexpr const od::entry &hist_time_30 = entries[201]; // 0x351F
-inline constexpr const od::entry &hist_pres_cmd_13 = entries[202]; // 0x3571
-inline constexpr const od::entry &hist_pos_fb_1 = entries[203]; // 0x3601
-inline constexpr const od::entry &hist_pos_fb_2 = entries[204]; // 0x3602
-inline constexpr const od::entry &hist_pos_fb_3 = entries[205]; // 0x3603
-inline constexpr const od::entry &hist_pos_fb_4 = entries[206]; // 0x3604
-inline constexpr const od::entry &hist_pos_fb_5 = entries[207]; // 0x3605
-inline constexpr const od::entry &hist_pos_fb_6 = entries[208]; // 0x3606
-inline constexpr const od::entry &hist_pos_fb_13 = entries[209]; // 0x360D
-inline constexpr const od::entry &hist_pos_fb_14 = entries[210]; // 0x360E
-inline constexpr const od::entry &hist_pos_fb_15 = entries[211]; // 0x360F
-inline constexpr const od::entry &hist_pos_fb_16 = entries[212]; // 0x3610
-inline constexpr const od::entry &hist_pos_fb_17 = entries[213]; // 0x3611
-inline constexpr const od::entry &hist_pos_fb_18 = entries[214]; // 0x3617
-inline constexpr const od::entry &hist_pos_fb_26 = entries[215]; // 0x361A
-inline constexpr const od::entry &hist_pos_fb_27 = entries[216]; // 0x361B
-inline constexpr const od::entry &hist_pos_fb_28 = entries[217]; // 0x361C
-inline constexpr const od::entry &hist_pos_fb_29 = entries[218]; // 0x361D
-inline constexpr const od::entry &hist_pos_fb_30 = entries[219]; // 0x361E
-inline constexpr const od::entry &hist_pres_fb_13 = entries[220]; // 0x362E
+// VAR objects: standalone descriptors (firmware that names one keeps only that one).
+inline constexpr od::descriptor holding_vel_limit_1{entries[0], infos[0], scales[0]}; // 0x200D
+inline constexpr od::descriptor holding_vel_limit_2{entries[1], infos[1], scales[1]}; // 0x200E
+inline constexpr od::descriptor holding_vel_limit_3{entries[2], infos[2], scales[2]}; // 0x200F
+inline constexpr od::descriptor holding_vel_limit_4{entries[3], infos[3], scales[3]}; // 0x2010
+inline constexpr od::descriptor holding_vel_limit_5{entries[4], infos[4], scales[4]}; // 0x2011
+inline constexpr od::descriptor jogmode_vel_forward{entries[5], infos[5], scales[5]}; // 0x2012
+inline constexpr od::descriptor jogmode_vel_backward{entries[6], infos[6], scales[6]}; // 0x2013
+inline constexpr od::descriptor screw_speed_2{entries[7], infos[7], scales[7]}; // 0x2014
+inline constexpr od::descriptor screw_speed_3{entries[8], infos[8], scales[8]}; // 0x2015
+inline constexpr od::descriptor pre_decomp_velocity{entries[9], infos[9], scales[9]}; // 0x2017
+inline constexpr od::descriptor screw_speed_4{entries[10], infos[10], scales[10]}; // 0x2018
+inline constexpr od::descriptor post_decomp_velocit{entries[11], infos[11], scales[11]}; // 0x201F
+inline constexpr od::descriptor inj_p_limit_1{entries[12], infos[12], scales[12]}; // 0x2023
+inline constexpr od::descriptor inj_p_limit_2{entries[13], infos[13], scales[13]}; // 0x2025
+inline constexpr od::descriptor inj_p_limit_3{entries[14], infos[14], scales[14]}; // 0x2026
+inline constexpr od::descriptor inj_p_limit_4{entries[15], infos[15], scales[15]}; // 0x2027
+inline constexpr od::descriptor inj_p_limit_5{entries[16], infos[16], scales[16]}; // 0x2028
+inline constexpr od::descriptor holding_pressure_1{entries[17], infos[17], scales[17]}; // 0x202F
+inline constexpr od::descriptor holding_pressure_2{entries[18], infos[18], scales[18]}; // 0x2030
+inline constexpr od::descriptor holding_pressure_3{entries[19], infos[19], scales[19]}; // 0x2031
+inline constexpr od::descriptor holding_pressure_4{entries[20], infos[20], scales[20]}; // 0x2032
+inline constexpr od::descriptor holding_pressure_5{entries[21], infos[21], scales[21]}; // 0x2033
+inline constexpr od::descriptor backpress_press_2{entries[22], infos[22], scales[22]}; // 0x2036
+inline constexpr od::descriptor backpress_press_3{entries[23], infos[23], scales[23]}; // 0x2037
+inline constexpr od::descriptor press_predecompress{entries[24], infos[24], scales[24]}; // 0x2039
+inline constexpr od::descriptor backpress_press_4{entries[25], infos[25], scales[25]}; // 0x203A
+inline constexpr od::descriptor inj_p_limit_6{entries[26], infos[26], scales[26]}; // 0x203C
+inline constexpr od::descriptor inj_p_limit_7{entries[27], infos[27], scales[27]}; // 0x203D
+inline constexpr od::descriptor inj_p_limit_8{entries[28], infos[28], scales[28]}; // 0x203E
+inline constexpr od::descriptor inj_p_limit_9{entries[29], infos[29], scales[29]}; // 0x203F
+inline constexpr od::descriptor inj_p_limit_10{entries[30], infos[30], scales[30]}; // 0x2040
+inline constexpr od::descriptor press_postdecompres{entries[31], infos[31], scales[31]}; // 0x2041
+inline constexpr od::descriptor backp_vel_ramp_2{entries[32], infos[32], scales[32]}; // 0x2114
+inline constexpr od::descriptor pah_press_rate_2{entries[33], infos[33], scales[33]}; // 0x2130
+inline constexpr od::descriptor pah_press_rate_3{entries[34], infos[34], scales[34]}; // 0x2131
+inline constexpr od::descriptor pah_press_rate_4{entries[35], infos[35], scales[35]}; // 0x2132
+inline constexpr od::descriptor pah_press_rate_5{entries[36], infos[36], scales[36]}; // 0x2133
+inline constexpr od::descriptor backp_press_rate_2{entries[37], infos[37], scales[37]}; // 0x2136
+inline constexpr od::descriptor backp_press_rate_3{entries[38], infos[38], scales[38]}; // 0x2137
+inline constexpr od::descriptor backp_press_rate_4{entries[39], infos[39], scales[39]}; // 0x213A
+inline constexpr od::descriptor inj_velocity_1{entries[40], infos[40], scales[40]}; // 0x2167
+inline constexpr od::descriptor inj_velocity_2{entries[41], infos[41], scales[41]}; // 0x2169
+inline constexpr od::descriptor inj_velocity_3{entries[42], infos[42], scales[42]}; // 0x216A
+inline constexpr od::descriptor inj_velocity_4{entries[43], infos[43], scales[43]}; // 0x216B
+inline constexpr od::descriptor inj_velocity_5{entries[44], infos[44], scales[44]}; // 0x216C
+inline constexpr od::descriptor inj_velocity_6{entries[45], infos[45], scales[45]}; // 0x2180
+inline constexpr od::descriptor inj_velocity_7{entries[46], infos[46], scales[46]}; // 0x2181
+inline constexpr od::descriptor inj_velocity_8{entries[47], infos[47], scales[47]}; // 0x2182
+inline constexpr od::descriptor inj_velocity_9{entries[48], infos[48], scales[48]}; // 0x2183
+inline constexpr od::descriptor inj_velocity_10{entries[49], infos[49], scales[49]}; // 0x2184
+inline constexpr od::descriptor pah_decomp_rate_1{entries[50], infos[50], scales[50]}; // 0x2195
+inline constexpr od::descriptor pah_decomp_rate_2{entries[51], infos[51], scales[51]}; // 0x2196
+inline constexpr od::descriptor pah_decomp_rate_3{entries[52], infos[52], scales[52]}; // 0x2197
+inline constexpr od::descriptor pah_decomp_rate_4{entries[53], infos[53], scales[53]}; // 0x2198
+inline constexpr od::descriptor pah_decomp_rate_5{entries[54], infos[54], scales[54]}; // 0x2199
+inline constexpr od::descriptor backp_decomp_rate_2{entries[55], infos[55], scales[55]}; // 0x219C
+inline constexpr od::descriptor backp_decomp_rate_3{entries[56], infos[56], scales[56]}; // 0x219D
+inline constexpr od::descriptor backp_decomp_rate_4{entries[57], infos[57], scales[57]}; // 0x21A0
+inline constexpr od::descriptor inj_accel_ramp{entries[58], infos[58], scales[58]}; // 0x2201
+inline constexpr od::descriptor inj_velocity_p{entries[59], infos[59], scales[59]}; // 0x2301
+inline constexpr od::descriptor pah_pressure_p{entries[60], infos[60], scales[60]}; // 0x2323
+inline constexpr od::descriptor backp_press_p_2{entries[61], infos[61], scales[61]}; // 0x2336
+inline constexpr od::descriptor backp_press_p_3{entries[62], infos[62], scales[62]}; // 0x2337
+inline constexpr od::descriptor backp_press_p_4{entries[63], infos[63], scales[63]}; // 0x233A
+inline constexpr od::descriptor pah_pressure_i{entries[64], infos[64], scales[64]}; // 0x2423
+inline constexpr od::descriptor backp_press_i_2{entries[65], infos[65], scales[65]}; // 0x2436
+inline constexpr od::descriptor backp_press_i_3{entries[66], infos[66], scales[66]}; // 0x2437
+inline constexpr od::descriptor backp_press_i_4{entries[67], infos[67], scales[67]}; // 0x243A
+inline constexpr od::descriptor inj_velocity_d{entries[68], infos[68], scales[68]}; // 0x2701
+inline constexpr od::descriptor pah_pressure_d{entries[69], infos[69], scales[69]}; // 0x2723
+inline constexpr od::descriptor backp_press_d_2{entries[70], infos[70], scales[70]}; // 0x2736
+inline constexpr od::descriptor backp_press_d_3{entries[71], infos[71], scales[71]}; // 0x2737
+inline constexpr od::descriptor backp_press_d_4{entries[72], infos[72], scales[72]}; // 0x273A
+inline constexpr od::descriptor fwd_inject{entries[73], infos[73], scales[73]}; // 0x2923
+inline constexpr od::descriptor fwd_backpress_1{entries[74], infos[74], scales[74]}; // 0x2936
+inline constexpr od::descriptor fwd_backpress_2{entries[75], infos[75], scales[75]}; // 0x2937
+inline constexpr od::descriptor fwd_backpress_3{entries[76], infos[76], scales[76]}; // 0x293A
+inline constexpr od::descriptor inj_position_2{entries[77], infos[77], scales[77]}; // 0x2A01
+inline constexpr od::descriptor inj_position_3{entries[78], infos[78], scales[78]}; // 0x2A03
+inline constexpr od::descriptor inj_position_4{entries[79], infos[79], scales[79]}; // 0x2A04
+inline constexpr od::descriptor inj_position_5{entries[80], infos[80], scales[80]}; // 0x2A05
+inline constexpr od::descriptor inj_position_6{entries[81], infos[81], scales[81]}; // 0x2A06
+inline constexpr od::descriptor backpress_position3{entries[82], infos[82], scales[82]}; // 0x2A14
+inline constexpr od::descriptor backpress_position4{entries[83], infos[83], scales[83]}; // 0x2A15
+inline constexpr od::descriptor pre_decomp_position{entries[84], infos[84], scales[84]}; // 0x2A17
+inline constexpr od::descriptor inj_position_7{entries[85], infos[85], scales[85]}; // 0x2A1A
+inline constexpr od::descriptor inj_position_8{entries[86], infos[86], scales[86]}; // 0x2A1B
+inline constexpr od::descriptor inj_position_9{entries[87], infos[87], scales[87]}; // 0x2A1C
+inline constexpr od::descriptor inj_position_10{entries[88], infos[88], scales[88]}; // 0x2A1D
+inline constexpr od::descriptor post_decomp_positio{entries[89], infos[89], scales[89]}; // 0x2A64
+inline constexpr od::descriptor holding_time_1{entries[90], infos[90], scales[90]}; // 0x2B2F
+inline constexpr od::descriptor holding_time_2{entries[91], infos[91], scales[91]}; // 0x2B30
+inline constexpr od::descriptor holding_time_3{entries[92], infos[92], scales[92]}; // 0x2B31
+inline constexpr od::descriptor holding_time_4{entries[93], infos[93], scales[93]}; // 0x2B32
+inline constexpr od::descriptor holding_time_5{entries[94], infos[94], scales[94]}; // 0x2B33
+inline constexpr od::descriptor trigger{entries[95], infos[95], scales[95]}; // 0x2C67
+inline constexpr od::descriptor status{entries[96], infos[96], scales[96]}; // 0x2C68
+inline constexpr od::descriptor analog_vel_max{entries[97], infos[97], scales[97]}; // 0x2C69
+inline constexpr od::descriptor set_ssi_incr_to_zero{entries[98], infos[98], scales[98]}; // 0x2C78
+inline constexpr od::descriptor pah_act_damp_freq{entries[99], infos[99], scales[99]}; // 0x2D02
+inline constexpr od::descriptor inj_vel_activedamp{entries[100], infos[100], scales[100]}; // 0x2D04
+inline constexpr od::descriptor pah_act_damp_gain{entries[101], infos[101], scales[101]}; // 0x2D05
+inline constexpr od::descriptor shot_size_position{entries[102], infos[102], scales[102]}; // 0x2D0E
+inline constexpr od::descriptor do7_at_press_level{entries[103], infos[103], scales[103]}; // 0x2D0F
+inline constexpr od::descriptor do7_at_press_delay{entries[104], infos[104], scales[104]}; // 0x2D17
+inline constexpr od::descriptor transfer_position{entries[105], infos[105], scales[105]}; // 0x2D3B
+inline constexpr od::descriptor transfer_cavity_pres{entries[106], infos[106], scales[106]}; // 0x2D3C
+inline constexpr od::descriptor transfer_hydr_press{entries[107], infos[107], scales[107]}; // 0x2D3D
+inline constexpr od::descriptor transfer_hydr_pos{entries[108], infos[108], scales[108]}; // 0x2D3E
+inline constexpr od::descriptor press_cmd_min{entries[109], infos[109], scales[109]}; // 0x2D71
+inline constexpr od::descriptor press_fb_1_min{entries[110], infos[110], scales[110]}; // 0x2D72
+inline constexpr od::descriptor cavity_press_min{entries[111], infos[111], scales[111]}; // 0x2D73
+inline constexpr od::descriptor press_fb_2_min{entries[112], infos[112], scales[112]}; // 0x2D74
+inline constexpr od::descriptor cyl_pos_fb_min{entries[113], infos[113], scales[113]}; // 0x2D75
+inline constexpr od::descriptor vel_cmd_min{entries[114], infos[114], scales[114]}; // 0x2D76
+inline constexpr od::descriptor press_cmd_max{entries[115], infos[115], scales[115]}; // 0x2D7C
+inline constexpr od::descriptor press_fb_1_max{entries[116], infos[116], scales[116]}; // 0x2D7D
+inline constexpr od::descriptor cavity_press_max{entries[117], infos[117], scales[117]}; // 0x2D7E
+inline constexpr od::descriptor press_fb_2_max{entries[118], infos[118], scales[118]}; // 0x2D7F
+inline constexpr od::descriptor cyl_pos_fb_max{entries[119], infos[119], scales[119]}; // 0x2D80
+inline constexpr od::descriptor vel_cmd_max{entries[120], infos[120], scales[120]}; // 0x2D81
+inline constexpr od::descriptor press_cmd_min_fau{entries[121], infos[121], scales[121]}; // 0x2D87
+inline constexpr od::descriptor press_fb_1_min_fau{entries[122], infos[122], scales[122]}; // 0x2D88
+inline constexpr od::descriptor cavity_press_min_fau{entries[123], infos[123], scales[123]}; // 0x2D89
+inline constexpr od::descriptor press_fb_2_min_fau{entries[124], infos[124], scales[124]}; // 0x2D8A
+inline constexpr od::descriptor cyl_pos_fb_min_fau{entries[125], infos[125], scales[125]}; // 0x2D8B
+inline constexpr od::descriptor vel_cmd_min_fau{entries[126], infos[126], scales[126]}; // 0x2D8C
+inline constexpr od::descriptor press_cmd_max_fau{entries[127], infos[127], scales[127]}; // 0x2D92
+inline constexpr od::descriptor press_fb_1_max_fau{entries[128], infos[128], scales[128]}; // 0x2D93
+inline constexpr od::descriptor cavity_press_max_fau{entries[129], infos[129], scales[129]}; // 0x2D94
+inline constexpr od::descriptor press_fb_2_max_fau{entries[130], infos[130], scales[130]}; // 0x2D95
+inline constexpr od::descriptor cyl_pos_fb_max_fau{entries[131], infos[131], scales[131]}; // 0x2D96
+inline constexpr od::descriptor vel_cmd_max_fau{entries[132], infos[132], scales[132]}; // 0x2D97
+inline constexpr od::descriptor press_cmd_max_uni{entries[133], infos[133], scales[133]}; // 0x2D9D
+inline constexpr od::descriptor press_fb_1_max_uni{entries[134], infos[134], scales[134]}; // 0x2D9E
+inline constexpr od::descriptor cavity_press_max_uni{entries[135], infos[135], scales[135]}; // 0x2D9F
+inline constexpr od::descriptor press_fb_2_max_uni{entries[136], infos[136], scales[136]}; // 0x2DA0
+inline constexpr od::descriptor cyl_pos_cmd_max_uni{entries[137], infos[137], scales[137]}; // 0x2DA1
+inline constexpr od::descriptor ssi_nb_of_bits{entries[138], infos[138], scales[138]}; // 0x2DC1
+inline constexpr od::descriptor ssi_resolution{entries[139], infos[139], scales[139]}; // 0x2DC4
+inline constexpr od::descriptor ssi_offset{entries[140], infos[140], scales[140]}; // 0x2DC5
+inline constexpr od::descriptor incr_home_offset{entries[141], infos[141], scales[141]}; // 0x2DCB
+inline constexpr od::descriptor incr_resolution{entries[142], infos[142], scales[142]}; // 0x2DCC
+inline constexpr od::descriptor injection_scale{entries[143], infos[143], scales[143]}; // 0x2E21
+inline constexpr od::descriptor injection_limit_plus{entries[144], infos[144], scales[144]}; // 0x2E2A
+inline constexpr od::descriptor injection_limit_minus{entries[145], infos[145], scales[145]}; // 0x2E2D
+inline constexpr od::descriptor out2_inject_limit_minus{entries[146], infos[146], scales[146]}; // 0x2E2E
+inline constexpr od::descriptor velocity_cmd_ai6{entries[147], infos[147], scales[147]}; // 0x2F03
+inline constexpr od::descriptor vel_loop_cmd{entries[148], infos[148], scales[148]}; // 0x2F04
+inline constexpr od::descriptor position_fb{entries[149], infos[149], scales[149]}; // 0x2F07
+inline constexpr od::descriptor position_error{entries[150], infos[150], scales[150]}; // 0x2F09
+inline constexpr od::descriptor pressure_cmd_ai1{entries[151], infos[151], scales[151]}; // 0x2F0B
+inline constexpr od::descriptor press_loop_cmd{entries[152], infos[152], scales[152]}; // 0x2F0E
+inline constexpr od::descriptor pressure_fb_1_ai2{entries[153], infos[153], scales[153]}; // 0x2F0F
+inline constexpr od::descriptor pressure_fb_2_ai4{entries[154], infos[154], scales[154]}; // 0x2F10
+inline constexpr od::descriptor pressure_fb{entries[155], infos[155], scales[155]}; // 0x2F11
+inline constexpr od::descriptor pressure_error{entries[156], infos[156], scales[156]}; // 0x2F13
+inline constexpr od::descriptor cavity_pressure_ai3{entries[157], infos[157], scales[157]}; // 0x2F19
+inline constexpr od::descriptor position_ai5{entries[158], infos[158], scales[158]}; // 0x2F1A
+inline constexpr od::descriptor valve_output_1{entries[159], infos[159], scales[159]}; // 0x2F1F
+inline constexpr od::descriptor valve_output_2{entries[160], infos[160], scales[160]}; // 0x2F20
+inline constexpr od::descriptor valve_output_3{entries[161], infos[161], scales[161]}; // 0x2F21
+inline constexpr od::descriptor program_block{entries[162], infos[162], scales[162]}; // 0x2F25
+inline constexpr od::descriptor discrete_outputs{entries[163], infos[163], scales[163]}; // 0x2F26
+inline constexpr od::descriptor discrete_inputs{entries[164], infos[164], scales[164]}; // 0x2F27
+inline constexpr od::descriptor output_mode{entries[165], infos[165], scales[165]}; // 0x2F28
+inline constexpr od::descriptor program_status{entries[166], infos[166], scales[166]}; // 0x2F34
+inline constexpr od::descriptor injection_offset{entries[167], infos[167], scales[167]}; // 0x2F6D
+inline constexpr od::descriptor pos_max_length{entries[168], infos[168], scales[168]}; // 0x2F72
+inline constexpr od::descriptor pres_max_inject{entries[169], infos[169], scales[169]}; // 0x2F78
+inline constexpr od::descriptor jog_mode_offset{entries[170], infos[170], scales[170]}; // 0x2F7F
+inline constexpr od::descriptor jog_mode_scale{entries[171], infos[171], scales[171]}; // 0x2F80
+inline constexpr od::descriptor jog_mode_limit_minus{entries[172], infos[172], scales[172]}; // 0x2F81
+inline constexpr od::descriptor jog_mode_limit_plus{entries[173], infos[173], scales[173]}; // 0x2F82
+inline constexpr od::descriptor out2_jog_limit_minus{entries[174], infos[174], scales[174]}; // 0x2F87
+inline constexpr od::descriptor pah_backpres_offset{entries[175], infos[175], scales[175]}; // 0x2F91
+inline constexpr od::descriptor pah_backpres_scale{entries[176], infos[176], scales[176]}; // 0x2F92
+inline constexpr od::descriptor pah_backpres_limit_minus{entries[177], infos[177], scales[177]}; // 0x2F93
+inline constexpr od::descriptor pah_backpres_limit_plus{entries[178], infos[178], scales[178]}; // 0x2F94
+inline constexpr od::descriptor out2_backpress_lim_minus{entries[179], infos[179], scales[179]}; // 0x2F99
+inline constexpr od::descriptor decompres_offset{entries[180], infos[180], scales[180]}; // 0x2FA3
+inline constexpr od::descriptor decompres_scale{entries[181], infos[181], scales[181]}; // 0x2FA4
+inline constexpr od::descriptor decompres_limit_minus{entries[182], infos[182], scales[182]}; // 0x2FA5
+inline constexpr od::descriptor decompres_limit_plus{entries[183], infos[183], scales[183]}; // 0x2FA6
+inline constexpr od::descriptor out2_decomp_limit_minus{entries[184], infos[184], scales[184]}; // 0x2FAB
+inline constexpr od::descriptor cyl_area_ratio{entries[185], infos[185], scales[185]}; // 0x3116
+inline constexpr od::descriptor hist_time_1{entries[186], infos[186], scales[186]}; // 0x3501
+inline constexpr od::descriptor hist_time_3{entries[187], infos[187], scales[187]}; // 0x3503
+inline constexpr od::descriptor hist_time_4{entries[188], infos[188], scales[188]}; // 0x3504
+inline constexpr od::descriptor hist_time_5{entries[189], infos[189], scales[189]}; // 0x3505
+inline constexpr od::descriptor hist_time_6{entries[190], infos[190], scales[190]}; // 0x3506
+inline constexpr od::descriptor hist_time_13{entries[191], infos[191], scales[191]}; // 0x350E
+inline constexpr od::descriptor hist_time_14{entries[192], infos[192], scales[192]}; // 0x350F
+inline constexpr od::descriptor hist_time_15{entries[193], infos[193], scales[193]}; // 0x3510
+inline constexpr od::descriptor hist_time_16{entries[194], infos[194], scales[194]}; // 0x3511
+inline constexpr od::descriptor hist_time_17{entries[195], infos[195], scales[195]}; // 0x3512
+inline constexpr od::descriptor hist_time_23{entries[196], infos[196], scales[196]}; // 0x3518
+inline constexpr od::descriptor hist_time_26{entries[197], infos[197], scales[197]}; // 0x351B
+inline constexpr od::descriptor hist_time_27{entries[198], infos[198], scales[198]}; // 0x351C
+inline constexpr od::descriptor hist_time_28{entries[199], infos[199], scales[199]}; // 0x351D
+inline constexpr od::descriptor hist_time_29{entries[200], infos[200], scales[200]}; // 0x351E
+inline constexpr od::descriptor hist_time_30{entries[201], infos[201], scales[201]}; // 0x351F
+inline constexpr od::descriptor hist_pres_cmd_13{entries[202], infos[202], scales[202]}; // 0x3571
+inline constexpr od::descriptor hist_pos_fb_1{entries[203], infos[203], scales[203]}; // 0x3601
+inline constexpr od::descriptor hist_pos_fb_2{entries[204], infos[204], scales[204]}; // 0x3602
+inline constexpr od::descriptor hist_pos_fb_3{entries[205], infos[205], scales[205]}; // 0x3603
+inline constexpr od::descriptor hist_pos_fb_4{entries[206], infos[206], scales[206]}; // 0x3604
+inline constexpr od::descriptor hist_pos_fb_5{entries[207], infos[207], scales[207]}; // 0x3605
+inline constexpr od::descriptor hist_pos_fb_6{entries[208], infos[208], scales[208]}; // 0x3606
+inline constexpr od::descriptor hist_pos_fb_13{entries[209], infos[209], scales[209]}; // 0x360D
+inline constexpr od::descriptor hist_pos_fb_14{entries[210], infos[210], scales[210]}; // 0x360E
+inline constexpr od::descriptor hist_pos_fb_15{entries[211], infos[211], scales[211]}; // 0x360F
+inline constexpr od::descriptor hist_pos_fb_16{entries[212], infos[212], scales[212]}; // 0x3610
+inline constexpr od::descriptor hist_pos_fb_17{entries[213], infos[213], scales[213]}; // 0x3611
+inline constexpr od::descriptor hist_pos_fb_18{entries[214], infos[214], scales[214]}; // 0x3617
+inline constexpr od::descriptor hist_pos_fb_26{entries[215], infos[215], scales[215]}; // 0x361A
+inline constexpr od::descriptor hist_pos_fb_27{entries[216], infos[216], scales[216]}; // 0x361B
+inline constexpr od::descriptor hist_pos_fb_28{entries[217], infos[217], scales[217]}; // 0x361C
+inline constexpr od::descriptor hist_pos_fb_29{entries[218], infos[218], scales[218]}; // 0x361D
+inline constexpr od::descriptor hist_pos_fb_30{entries[219], infos[219], scales[219]}; // 0x361E
+inline constexpr od::descriptor hist_pres_fb_13{entries[220], infos[220], scales[220]}; // 0x362E
 
 } // namespace fieldcodec::dictionaries::dpq_parameters
 // clang-format on

@@ -18,6 +18,7 @@
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/entry.hpp>
 
 #include <cstdint>
@@ -39,23 +40,19 @@ download_frame(std::uint8_t node, const od::entry &e,
 /// Expedited download of a raw value. Errors: access_denied (read-only), those of raw_to_bytes,
 /// invalid_argument (node not 1..127).
 [[nodiscard]] constexpr result<canopen::can_frame>
-write_raw_request(std::uint8_t node, const od::entry &e, std::int64_t raw) noexcept {
+write_raw_request(std::uint8_t node, const od::descriptor &e, std::int64_t raw) noexcept {
   if (!od::writable(e.access_type)) return errc::access_denied;
   auto p = raw_to_bytes(e, raw);
   if (!p) return p.error();
   return detail::download_frame(node, e, p.value().span());
 }
 
-/// Expedited download of an engineering value. Errors: access_denied, out_of_range, overflow,
-/// not_representable, type_mismatch, invalid_argument (node).
+/// Expedited download of an engineering value (decimal, double, float or integer: see
+/// dpq::engineering_value). Errors: access_denied, out_of_range, overflow, not_representable,
+/// type_mismatch, invalid_argument (node).
+template <engineering_value EU>
 [[nodiscard]] constexpr result<canopen::can_frame>
-write_request(std::uint8_t node, const od::entry &e, decimal eu) noexcept {
-  auto p = write_bytes(e, eu);
-  if (!p) return p.error();
-  return detail::download_frame(node, e, p.value().span());
-}
-[[nodiscard]] constexpr result<canopen::can_frame>
-write_request(std::uint8_t node, const od::entry &e, double eu) noexcept {
+write_request(std::uint8_t node, const od::descriptor &e, EU eu) noexcept {
   auto p = write_bytes(e, eu);
   if (!p) return p.error();
   return detail::download_frame(node, e, p.value().span());
@@ -122,12 +119,12 @@ read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_fram
 }
 
 /// The engineering value in the card's answer to a read (exact, round-trip places).
-/// Errors: those of read_raw_response and to_eu.
-[[nodiscard]] constexpr result<decimal> read_response(std::uint8_t node, const od::entry &e,
+/// Errors: those of read_raw_response and to_eu_decimal.
+[[nodiscard]] constexpr result<decimal> read_response(std::uint8_t node, const od::descriptor &e,
                                                       const canopen::can_frame &f) noexcept {
   auto raw = read_raw_response(node, e, f);
   if (!raw) return raw.error();
-  return to_eu(e, raw.value());
+  return to_eu_decimal(e, raw.value());
 }
 
 } // namespace fieldcodec::dpq

@@ -13,6 +13,7 @@
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/detail/search.hpp>
 #include <fieldcodec/od/number.hpp>
 
 #include <array>
@@ -198,18 +199,7 @@ public:
   [[nodiscard]] constexpr const_iterator end() const noexcept { return commands_.end(); }
 
   [[nodiscard]] constexpr const command *find(std::uint16_t code) const noexcept {
-    std::size_t lo = 0;
-    std::size_t hi = commands_.size();
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2U;
-      if (commands_[mid].code < code) {
-        lo = mid + 1U;
-      } else {
-        hi = mid;
-      }
-    }
-    if (lo < commands_.size() && commands_[lo].code == code) return &commands_[lo];
-    return nullptr;
+    return detail::find(commands_, code, [](const command &c) { return c.code; });
   }
   /// Errors: unknown_command.
   [[nodiscard]] constexpr result<const command *> lookup(std::uint16_t code) const noexcept {

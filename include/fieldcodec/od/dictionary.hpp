@@ -1,15 +1,24 @@
-// fieldcodec — od::dictionary, a constexpr view over an array of entries sorted by
-// (index, sub-index): O(log n) lookup, the sub-entries of one object, iteration.
+// fieldcodec — od::dictionary, a constexpr view over up to three parallel tables: the entries
+// sorted by (index, sub-index), their descriptive columns (infos) and their scales. The last two
+// may be empty; when present they have one element per entry, joined by position.
 //
 //   inline constexpr std::array<od::entry, 3> entries{{...}};       // sorted
-//   inline constexpr od::dictionary dictionary{entries};
+//   inline constexpr std::array<od::entry_info, 3> infos{{...}};    // same order
+//   inline constexpr od::dictionary dictionary{entries, infos};
 //   static_assert(dictionary.is_valid());
-//   auto e = dictionary.lookup(0x1018, 2);                         // result<const entry *>
+//   auto e = dictionary.lookup({0x1018, 2});                       // result<const entry *>
+//   dictionary.info(*e.value()).name                                // "Product code"
+//   auto d = dictionary.at({0x1018, 2});                           // result<od::descriptor>
 //   for (const od::entry &sub : dictionary.object(0x1018)) { ... }
 #pragma once
 
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/core/scaling.hpp>
+#include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/descriptor.hpp>
+#include <fieldcodec/od/detail/search.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/object.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -22,15 +31,27 @@ public:
   using const_iterator = std::span<const entry>::iterator;
 
   constexpr dictionary() noexcept = default;
-  constexpr explicit dictionary(std::span<const entry> entries) noexcept : entries_(entries) {}
+  constexpr explicit dictionary(std::span<const entry> entries,
+                                std::span<const entry_info> infos = {},
+                                std::span<const scaling::linear> scales = {}) noexcept
+      : entries_(entries), infos_(infos), scales_(scales) {}
 
-  /// Strictly increasing (index, sub-index): sorted and no duplicates. Generated headers
+  /// Strictly increasing (index, sub-index) (sorted, no duplicates), infos and scales either
+  /// empty or one per entry, and a scale table when an entry is scaled. Generated headers
   /// static_assert it; lookups assume it.
   [[nodiscard]] constexpr bool is_valid() const noexcept {
-    for (std::size_t i = 1; i < entries_.size(); ++i) {
-      if (!less(entries_[i - 1U], entries_[i].index, entries_[i].sub)) return false;
+    if (!infos_.empty() && infos_.size() != entries_.size()) return false;
+    if (!scales_.empty() && scales_.size() != entries_.size()) return false;
+    // plain integer work: generated headers evaluate this at compile time for every entry
+    std::uint32_t previous = 0;
+    std::uint16_t flags = 0;
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+      const std::uint32_t key = key_of(entries_[i]);
+      if (i > 0U && key <= previous) return false;
+      previous = key;
+      flags = static_cast<std::uint16_t>(flags | entries_[i].flags);
     }
-    return true;
+    return !scales_.empty() || (flags & flag::scaled) == 0U;
   }
 
   [[nodiscard]] constexpr std::size_t size() const noexcept { return entries_.size(); }
@@ -38,42 +59,86 @@ public:
   [[nodiscard]] constexpr const_iterator begin() const noexcept { return entries_.begin(); }
   [[nodiscard]] constexpr const_iterator end() const noexcept { return entries_.end(); }
   [[nodiscard]] constexpr std::span<const entry> entries() const noexcept { return entries_; }
-
-  /// The entry (index, sub), or nullptr.
-  [[nodiscard]] constexpr const entry *find(std::uint16_t index, std::uint8_t sub) const noexcept {
-    const std::size_t i = lower_bound(index, sub);
-    if (i < entries_.size() && entries_[i].index == index && entries_[i].sub == sub) {
-      return &entries_[i];
-    }
-    return nullptr;
+  [[nodiscard]] constexpr std::span<const entry_info> infos() const noexcept { return infos_; }
+  [[nodiscard]] constexpr std::span<const scaling::linear> scales() const noexcept {
+    return scales_;
   }
 
-  /// The entry (index, sub). Errors: unknown_object.
-  [[nodiscard]] constexpr result<const entry *> lookup(std::uint16_t index,
-                                                       std::uint8_t sub) const noexcept {
-    const entry *e = find(index, sub);
+  /// The entry at `a`, or nullptr. O(log n).
+  [[nodiscard]] constexpr const entry *find(address a) const noexcept {
+    return detail::find(entries_, key_of(a), key_of_entry);
+  }
+  [[nodiscard]] constexpr const entry *find(std::uint16_t index, std::uint8_t sub) const noexcept {
+    return find(address{index, sub});
+  }
+
+  /// The entry at `a`. Errors: unknown_object.
+  [[nodiscard]] constexpr result<const entry *> lookup(address a) const noexcept {
+    const entry *e = find(a);
     if (e == nullptr) return errc::unknown_object;
     return e;
   }
-
-  [[nodiscard]] constexpr bool contains(std::uint16_t index, std::uint8_t sub) const noexcept {
-    return find(index, sub) != nullptr;
+  [[nodiscard]] constexpr result<const entry *> lookup(std::uint16_t index,
+                                                       std::uint8_t sub) const noexcept {
+    return lookup(address{index, sub});
   }
 
-  /// All sub-entries of object `index` in sub-index order (empty when the object is unknown).
-  [[nodiscard]] constexpr std::span<const entry> object(std::uint16_t index) const noexcept {
-    const std::size_t first = lower_bound(index, 0);
-    std::size_t lo = first; // end of the object: a second binary search
-    std::size_t hi = entries_.size();
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2U;
-      if (entries_[mid].index <= index) {
-        lo = mid + 1U;
-      } else {
-        hi = mid;
-      }
-    }
-    return entries_.subspan(first, lo - first);
+  [[nodiscard]] constexpr bool contains(address a) const noexcept { return find(a) != nullptr; }
+  [[nodiscard]] constexpr bool contains(std::uint16_t index, std::uint8_t sub) const noexcept {
+    return find(address{index, sub}) != nullptr;
+  }
+
+  /// The descriptor (entry, info, scale) at `a`. Errors: unknown_object.
+  [[nodiscard]] constexpr result<descriptor> at(address a) const noexcept {
+    const entry *e = find(a);
+    if (e == nullptr) return errc::unknown_object;
+    return detail::describe_at(entries_, infos_, scales_, position(*e));
+  }
+  [[nodiscard]] constexpr result<descriptor> at(std::uint16_t index,
+                                                std::uint8_t sub) const noexcept {
+    return at(address{index, sub});
+  }
+
+  /// Position of `e` in entries(), or size() when `e` is not an element of this dictionary.
+  [[nodiscard]] constexpr std::size_t position(const entry &e) const noexcept {
+    return detail::position_of(entries_, e);
+  }
+  /// The descriptive columns of `e` (by position); od::no_info when `e` is not an element of
+  /// this dictionary or the dictionary has no infos.
+  [[nodiscard]] constexpr const entry_info &info(const entry &e) const noexcept {
+    const std::size_t i = position(e);
+    return i < infos_.size() ? infos_[i] : no_info;
+  }
+  /// The scale of `e` (by position); the identity when `e` is not an element of this dictionary
+  /// or the dictionary has no scales.
+  [[nodiscard]] constexpr scaling::linear scale(const entry &e) const noexcept {
+    const std::size_t i = position(e);
+    return i < scales_.size() ? scales_[i] : scaling::linear{};
+  }
+  /// `e` with its info and scale. Errors: unknown_object (`e` is not an element of this
+  /// dictionary: its scale is not known here).
+  [[nodiscard]] constexpr result<descriptor> describe(const entry &e) const noexcept {
+    const std::size_t i = position(e);
+    if (i == entries_.size()) return errc::unknown_object;
+    return detail::describe_at(entries_, infos_, scales_, i);
+  }
+
+  /// All sub-entries of object `index` in sub-index order, with their infos and scales (empty
+  /// when the object is unknown). The view's name is empty: a dictionary keeps the names of
+  /// sub-objects, not of ARRAY/RECORD objects (generated headers name those).
+  [[nodiscard]] constexpr od::object object(std::uint16_t index) const noexcept {
+    const std::size_t first =
+        detail::lower_bound(entries_, key_of(address{index, 0}), key_of_entry);
+    const std::size_t last =
+        detail::lower_bound(entries_, key_of(address{index, 0xFF}) + 1U, key_of_entry);
+    const std::size_t n = last - first;
+    od::object o;
+    o.index = index;
+    o.entries = entries_.subspan(first, n);
+    if (n != 0U) o.code = entries_[first].object;
+    if (!infos_.empty()) o.infos = infos_.subspan(first, n);
+    if (!scales_.empty()) o.scales = scales_.subspan(first, n);
+    return o;
   }
 
   /// Number of distinct objects (indices).
@@ -86,26 +151,20 @@ public:
   }
 
 private:
-  [[nodiscard]] static constexpr bool less(const entry &e, std::uint16_t index,
-                                           std::uint8_t sub) noexcept {
-    return e.index < index || (e.index == index && e.sub < sub);
+  /// (index, sub) as one integer in the same order as od::address.
+  [[nodiscard]] static constexpr std::uint32_t key_of(address a) noexcept {
+    return (std::uint32_t{a.index} << 8U) | a.sub;
   }
-  [[nodiscard]] constexpr std::size_t lower_bound(std::uint16_t index,
-                                                  std::uint8_t sub) const noexcept {
-    std::size_t lo = 0;
-    std::size_t hi = entries_.size();
-    while (lo < hi) {
-      const std::size_t mid = lo + (hi - lo) / 2U;
-      if (less(entries_[mid], index, sub)) {
-        lo = mid + 1U;
-      } else {
-        hi = mid;
-      }
-    }
-    return lo;
+  [[nodiscard]] static constexpr std::uint32_t key_of(const entry &e) noexcept {
+    return (std::uint32_t{e.index} << 8U) | e.sub;
+  }
+  [[nodiscard]] static constexpr std::uint32_t key_of_entry(const entry &e) noexcept {
+    return key_of(e);
   }
 
   std::span<const entry> entries_{};
+  std::span<const entry_info> infos_{};
+  std::span<const scaling::linear> scales_{};
 };
 
 } // namespace fieldcodec::od

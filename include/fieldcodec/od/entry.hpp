@@ -1,13 +1,17 @@
-// fieldcodec — od::entry, the description of one sub-object of an object dictionary.
+// fieldcodec — od::entry, the lean core description of one sub-object of an object dictionary,
+// and od::entry_info, its descriptive columns.
 //
-// A literal aggregate: generated dictionaries are plain designated initialisers, e.g.
-//   {.index = 0x2023, .type = od::data_type::unsigned32, .name = "Inj. P Limit 1",
-//    .low = od::num::i(0), .high = od::num::i(5000), .scale = {{32767, 2}, {0, 0}},
-//    .scaled = true}
-// Every member has a default, so an initialiser names only what the source file gives.
+// An entry holds what code needs to move and check a value: address, object code, type, access,
+// PDO mapping, flags, size, limits and default. Everything a person reads (name, unit, section,
+// remark, vendor columns, the DCF's configured value) is in entry_info, kept in a parallel table
+// (od::dictionary::info); the scale of a scaled entry is a third parallel table
+// (od::dictionary::scale). od::descriptor (od/descriptor.hpp) joins the three for one
+// sub-object. Literal aggregates with defaults: generated dictionaries are designated
+// initialisers that name only what the source gives, e.g.
+//   {.index = 0x2023, .type = od::data_type::unsigned32, .flags = od::flag::scaled,
+//    .low = od::signed_number(0), .high = od::signed_number(5000)}
 #pragma once
 
-#include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/od/data_type.hpp>
@@ -19,18 +23,47 @@
 
 namespace fieldcodec::od {
 
-/// Flags of the dictionary-formats contract (bitmask in entry::flags).
+/// The bits of entry::flags.
 namespace flag {
-inline constexpr std::uint8_t range_exceeds_field = 0x01; ///< printed range does not fit the field
-inline constexpr std::uint8_t index_anomaly = 0x02;       ///< printed index is odd, see remark
-inline constexpr std::uint8_t signedness_guess = 0x04;    ///< signedness decided from the range
+inline constexpr std::uint16_t range_exceeds_field =
+    0x0001;                                               ///< printed range does not fit the field
+inline constexpr std::uint16_t index_anomaly = 0x0002;    ///< printed index is odd, see remark
+inline constexpr std::uint16_t signedness_guess = 0x0004; ///< signedness decided from the range
+inline constexpr std::uint16_t scaled =
+    0x0008; ///< the source gives a scale: limits are engineering units
+inline constexpr std::uint16_t default_nodeid = 0x0010;   ///< default is "$NODEID + default_value"
+inline constexpr std::uint16_t low_nodeid = 0x0020;       ///< low limit is "$NODEID + low"
+inline constexpr std::uint16_t high_nodeid = 0x0040;      ///< high limit is "$NODEID + high"
+inline constexpr std::uint16_t parameter_nodeid = 0x0080; ///< DCF ParameterValue is "$NODEID + …"
 } // namespace flag
+
+/// No node-ID given: a node-ID-relative limit is checked for the widest range any node 1..127
+/// gives (low + 1, high + 127). See od/value.hpp.
+inline constexpr std::uint8_t any_node = 0;
 
 /// DPQ "Busmanager" column.
 enum class bus_manager : std::uint8_t { unspecified, available, not_available };
 
 /// No COMPAX index pointer.
 inline constexpr std::uint8_t no_pointer = 0xFF;
+
+namespace detail {
+/// `v`, plus `node_id` when `relative`. A node-ID-relative value is an integer ("$NODEID+0x180").
+/// Errors: unknown_object (no value), overflow, not_representable (relative and not an integer).
+[[nodiscard]] constexpr result<number> plus_node(number v, bool relative,
+                                                 std::uint8_t node_id) noexcept {
+  if (!v) return errc::unknown_object;
+  if (!relative) return v;
+  if (v.kind == number_kind::unsigned_) {
+    if (v.bits > ~std::uint64_t{0} - node_id) return errc::overflow;
+    return unsigned_number(v.bits + node_id);
+  }
+  if (v.kind != number_kind::signed_) return errc::not_representable;
+  const auto i = static_cast<std::int64_t>(v.bits);
+  if (i > std::numeric_limits<std::int64_t>::max() - node_id) return errc::overflow;
+  return signed_number(i + node_id);
+}
+} // namespace detail
 
 struct entry {
   std::uint16_t index = 0;
@@ -39,28 +72,16 @@ struct entry {
   data_type type = data_type::unsigned8;
   access access_type = access::rw;
   pdo_mapping pdo = pdo_mapping::no;
-  std::uint8_t flags = 0;  ///< od::flag bits
-  std::uint32_t size = 0;  ///< bytes; 0 means fixed_size(type) (byte strings: size not given)
-  std::string_view name{}; ///< name as the source prints it
-  number low{};            ///< lowest allowed value: engineering units when `scaled`, raw otherwise
-  number high{};           ///< highest allowed value, same units as `low`
-  number default_value{};  ///< raw default; add the node-ID when `default_nodeid`
-  bool default_nodeid = false;     ///< default is "$NODEID + default_value"
-  std::string_view default_text{}; ///< default of a string / domain entry, as text
-  scaling::linear scale{};         ///< raw = round((EU − offset) × scale)
-  bool scaled = false;             ///< the source gives a scale (limits are then engineering units)
-  std::string_view unit{};
-  std::string_view alt_name{};
-  std::uint8_t pointer = no_pointer; ///< COMPAX index pointer
-  bus_manager bus = bus_manager::unspecified;
-  std::string_view acceptance{};
-  std::string_view section{};
-  std::string_view remark{};
-  std::uint32_t obj_flags = 0; ///< EDS ObjFlags
-  number parameter_value{};    ///< DCF ParameterValue (configured value), raw
-  bool parameter_nodeid = false;
-  std::string_view parameter_text{}; ///< DCF ParameterValue of a string entry
-  std::string_view denotation{};     ///< DCF Denotation
+  std::uint16_t flags = 0; ///< od::flag bits
+  /// Bytes: the capacity of a VISIBLE_STRING / OCTET_STRING / UNICODE_STRING / DOMAIN value
+  /// (0: not given); 0 for every other type (its size is fixed_size(type)).
+  std::uint32_t size = 0;
+  number low{};           ///< lowest allowed value: engineering units when scaled, raw otherwise
+  number high{};          ///< highest allowed value, same units as `low`
+  number default_value{}; ///< raw default; add the node-ID when flag::default_nodeid
+  std::string_view default_text{}; ///< default of a string / domain entry, as its bytes
+
+  [[nodiscard]] constexpr bool has(std::uint16_t f) const noexcept { return (flags & f) == f; }
 
   /// Size of the value in bytes (0 for a byte string without a declared size).
   [[nodiscard]] constexpr std::uint32_t width() const noexcept {
@@ -74,61 +95,55 @@ struct entry {
     return scaling::field{fixed_size(type), is_signed_integer(type)};
   }
 
-  /// The default value for a node: default_value (+ node_id when node-ID relative).
-  /// Errors: unknown_object (no numeric default), overflow.
+  /// The default value for a node: default_value (+ node_id when flag::default_nodeid).
+  /// Errors: unknown_object (no numeric default), overflow, not_representable (a node-ID-relative
+  /// value that is not an integer).
   [[nodiscard]] constexpr result<number> default_for(std::uint8_t node_id) const noexcept {
-    return resolve(default_value, default_nodeid, node_id);
+    return detail::plus_node(default_value, has(flag::default_nodeid), node_id);
   }
-  /// The same for the DCF ParameterValue.
-  [[nodiscard]] constexpr result<number> parameter_for(std::uint8_t node_id) const noexcept {
-    return resolve(parameter_value, parameter_nodeid, node_id);
+  /// The low limit for a node: low (+ node_id when flag::low_nodeid). Errors: as default_for.
+  [[nodiscard]] constexpr result<number> low_for(std::uint8_t node_id) const noexcept {
+    return detail::plus_node(low, has(flag::low_nodeid), node_id);
   }
-
-  /// Engineering units → raw: range check against [low, high] (engineering units when
-  /// `scaled`, raw otherwise; a missing end is not checked), round((eu − offset) × scale)
-  /// half away from zero, then a check against the field's width and signedness.
-  /// Errors: type_mismatch (not an integer type), out_of_range, overflow, not_representable.
-  [[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu) const noexcept {
-    auto f = raw_field();
-    if (!f) return f.error();
-    if (auto lo = low.to_decimal(); lo && compare(eu, lo.value()) < 0) {
-      return errc::out_of_range;
-    }
-    if (auto hi = high.to_decimal(); hi && compare(eu, hi.value()) > 0) {
-      return errc::out_of_range;
-    }
-    return scaling::to_raw(eu, scale, f.value());
-  }
-  [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu) const noexcept {
-    auto d = decimal_from_double(eu);
-    if (!d) return d.error();
-    return to_raw(d.value());
-  }
-
-  /// Raw → engineering units: raw / scale + offset.
-  [[nodiscard]] constexpr double to_eu(std::int64_t raw) const noexcept {
-    return scaling::to_eu(raw, scale);
-  }
-  /// Raw → engineering units, exactly, rounded to `places` decimal places.
-  [[nodiscard]] constexpr result<decimal> to_eu_decimal(std::int64_t raw,
-                                                        unsigned places) const noexcept {
-    return scaling::to_eu_decimal(raw, scale, places);
-  }
-
-private:
-  [[nodiscard]] static constexpr result<number> resolve(number v, bool relative,
-                                                        std::uint8_t node_id) noexcept {
-    if (!v) return errc::unknown_object;
-    if (!relative) return v;
-    if (v.kind == number_kind::unsigned_) {
-      if (v.bits > ~std::uint64_t{0} - node_id) return errc::overflow;
-      return num::u(v.bits + node_id);
-    }
-    auto i = v.to_int64();
-    if (!i) return i.error();
-    if (i.value() > std::numeric_limits<std::int64_t>::max() - node_id) return errc::overflow;
-    return num::i(i.value() + node_id);
+  /// The high limit for a node: high (+ node_id when flag::high_nodeid). Errors: as default_for.
+  [[nodiscard]] constexpr result<number> high_for(std::uint8_t node_id) const noexcept {
+    return detail::plus_node(high, has(flag::high_nodeid), node_id);
   }
 };
+
+namespace detail {
+/// The node-ID that limit checks add to a node-ID-relative low (high = false) or high limit:
+/// `node`, or for any_node the one that gives the widest range (1 for low, 127 for high).
+[[nodiscard]] constexpr std::uint8_t limit_node(bool high, std::uint8_t node) noexcept {
+  if (node != any_node) return node;
+  return high ? std::uint8_t{127} : std::uint8_t{1};
+}
+/// The limit a check uses. Errors: those of low_for / high_for (the end is then not checked).
+[[nodiscard]] constexpr result<number> checked_limit(const entry &e, bool high,
+                                                     std::uint8_t node) noexcept {
+  const std::uint8_t n = limit_node(high, node);
+  return high ? e.high_for(n) : e.low_for(n);
+}
+} // namespace detail
+
+/// The descriptive columns of one entry (joined to it by position, see od::dictionary::info).
+struct entry_info {
+  std::string_view name{}; ///< name as the source prints it
+  std::string_view unit{};
+  std::string_view alt_name{};
+  std::string_view section{}; ///< manual section
+  std::string_view remark{};
+  std::string_view acceptance{};     ///< DPQ: when the card accepts a write
+  std::string_view denotation{};     ///< DCF Denotation
+  std::uint8_t pointer = no_pointer; ///< COMPAX index pointer
+  bus_manager bus = bus_manager::unspecified;
+  std::uint32_t obj_flags = 0;       ///< EDS ObjFlags
+  number parameter_value{};          ///< DCF ParameterValue (configured value), raw; see
+                                     ///< flag::parameter_nodeid and descriptor::parameter_for
+  std::string_view parameter_text{}; ///< DCF ParameterValue of a string entry
+};
+
+/// What info() answers for an entry that has none.
+inline constexpr entry_info no_info{};
 
 } // namespace fieldcodec::od

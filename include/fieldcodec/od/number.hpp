@@ -1,8 +1,9 @@
 // fieldcodec — od::number, a small tagged number for limits and default values.
 //
 // Holds nothing, an int64, a uint64, a double or an exact decimal (mantissa × 10^-places) in
-// 16 bytes, so a generated dictionary can write `od::num::i(-5)`, `od::num::u(0xFFFF)`,
-// `od::num::f(1.5)` or `od::num::d(32767, 2)` in a plain aggregate initialiser.
+// 16 bytes, so a generated dictionary can write `od::signed_number(-5)`,
+// `od::unsigned_number(0xFFFF)`, `od::real_number(1.5)` or `od::decimal_number(32767, 2)` in a
+// plain aggregate initialiser.
 #pragma once
 
 #include <fieldcodec/core/decimal.hpp>
@@ -78,18 +79,17 @@ struct number {
     return static_cast<std::uint64_t>(v.value());
   }
 
-  /// The value as a double (nearest). NaN for none.
+  /// The value as a double (nearest; a decimal is mantissa / 10^places in one division). NaN for
+  /// none.
   [[nodiscard]] constexpr double to_double() const noexcept {
     switch (kind) {
     case number_kind::none: return std::numeric_limits<double>::quiet_NaN();
     case number_kind::signed_: return static_cast<double>(static_cast<std::int64_t>(bits));
     case number_kind::unsigned_: return static_cast<double>(bits);
     case number_kind::real: return std::bit_cast<double>(bits);
-    case number_kind::decimal_: {
-      double v = static_cast<double>(static_cast<std::int64_t>(bits));
-      for (unsigned i = 0; i < places; ++i) v /= 10.0;
-      return v;
-    }
+    case number_kind::decimal_: // one division: correctly rounded for |mantissa| ≤ 2^53
+      return static_cast<double>(static_cast<std::int64_t>(bits)) /
+             fieldcodec::detail::pow10_double(places);
     }
     return std::numeric_limits<double>::quiet_NaN();
   }
@@ -98,21 +98,26 @@ struct number {
   friend constexpr bool operator==(const number &, const number &) noexcept = default;
 };
 
-/// Factories for generated code and tests.
-namespace num {
-[[nodiscard]] constexpr number i(std::int64_t v) noexcept {
+// Factories, one per kind (generated dictionaries and tests use them).
+
+/// A signed integer (number_kind::signed_).
+[[nodiscard]] constexpr number signed_number(std::int64_t v) noexcept {
   return {number_kind::signed_, 0, static_cast<std::uint64_t>(v)};
 }
-[[nodiscard]] constexpr number u(std::uint64_t v) noexcept {
+/// An unsigned integer (number_kind::unsigned_).
+[[nodiscard]] constexpr number unsigned_number(std::uint64_t v) noexcept {
   return {number_kind::unsigned_, 0, v};
 }
-[[nodiscard]] constexpr number f(double v) noexcept {
+/// A binary floating-point value (number_kind::real).
+[[nodiscard]] constexpr number real_number(double v) noexcept {
   return {number_kind::real, 0, std::bit_cast<std::uint64_t>(v)};
 }
-[[nodiscard]] constexpr number d(std::int64_t mantissa, std::uint8_t places) noexcept {
+/// An exact decimal mantissa × 10^-places (number_kind::decimal_): 327.67 is (32767, 2).
+[[nodiscard]] constexpr number decimal_number(std::int64_t mantissa, std::uint8_t places) noexcept {
   return {number_kind::decimal_, places, static_cast<std::uint64_t>(mantissa)};
 }
-[[nodiscard]] constexpr number d(decimal v) noexcept { return d(v.mantissa, v.places); }
-} // namespace num
+[[nodiscard]] constexpr number decimal_number(decimal v) noexcept {
+  return decimal_number(v.mantissa, v.places);
+}
 
 } // namespace fieldcodec::od

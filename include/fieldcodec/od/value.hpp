@@ -5,11 +5,16 @@
 // Numeric values are checked against the entry's raw limits (for a `scaled` entry the limits
 // are engineering units and are converted to raw first) and against the field's width.
 //
-//   od::encode(e, od::num::i(-5), out)    → bytes written         (number form)
-//   od::encode(e, std::int16_t{-5}, out)  → bytes written         (typed form)
-//   od::decode(e, in)                     → od::number
-//   od::decode<std::int16_t>(e, in)       → std::int16_t
-//   od::encode_bytes / od::decode_bytes     strings and domains
+//   od::encode(e, od::signed_number(-5), out) → bytes written     (number form)
+//   od::encode(e, std::int16_t{-5}, out)      → bytes written     (typed form; any integer type,
+//                                                                  float, double, enumerations)
+//   od::encode(obj, 2, value, out)            → bytes written     (sub-object 2 of an od::object)
+//   od::decode(e, in)                         → od::number
+//   od::decode<std::int16_t>(e, in)           → std::int16_t
+//   od::encode_bytes / od::decode_bytes         strings and domains
+//
+// `e` is an od::entry or an od::descriptor; a scaled entry's limits (engineering units) need the
+// descriptor. Node-ID-relative limits take the node as the last argument.
 #pragma once
 
 #include <fieldcodec/core/bytes.hpp>
@@ -17,8 +22,10 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/od/data_type.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/number.hpp>
+#include <fieldcodec/od/object.hpp>
 
 #include <bit>
 #include <concepts>
@@ -26,6 +33,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::od {
 
@@ -43,7 +51,7 @@ inline constexpr std::uint32_t time_ms_max = (std::uint32_t{1} << 28U) - 1U;
 
 /// The time as the 48-bit number encode/decode use (ms in bits 0..27, days in bits 32..47).
 [[nodiscard]] constexpr number to_number(time_value t) noexcept {
-  return num::u(std::uint64_t{t.ms} | (std::uint64_t{t.days} << 32U));
+  return unsigned_number(std::uint64_t{t.ms} | (std::uint64_t{t.days} << 32U));
 }
 /// Errors: out_of_range (ms beyond 28 bits or reserved bits set), type_mismatch.
 [[nodiscard]] constexpr result<time_value> to_time(number n) noexcept {
@@ -74,14 +82,18 @@ struct wide_int {
   return v < 0 ? wide_int{true, std::uint64_t{0} - static_cast<std::uint64_t>(v)}
                : wide_int{false, static_cast<std::uint64_t>(v)};
 }
-/// A raw integer limit. For a scaled entry the limit is in engineering units: raw = round(...).
-/// Errors: anything; the caller then does not check that end.
-[[nodiscard]] constexpr result<wide_int> raw_limit(const entry &e, number lim) noexcept {
-  if (!lim) return errc::unknown_object;
-  if (e.scaled) {
+
+/// A raw integer limit. For a scaled entry the limit is in engineering units:
+/// raw = round((limit − offset) × scale). Errors: anything; the caller then does not check that
+/// end (a limit that is not given, or that no raw integer can stand for).
+[[nodiscard]] constexpr result<wide_int> raw_limit(const entry &e, const scaling::linear *scale,
+                                                   result<number> limit) noexcept {
+  if (!limit) return limit.error();
+  const number lim = limit.value();
+  if (e.has(flag::scaled) && scale != nullptr) {
     auto d = lim.to_decimal();
     if (!d) return d.error();
-    auto r = scaling::scale_to_raw(d.value(), e.scale);
+    auto r = scaling::scale_to_raw(d.value(), *scale);
     if (!r) return r.error();
     return from_int64(r.value());
   }
@@ -94,12 +106,18 @@ struct wide_int {
   return from_int64(r.value());
 }
 
-/// Errors: out_of_range when v lies outside the entry's limits.
-[[nodiscard]] constexpr status check_int_limits(const entry &e, wide_int v) noexcept {
-  auto lo = raw_limit(e, e.low);
-  auto hi = raw_limit(e, e.high);
-  if (e.scaled && e.scale.scale.mantissa < 0 && lo && hi) { // negative scale swaps the ends
-    if (compare(v, hi.value()) < 0 || compare(v, lo.value()) > 0) return errc::out_of_range;
+/// Errors: out_of_range when v lies outside the entry's limits for `node`; invalid_argument when
+/// the entry is scaled and has a limit but its scale is not known (a plain od::entry: pass the
+/// od::descriptor).
+[[nodiscard]] constexpr status check_int_limits(const entry &e, const scaling::linear *scale,
+                                                wide_int v, std::uint8_t node) noexcept {
+  if (e.has(flag::scaled) && scale == nullptr && (e.low || e.high)) return errc::invalid_argument;
+  auto lo = raw_limit(e, scale, checked_limit(e, false, node));
+  auto hi = raw_limit(e, scale, checked_limit(e, true, node));
+  if (e.has(flag::scaled) && scale != nullptr && scale->scale.mantissa < 0) {
+    // a negative scale turns the engineering low into the raw high and vice versa
+    if (lo && compare(v, lo.value()) > 0) return errc::out_of_range;
+    if (hi && compare(v, hi.value()) < 0) return errc::out_of_range;
     return {};
   }
   if (lo && compare(v, lo.value()) < 0) return errc::out_of_range;
@@ -107,9 +125,14 @@ struct wide_int {
   return {};
 }
 
-[[nodiscard]] constexpr status check_real_limits(const entry &e, double v) noexcept {
-  if (e.low && v < e.low.to_double()) return errc::out_of_range;
-  if (e.high && v > e.high.to_double()) return errc::out_of_range;
+[[nodiscard]] constexpr status check_real_limits(const entry &e, double v,
+                                                 std::uint8_t node) noexcept {
+  if (auto lo = checked_limit(e, false, node); lo && v < lo.value().to_double()) {
+    return errc::out_of_range;
+  }
+  if (auto hi = checked_limit(e, true, node); hi && v > hi.value().to_double()) {
+    return errc::out_of_range;
+  }
   return {};
 }
 
@@ -129,54 +152,40 @@ struct wide_int {
   return errc::type_mismatch;
 }
 
-} // namespace detail
-
-/// Write the value `v` of entry `e` to the front of `out`; returns the number of bytes.
-/// Integers, BOOLEAN (0/1), REAL32/REAL64 and TIME_* (see to_number(time_value)).
-/// Errors: type_mismatch (byte-string type, or no value), not_representable (fraction for an
-/// integer type, NaN/infinity), out_of_range (outside the entry's limits, BOOLEAN not 0/1,
-/// time fields), overflow (does not fit the field), buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, number v,
-                                                   std::span<std::uint8_t> out,
-                                                   byte_order order = byte_order::little) noexcept {
-  const std::size_t w = fixed_size(e.type);
-  if (w == 0U || !v) return errc::type_mismatch;
-  if (out.size() < w) return errc::buffer_too_small;
-  if (is_real(e.type)) {
-    const double d = v.to_double();
-    if (d != d) return errc::not_representable;
-    FIELDCODEC_TRY_STATUS(detail::check_real_limits(e, d));
-    if (e.type == data_type::real32) {
-      if (d > static_cast<double>(std::numeric_limits<float>::max()) ||
-          d < -static_cast<double>(std::numeric_limits<float>::max())) {
-        return errc::overflow;
-      }
-      auto b = ieee754::encode_float32(static_cast<float>(d), order);
-      if (!b) return b.error();
-      for (std::size_t i = 0; i < 4U; ++i) out[i] = b.value()[i];
-      return std::size_t{4};
+/// The value of a number for a REAL32 / REAL64 entry. An integer must be exactly representable
+/// in the type (24 / 53 significant bits); a real or decimal is rounded to the nearest value.
+/// Errors: not_representable (NaN, an integer the type cannot hold exactly), overflow (beyond
+/// the largest finite REAL32).
+[[nodiscard]] constexpr result<double> real_value(number v, bool single) noexcept {
+  if (v.kind == number_kind::signed_ || v.kind == number_kind::unsigned_) {
+    const wide_int x = v.kind == number_kind::unsigned_
+                           ? wide_int{false, v.bits}
+                           : from_int64(static_cast<std::int64_t>(v.bits));
+    if (x.mag != 0U) {
+      const int significant = static_cast<int>(std::bit_width(x.mag)) - std::countr_zero(x.mag);
+      if (significant > (single ? 24 : 53)) return errc::not_representable;
     }
-    auto b = ieee754::encode_float64(d, order);
-    if (!b) return b.error();
-    for (std::size_t i = 0; i < 8U; ++i) out[i] = b.value()[i];
-    return std::size_t{8};
+    const double m = static_cast<double>(x.mag); // exact: at most 53 significant bits
+    return x.negative ? -m : m;
   }
-  if (is_time(e.type)) {
-    auto t = to_time(v);
-    if (!t) return t.error();
-    FIELDCODEC_TRY_STATUS(store_unsigned(out, 4, t.value().ms, order));
-    FIELDCODEC_TRY_STATUS(store_unsigned(out.subspan(4), 2, t.value().days, order));
-    return std::size_t{6};
+  const double d = v.to_double();
+  if (d != d) return errc::not_representable;
+  if (single && (d > static_cast<double>(std::numeric_limits<float>::max()) ||
+                 d < -static_cast<double>(std::numeric_limits<float>::max()))) {
+    return errc::overflow;
   }
-  auto wv = detail::to_wide(v);
-  if (!wv) return wv.error();
-  const detail::wide_int x = wv.value();
-  if (e.type == data_type::boolean) {
-    if (x.negative || x.mag > 1U) return errc::out_of_range;
-    out[0] = static_cast<std::uint8_t>(x.mag);
-    return std::size_t{1};
-  }
-  FIELDCODEC_TRY_STATUS(detail::check_int_limits(e, x));
+  return d;
+}
+
+/// The integer part of encode: limits, field, bytes. `e` must have an integer type (the DPQ's
+/// raw values take this path directly, without the REAL and TIME code of encode).
+[[nodiscard]] constexpr result<std::size_t>
+encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
+               std::span<std::uint8_t> out, byte_order order, std::uint8_t node) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (!is_integer(e.type)) return errc::type_mismatch;
+  if (out.size() < w) return errc::buffer_too_small;
+  FIELDCODEC_TRY_STATUS(check_int_limits(e, scale, x, node));
   if (is_signed_integer(e.type)) {
     if (!x.negative && x.mag > static_cast<std::uint64_t>(signed_max(w))) return errc::overflow;
     if (x.negative && x.mag > std::uint64_t{0} - static_cast<std::uint64_t>(signed_min(w))) {
@@ -191,13 +200,50 @@ struct wide_int {
   return w;
 }
 
-/// Read the value of entry `e` from `in`, which must hold exactly width() bytes.
-/// Errors: type_mismatch (byte-string type), truncated (too few bytes), bad_length (too many),
-/// out_of_range (outside the limits with limits::check, BOOLEAN other than 0/1, time reserved
-/// bits), not_representable (NaN/infinity).
-[[nodiscard]] constexpr result<number> decode(const entry &e, std::span<const std::uint8_t> in,
-                                              byte_order order = byte_order::little,
-                                              limits lim = limits::check) noexcept {
+/// encode for an entry whose scale is `scale` (nullptr: not known).
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, const scaling::linear *scale,
+                                                   number v, std::span<std::uint8_t> out,
+                                                   byte_order order, std::uint8_t node) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (w == 0U || !v) return errc::type_mismatch;
+  if (out.size() < w) return errc::buffer_too_small;
+  if (is_real(e.type)) {
+    auto d = real_value(v, e.type == data_type::real32);
+    if (!d) return d.error();
+    FIELDCODEC_TRY_STATUS(check_real_limits(e, d.value(), node));
+    if (e.type == data_type::real32) {
+      auto b = ieee754::encode_float32(static_cast<float>(d.value()), order);
+      if (!b) return b.error();
+      for (std::size_t i = 0; i < 4U; ++i) out[i] = b.value()[i];
+      return std::size_t{4};
+    }
+    auto b = ieee754::encode_float64(d.value(), order);
+    if (!b) return b.error();
+    for (std::size_t i = 0; i < 8U; ++i) out[i] = b.value()[i];
+    return std::size_t{8};
+  }
+  if (is_time(e.type)) {
+    auto t = to_time(v);
+    if (!t) return t.error();
+    FIELDCODEC_TRY_STATUS(store_unsigned(out, 4, t.value().ms, order));
+    FIELDCODEC_TRY_STATUS(store_unsigned(out.subspan(4), 2, t.value().days, order));
+    return std::size_t{6};
+  }
+  auto wv = to_wide(v);
+  if (!wv) return wv.error();
+  const wide_int x = wv.value();
+  if (e.type == data_type::boolean) {
+    if (x.negative || x.mag > 1U) return errc::out_of_range;
+    out[0] = static_cast<std::uint8_t>(x.mag);
+    return std::size_t{1};
+  }
+  return encode_integer(e, scale, x, out, order, node);
+}
+
+/// decode for an entry whose scale is `scale` (nullptr: not known).
+[[nodiscard]] constexpr result<number> decode(const entry &e, const scaling::linear *scale,
+                                              std::span<const std::uint8_t> in, byte_order order,
+                                              limits lim, std::uint8_t node) noexcept {
   const std::size_t w = fixed_size(e.type);
   if (w == 0U) return errc::type_mismatch;
   if (in.size() < w) return errc::truncated;
@@ -213,8 +259,8 @@ struct wide_int {
       if (!f) return f.error();
       d = f.value();
     }
-    if (lim == limits::check) FIELDCODEC_TRY_STATUS(detail::check_real_limits(e, d));
-    return num::f(d);
+    if (lim == limits::check) FIELDCODEC_TRY_STATUS(check_real_limits(e, d, node));
+    return real_number(d);
   }
   if (is_time(e.type)) {
     auto ms = load_unsigned(in, 4, order);
@@ -226,57 +272,166 @@ struct wide_int {
   }
   if (e.type == data_type::boolean) {
     if (in[0] > 1U) return errc::out_of_range;
-    return num::u(in[0]);
+    return unsigned_number(in[0]);
   }
   number n;
-  detail::wide_int x;
+  wide_int x;
   if (is_signed_integer(e.type)) {
     auto v = load_signed(in, w, order);
     if (!v) return v.error();
-    n = num::i(v.value());
-    x = detail::from_int64(v.value());
+    n = signed_number(v.value());
+    x = from_int64(v.value());
   } else {
     auto v = load_unsigned(in, w, order);
     if (!v) return v.error();
-    n = num::u(v.value());
+    n = unsigned_number(v.value());
     x = {false, v.value()};
   }
-  if (lim == limits::check) FIELDCODEC_TRY_STATUS(detail::check_int_limits(e, x));
+  if (lim == limits::check) FIELDCODEC_TRY_STATUS(check_int_limits(e, scale, x, node));
   return n;
 }
 
-/// Arithmetic types the typed forms accept.
-template <class T>
-concept value_type = std::integral<T> || std::floating_point<T>;
+/// Errors: out_of_range, invalid_argument (scaled entry without its scale), type_mismatch,
+/// not_representable.
+[[nodiscard]] constexpr status check_limits(const entry &e, const scaling::linear *scale, number v,
+                                            std::uint8_t node) noexcept {
+  if (!v || fixed_size(e.type) == 0U) return errc::type_mismatch;
+  if (is_real(e.type)) {
+    auto d = real_value(v, e.type == data_type::real32);
+    if (!d) return d.error();
+    return check_real_limits(e, d.value(), node);
+  }
+  auto x = to_wide(v);
+  if (!x) return x.error();
+  return check_int_limits(e, scale, x.value(), node);
+}
 
-/// Typed form of encode (bool, any integer, float, double).
+template <class>
+inline constexpr bool always_false = false;
+
+} // namespace detail
+
+// --- number form -----------------------------------------------------------------------------
+//
+// Every function exists for an od::entry and for an od::descriptor. They differ only for a
+// scaled entry: its limits are engineering units, which only a descriptor can turn into raw
+// limits (round((limit − offset) × scale)); a plain entry that is scaled and has a limit gives
+// errc::invalid_argument when its limits are checked. `node` is the node-ID for node-ID-relative
+// limits (flag::low_nodeid / high_nodeid); with od::any_node such an end is checked for the widest
+// range any node 1..127 gives (low + 1, high + 127).
+
+/// Whether `v` lies within the limits of `e` for `node` (number and REAL types; BOOLEAN and the
+/// field's width are encode's business). Errors: out_of_range, invalid_argument (scaled entry
+/// without its scale), type_mismatch (byte-string type or no value), not_representable.
+[[nodiscard]] constexpr status check_limits(const entry &e, number v,
+                                            std::uint8_t node = any_node) noexcept {
+  return detail::check_limits(e, nullptr, v, node);
+}
+[[nodiscard]] constexpr status check_limits(const descriptor &d, number v,
+                                            std::uint8_t node = any_node) noexcept {
+  return detail::check_limits(d, &d.scale, v, node);
+}
+
+/// Write the value `v` of entry `e` to the front of `out`; returns the number of bytes.
+/// Integers, BOOLEAN (0/1), REAL32/REAL64 and TIME_* (see to_number(time_value)).
+/// Errors: type_mismatch (byte-string type, or no value), not_representable (fraction for an
+/// integer type, NaN/infinity, an integer a REAL type cannot hold exactly), out_of_range
+/// (outside the entry's limits, BOOLEAN not 0/1, time fields), overflow (does not fit the
+/// field), buffer_too_small, invalid_argument (scaled entry without its scale).
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, number v,
+                                                   std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little,
+                                                   std::uint8_t node = any_node) noexcept {
+  return detail::encode(e, nullptr, v, out, order, node);
+}
+[[nodiscard]] constexpr result<std::size_t> encode(const descriptor &d, number v,
+                                                   std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little,
+                                                   std::uint8_t node = any_node) noexcept {
+  return detail::encode(d, &d.scale, v, out, order, node);
+}
+
+/// Read the value of entry `e` from `in`, which must hold exactly width() bytes.
+/// Errors: type_mismatch (byte-string type), truncated (too few bytes), bad_length (too many),
+/// out_of_range (outside the limits with limits::check, BOOLEAN other than 0/1, time reserved
+/// bits), not_representable (NaN/infinity), invalid_argument (limits::check of a scaled entry
+/// without its scale).
+[[nodiscard]] constexpr result<number> decode(const entry &e, std::span<const std::uint8_t> in,
+                                              byte_order order = byte_order::little,
+                                              limits lim = limits::check,
+                                              std::uint8_t node = any_node) noexcept {
+  return detail::decode(e, nullptr, in, order, lim, node);
+}
+[[nodiscard]] constexpr result<number> decode(const descriptor &d, std::span<const std::uint8_t> in,
+                                              byte_order order = byte_order::little,
+                                              limits lim = limits::check,
+                                              std::uint8_t node = any_node) noexcept {
+  return detail::decode(d, &d.scale, in, order, lim, node);
+}
+
+// --- typed form --------------------------------------------------------------------------------
+
+/// The types the typed forms accept: bool, every integer type, float, double, and enumerations
+/// (taken as their underlying type, so a scoped enum such as ds402::mode is its number).
+template <class T>
+concept value_type =
+    std::integral<T> || std::same_as<T, float> || std::same_as<T, double> || std::is_enum_v<T>;
+
+/// The number a typed value stands for, for entry `e`. Integers (and enumerations) are taken
+/// exactly, whatever their width and signedness: the field check of encode refuses what does
+/// not fit, nothing wraps. A double is read as the decimal it stands for (15 significant
+/// digits) unless the entry is REAL; a float is its own bits for a REAL32 and its shortest
+/// round-trip decimal otherwise (a REAL64 gets the double nearest that decimal).
+/// Errors: not_representable (NaN, infinity).
 template <value_type T>
-[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, T v, std::span<std::uint8_t> out,
-                                                   byte_order order = byte_order::little) noexcept {
-  if constexpr (std::floating_point<T>) {
-    if (is_integer(e.type) || e.type == data_type::boolean) {
-      auto d = decimal_from_double(static_cast<double>(v));
-      if (!d) return d.error();
-      return encode(e, num::d(d.value()), out, order);
-    }
-    return encode(e, num::f(static_cast<double>(v)), out, order);
+[[nodiscard]] constexpr result<number> to_number(const entry &e, T v) noexcept {
+  if constexpr (std::is_enum_v<T>) {
+    return to_number(e, static_cast<std::underlying_type_t<T>>(v));
+  } else if constexpr (std::same_as<T, float>) {
+    // a float is the float it is: its own bits for REAL32, otherwise its shortest round-trip
+    // decimal (90.73f is 90.73, not the 90.7300033569336 widening to double gives)
+    if (e.type == data_type::real32) return real_number(static_cast<double>(v));
+    FIELDCODEC_TRY(const decimal d, decimal_from_float(v));
+    return decimal_number(d);
+  } else if constexpr (std::same_as<T, double>) {
+    if (is_real(e.type)) return real_number(v);
+    FIELDCODEC_TRY(const decimal d, decimal_from_double(v));
+    return decimal_number(d);
   } else if constexpr (std::is_signed_v<T>) {
-    return encode(e, num::i(static_cast<std::int64_t>(v)), out, order);
+    return signed_number(static_cast<std::int64_t>(v));
   } else {
-    return encode(e, num::u(static_cast<std::uint64_t>(v)), out, order);
+    return unsigned_number(static_cast<std::uint64_t>(v));
   }
 }
 
-/// Typed form of decode. Errors: those of decode, overflow when the value does not fit T,
-/// not_representable when a real value is asked for as an integer.
+/// Typed form of encode: any value_type, checked against the entry's type, field and limits.
 template <value_type T>
-[[nodiscard]] constexpr result<T> decode(const entry &e, std::span<const std::uint8_t> in,
-                                         byte_order order = byte_order::little,
-                                         limits lim = limits::check) noexcept {
-  auto n = decode(e, in, order, lim);
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, T v, std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little,
+                                                   std::uint8_t node = any_node) noexcept {
+  auto n = to_number(e, v);
   if (!n) return n.error();
-  const number v = n.value();
-  if constexpr (std::floating_point<T>) {
+  return detail::encode(e, nullptr, n.value(), out, order, node);
+}
+template <value_type T>
+[[nodiscard]] constexpr result<std::size_t>
+encode(const descriptor &d, T v, std::span<std::uint8_t> out, byte_order order = byte_order::little,
+       std::uint8_t node = any_node) noexcept {
+  auto n = to_number(d, v);
+  if (!n) return n.error();
+  return detail::encode(d, &d.scale, n.value(), out, order, node);
+}
+
+namespace detail {
+/// A decoded number as T. Errors: overflow when the value does not fit T, not_representable when
+/// a real value is asked for as an integer.
+template <value_type T>
+[[nodiscard]] constexpr result<T> number_as(number v) noexcept {
+  if constexpr (std::is_enum_v<T>) {
+    auto u = number_as<std::underlying_type_t<T>>(v);
+    if (!u) return u.error();
+    return static_cast<T>(u.value());
+  } else if constexpr (std::floating_point<T>) {
     return static_cast<T>(v.to_double());
   } else {
     if (v.kind == number_kind::real) return errc::not_representable;
@@ -299,6 +454,70 @@ template <value_type T>
     }
     return static_cast<T>(i);
   }
+}
+} // namespace detail
+
+/// Typed form of decode. Errors: those of decode, overflow when the value does not fit T,
+/// not_representable when a real value is asked for as an integer.
+template <value_type T>
+[[nodiscard]] constexpr result<T>
+decode(const entry &e, std::span<const std::uint8_t> in, byte_order order = byte_order::little,
+       limits lim = limits::check, std::uint8_t node = any_node) noexcept {
+  auto n = detail::decode(e, nullptr, in, order, lim, node);
+  if (!n) return n.error();
+  return detail::number_as<T>(n.value());
+}
+template <value_type T>
+[[nodiscard]] constexpr result<T>
+decode(const descriptor &d, std::span<const std::uint8_t> in, byte_order order = byte_order::little,
+       limits lim = limits::check, std::uint8_t node = any_node) noexcept {
+  auto n = detail::decode(d, &d.scale, in, order, lim, node);
+  if (!n) return n.error();
+  return detail::number_as<T>(n.value());
+}
+
+// --- object + sub-index ------------------------------------------------------------------------
+
+/// encode of sub-object `sub` of an ARRAY/RECORD view (its descriptor: limits of scaled
+/// entries are checked too). Errors: unknown_object (no such sub-index), those of encode.
+template <class V>
+requires value_type<V> || std::same_as<V, number>
+[[nodiscard]] constexpr result<std::size_t> encode(const object &o, std::uint8_t sub, V v,
+                                                   std::span<std::uint8_t> out,
+                                                   byte_order order = byte_order::little,
+                                                   std::uint8_t node = any_node) noexcept {
+  auto d = o.at(sub);
+  if (!d) return d.error();
+  return encode(d.value(), v, out, order, node);
+}
+/// An object without a sub-index does not say which value is meant: a compile error that says so.
+template <class V>
+constexpr result<std::size_t> encode(const object &, V, std::span<std::uint8_t>,
+                                     byte_order = byte_order::little) noexcept {
+  static_assert(detail::always_false<V>,
+                "od::encode of an od::object needs the sub-index: od::encode(object, sub, value, "
+                "out) or od::encode(object[sub], value, out)");
+  return errc::invalid_argument;
+}
+
+/// decode of sub-object `sub` of an ARRAY/RECORD view. Errors: unknown_object, those of decode.
+[[nodiscard]] constexpr result<number> decode(const object &o, std::uint8_t sub,
+                                              std::span<const std::uint8_t> in,
+                                              byte_order order = byte_order::little,
+                                              limits lim = limits::check,
+                                              std::uint8_t node = any_node) noexcept {
+  auto d = o.at(sub);
+  if (!d) return d.error();
+  return decode(d.value(), in, order, lim, node);
+}
+template <value_type T>
+[[nodiscard]] constexpr result<T>
+decode(const object &o, std::uint8_t sub, std::span<const std::uint8_t> in,
+       byte_order order = byte_order::little, limits lim = limits::check,
+       std::uint8_t node = any_node) noexcept {
+  auto d = o.at(sub);
+  if (!d) return d.error();
+  return decode<T>(d.value(), in, order, lim, node);
 }
 
 /// Copy a byte-string value (VISIBLE_STRING, OCTET_STRING, UNICODE_STRING, DOMAIN) to `out`.

@@ -1,0 +1,932 @@
+// fieldcodec CLI — the subcommands.
+#include "app.hpp"
+
+#include "can_decoder.hpp"
+#include "dictionary.hpp"
+#include "pacontrol_decoder.hpp"
+#include "readers.hpp"
+#include "util.hpp"
+#include "values.hpp"
+
+#include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/pacontrol_link.hpp>
+#include <fieldcodec/host/sdo.hpp>
+#include <fieldcodec/host/slcan.hpp>
+#include <fieldcodec/host/socketcan_bus.hpp>
+#include <fieldcodec/od/value.hpp>
+#include <fieldcodec/pacontrol/codes.hpp>
+#include <fieldcodec/pacontrol/command.hpp>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <istream>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <set>
+#include <sstream>
+
+namespace fieldcodec::cli {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// help texts
+
+constexpr const char *main_help = R"(usage: fieldcodec COMMAND [ARGS] [OPTIONS]
+
+Decode CANopen and PA-CONTROL traffic, read and write CANopen objects.
+
+commands:
+  decode          a candump log (or a PA-CONTROL capture) to one readable line per frame
+  monitor         decode the live traffic of a CAN interface
+  sdo read        read an object of a node (SDO upload)
+  sdo write       write an object of a node (SDO download)
+  nmt             send an NMT command
+  dump            read every readable object of a node into a DCF
+  pacontrol send  send a command to a PA-CONTROL over RS232 and show the answer
+
+'fieldcodec COMMAND --help' describes a command. Exit status: 0 success, 1 the device
+refused or did not answer, 2 usage error, 3 a file, interface or port failed, 4 decode input
+that could not be decoded, 5 a dictionary could not be read.
+)";
+
+constexpr const char *transport_help = R"(
+transport (one of):
+  --can IFACE         a SocketCAN interface (can0, vcan0)
+  --slcan PORT        an slcan (LAWICEL) adapter on a serial port (/dev/ttyACM0)
+  --bitrate BPS       slcan bit rate: 10000 20000 50000 100000 125000 250000
+                      500000 (default) 800000 1000000
+  --slcan-no-answers  do not wait for the adapter's answers to C/Sn/O (a peer that
+                      does not answer commands, e.g. another slcan host)
+)";
+
+constexpr const char *decode_help = R"(usage: fieldcodec decode [FILE] [OPTIONS]
+
+Reads a candump log (FILE, or standard input when FILE is '-' or missing) and
+writes one line per frame: NMT, SYNC, TIME, EMCY, PDO, heartbeat, node guarding,
+and one line per SDO transfer (expedited, segmented and block transfers are
+reassembled; aborts are spelled out). With a dictionary, objects are named and
+values shown in engineering units; PDOs are unpacked by the mapping the
+dictionary or the log's own SDO writes define.
+
+Log lines: (1700000000.123456) can0 605#2B00180564000000, or 605#2B001805...,
+705#R; blank lines and lines starting with '#' are skipped.
+
+options:
+  --dict [NODE=]FILE  object dictionary (.eds, .dcf, .csv) of node NODE (1..127),
+                      or of every node without its own when NODE= is left out
+  --device NODE=KIND  device family of a node: generic, ds402, xenax, dpq
+                      (default: from the dictionary)
+  --json              one JSON object per line instead of text
+  --sdo-frames        also one line per SDO frame
+  --pacontrol         the input is a PA-CONTROL RS232 capture instead
+  --hex / --raw       the capture is hex text / raw bytes (default: detected)
+
+exit status: 0, or 4 when some input could not be decoded, 3 unreadable file,
+5 unreadable dictionary.
+)";
+
+constexpr const char *monitor_help =
+    R"(usage: fieldcodec monitor (--can IFACE | --slcan PORT) [OPTIONS]
+
+Decodes the live traffic of an interface, as 'decode' does for a log, until
+interrupted (Ctrl-C), or after --count frames or --duration seconds.
+
+options:
+  --dict [NODE=]FILE, --device NODE=KIND, --json, --sdo-frames   as for decode
+  --count N           stop after N frames
+  --duration S        stop after S seconds
+  --log FILE          also write the frames to FILE as a candump log
+)";
+
+constexpr const char *sdo_read_help =
+    R"(usage: fieldcodec sdo read NODE INDEX[:SUB] (--can IFACE | --slcan PORT) [OPTIONS]
+
+Reads one object of node NODE (1..127) with an SDO upload and prints it:
+  1018h:01 Identity Object: Vendor Id = 0x0000012E
+INDEX and SUB are hex (1018:1, 0x1018:01, 1018h:01).
+
+options:
+  --dict FILE         dictionary of the node: names, types, units, scales
+  --type T            type without a dictionary: u8 u16 u32 u64 i8 i16 i32 i64
+                      f32 f64 bool str hex (default: raw bytes)
+  --timeout MS        SDO timeout (default 1000)
+  --block             use block transfer
+  --switch-threshold N  with --block: let the node answer with a normal upload for
+                      objects of at most N bytes (0..127, default 0: never)
+  --json              print a JSON object
+)";
+
+constexpr const char *sdo_write_help =
+    R"(usage: fieldcodec sdo write NODE INDEX[:SUB] VALUE (--can IFACE | --slcan PORT) [OPTIONS]
+
+Writes VALUE to one object of node NODE with an SDO download. VALUE is read in the
+object's type: integers in decimal or 0x hex (in engineering units when the
+dictionary gives a scale), reals, text for strings, hex bytes for OCTET_STRING
+and DOMAIN.
+
+options:
+  --dict FILE         dictionary of the node (types, scales)
+  --type T            type without a dictionary: u8 u16 u32 u64 i8 i16 i32 i64
+                      f32 f64 bool str hex
+  --timeout MS        SDO timeout (default 1000)
+  --block             use block transfer
+)";
+
+constexpr const char *nmt_help = R"(usage: fieldcodec nmt COMMAND NODE (--can IFACE | --slcan PORT)
+
+Sends an NMT command to NODE (1..127) or to all nodes (NODE = all or 0).
+COMMAND: start, stop, pre-operational, reset-node, reset-communication.
+)";
+
+constexpr const char *dump_help =
+    R"(usage: fieldcodec dump NODE --dict FILE (--can IFACE | --slcan PORT) [OPTIONS]
+
+Reads every readable object of the dictionary from node NODE and writes a DCF:
+the dictionary with the values found as ParameterValue. Objects the node refuses
+are listed on standard error and left without a value. A progress line goes to
+standard error while it runs.
+
+options:
+  -o, --output FILE   the DCF (default: standard output)
+  --timeout MS        SDO timeout per object (default 1000)
+  --block             use block transfer
+  --progress          show the progress line also when standard error is no terminal
+  --quiet             no progress line
+)";
+
+constexpr const char *pacontrol_send_help =
+    R"(usage: fieldcodec pacontrol send PORT COMMAND [PARAMETER [DATE]] [OPTIONS]
+
+Sends one command to a PA-CONTROL over its RS232 command interface and prints
+the acknowledgement. COMMAND is a name of the command table (cmd_get_int_reg) or
+its code in hex (1906); 'poll' sends the poll (EOT).
+
+options:
+  --baud N            (default 9600; the manual's line settings are 9600 7N1)
+  --data-bits 7|8     (default 7)
+  --parity none|even|odd   (default none)
+  --stop-bits 1|2     (default 1)
+  --rts-cts           hardware flow control (switch settings 5-8)
+  --timeout MS        (default 1000)
+  --json              print a JSON object
+
+exit status: 0, 1 when the control answers with a command error (QUIT) or not
+at all, 3 when the port cannot be used.
+)";
+
+// ---------------------------------------------------------------------------------------------
+// command line
+
+struct options {
+  std::vector<std::string> positional;
+  std::multimap<std::string, std::string> values;
+  std::set<std::string> flags;
+
+  [[nodiscard]] bool has(const std::string &f) const { return flags.count(f) != 0U; }
+  [[nodiscard]] std::string get(const std::string &k, std::string fallback = {}) const {
+    auto it = values.find(k);
+    return it == values.end() ? fallback : it->second;
+  }
+  [[nodiscard]] bool given(const std::string &k) const { return values.count(k) != 0U; }
+};
+
+/// Parses `args` from `first` on. `with_value`: options that take a value.
+bool parse_options(const std::vector<std::string> &args, std::size_t first,
+                   const std::set<std::string> &with_value, const std::set<std::string> &flags,
+                   options &out, std::string &error) {
+  for (std::size_t i = first; i < args.size(); ++i) {
+    const std::string &a = args[i];
+    if (a == "-" || a.empty() || a[0] != '-' || (a.size() > 1U && a[1] >= '0' && a[1] <= '9')) {
+      out.positional.push_back(a);
+      continue;
+    }
+    std::string name = a;
+    std::string value;
+    bool inline_value = false;
+    if (const auto eq = a.find('='); eq != std::string::npos && a.rfind("--", 0) == 0) {
+      name = a.substr(0, eq);
+      value = a.substr(eq + 1U);
+      inline_value = true;
+    }
+    if (name == "-o") name = "--output";
+    if (name == "-h") name = "--help";
+    if (with_value.count(name) != 0U) {
+      if (!inline_value) {
+        if (i + 1U >= args.size()) {
+          error = name + " needs a value";
+          return false;
+        }
+        value = args[++i];
+      }
+      out.values.emplace(name, value);
+    } else if (flags.count(name) != 0U || name == "--help") {
+      if (inline_value) {
+        error = name + " takes no value";
+        return false;
+      }
+      out.flags.insert(name);
+    } else {
+      error = "unknown option " + name;
+      return false;
+    }
+  }
+  return true;
+}
+
+const std::set<std::string> transport_values = {"--can", "--slcan", "--bitrate"};
+const std::set<std::string> transport_flags = {"--slcan-no-answers"};
+
+std::set<std::string> join(std::set<std::string> a, const std::set<std::string> &b) {
+  a.insert(b.begin(), b.end());
+  return a;
+}
+
+struct context {
+  std::istream &in;
+  std::ostream &out;
+  std::ostream &err;
+  std::string command; ///< "sdo read", for error lines
+  int fail(int code, const std::string &what) const {
+    err << "fieldcodec: " << command << ": " << what << "\n";
+    return code;
+  }
+  int usage(const std::string &what) const {
+    err << "fieldcodec: " << command << ": " << what << " (try 'fieldcodec " << command
+        << " --help')\n";
+    return exit_usage;
+  }
+};
+
+bool parse_node(const std::string &s, bool allow_all, std::uint8_t &node) {
+  if (allow_all && (s == "all" || s == "0")) {
+    node = 0;
+    return true;
+  }
+  std::uint64_t v = 0;
+  if (!parse_uint(s, 127, v) || v == 0U) return false;
+  node = static_cast<std::uint8_t>(v);
+  return true;
+}
+
+/// Opens the bus the options name. Returns null (and prints the error) on failure.
+std::unique_ptr<host::can_bus> open_bus(const options &o, const context &c, int &code) {
+  code = exit_ok;
+  const bool can = o.given("--can");
+  const bool slcan = o.given("--slcan");
+  if (can == slcan) {
+    code = c.usage("give one of --can IFACE or --slcan PORT");
+    return nullptr;
+  }
+  if (can) {
+#ifdef FIELDCODEC_HAS_SOCKETCAN
+    auto bus = std::make_unique<host::socketcan_bus>();
+    if (!bus->open(o.get("--can"))) {
+      code = c.fail(exit_io, bus->last_error().what);
+      return nullptr;
+    }
+    return bus;
+#else
+    code = c.fail(exit_io, "SocketCAN is not available on this system");
+    return nullptr;
+#endif
+  }
+  std::uint64_t bitrate = 500000;
+  if (o.given("--bitrate") && !parse_uint(o.get("--bitrate"), 1000000, bitrate)) {
+    code = c.usage("bad --bitrate " + o.get("--bitrate"));
+    return nullptr;
+  }
+  auto bus = std::make_unique<host::slcan_bus>();
+  host::slcan_options so;
+  so.check_answers = !o.has("--slcan-no-answers");
+  if (!bus->open(o.get("--slcan"), static_cast<std::uint32_t>(bitrate), so)) {
+    code = c.fail(bus->last_error().code == errc::invalid_argument &&
+                          bus->last_error().what.find("bit rate") != std::string::npos
+                      ? exit_usage
+                      : exit_io,
+                  bus->last_error().what);
+    return nullptr;
+  }
+  return bus;
+}
+
+/// Loads the --dict options: "NODE=FILE" or "FILE" (every node, stored at 0).
+bool load_dictionaries(const options &o, const context &c,
+                       std::map<std::uint8_t, node_dictionary> &dicts,
+                       std::map<std::uint8_t, device_family> &families, int &code) {
+  code = exit_ok;
+  for (auto [it, end] = o.values.equal_range("--dict"); it != end; ++it) {
+    std::string spec = it->second;
+    std::uint8_t node = 0;
+    const auto eq = spec.find('=');
+    if (eq != std::string::npos) {
+      if (!parse_node(spec.substr(0, eq), false, node)) {
+        code = c.usage("bad node in --dict " + spec);
+        return false;
+      }
+      spec = spec.substr(eq + 1U);
+    }
+    std::string error;
+    auto d = node_dictionary::load(spec, node, error);
+    if (!d) {
+      code = c.fail(exit_dictionary, error);
+      return false;
+    }
+    dicts.insert_or_assign(node, std::move(*d));
+  }
+  for (auto [it, end] = o.values.equal_range("--device"); it != end; ++it) {
+    const std::string &spec = it->second;
+    const auto eq = spec.find('=');
+    std::uint8_t node = 0;
+    device_family f{};
+    if (eq == std::string::npos || !parse_node(spec.substr(0, eq), false, node) ||
+        !parse_family(spec.substr(eq + 1U), f)) {
+      code = c.usage("bad --device " + spec + " (NODE=generic|ds402|xenax|dpq)");
+      return false;
+    }
+    families[node] = f;
+  }
+  return true;
+}
+
+bool read_stream(std::istream &in, std::string &out) {
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return !in.bad();
+}
+
+void print_lines(const std::vector<decoded_line> &lines, bool json, std::ostream &out) {
+  for (const auto &l : lines) out << (json ? render_json(l) : render_text(l)) << "\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// decode
+
+int cmd_decode(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, {"--dict", "--device"},
+                     {"--json", "--sdo-frames", "--pacontrol", "--hex", "--raw"}, o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << decode_help;
+    return exit_ok;
+  }
+  if (o.positional.size() > 1U) return c.usage("one input file at most");
+  const std::string file = o.positional.empty() ? "-" : o.positional[0];
+  std::ifstream in_file;
+  if (file != "-") {
+    in_file.open(file, std::ios::binary);
+    if (!in_file) return c.fail(exit_io, file + ": cannot open");
+  }
+  std::istream &in = file == "-" ? c.in : in_file;
+  const bool json = o.has("--json");
+  bool problems = false;
+  if (o.has("--pacontrol")) {
+    std::string input;
+    if (!read_stream(in, input)) return c.fail(exit_io, file + ": cannot read");
+    std::vector<std::uint8_t> bytes;
+    const bool hex = o.has("--hex") || (!o.has("--raw") && looks_like_hex(input));
+    if (hex) {
+      if (!parse_hex_capture(input, bytes, error)) return c.fail(exit_input, file + ": " + error);
+    } else {
+      bytes.assign(input.begin(), input.end());
+    }
+    const auto lines = decode_pacontrol(bytes);
+    print_lines(lines, json, c.out);
+    for (const auto &l : lines) {
+      problems = problems || l.function == "MALFORMED" || l.function == "NOISE" ||
+                 l.function == "TRUNCATED" ||
+                 (l.problem && l.json.text().find("bad checksum") != std::string::npos);
+    }
+    return problems ? exit_input : exit_ok;
+  }
+  if (o.has("--hex") || o.has("--raw")) return c.usage("--hex and --raw go with --pacontrol");
+  std::map<std::uint8_t, node_dictionary> dicts;
+  std::map<std::uint8_t, device_family> families;
+  int code = exit_ok;
+  if (!load_dictionaries(o, c, dicts, families, code)) return code;
+  can_decoder dec(std::move(dicts), std::move(families), {o.has("--sdo-frames")});
+  std::vector<decoded_line> lines;
+  std::size_t n = 0;
+  // line by line, so that `candump -L can0 | fieldcodec decode` shows frames as they come
+  std::string line;
+  while (std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string_view raw = line;
+    if (host::candump::is_blank_or_comment(raw)) continue;
+    auto r = host::candump::parse_line(raw);
+    if (!r) {
+      dec.malformed(raw, r.error(), n, lines);
+      problems = true;
+    } else {
+      dec.feed(r.value(), n, lines);
+    }
+    print_lines(lines, json, c.out);
+    if (file == "-") c.out.flush();
+    lines.clear();
+  }
+  if (in.bad()) return c.fail(exit_io, file + ": cannot read");
+  dec.finish(lines);
+  problems = problems || !lines.empty();
+  print_lines(lines, json, c.out);
+  return problems ? exit_input : exit_ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// monitor
+
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void on_interrupt(int) { interrupted = 1; }
+
+int cmd_monitor(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(
+          args, 1, join({"--dict", "--device", "--count", "--duration", "--log"}, transport_values),
+          join({"--json", "--sdo-frames"}, transport_flags), o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << monitor_help << transport_help;
+    return exit_ok;
+  }
+  if (!o.positional.empty()) return c.usage("unexpected argument " + o.positional[0]);
+  std::uint64_t count = 0;
+  std::uint64_t duration = 0;
+  if (o.given("--count") && !parse_uint(o.get("--count"), ~std::uint64_t{0}, count)) {
+    return c.usage("bad --count");
+  }
+  if (o.given("--duration") && !parse_uint(o.get("--duration"), 1U << 30U, duration)) {
+    return c.usage("bad --duration");
+  }
+  std::map<std::uint8_t, node_dictionary> dicts;
+  std::map<std::uint8_t, device_family> families;
+  int code = exit_ok;
+  if (!load_dictionaries(o, c, dicts, families, code)) return code;
+  std::ofstream log;
+  if (o.given("--log")) {
+    log.open(o.get("--log"));
+    if (!log) return c.fail(exit_io, o.get("--log") + ": cannot write");
+  }
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  can_decoder dec(std::move(dicts), std::move(families), {o.has("--sdo-frames")});
+  const bool json = o.has("--json");
+  interrupted = 0;
+  auto old = std::signal(SIGINT, on_interrupt);
+  const auto start = std::chrono::steady_clock::now();
+  std::uint64_t frames = 0;
+  std::vector<decoded_line> lines;
+  int result = exit_ok;
+  while (interrupted == 0 && (count == 0U || frames < count)) {
+    if (duration != 0U &&
+        std::chrono::steady_clock::now() - start >= std::chrono::seconds(duration)) {
+      break;
+    }
+    auto r = bus->receive_record(std::chrono::milliseconds(100));
+    if (!r) {
+      if (r.error() == errc::timeout) continue;
+      result = c.fail(exit_io, bus->last_error().what);
+      break;
+    }
+    ++frames;
+    if (log) log << host::candump::format_line(r.value()) << "\n" << std::flush;
+    dec.feed(r.value(), 0, lines);
+    print_lines(lines, json, c.out);
+    c.out.flush();
+    lines.clear();
+  }
+  std::signal(SIGINT, old);
+  dec.finish(lines);
+  print_lines(lines, json, c.out);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// sdo read / write
+
+struct sdo_target {
+  std::uint8_t node = 0;
+  od::address a{};
+  std::optional<node_dictionary> dict;
+  const object_desc *desc = nullptr;
+};
+
+int sdo_common(const std::vector<std::string> &args, context &c, bool write, options &o,
+               sdo_target &t, host::sdo_options &so) {
+  std::string error;
+  if (!parse_options(
+          args, 2, join({"--dict", "--type", "--timeout", "--switch-threshold"}, transport_values),
+          join({"--block", "--json"}, transport_flags), o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << (write ? sdo_write_help : sdo_read_help) << transport_help;
+    return -1;
+  }
+  const std::size_t want = write ? 3U : 2U;
+  if (o.positional.size() != want) {
+    return c.usage(write ? "expected NODE INDEX[:SUB] VALUE" : "expected NODE INDEX[:SUB]");
+  }
+  if (!parse_node(o.positional[0], false, t.node)) {
+    return c.usage("bad node '" + o.positional[0] + "' (1..127)");
+  }
+  if (!parse_address(o.positional[1], t.a)) {
+    return c.usage("bad object '" + o.positional[1] + "' (INDEX[:SUB] in hex, e.g. 1018:1)");
+  }
+  std::uint64_t timeout = 1000;
+  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
+    return c.usage("bad --timeout");
+  }
+  so.timeout = std::chrono::milliseconds(timeout);
+  so.block = o.has("--block");
+  if (o.given("--switch-threshold")) {
+    std::uint64_t pst = 0;
+    if (!parse_uint(o.get("--switch-threshold"), 127, pst))
+      return c.usage("bad --switch-threshold");
+    so.block_options.switch_threshold = static_cast<std::uint8_t>(pst);
+  }
+  if (o.given("--dict")) {
+    t.dict = node_dictionary::load(o.get("--dict"), t.node, error);
+    if (!t.dict) return c.fail(exit_dictionary, error);
+    t.desc = t.dict->find(t.a);
+    if (t.desc == nullptr) {
+      return c.fail(exit_failed, "node " + std::to_string(t.node) + ", " + address_text(t.a) +
+                                     ": not in " + o.get("--dict"));
+    }
+  }
+  return exit_ok;
+}
+
+int cmd_sdo_read(const std::vector<std::string> &args, context c) {
+  options o;
+  sdo_target t;
+  host::sdo_options so;
+  if (const int r = sdo_common(args, c, false, o, t, so); r != exit_ok) {
+    return r < 0 ? exit_ok : r;
+  }
+  int code = exit_ok;
+  parsed_value typed; // only to validate --type early
+  const std::string type = o.get("--type");
+  if (t.desc == nullptr && !type.empty()) {
+    typed = parse_value(nullptr, type, "0");
+    if (!typed.ok && typed.error.rfind("unknown type", 0) == 0) return c.usage(typed.error);
+  }
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  host::sdo_session s(*bus, t.node, so);
+  auto v = s.read(t.a);
+  if (!v) return c.fail(s.last_error().bus_failed ? exit_io : exit_failed, s.last_error().what);
+  const std::vector<std::uint8_t> bytes(v.value().begin(), v.value().end());
+  object_desc typed_desc;
+  const object_desc *d = t.desc;
+  if (d == nullptr && !type.empty()) {
+    // a dictionary entry made of the --type
+    typed = parse_value(nullptr, type, type == "str" || type == "hex" ? "" : "0");
+    typed_desc.core.index = t.a.index;
+    typed_desc.core.sub = t.a.sub;
+    static const std::map<std::string, od::data_type> types = {
+        {"u8", od::data_type::unsigned8},    {"u16", od::data_type::unsigned16},
+        {"u32", od::data_type::unsigned32},  {"u64", od::data_type::unsigned64},
+        {"i8", od::data_type::integer8},     {"i16", od::data_type::integer16},
+        {"i32", od::data_type::integer32},   {"i64", od::data_type::integer64},
+        {"f32", od::data_type::real32},      {"f64", od::data_type::real64},
+        {"bool", od::data_type::boolean},    {"str", od::data_type::visible_string},
+        {"hex", od::data_type::octet_string}};
+    typed_desc.core.type = types.at(type);
+    d = &typed_desc;
+  }
+  value_context ctx;
+  const device_family fam = t.dict ? t.dict->family() : device_family::generic;
+  auto f = format_value(d, t.a, bytes, fam, ctx);
+  const std::string name = t.desc != nullptr ? " " + t.desc->name : std::string();
+  if (o.has("--json")) {
+    json_object j;
+    j.num("node", t.node).unum("index", t.a.index).unum("sub", t.a.sub);
+    if (t.desc != nullptr) j.str("name", t.desc->name);
+    std::string s2 = j.text();
+    if (!f.json.empty()) {
+      s2.pop_back();
+      s2 += "," + f.json.text().substr(1);
+    }
+    c.out << s2 << "\n";
+  } else {
+    c.out << address_text(t.a) << name << " = " << f.text << "\n";
+  }
+  return exit_ok;
+}
+
+int cmd_sdo_write(const std::vector<std::string> &args, context c) {
+  options o;
+  sdo_target t;
+  host::sdo_options so;
+  if (const int r = sdo_common(args, c, true, o, t, so); r != exit_ok) {
+    return r < 0 ? exit_ok : r;
+  }
+  const auto v = parse_value(t.desc, o.get("--type"), o.positional[2]);
+  if (!v.ok) return c.usage(v.error);
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  host::sdo_session s(*bus, t.node, so);
+  if (!s.write(t.a, v.bytes)) {
+    return c.fail(s.last_error().bus_failed ? exit_io : exit_failed, s.last_error().what);
+  }
+  return exit_ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// nmt
+
+int cmd_nmt(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, transport_values, transport_flags, o, error)) return c.usage(error);
+  if (o.has("--help")) {
+    c.out << nmt_help << transport_help;
+    return exit_ok;
+  }
+  if (o.positional.size() != 2U) return c.usage("expected COMMAND NODE");
+  static const std::map<std::string, canopen::nmt::command> commands = {
+      {"start", canopen::nmt::command::start},
+      {"stop", canopen::nmt::command::stop},
+      {"pre-operational", canopen::nmt::command::enter_pre_operational},
+      {"reset-node", canopen::nmt::command::reset_node},
+      {"reset-communication", canopen::nmt::command::reset_communication}};
+  const auto cmd = commands.find(o.positional[0]);
+  if (cmd == commands.end()) {
+    return c.usage("unknown NMT command '" + o.positional[0] +
+                   "' (start, stop, pre-operational, reset-node, reset-communication)");
+  }
+  std::uint8_t node = 0;
+  if (!parse_node(o.positional[1], true, node))
+    return c.usage("bad node '" + o.positional[1] + "'");
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  if (!bus->send(canopen::nmt::encode(cmd->second, node).value())) {
+    return c.fail(exit_io, bus->last_error().what);
+  }
+  return exit_ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// dump
+
+int cmd_dump(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, join({"--dict", "--output", "--timeout"}, transport_values),
+                     join({"--block", "--progress", "--quiet"}, transport_flags), o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << dump_help << transport_help;
+    return exit_ok;
+  }
+  if (o.positional.size() != 1U) return c.usage("expected NODE");
+  std::uint8_t node = 0;
+  if (!parse_node(o.positional[0], false, node))
+    return c.usage("bad node '" + o.positional[0] + "'");
+  if (!o.given("--dict")) return c.usage("dump needs the node's dictionary (--dict FILE)");
+  std::uint64_t timeout = 1000;
+  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
+    return c.usage("bad --timeout");
+  }
+  auto dict = node_dictionary::load(o.get("--dict"), node, error);
+  if (!dict) return c.fail(exit_dictionary, error);
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  host::sdo_options so;
+  so.timeout = std::chrono::milliseconds(timeout);
+  so.block = o.has("--block");
+  host::sdo_session s(*bus, node, so);
+  gen::dictionary model = dict->model();
+  const bool progress = !o.has("--quiet") && (o.has("--progress") || ::isatty(STDERR_FILENO) != 0);
+  std::size_t readable = 0;
+  for (const auto &e : model.entries) readable += od::readable(e.access) ? e.count : 0U;
+  std::size_t done = 0;
+  std::size_t failed = 0;
+  std::vector<std::string> refused;
+  for (gen::entry &e : model.entries) {
+    if (!od::readable(e.access)) continue;
+    for (std::uint16_t k = 0; k < e.count; ++k) {
+      const od::address a{e.index, static_cast<std::uint8_t>(e.sub + k)};
+      ++done;
+      if (progress) {
+        c.err << "\rreading " << done << "/" << readable << " " << address_text(a) << "   "
+              << std::flush;
+      }
+      auto v = s.read(a);
+      if (!v) {
+        if (s.last_error().bus_failed) {
+          if (progress) c.err << "\n";
+          return c.fail(exit_io, s.last_error().what);
+        }
+        ++failed;
+        refused.push_back(s.last_error().what);
+        continue;
+      }
+      if (e.count != 1U) continue; // a compact run keeps no per-sub-index value
+      const object_desc *d = dict->find(a);
+      if (od::is_byte_string(e.type)) {
+        e.parameter_text.assign(v.value().begin(), v.value().end());
+        continue;
+      }
+      auto n = od::decode(d->core, v.value(), byte_order::little, od::limits::ignore);
+      if (!n) {
+        ++failed;
+        refused.push_back("node " + std::to_string(node) + ", " + address_text(a) + ": " +
+                          std::to_string(v.value().size()) + " bytes do not make a " +
+                          std::string(od::name(e.type)));
+        continue;
+      }
+      e.parameter_value = n.value();
+      e.parameter_nodeid = false;
+    }
+  }
+  if (progress) c.err << "\rread " << done - failed << " of " << readable << " objects\n";
+  for (const auto &r : refused) c.err << "fieldcodec: dump: " << r << "\n";
+  model.is_dcf = true;
+  model.node_id = node;
+  for (auto &[k, v] : model.commissioning) {
+    if (k == "NodeID") v = std::to_string(node);
+  }
+  const std::string dcf = gen::write_eds(model);
+  if (o.given("--output") && o.get("--output") != "-") {
+    std::ofstream f(o.get("--output"), std::ios::binary);
+    if (!f || !(f << dcf)) return c.fail(exit_io, o.get("--output") + ": cannot write");
+  } else {
+    c.out << dcf;
+  }
+  return exit_ok;
+}
+
+// ---------------------------------------------------------------------------------------------
+// pacontrol send
+
+int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
+  namespace cmds = dictionaries::pacontrol_commands;
+  options o;
+  std::string error;
+  if (!parse_options(args, 2, {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout"},
+                     {"--rts-cts", "--json"}, o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << pacontrol_send_help;
+    return exit_ok;
+  }
+  if (o.positional.size() < 2U || o.positional.size() > 4U) {
+    return c.usage("expected PORT COMMAND [PARAMETER [DATE]]");
+  }
+  host::line_settings line = host::pacontrol_line;
+  std::uint64_t v = 0;
+  if (o.given("--baud")) {
+    if (!parse_uint(o.get("--baud"), 4000000, v)) return c.usage("bad --baud");
+    line.baud = static_cast<std::uint32_t>(v);
+  }
+  if (o.given("--data-bits")) {
+    if (!parse_uint(o.get("--data-bits"), 8, v) || v < 5U) return c.usage("bad --data-bits");
+    line.data_bits = static_cast<std::uint8_t>(v);
+  }
+  if (o.given("--stop-bits")) {
+    if (!parse_uint(o.get("--stop-bits"), 2, v) || v < 1U) return c.usage("bad --stop-bits");
+    line.stop_bits = static_cast<std::uint8_t>(v);
+  }
+  if (o.given("--parity")) {
+    const std::string p = o.get("--parity");
+    if (p == "none") {
+      line.par = host::parity::none;
+    } else if (p == "even") {
+      line.par = host::parity::even;
+    } else if (p == "odd") {
+      line.par = host::parity::odd;
+    } else {
+      return c.usage("bad --parity " + p + " (none, even, odd)");
+    }
+  }
+  line.rts_cts = o.has("--rts-cts");
+  if (!host::check(line)) return c.usage("unsupported line settings (baud rate?)");
+  std::uint64_t timeout = 1000;
+  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
+    return c.usage("bad --timeout");
+  }
+  const std::string &name = o.positional[1];
+  const bool poll = name == "poll";
+  const od::command *cmd = nullptr;
+  pacontrol::serial::request req;
+  if (!poll) {
+    for (const auto &k : cmds::commands) {
+      if (k.name == name) cmd = &k;
+    }
+    if (cmd == nullptr) {
+      std::uint64_t code = 0;
+      if (parse_uint("0x" + name, 0xFFFF, code))
+        cmd = cmds::table.find(static_cast<std::uint16_t>(code));
+    }
+    if (cmd == nullptr) return c.usage("unknown PA-CONTROL command '" + name + "'");
+    std::uint64_t par = 0;
+    if (o.positional.size() > 2U && !parse_uint(o.positional[2], 0xFFFF, par)) {
+      return c.usage("bad parameter '" + o.positional[2] + "'");
+    }
+    const auto p = static_cast<std::uint16_t>(par);
+    result<pacontrol::serial::request> r = errc::invalid_argument;
+    if (o.positional.size() > 3U) {
+      const std::string &date = o.positional[3];
+      auto dec = parse_decimal(std::string_view(date));
+      if (!dec) return c.usage("bad date '" + date + "'");
+      if (pacontrol::request_date_type(*cmd) == od::command_value::real) {
+        auto val = pacontrol::value::of_real(dec.value());
+        if (!val) return c.usage("bad date '" + date + "'");
+        r = pacontrol::make_request(*cmd, p, val.value());
+      } else {
+        if (dec.value().places != 0U)
+          return c.usage("the date of " + std::string(cmd->name) + " is an integer");
+        r = pacontrol::make_request(*cmd, p, dec.value().mantissa);
+      }
+    } else {
+      r = pacontrol::make_request(*cmd, p);
+    }
+    if (!r) {
+      return c.usage(std::string(cmd->name) + ": " + std::string(to_string(r.error())) +
+                     " (parameter " + std::to_string(cmd->parameter_min.to_int64().value_or(0)) +
+                     ".." + std::to_string(cmd->parameter_max.to_int64().value_or(0)) + ")");
+    }
+    req = r.value();
+  }
+  host::pacontrol_link link;
+  if (!link.open(o.positional[0], line)) return c.fail(exit_io, link.last_error().what);
+  auto ack = poll ? link.poll(std::chrono::milliseconds(timeout))
+                  : link.transact(req, std::chrono::milliseconds(timeout));
+  if (!ack) {
+    return c.fail(link.last_error().code == errc::bad_state ? exit_io : exit_failed,
+                  link.last_error().what);
+  }
+  // the exchange, decoded as 'decode --pacontrol' shows it
+  std::vector<std::uint8_t> both(link.sent().begin(), link.sent().end());
+  both.insert(both.end(), link.received().begin(), link.received().end());
+  const auto lines = decode_pacontrol(both);
+  print_lines(lines, o.has("--json"), c.out);
+  if (ack.value().command_error_number != 0U) {
+    auto t = pacontrol::describe_command_error(ack.value().command_error_number);
+    return c.fail(exit_failed, o.positional[0] + ": " + name + ": command error " +
+                                   std::to_string(ack.value().command_error_number) + " (" +
+                                   std::string(t ? t.value() : "unknown") + ")");
+  }
+  return exit_ok;
+}
+
+} // namespace
+
+int run(const std::vector<std::string> &args, std::istream &in, std::ostream &out,
+        std::ostream &err) {
+  context c{in, out, err, ""};
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    (args.empty() ? err : out) << main_help;
+    return args.empty() ? exit_usage : exit_ok;
+  }
+  if (args[0] == "--version") {
+    out << "fieldcodec 0.1.0\n";
+    return exit_ok;
+  }
+  const std::string &cmd = args[0];
+  c.command = cmd;
+  if (cmd == "decode") return cmd_decode(args, c);
+  if (cmd == "monitor") return cmd_monitor(args, c);
+  if (cmd == "nmt") return cmd_nmt(args, c);
+  if (cmd == "dump") return cmd_dump(args, c);
+  if (cmd == "sdo" || cmd == "pacontrol") {
+    const std::string sub = args.size() > 1U ? args[1] : "";
+    if (cmd == "sdo" && (sub == "read" || sub == "write")) {
+      c.command = "sdo " + sub;
+      return sub == "read" ? cmd_sdo_read(args, c) : cmd_sdo_write(args, c);
+    }
+    if (cmd == "pacontrol" && sub == "send") {
+      c.command = "pacontrol send";
+      return cmd_pacontrol_send(args, c);
+    }
+    if (sub == "--help" || sub == "-h") {
+      out << (cmd == "sdo" ? std::string(sdo_read_help) + "\n" + sdo_write_help
+                           : std::string(pacontrol_send_help));
+      return exit_ok;
+    }
+    return c.usage(cmd == "sdo" ? "expected 'sdo read' or 'sdo write'"
+                                : "expected 'pacontrol send'");
+  }
+  err << "fieldcodec: unknown command '" << cmd << "' (try 'fieldcodec --help')\n";
+  return exit_usage;
+}
+
+} // namespace fieldcodec::cli

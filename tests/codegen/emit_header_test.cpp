@@ -1,0 +1,75 @@
+// The C++ emitter's shape (issue 14): the lean entry table, the parallel info and scale tables,
+// standalone descriptors for named sub-objects, object views, node-ID-relative limits as flags,
+// strings as "…"sv literals.
+#include "readers.hpp"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+namespace gen = fieldcodec::gen;
+
+namespace {
+
+std::string emit_eds(const std::string &eds) {
+  gen::diagnostics d;
+  auto dict = gen::read_eds(eds, "t.eds", d);
+  REQUIRE(dict.has_value());
+  dict->stem = "t";
+  dict->source_name = "t.eds";
+  return gen::emit_header(*dict);
+}
+
+bool has(const std::string &h, const std::string &s) { return h.find(s) != std::string::npos; }
+
+const std::string eds = "[FileInfo]\nFileName=t.eds\n[DeviceInfo]\nVendorName=v\n"
+                        "[MandatoryObjects]\nSupportedObjects=2\n1=0x1000\n2=0x1200\n"
+                        "[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x0007\n"
+                        "AccessType=ro\nDefaultValue=0x00020192\nPDOMapping=0\n"
+                        "[1200]\nParameterName=Server SDO parameter\nObjectType=0x9\n"
+                        "SubNumber=2\n"
+                        "[1200sub0]\nParameterName=Highest sub-index\nObjectType=0x7\n"
+                        "DataType=0x0005\nAccessType=ro\nDefaultValue=1\nPDOMapping=0\n"
+                        "[1200sub1]\nParameterName=COB-ID client to server\nObjectType=0x7\n"
+                        "DataType=0x0007\nAccessType=ro\nLowLimit=$NODEID+0x600\n"
+                        "HighLimit=$NODEID+0x600\nDefaultValue=$NODEID+0x600\nPDOMapping=0\n";
+
+} // namespace
+
+TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
+  const std::string h = emit_eds(eds);
+  CHECK(has(h, "using namespace std::string_view_literals;"));
+  CHECK(has(h, "inline constexpr std::array<od::entry, 3> entries{{"));
+  CHECK(has(h, "inline constexpr std::array<od::entry_info, 3> infos{{"));
+  CHECK_FALSE(has(h, "scales")); // no scaled entry: no scale table
+  CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos};"));
+  CHECK(has(h, "{.name = \"Device type\"sv}"));
+  // a VAR object and a named RECORD sub-object: standalone descriptors (copies of table rows)
+  CHECK(has(h, "inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000"));
+  CHECK(has(h, "inline constexpr od::object server_sdo_parameter{0x1200, "
+               "od::object_code::record, \"Server SDO parameter\"sv, {entries.data() + 1, 2}, "
+               "{infos.data() + 1, 2}};"));
+  CHECK(has(h, "inline constexpr od::descriptor server_sdo_parameter_cob_id_client_to_server{"
+               "entries[2], infos[2]}; // 0x1200 sub 1"));
+  // $NODEID+0x600 in LowLimit, HighLimit and DefaultValue: the number plus a flag each
+  CHECK(has(h, ".flags = od::flag::default_nodeid | od::flag::low_nodeid | "
+               "od::flag::high_nodeid, .low = od::unsigned_number(1536U), "
+               ".high = od::unsigned_number(1536U), .default_value = od::unsigned_number(1536U)"));
+}
+
+TEST_CASE("emit_header: scaled CSV rows get a scale table and the scaled flag") {
+  gen::diagnostics d;
+  auto dict = gen::read_csv("index,subindex,name,data_type,access,low,high,scale,unit\n"
+                            "0x2023,0,Inj. P Limit 1,UNSIGNED32,rw,0,5000,327.67,bar\n"
+                            "0x2024,0,Raw,UNSIGNED16,rw,,,,\n",
+                            "t.csv", d);
+  REQUIRE(dict.has_value());
+  dict->stem = "t";
+  const std::string h = gen::emit_header(*dict);
+  CHECK(has(h, "inline constexpr std::array<scaling::linear, 2> scales{{"));
+  CHECK(has(h, "    {{32767, 2}, {0, 0}},\n    {},\n"));
+  CHECK(has(h, ".flags = od::flag::scaled"));
+  CHECK(has(h, "{.name = \"Inj. P Limit 1\"sv, .unit = \"bar\"sv}"));
+  CHECK(has(h, "inline constexpr od::descriptor inj_p_limit_1{entries[0], infos[0], scales[0]};"));
+  CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos, scales};"));
+}
