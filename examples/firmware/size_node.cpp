@@ -15,9 +15,12 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace io = fieldcodec::dictionaries::io_node;
 
 namespace {
-constexpr auto layout = sdo::make_layout<io::entries.size()>(io::dictionary);
+// The node reads no names: a dictionary of the lean entries alone keeps the descriptive table
+// (io::infos, 14 kB here) out of the image.
+constexpr fieldcodec::od::dictionary dict{io::entries};
+constexpr auto layout = sdo::make_layout<io::entries.size()>(dict);
 constexpr node::capacity caps = [] {
-  node::capacity c = node::capacity_for(io::dictionary);
+  node::capacity c = node::capacity_for(dict);
   c.sdo_buffer = 64; // expedited and segmented of any size; block sub-blocks of 9 segments
   return c;
 }();
@@ -25,7 +28,7 @@ static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);
 
 using store_type = sdo::dictionary_store<>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
-store_type store{io::dictionary, layout, storage};
+store_type store{dict, layout, storage};
 node::device<store_type, caps> dev(store, 0x22);
 
 co::can_frame receive_frame() {
