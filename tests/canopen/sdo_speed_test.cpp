@@ -6,7 +6,9 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 
 namespace fc = fieldcodec;
@@ -15,18 +17,23 @@ namespace sdo = fieldcodec::canopen::sdo;
 
 namespace {
 
-// The command lookup before issue 18: the first command of the table that matches.
-const sdo::detail::command *reference_command_for(sdo::direction d, std::uint8_t byte0) {
-  for (const auto &c : sdo::detail::commands) {
-    if (c.dir == d && (byte0 & c.mask) == c.bits) return &c;
+// The command lookup before issue 18: the position of the first command of the table that
+// matches, std::size(commands) when none does.
+std::size_t reference_command_for(sdo::direction d, std::uint8_t byte0) {
+  std::size_t i = 0;
+  while (i < std::size(sdo::detail::commands) &&
+         !(sdo::detail::commands[i].dir == d &&
+           (byte0 & sdo::detail::commands[i].mask) == sdo::detail::commands[i].bits)) {
+    ++i;
   }
-  return nullptr;
+  return i;
 }
 
 // decode(payload, direction) before issue 18, verbatim but for the names.
 fc::result<sdo::message> reference_decode(const sdo::payload &p, sdo::direction d) {
-  const sdo::detail::command *c = reference_command_for(d, p[0]);
-  if (c == nullptr) return fc::errc::unknown_command;
+  const std::size_t ci = reference_command_for(d, p[0]);
+  if (ci == std::size(sdo::detail::commands)) return fc::errc::unknown_command;
+  const sdo::detail::command *c = &sdo::detail::commands[ci];
   sdo::message m;
   m.type = c->type;
   const unsigned b0 = p[0];
