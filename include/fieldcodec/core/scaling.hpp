@@ -121,7 +121,9 @@ struct range {
   return raw;
 }
 
-namespace binary {
+// Implementation of to_raw from a double or a float (not public API: a separate name, because
+// `detail::` inside `scaling` must keep meaning fieldcodec::detail).
+namespace binary_detail {
 /// A decimal of at most 18 places as the nearest double, within 2.3e-16 of its value
 /// (an exact power of ten, at most two roundings).
 [[nodiscard]] constexpr double decimal_to_double(decimal d) noexcept {
@@ -203,9 +205,9 @@ namespace binary {
   raw = sign > 0 ? m : (sign < 0 ? -m : (y < 0.0 ? -m : m));
   return true;
 }
-} // namespace binary
+} // namespace binary_detail
 
-namespace binary {
+namespace binary_detail {
 // The exact paths, out of line: the fast path stays small where it is inlined.
 [[gnu::noinline]] constexpr result<std::int64_t> to_raw_exact(double eu, linear s, field f,
                                                               bool ranged, range r) noexcept {
@@ -228,25 +230,25 @@ template <class Binary>
   }
   return to_raw_exact(eu, s, f, ranged, r);
 }
-} // namespace binary
+} // namespace binary_detail
 
 /// The same from a double, read with 15 significant digits (see the header comment).
 /// Errors: also not_representable (NaN, ∞, |eu| ≥ 9e18).
 [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f,
                                                     range r) noexcept {
-  return binary::to_raw(eu, s, f, true, r);
+  return binary_detail::to_raw(eu, s, f, true, r);
 }
 [[nodiscard]] constexpr result<std::int64_t> to_raw(double eu, linear s, field f) noexcept {
-  return binary::to_raw(eu, s, f, false, {});
+  return binary_detail::to_raw(eu, s, f, false, {});
 }
 
 /// The same from a float, read as its shortest round-trip decimal (90.73f is 90.73).
 /// Errors: also not_representable (NaN, ∞, |eu| > 9.2e18).
 [[nodiscard]] constexpr result<std::int64_t> to_raw(float eu, linear s, field f, range r) noexcept {
-  return binary::to_raw(eu, s, f, true, r);
+  return binary_detail::to_raw(eu, s, f, true, r);
 }
 [[nodiscard]] constexpr result<std::int64_t> to_raw(float eu, linear s, field f) noexcept {
-  return binary::to_raw(eu, s, f, false, {});
+  return binary_detail::to_raw(eu, s, f, false, {});
 }
 
 /// An integer engineering value, exactly (any integer type; bool is refused at compile time).
