@@ -431,7 +431,15 @@ inline constexpr std::array<std::uint8_t, op_count> family_index = [] {
   return t;
 }();
 
+// Built for size (-Os, firmware), the two lookups scan `families` as before instead: the tables
+// cost 280 bytes of flash, the scan finds the same entry (tests/compax/nx_lookup_test.cpp).
 [[nodiscard]] constexpr const family *find_family(op o) noexcept {
+#ifdef __OPTIMIZE_SIZE__
+  for (const auto &f : families) {
+    if (f.o == o) return &f;
+  }
+  return nullptr;
+#endif
   const auto k = static_cast<std::size_t>(o);
   if (k >= op_count) return nullptr;
   const std::uint8_t i = family_index[k];
@@ -470,6 +478,18 @@ inline constexpr std::array<std::uint8_t, 256> code_index = [] {
 
 /// Command code → family and argument form (for the single-argument families), in one load.
 [[nodiscard]] constexpr result<decoded_code> find_code(std::uint8_t code) noexcept {
+#ifdef __OPTIMIZE_SIZE__
+  for (const auto &f : families) {
+    if (code == f.code) return decoded_code{&f, arg_kind::value};
+    if (f.has_forms && code == (f.code | parameter_flag)) {
+      return decoded_code{&f, arg_kind::parameter};
+    }
+    if (f.has_forms && code == (f.code | variable_flag)) {
+      return decoded_code{&f, arg_kind::variable};
+    }
+  }
+  return errc::unknown_command;
+#endif
   const std::uint8_t e = code_index[code];
   if (e == no_family) return errc::unknown_command;
   constexpr arg_kind forms[3] = {arg_kind::value, arg_kind::parameter, arg_kind::variable};
