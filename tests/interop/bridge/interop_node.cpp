@@ -1,0 +1,299 @@
+// The fieldcodec side of the interoperability test (tests/interop/, docs/canopen.md
+// "Interoperability"): a CANopen node and an SDO client built from the library's machines,
+// speaking candump-style frames on standard input and output so that a python-can virtual bus
+// (python canopen, tests/interop/interop_peer.py) can carry them.
+//
+// usage: interop_node DICTIONARY NODE      DICTIONARY: xenax | corpus
+//
+// Standard input, one line each:
+//   ID#DATA, ID#R, ID#R<dlc>                      a frame from the bus
+//   !upload NODE INDEX SUB MODE                   the SDO client reads an object of NODE
+//   !download NODE INDEX SUB HEX MODE             … and writes one (HEX may be "-": 0 bytes)
+//        MODE: normal | block | block-nocrc
+//   !value INDEX SUB                              this node's store: the value of an object
+//   !set INDEX SUB HEX                            … the application writes a value
+//   !quit
+// Standard output: frames to the bus (ID#DATA) and one answer per command line:
+//   = ok HEX            = error ERRC ABORT(8 hex digits)
+//
+// The node glue (which machine gets which frame) is the part the library's node assembly
+// replaces (issue 15): `node_glue` below.
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/frame_record.hpp>
+#ifdef FIELDCODEC_INTEROP_CORPUS
+#include <fieldcodec/dictionaries/interop_corpus.hpp>
+#endif
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace od = fieldcodec::od;
+
+std::uint32_t now_ms() {
+  static const auto start = std::chrono::steady_clock::now();
+  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                        std::chrono::steady_clock::now() - start)
+                                        .count());
+}
+
+void put_line(const std::string &s) {
+  std::fputs(s.c_str(), stdout);
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+}
+
+void transmit(const co::can_frame &f) {
+  put_line(fieldcodec::host::candump::format_frame(fieldcodec::host::to_record(f)));
+}
+
+template <class Frames> void transmit_all(const Frames &fs) {
+  for (const co::can_frame f : fs) transmit(f);
+}
+
+std::string hex(std::span<const std::uint8_t> bytes) {
+  static constexpr char digits[] = "0123456789ABCDEF";
+  std::string out;
+  for (const std::uint8_t b : bytes) {
+    out += digits[b >> 4U];
+    out += digits[b & 0xFU];
+  }
+  return out;
+}
+
+std::optional<std::vector<std::uint8_t>> unhex(std::string_view s) {
+  if (s == "-") return std::vector<std::uint8_t>{};
+  if (s.size() % 2U != 0U) return std::nullopt;
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i < s.size(); i += 2U) {
+    unsigned v = 0;
+    for (std::size_t k = 0; k < 2U; ++k) {
+      const char c = s[i + k];
+      v <<= 4U;
+      if (c >= '0' && c <= '9') {
+        v |= static_cast<unsigned>(c - '0');
+      } else if (c >= 'A' && c <= 'F') {
+        v |= static_cast<unsigned>(c - 'A' + 10);
+      } else if (c >= 'a' && c <= 'f') {
+        v |= static_cast<unsigned>(c - 'a' + 10);
+      } else {
+        return std::nullopt;
+      }
+    }
+    out.push_back(static_cast<std::uint8_t>(v));
+  }
+  return out;
+}
+
+std::string abort_hex(sdo::abort_code c) {
+  char buf[9];
+  std::snprintf(buf, sizeof buf, "%08X", static_cast<unsigned>(c));
+  return buf;
+}
+
+void answer_error(fieldcodec::errc e, sdo::abort_code c) {
+  put_line("= error " + std::string(fieldcodec::to_string(e)) + " " + abort_hex(c));
+}
+
+/// The SDO client of the bridge: one transfer at a time, started by a command line, answered
+/// when it ends.
+class client_side {
+public:
+  void start(const std::vector<std::string> &w) {
+    // !upload NODE INDEX SUB MODE  /  !download NODE INDEX SUB HEX MODE
+    const bool upload = w[0] == "!upload";
+    if (w.size() != (upload ? 5U : 6U)) return answer_error(fieldcodec::errc::bad_syntax, {});
+    const auto node = static_cast<std::uint8_t>(std::stoul(w[1], nullptr, 10));
+    const od::address a{static_cast<std::uint16_t>(std::stoul(w[2], nullptr, 16)),
+                        static_cast<std::uint8_t>(std::stoul(w[3], nullptr, 16))};
+    const std::string &mode = w.back();
+    sdo::block_options opt;
+    opt.crc = mode != "block-nocrc";
+    const bool block = mode != "normal";
+    client_.emplace(node, 2000);
+    upload_ = upload;
+    const std::uint32_t now = now_ms();
+    fieldcodec::result<sdo::step> s = fieldcodec::errc::bad_state;
+    if (upload) {
+      buffer_.assign(4096, 0);
+      s = block ? client_->block_upload(a, buffer_, now, opt) : client_->upload(a, buffer_, now);
+    } else {
+      auto data = unhex(w[4]);
+      if (!data) return answer_error(fieldcodec::errc::bad_digit, {});
+      buffer_ = *data;
+      s = block ? client_->block_download(a, buffer_, now, opt)
+                : client_->download(a, buffer_, now);
+    }
+    if (!s) {
+      client_.reset();
+      return answer_error(s.error(), {});
+    }
+    transmit_all(s.value().send);
+    check_end();
+  }
+  void on_frame(const co::can_frame &f, std::uint32_t now) {
+    if (!client_) return;
+    transmit_all(client_->on_frame(f, now).send);
+    check_end();
+  }
+  void poll(std::uint32_t now) {
+    if (!client_) return;
+    transmit_all(client_->poll(now).send);
+    check_end();
+  }
+
+private:
+  void check_end() {
+    if (!client_) return;
+    const auto st = client_->state();
+    if (st == sdo::transfer_state::done) {
+      put_line("= ok " + (upload_ ? hex(client_->received()) : std::string()));
+      client_.reset();
+    } else if (st == sdo::transfer_state::failed) {
+      const auto e = client_->error().value_or(sdo::transfer_error{});
+      answer_error(e.error, e.abort);
+      client_.reset();
+    }
+  }
+  std::optional<sdo::client> client_;
+  std::vector<std::uint8_t> buffer_;
+  bool upload_ = false;
+};
+
+/// Which machine gets which frame. This is what a library node (issue 15) replaces.
+template <class Store> class node_glue {
+public:
+  node_glue(std::uint8_t node, Store &store) : store_(store), server_(node, store, buffer_, 2000) {}
+
+  void on_frame(const co::can_frame &f, std::uint32_t now) {
+    transmit_all(server_.on_frame(f, now).send);
+  }
+  void poll(std::uint32_t now) { transmit_all(server_.poll(now).send); }
+
+private:
+  Store &store_;
+  std::array<std::uint8_t, 127U * 7U> buffer_{};
+  sdo::server<Store> server_;
+};
+
+std::vector<std::string> words(const std::string &line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string s; in >> s;) w.push_back(s);
+  return w;
+}
+
+template <class Store> int run(Store &store, std::uint8_t node) {
+  node_glue<Store> glue(node, store);
+  client_side client;
+  std::string pending;
+  for (;;) {
+    pollfd p{STDIN_FILENO, POLLIN, 0};
+    const int ready = ::poll(&p, 1, 5);
+    const std::uint32_t now = now_ms();
+    if (ready > 0) {
+      char buf[4096];
+      const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+      if (n <= 0) return 0;
+      pending.append(buf, static_cast<std::size_t>(n));
+      std::size_t nl;
+      while ((nl = pending.find('\n')) != std::string::npos) {
+        const std::string line = pending.substr(0, nl);
+        pending.erase(0, nl + 1U);
+        if (line.empty()) continue;
+        if (line[0] != '!') {
+          auto r = fieldcodec::host::candump::parse_frame(line);
+          if (!r) {
+            std::fprintf(stderr, "interop_node: bad frame line '%s'\n", line.c_str());
+            return 2;
+          }
+          auto f = fieldcodec::host::to_canopen(r.value());
+          if (!f) continue;
+          glue.on_frame(f.value(), now);
+          client.on_frame(f.value(), now);
+          continue;
+        }
+        const auto w = words(line);
+        if (w[0] == "!quit") return 0;
+        if (w[0] == "!upload" || w[0] == "!download") {
+          client.start(w);
+        } else if ((w[0] == "!value" || w[0] == "!set") && w.size() >= 3U) {
+          const od::address a{static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
+                              static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16))};
+          if (w[0] == "!value") {
+            auto v = store.value(a);
+            if (v) {
+              put_line("= ok " + hex(v.value()));
+            } else {
+              answer_error(v.error(), {});
+            }
+          } else {
+            auto data = unhex(w.size() > 3U ? w[3] : "-");
+            const auto c = data ? store.set(a, *data) : sdo::abort_code::general_error;
+            if (c == sdo::abort_code::none) {
+              put_line("= ok ");
+            } else {
+              answer_error(fieldcodec::errc::aborted, c);
+            }
+          }
+        } else {
+          answer_error(fieldcodec::errc::bad_syntax, {});
+        }
+      }
+    } else if (ready < 0) {
+      return 2;
+    }
+    glue.poll(now);
+    client.poll(now);
+  }
+}
+
+template <const od::dictionary &Dict, std::size_t N> int serve(std::uint8_t node) {
+  static constexpr auto layout = sdo::make_layout<N>(Dict);
+  static std::vector<std::uint8_t> storage(layout.storage_size());
+  static std::vector<std::uint8_t> staging(65536);
+  static sdo::dictionary_store<> store{Dict, layout, storage, staging};
+  if (auto s = store.init_defaults(node); !s) {
+    std::fprintf(stderr, "interop_node: init_defaults: %s\n",
+                 std::string(fieldcodec::to_string(s.error())).c_str());
+    return 2;
+  }
+  return run(store, node);
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: interop_node xenax|corpus NODE\n");
+    return 2;
+  }
+  const std::string dict = argv[1];
+  const auto node = static_cast<std::uint8_t>(std::atoi(argv[2]));
+  namespace d = fieldcodec::dictionaries;
+  if (dict == "xenax") return serve<d::xenax_canopen::dictionary, d::xenax_canopen::dictionary.size()>(node);
+#ifdef FIELDCODEC_INTEROP_CORPUS
+  if (dict == "corpus") return serve<d::interop_corpus::dictionary, d::interop_corpus::dictionary.size()>(node);
+#endif
+  std::fprintf(stderr, "interop_node: unknown dictionary '%s'\n", dict.c_str());
+  return 2;
+}
