@@ -209,17 +209,20 @@ def sdo_server_defaults(args, dictionary):
                     continue
                 try:
                     raw = node.sdo.upload(var.index, var.subindex)
-                except canopen.SdoError as e:
+                except canopen.sdo.exceptions.SdoError as e:
                     raise Failed(f"sdo_server strings: {where}: {e}")
-                check(var.decode_raw(raw) == var.default, "sdo_server strings",
-                      f"{where}: uploaded {raw!r}, EDS default {var.default!r}")
+                # the bytes of the file's text (python reads the EDS as UTF-8)
+                want = var.default if isinstance(var.default, bytes) else \
+                    var.default.encode("utf-8")
+                check(raw == want, "sdo_server strings",
+                      f"{where}: uploaded {raw!r}, EDS default {want!r}")
                 strings += 1
                 continue
             if var.data_type not in dt.INTEGER_TYPES + dt.FLOAT_TYPES or var.default is None:
                 continue
             try:
                 raw = node.sdo.upload(var.index, var.subindex)
-            except canopen.SdoError as e:
+            except canopen.sdo.exceptions.SdoError as e:
                 raise Failed(f"sdo_server defaults: {where}: {e}")
             got = var.decode_raw(raw)
             want = var.decode_raw(var.encode_raw(var.default))  # a REAL32 default as stored
@@ -350,6 +353,18 @@ def sdo_server_corpus(args):
             check(f.read() == b"", "sdo_server 0 bytes", "block upload of an empty DOMAIN")
         sdo.download(0x2122, 0, b"abc")
         check(sdo.upload(0x2122, 0) == b"abc", "sdo_server 0 bytes", "3 bytes after 0")
+        text = bytes(ord("a") + i % 26 for i in range(64))
+        sdo.download(0x2121, 1, text)
+        check(sdo.upload(0x2121, 1) == text, "sdo_server string write", "64 bytes into 2121h:01")
+        sdo.download(0x2121, 1, b"hi")
+        check(sdo.upload(0x2121, 1) == b"hi", "sdo_server string write",
+              "a shorter string keeps its own length")
+        expect_abort("sdo_server string write", 0x06070012,
+                     lambda: sdo.download(0x2121, 1, text + b"x"))
+        check(sdo.upload(0x2121, 1) == b"hi", "sdo_server string write",
+              "a refused string changed 2121h:01")
+        ok("sdo_server string write", "VISIBLE_STRING 2121h:01 (capacity 64) written with 64 and "
+           "2 bytes and read back; 65 bytes aborted with 06070012")
         ok("sdo_server 0 bytes", "0-byte download and (block) upload of the DOMAIN; a 3-byte "
            "DOMAIN uploads as 3 bytes")
     finally:
