@@ -9,7 +9,7 @@
 //   ID#DATA, ID#R, ID#R<dlc>                      a frame from the bus
 //   !upload NODE INDEX SUB MODE                   the SDO client reads an object of NODE
 //   !download NODE INDEX SUB HEX MODE             … and writes one (HEX may be "-": 0 bytes)
-//        MODE: normal | block | block-nocrc
+//        MODE: normal | block | block-nocrc | block-switch (protocol switch threshold 255)
 //   !value INDEX SUB                              this node's store: the value of an object
 //   !set INDEX SUB HEX                            … the application writes a value
 //   !quit
@@ -118,7 +118,7 @@ void answer_error(fieldcodec::errc e, sdo::abort_code c) {
 /// when it ends.
 class client_side {
 public:
-  void start(const std::vector<std::string> &w) {
+  void start(const std::vector<std::string> &w, std::uint32_t now) {
     // !upload NODE INDEX SUB MODE  /  !download NODE INDEX SUB HEX MODE
     const bool upload = w[0] == "!upload";
     if (w.size() != (upload ? 5U : 6U)) return answer_error(fieldcodec::errc::bad_syntax, {});
@@ -128,10 +128,10 @@ public:
     const std::string &mode = w.back();
     sdo::block_options opt;
     opt.crc = mode != "block-nocrc";
+    if (mode == "block-switch") opt.switch_threshold = 255; // the server may answer normally
     const bool block = mode != "normal";
     client_.emplace(node, 2000);
     upload_ = upload;
-    const std::uint32_t now = now_ms();
     fieldcodec::result<sdo::step> s = fieldcodec::errc::bad_state;
     if (upload) {
       buffer_.assign(4096, 0);
@@ -235,7 +235,7 @@ template <class Store> int run(Store &store, std::uint8_t node) {
         const auto w = words(line);
         if (w[0] == "!quit") return 0;
         if (w[0] == "!upload" || w[0] == "!download") {
-          client.start(w);
+          client.start(w, now); // one `now` per round: machines need time that never goes back
         } else if ((w[0] == "!value" || w[0] == "!set") && w.size() >= 3U) {
           const od::address a{static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
                               static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16))};
