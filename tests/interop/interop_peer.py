@@ -150,13 +150,15 @@ class Setup:
     """A bridge and a python canopen network on one fresh virtual channel."""
     count = 0
 
-    def __init__(self, args, dictionary, node):
+    def __init__(self, args, dictionary, node, start=True):
         import canopen
         Setup.count += 1
         channel = f"fieldcodec-interop-{os.getpid()}-{Setup.count}"
         self.bridge = Bridge(args.bridge, dictionary, node, channel)
         self.network = canopen.Network()
         self.network.connect(interface="virtual", channel=channel)
+        if start:
+            check(self.bridge.command("!start", "start") == "ok", "start", "the node did not boot")
 
     def close(self):
         self.network.disconnect()
@@ -489,7 +491,161 @@ def part_sdo_client(args):
         s.close()
 
 
-PARTS = {"sdo_server": part_sdo_server, "sdo_client": part_sdo_client}
+# --- NMT, boot-up, heartbeat, node guarding, SYNC, TIME, EMCY ---------------------------------
+
+def wait_until(cond, step, what, timeout=TIMEOUT):
+    """Waits (polling, no fixed sleeps) until cond() is true; fails naming the step."""
+    end = time.monotonic() + timeout
+    while not cond():
+        if time.monotonic() > end:
+            raise Failed(f"{step}: {what} (waited {timeout} s)")
+        time.sleep(0.005)
+
+
+def node_state(b, step):
+    a = b.command("!state", step)
+    check(a.startswith("ok "), step, f"!state: {a}")
+    return a[3:]
+
+
+def part_node(args):
+    import can
+    import canopen
+    node_id = 5
+    s = Setup(args, "xenax", node_id, start=False)
+    try:
+        b = s.bridge
+        node = s.network.add_node(node_id, eds_of(args, "xenax"))
+        cob = 0x700 + node_id
+        # boot-up
+        check(b.command("!start", "boot-up") == "ok", "boot-up", "!start")
+        _, data = b.next_frame(cob, "boot-up")
+        check(data == b"\x00", "boot-up", f"boot-up frame data {data.hex()}, expected 00")
+        wait_until(lambda: node.nmt.state == "PRE-OPERATIONAL", "boot-up",
+                   f"python's NMT master sees {node.nmt.state}, expected PRE-OPERATIONAL")
+        ok("boot-up", f"705#00 after power-on; python's NmtMaster sees PRE-OPERATIONAL")
+        # NMT commands, addressed and broadcast
+        for command, want in (("OPERATIONAL", "operational"), ("STOPPED", "stopped"),
+                              ("PRE-OPERATIONAL", "pre-operational"),
+                              ("OPERATIONAL", "operational")):
+            node.nmt.state = command
+            wait_until(lambda: node_state(b, "nmt") == want, "nmt",
+                       f"after python's {command} the node is {node_state(b, 'nmt')}")
+        s.network.nmt.state = "STOPPED"  # node 0: all nodes
+        wait_until(lambda: node_state(b, "nmt") == "stopped", "nmt", "broadcast STOPPED")
+        saved = node.sdo.RESPONSE_TIMEOUT
+        node.sdo.RESPONSE_TIMEOUT = 0.3
+        try:
+            node.sdo.upload(0x1000, 0)
+            raise Failed("nmt: the node answered an SDO request while stopped")
+        except canopen.SdoCommunicationError:
+            pass
+        finally:
+            node.sdo.RESPONSE_TIMEOUT = saved
+        s.network.nmt.state = "PRE-OPERATIONAL"
+        wait_until(lambda: node_state(b, "nmt") == "pre-operational", "nmt", "broadcast PRE-OP")
+        node.sdo.download(0x6081, 0, (4242).to_bytes(4, "little"))
+        b.drain()
+        node.nmt.state = "RESET COMMUNICATION"
+        _, data = b.next_frame(cob, "nmt reset communication")
+        check(data == b"\x00", "nmt reset communication", f"boot-up data {data.hex()}")
+        check(node.sdo.upload(0x6081, 0) == (4242).to_bytes(4, "little"), "nmt reset "
+              "communication", "an application value (6081h) changed")
+        node.nmt.state = "RESET"
+        _, data = b.next_frame(cob, "nmt reset node")
+        check(data == b"\x00", "nmt reset node", f"boot-up data {data.hex()}")
+        default = node.object_dictionary[0x6081].default
+        check(node.sdo.upload(0x6081, 0) == default.to_bytes(4, "little"), "nmt reset node",
+              "6081h is not back at its default")
+        check(node_state(b, "nmt reset node") == "pre-operational", "nmt reset node",
+              "not pre-operational after the boot-up")
+        ok("nmt", "start, stop, enter pre-operational (addressed and broadcast); no SDO while "
+           "stopped; reset communication and reset node answer with a boot-up, reset node "
+           "restores 6081h's default")
+        # heartbeat production, python's consumer view
+        hb = node.object_dictionary[0x1017]  # UNSIGNED32 and read-only in the XENAX EDS
+        check(b.command(f"!set 1017 00 {hb.encode_raw(50).hex()}", "heartbeat") == "ok",
+              "heartbeat", "1017h = 50 ms")
+        b.drain()
+        times = [b.next_frame(cob, "heartbeat")[0] for _ in range(6)]
+        gaps = [round((t1 - t0) * 1000) for t0, t1 in zip(times, times[1:])]
+        check(all(25 <= g <= 250 for g in gaps), "heartbeat", f"gaps {gaps} ms for 1017h = 50 ms")
+        check(node.nmt.wait_for_heartbeat(TIMEOUT) == "PRE-OPERATIONAL", "heartbeat",
+              "python's view of the heartbeat state")
+        node.nmt.state = "OPERATIONAL"
+        wait_until(lambda: node.nmt.wait_for_heartbeat(TIMEOUT) == "OPERATIONAL", "heartbeat",
+                   "python's heartbeat consumer never saw OPERATIONAL")
+        check(b.command(f"!set 1017 00 {hb.encode_raw(0).hex()}", "heartbeat") == "ok",
+              "heartbeat", "1017h = 0")
+        time.sleep(0.1)
+        b.drain()
+        try:
+            b.next_frame(cob, "heartbeat", timeout=0.4)
+            raise Failed("heartbeat: still produced after 1017h = 0")
+        except Failed as e:
+            if "still produced" in str(e):
+                raise
+        ok("heartbeat", f"1017h = 50 ms: gaps {gaps} ms; python's consumer sees "
+           "PRE-OPERATIONAL, then OPERATIONAL; 1017h = 0 stops it")
+        # node guarding: python's guarding (remote frames of DLC 0), then DLC 1 by hand
+        b.drain()
+        node.nmt.start_node_guarding(0.02)
+        answers = [b.next_frame(cob, "node guarding")[1] for _ in range(4)]
+        node.nmt.stop_node_guarding()
+        time.sleep(0.05)
+        b.drain()
+        for _ in range(2):
+            s.network.bus.send(can.Message(arbitration_id=cob, is_extended_id=False,
+                                           is_remote_frame=True, dlc=1))
+            answers.append(b.next_frame(cob, "node guarding (DLC 1)")[1])
+        toggles = [a[0] >> 7 for a in answers]
+        check(all(len(a) == 1 and a[0] & 0x7F == 5 for a in answers), "node guarding",
+              f"answers {[a.hex() for a in answers]}: state must be 05 (operational)")
+        check(all(t1 != t0 for t0, t1 in zip(toggles, toggles[1:])) and toggles[0] == 0,
+              "node guarding", f"toggle bits {toggles} do not alternate from 0")
+        check(node.nmt.state == "OPERATIONAL", "node guarding", f"python sees {node.nmt.state}")
+        ok("node guarding", f"remote requests of DLC 0 (python's guarding) and DLC 1 answered "
+           f"with state 05, toggles {toggles}; python's view OPERATIONAL")
+        # SYNC with and without counter
+        s.network.sync.transmit()
+        wait_until(lambda: b.command("!last sync", "sync") == "ok 1 -", "sync",
+                   "SYNC without counter not seen")
+        s.network.sync.transmit(17)
+        wait_until(lambda: b.command("!last sync", "sync") == "ok 2 17", "sync",
+                   "SYNC with counter 17 not seen")
+        ok("sync", "python's SYNC without counter (DLC 0) and with counter 17 decoded")
+        # TIME
+        stamp = 1700000000.25
+        s.network.time.transmit(stamp)
+        days, seconds = divmod(stamp - 441763200, 86400)
+        want = f"ok {int(seconds * 1000)} {int(days)}"
+        wait_until(lambda: b.command("!last time", "time") == want, "time",
+                   f"TIME not decoded as {want}: {b.command('!last time', 'time')}")
+        ok("time", f"python's TIME for {stamp} decoded as {want[3:]} (ms, days since 1984)")
+        # EMCY both ways
+        check(b.command("!emcy 8130 11 0102030405", "emcy") == "ok", "emcy", "!emcy")
+        wait_until(lambda: any(x.code == 0x8130 for x in node.emcy.log), "emcy",
+                   "python's EmcyConsumer got no EMCY 8130")
+        e = node.emcy.log[-1]
+        check(e.register == 0x11 and e.data == bytes([1, 2, 3, 4, 5]), "emcy",
+              f"python decoded register {e.register:02X} data {e.data.hex()}")
+        check(len(node.emcy.active) == 1, "emcy", "python's active list")
+        check(b.command("!emcy 0000 00", "emcy") == "ok", "emcy", "!emcy reset")
+        wait_until(lambda: node.emcy.log[-1].code == 0, "emcy", "no error reset seen")
+        check(node.emcy.active == [], "emcy", "python kept active errors after the reset")
+        producer = canopen.emcy.EmcyProducer(0x80 + 20)
+        producer.network = s.network
+        producer.send(0x5530, 0x01, b"\xaa\xbb")
+        wait_until(lambda: b.command("!last emcy", "emcy") == "ok 20 5530 01 AABB000000", "emcy",
+                   f"python's EMCY decoded as {b.command('!last emcy', 'emcy')}")
+        ok("emcy", "fieldcodec's EMCY 8130 (register 11, 5 manufacturer bytes) and the error "
+           "reset decoded by python's EmcyConsumer; python's EmcyProducer 5530 decoded by "
+           "fieldcodec")
+    finally:
+        s.close()
+
+
+PARTS = {"sdo_server": part_sdo_server, "sdo_client": part_sdo_client, "node": part_node}
 
 
 def main():

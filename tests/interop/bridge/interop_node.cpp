@@ -12,6 +12,10 @@
 //        MODE: normal | block | block-nocrc | block-switch (protocol switch threshold 255)
 //   !value INDEX SUB                              this node's store: the value of an object
 //   !set INDEX SUB HEX                            … the application writes a value
+//   !start                                        power-on: boot-up, pre-operational
+//   !state                                        the NMT state
+//   !last sync|time|emcy                          what the node decoded last from others
+//   !emcy CODE REGISTER [MANUFACTURER-HEX]        the node sends an EMCY
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
@@ -19,9 +23,14 @@
 // The node glue (which machine gets which frame) is the part the library's node assembly
 // replaces (issue 15): `node_glue` below.
 #include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/canopen/sync.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/host/candump.hpp>
@@ -66,7 +75,8 @@ void transmit(const co::can_frame &f) {
   put_line(fieldcodec::host::candump::format_frame(fieldcodec::host::to_record(f)));
 }
 
-template <class Frames> void transmit_all(const Frames &fs) {
+template <class Frames>
+void transmit_all(const Frames &fs) {
   for (const co::can_frame f : fs) transmit(f);
 }
 
@@ -179,21 +189,132 @@ private:
   bool upload_ = false;
 };
 
-/// Which machine gets which frame. This is what a library node (issue 15) replaces.
-template <class Store> class node_glue {
+/// What the node received from others (python's SYNC, TIME and EMCY producers), for `!last`.
+struct received_log {
+  std::size_t syncs = 0;
+  std::optional<std::uint8_t> sync_counter;
+  std::optional<fieldcodec::od::time_value> time;
+  std::optional<co::emcy::received> emcy;
+};
+
+/// Which machine gets which frame, and the node's NMT state: the glue a user writes around the
+/// library's machines and codecs (SDO server, nmt, sync, emcy). This is what a library node
+/// (issue 15, canopen/node/) replaces.
+template <class Store>
+class node_glue {
 public:
-  node_glue(std::uint8_t node, Store &store) : store_(store), server_(node, store, buffer_, 2000) {}
+  node_glue(std::uint8_t node, Store &store)
+      : node_(node), store_(store), server_(node, store, buffer_, 2000), guard_(node) {}
+
+  /// Power-on: boot-up, then pre-operational.
+  void start(std::uint32_t now) { boot(now); }
 
   void on_frame(const co::can_frame &f, std::uint32_t now) {
+    if (f.id == co::cob_id::nmt) {
+      auto m = co::nmt::decode(f);
+      if (m && (m.value().node == 0U || m.value().node == node_)) command(m.value().cs, now);
+      return;
+    }
+    if (state_ == co::nmt::state::boot_up) return; // not started yet: silent
+    if (f.rtr && f.id == co::cob_id::nmt_error(node_).value()) {
+      // node guarding: answered whatever the DLC of the remote request
+      if (auto r = guard_.respond(f, state_)) transmit(r.value());
+      return;
+    }
+    if (f.id == co::cob_id::sync) {
+      if (auto c = co::sync::decode(f)) {
+        ++log_.syncs;
+        log_.sync_counter = c.value();
+      }
+      return;
+    }
+    if (f.id == co::cob_id::time) {
+      if (auto t = co::time_stamp::decode(f)) log_.time = t.value();
+      return;
+    }
+    if (f.id > co::cob_id::emcy_base && f.id <= co::cob_id::emcy_base + 127U) {
+      if (auto e = co::emcy::decode(f)) log_.emcy = e.value();
+      return;
+    }
+    // SDO: pre-operational and operational only (CiA 301 table of services per state)
+    if (state_ == co::nmt::state::stopped) return;
     transmit_all(server_.on_frame(f, now).send);
   }
-  void poll(std::uint32_t now) { transmit_all(server_.poll(now).send); }
+
+  void poll(std::uint32_t now) {
+    transmit_all(server_.poll(now).send);
+    if (state_ == co::nmt::state::boot_up) return;
+    // heartbeat producer: the period is 1017h as it is now (0: off)
+    // (UNSIGNED16 in CiA 301; the XENAX EDS declares UNSIGNED32: any width up to 4 bytes)
+    std::uint32_t period = 0;
+    if (auto v = store_.value({0x1017, 0}); v && v.value().size() <= 4U) {
+      for (std::size_t i = v.value().size(); i-- > 0U;) period = (period << 8U) | v.value()[i];
+    }
+    if (period == 0U) {
+      next_heartbeat_.reset();
+      return;
+    }
+    if (!next_heartbeat_) next_heartbeat_ = now + period;
+    if (co::reached(*next_heartbeat_, now)) {
+      transmit(co::nmt::encode_heartbeat(node_, state_).value());
+      next_heartbeat_ = now + period;
+    }
+  }
+
+  [[nodiscard]] co::nmt::state state() const { return state_; }
+  [[nodiscard]] const received_log &log() const { return log_; }
 
 private:
+  void boot(std::uint32_t now) {
+    guard_.reset();
+    transmit(co::nmt::encode_boot_up(node_).value());
+    state_ = co::nmt::state::pre_operational;
+    next_heartbeat_.reset();
+    (void)now;
+  }
+  void command(co::nmt::command cs, std::uint32_t now) {
+    switch (cs) {
+    case co::nmt::command::reset_node:
+      // the application's values go back to their defaults, then as reset communication
+      (void)store_.init_defaults(node_);
+      boot(now);
+      return;
+    case co::nmt::command::reset_communication: boot(now); return;
+    default: state_ = co::nmt::state_after(cs); return;
+    }
+  }
+
+  std::uint8_t node_;
   Store &store_;
   std::array<std::uint8_t, 127U * 7U> buffer_{};
   sdo::server<Store> server_;
+  co::nmt::guard_responder guard_;
+  co::nmt::state state_ = co::nmt::state::boot_up;
+  std::optional<std::uint32_t> next_heartbeat_;
+  received_log log_;
 };
+
+/// `!last sync|time|emcy`: what the node decoded last from python's producers.
+void last(const received_log &log, const std::string &what) {
+  char buf[96];
+  if (what == "sync") {
+    if (log.sync_counter) {
+      std::snprintf(buf, sizeof buf, "= ok %zu %u", log.syncs, unsigned{*log.sync_counter});
+    } else {
+      std::snprintf(buf, sizeof buf, "= ok %zu -", log.syncs);
+    }
+  } else if (what == "time" && log.time) {
+    std::snprintf(buf, sizeof buf, "= ok %u %u", static_cast<unsigned>(log.time->ms),
+                  unsigned{log.time->days});
+  } else if (what == "emcy" && log.emcy) {
+    const auto &m = log.emcy->m;
+    std::snprintf(buf, sizeof buf, "= ok %u %04X %02X %s", unsigned{log.emcy->node},
+                  unsigned{m.error_code}, unsigned{m.error_register}, hex(m.manufacturer).c_str());
+  } else {
+    std::snprintf(buf, sizeof buf, "= error unknown_object 00000000");
+  }
+  put_line(buf);
+}
 
 std::vector<std::string> words(const std::string &line) {
   std::istringstream in(line);
@@ -202,7 +323,8 @@ std::vector<std::string> words(const std::string &line) {
   return w;
 }
 
-template <class Store> int run(Store &store, std::uint8_t node) {
+template <class Store>
+int run(Store &store, std::uint8_t node) {
   node_glue<Store> glue(node, store);
   client_side client;
   std::string pending;
@@ -234,7 +356,25 @@ template <class Store> int run(Store &store, std::uint8_t node) {
         }
         const auto w = words(line);
         if (w[0] == "!quit") return 0;
-        if (w[0] == "!upload" || w[0] == "!download") {
+        if (w[0] == "!start") {
+          glue.start(now);
+          put_line("= ok ");
+        } else if (w[0] == "!state") {
+          put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
+        } else if (w[0] == "!last" && w.size() == 2U) {
+          last(glue.log(), w[1]);
+        } else if (w[0] == "!emcy" && w.size() >= 3U) {
+          // !emcy CODE REGISTER [MANUFACTURER-HEX]
+          co::emcy::message m;
+          m.error_code = static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16));
+          m.error_register = static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16));
+          if (w.size() > 3U) {
+            const auto bytes = unhex(w[3]).value_or(std::vector<std::uint8_t>{});
+            for (std::size_t i = 0; i < bytes.size() && i < 5U; ++i) m.manufacturer[i] = bytes[i];
+          }
+          transmit(co::emcy::encode(node, m).value());
+          put_line("= ok ");
+        } else if (w[0] == "!upload" || w[0] == "!download") {
           client.start(w, now); // one `now` per round: machines need time that never goes back
         } else if ((w[0] == "!value" || w[0] == "!set") && w.size() >= 3U) {
           const od::address a{static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
@@ -267,7 +407,8 @@ template <class Store> int run(Store &store, std::uint8_t node) {
   }
 }
 
-template <const od::dictionary &Dict, std::size_t N> int serve(std::uint8_t node) {
+template <const od::dictionary &Dict, std::size_t N>
+int serve(std::uint8_t node) {
   static constexpr auto layout = sdo::make_layout<N>(Dict);
   static std::vector<std::uint8_t> storage(layout.storage_size());
   static std::vector<std::uint8_t> staging(65536);
@@ -290,9 +431,11 @@ int main(int argc, char **argv) {
   const std::string dict = argv[1];
   const auto node = static_cast<std::uint8_t>(std::atoi(argv[2]));
   namespace d = fieldcodec::dictionaries;
-  if (dict == "xenax") return serve<d::xenax_canopen::dictionary, d::xenax_canopen::dictionary.size()>(node);
+  if (dict == "xenax")
+    return serve<d::xenax_canopen::dictionary, d::xenax_canopen::dictionary.size()>(node);
 #ifdef FIELDCODEC_INTEROP_CORPUS
-  if (dict == "corpus") return serve<d::interop_corpus::dictionary, d::interop_corpus::dictionary.size()>(node);
+  if (dict == "corpus")
+    return serve<d::interop_corpus::dictionary, d::interop_corpus::dictionary.size()>(node);
 #endif
   std::fprintf(stderr, "interop_node: unknown dictionary '%s'\n", dict.c_str());
   return 2;
