@@ -16,6 +16,8 @@
 //   !state                                        the NMT state
 //   !last sync|time|emcy                          what the node decoded last from others
 //   !emcy CODE REGISTER [MANUFACTURER-HEX]        the node sends an EMCY
+//   !tpdo N                                       send TPDO N as the store configures it
+//   !pack MAPPINGS VALUES                         pdo::pack_all (comma-separated hex lists)
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
@@ -27,6 +29,7 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/canopen/step.hpp>
@@ -42,6 +45,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -189,6 +193,53 @@ private:
   bool upload_ = false;
 };
 
+/// A store value as the raw bits a PDO carries (little-endian; signed values sign-extended).
+template <class Store>
+std::optional<std::uint64_t> raw_of(const Store &store, fieldcodec::od::address a) {
+  const auto *e = store.dictionary().find(a);
+  auto v = store.value(a);
+  if (e == nullptr || !v || v.value().size() > 8U) return std::nullopt;
+  std::uint64_t raw = 0;
+  for (std::size_t i = v.value().size(); i-- > 0U;) raw = (raw << 8U) | v.value()[i];
+  const std::size_t bits = 8U * v.value().size();
+  if (od::is_signed_integer(e->type) && bits < 64U && ((raw >> (bits - 1U)) & 1U) != 0U) {
+    raw |= ~std::uint64_t{0} << bits;
+  }
+  return raw;
+}
+
+/// Mapping parameter `map_index` as entries (sub 0 = count).
+template <class Store>
+std::vector<co::pdo::mapping_entry> mapping_of(const Store &store, std::uint16_t map_index) {
+  std::vector<co::pdo::mapping_entry> out;
+  auto n = store.value({map_index, 0});
+  if (!n || n.value().empty()) return out;
+  for (std::uint8_t i = 1; i <= n.value()[0]; ++i) {
+    auto v = store.value({map_index, i});
+    if (!v || v.value().size() != 4U) return {};
+    const std::uint32_t u = static_cast<std::uint32_t>(v.value()[0]) |
+                            static_cast<std::uint32_t>(v.value()[1]) << 8U |
+                            static_cast<std::uint32_t>(v.value()[2]) << 16U |
+                            static_cast<std::uint32_t>(v.value()[3]) << 24U;
+    out.push_back(co::pdo::mapping_entry::from_u32(u));
+  }
+  return out;
+}
+
+/// A COB-ID parameter (sub 1 of 1400h.. / 1800h..) when it is valid.
+template <class Store>
+std::optional<std::uint16_t> pdo_cob_id(const Store &store, std::uint16_t comm_index) {
+  auto v = store.value({comm_index, 1});
+  if (!v || v.value().size() != 4U) return std::nullopt;
+  const std::uint32_t u = static_cast<std::uint32_t>(v.value()[0]) |
+                          static_cast<std::uint32_t>(v.value()[1]) << 8U |
+                          static_cast<std::uint32_t>(v.value()[2]) << 16U |
+                          static_cast<std::uint32_t>(v.value()[3]) << 24U;
+  auto p = co::pdo::decode_cob_id(u);
+  if (!p || !p.value().valid) return std::nullopt;
+  return static_cast<std::uint16_t>(p.value().id);
+}
+
 /// What the node received from others (python's SYNC, TIME and EMCY producers), for `!last`.
 struct received_log {
   std::size_t syncs = 0;
@@ -236,6 +287,7 @@ public:
       if (auto e = co::emcy::decode(f)) log_.emcy = e.value();
       return;
     }
+    if (state_ == co::nmt::state::operational && !f.rtr && receive_pdo(f)) return;
     // SDO: pre-operational and operational only (CiA 301 table of services per state)
     if (state_ == co::nmt::state::stopped) return;
     transmit_all(server_.on_frame(f, now).send);
@@ -261,10 +313,62 @@ public:
     }
   }
 
+  /// Sends TPDO `n` (1..4) from the store as 1800h+n-1 / 1A00h+n-1 configure it.
+  [[nodiscard]] bool send_tpdo(std::uint16_t n) {
+    const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1800U + n - 1U));
+    if (!id) return false;
+    const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1A00U + n - 1U));
+    std::vector<std::uint64_t> raws;
+    for (const auto &m : map) {
+      const auto r = raw_of(store_, {m.index, m.sub});
+      if (!r) return false;
+      raws.push_back(*r);
+    }
+    std::array<std::uint8_t, 8> data{};
+    auto len = co::pdo::pack_all(map, raws, data);
+    if (!len) return false;
+    auto f = co::make_frame(*id, std::span<const std::uint8_t>(data).first(len.value()));
+    if (!f) return false;
+    transmit(f.value());
+    return true;
+  }
+
   [[nodiscard]] co::nmt::state state() const { return state_; }
   [[nodiscard]] const received_log &log() const { return log_; }
 
 private:
+  /// An RPDO (1400h..1403h) is written into the store, entry by entry, through the same write
+  /// an SDO download uses (limits, write hook).
+  bool receive_pdo(const co::can_frame &f) {
+    for (std::uint16_t i = 0; i < 4U; ++i) {
+      const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1400U + i));
+      if (!id || *id != f.id) continue;
+      const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1600U + i));
+      std::vector<std::uint64_t> raws(map.size());
+      if (!co::pdo::unpack_all(map, f.payload(), raws)) return true; // too short: dropped
+      for (std::size_t k = 0; k < map.size(); ++k) {
+        if (map[k].is_dummy()) continue;
+        const auto *e = store_.dictionary().find({map[k].index, map[k].sub});
+        if (e == nullptr) continue;
+        std::uint64_t raw = raws[k];
+        const std::size_t bits = map[k].bits;
+        if (od::is_signed_integer(e->type) && bits < 64U && ((raw >> (bits - 1U)) & 1U) != 0U) {
+          raw |= ~std::uint64_t{0} << bits; // sign-extend a short signed field
+        }
+        std::array<std::uint8_t, 8> bytes{};
+        const std::size_t width = std::min<std::size_t>(od::info(e->type).size, 8U);
+        for (std::size_t b = 0; b < width; ++b)
+          bytes[b] = static_cast<std::uint8_t>(raw >> (8U * b));
+        const od::address a{map[k].index, map[k].sub};
+        if (store_.begin_write(a, static_cast<std::uint32_t>(width)) == sdo::abort_code::none) {
+          (void)store_.write(a, 0, std::span<const std::uint8_t>(bytes).first(width), true);
+        }
+      }
+      return true;
+    }
+    return false;
+  }
+
   void boot(std::uint32_t now) {
     guard_.reset();
     transmit(co::nmt::encode_boot_up(node_).value());
@@ -314,6 +418,37 @@ void last(const received_log &log, const std::string &what) {
     std::snprintf(buf, sizeof buf, "= error unknown_object 00000000");
   }
   put_line(buf);
+}
+
+std::vector<std::string> split(const std::string &s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (const char c : s) {
+    if (c == sep) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+/// `!pack MAPPINGS VALUES`: the PDO bytes of a mapping (comma-separated 32-bit mapping values in
+/// hex) holding the values (comma-separated, hex, two's complement for negative ones).
+void pack_command(const std::string &mappings, const std::string &values) {
+  std::vector<co::pdo::mapping_entry> map;
+  for (const auto &m : split(mappings, ',')) {
+    map.push_back(
+        co::pdo::mapping_entry::from_u32(static_cast<std::uint32_t>(std::stoul(m, nullptr, 16))));
+  }
+  std::vector<std::uint64_t> raws;
+  for (const auto &v : split(values, ',')) raws.push_back(std::stoull(v, nullptr, 16));
+  std::array<std::uint8_t, 8> data{};
+  auto n = co::pdo::pack_all(map, raws, data);
+  if (!n) return answer_error(n.error(), {});
+  put_line("= ok " + hex(std::span<const std::uint8_t>(data).first(n.value())));
 }
 
 std::vector<std::string> words(const std::string &line) {
@@ -374,6 +509,14 @@ int run(Store &store, std::uint8_t node) {
           }
           transmit(co::emcy::encode(node, m).value());
           put_line("= ok ");
+        } else if (w[0] == "!tpdo" && w.size() == 2U) {
+          if (glue.send_tpdo(static_cast<std::uint16_t>(std::stoul(w[1])))) {
+            put_line("= ok ");
+          } else {
+            answer_error(fieldcodec::errc::bad_state, {});
+          }
+        } else if (w[0] == "!pack" && w.size() == 3U) {
+          pack_command(w[1], w[2]);
         } else if (w[0] == "!upload" || w[0] == "!download") {
           client.start(w, now); // one `now` per round: machines need time that never goes back
         } else if ((w[0] == "!value" || w[0] == "!set") && w.size() >= 3U) {
