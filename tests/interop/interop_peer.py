@@ -569,7 +569,10 @@ def part_node(args):
         b.drain()
         times = [b.next_frame(cob, "heartbeat")[0] for _ in range(6)]
         gaps = [round((t1 - t0) * 1000) for t0, t1 in zip(times, times[1:])]
-        check(all(25 <= g <= 250 for g in gaps), "heartbeat", f"gaps {gaps} ms for 1017h = 50 ms")
+        # measured where python reads them: a late line shortens the next gap, so the median
+        # is checked (generously: a loaded CI machine)
+        check(40 <= sorted(gaps)[len(gaps) // 2] <= 400, "heartbeat",
+              f"gaps {gaps} ms for 1017h = 50 ms")
         check(node.nmt.wait_for_heartbeat(TIMEOUT) == "PRE-OPERATIONAL", "heartbeat",
               "python's view of the heartbeat state")
         node.nmt.state = "OPERATIONAL"
@@ -577,8 +580,7 @@ def part_node(args):
                    "python's heartbeat consumer never saw OPERATIONAL")
         check(b.command(f"!set 1017 00 {hb.encode_raw(0).hex()}", "heartbeat") == "ok",
               "heartbeat", "1017h = 0")
-        time.sleep(0.1)
-        b.drain()
+        b.drain()  # the bridge wrote every heartbeat before its answer: nothing is in flight
         try:
             b.next_frame(cob, "heartbeat", timeout=0.4)
             raise Failed("heartbeat: still produced after 1017h = 0")
@@ -587,24 +589,25 @@ def part_node(args):
                 raise
         ok("heartbeat", f"1017h = 50 ms: gaps {gaps} ms; python's consumer sees "
            "PRE-OPERATIONAL, then OPERATIONAL; 1017h = 0 stops it")
-        # node guarding: python's guarding (remote frames of DLC 0), then DLC 1 by hand
+        # node guarding: remote requests of DLC 1 by hand, then python's guarding (DLC 0)
         b.drain()
-        node.nmt.start_node_guarding(0.02)
-        answers = [b.next_frame(cob, "node guarding")[1] for _ in range(4)]
-        node.nmt.stop_node_guarding()
-        time.sleep(0.05)
-        b.drain()
+        answers = []
         for _ in range(2):
             s.network.bus.send(can.Message(arbitration_id=cob, is_extended_id=False,
                                            is_remote_frame=True, dlc=1))
             answers.append(b.next_frame(cob, "node guarding (DLC 1)")[1])
+        node.nmt.start_node_guarding(0.02)
+        try:
+            answers += [b.next_frame(cob, "node guarding (DLC 0)")[1] for _ in range(4)]
+        finally:
+            node.nmt.stop_node_guarding()
         toggles = [a[0] >> 7 for a in answers]
         check(all(len(a) == 1 and a[0] & 0x7F == 5 for a in answers), "node guarding",
               f"answers {[a.hex() for a in answers]}: state must be 05 (operational)")
         check(all(t1 != t0 for t0, t1 in zip(toggles, toggles[1:])) and toggles[0] == 0,
               "node guarding", f"toggle bits {toggles} do not alternate from 0")
         check(node.nmt.state == "OPERATIONAL", "node guarding", f"python sees {node.nmt.state}")
-        ok("node guarding", f"remote requests of DLC 0 (python's guarding) and DLC 1 answered "
+        ok("node guarding", f"remote requests of DLC 1 and DLC 0 (python's guarding) answered "
            f"with state 05, toggles {toggles}; python's view OPERATIONAL")
         # SYNC with and without counter
         s.network.sync.transmit()
