@@ -663,7 +663,7 @@ RPDO_LAYOUT = [
 
 def fieldcodec_pack(b, layout, step):
     maps = ",".join(f"{(i << 16) | (s << 8) | n:08X}" for i, s, n, _ in layout)
-    vals = ",".join(f"{v & 0xFFFFFFFFFFFFFFFF:X}" for _, _, _, v in layout)
+    vals = ",".join(str(v) for _, _, _, v in layout)
     a = b.command(f"!pack {maps} {vals}", step)
     check(a.startswith("ok "), step, f"pdo::pack_all refused the layout: {a}")
     return bytes.fromhex(a[3:])

@@ -17,7 +17,7 @@
 //   !last sync|time|emcy                          what the node decoded last from others
 //   !emcy CODE REGISTER [MANUFACTURER-HEX]        the node sends an EMCY
 //   !tpdo N                                       send TPDO N as the store configures it
-//   !pack MAPPINGS VALUES                         pdo::pack_all (comma-separated hex lists)
+//   !pack MAPPINGS VALUES                         pdo::pack_all (mappings hex, values decimal)
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
@@ -195,7 +195,7 @@ private:
 
 /// A store value as the raw bits a PDO carries (little-endian; signed values sign-extended).
 template <class Store>
-std::optional<std::uint64_t> raw_of(const Store &store, fieldcodec::od::address a) {
+std::optional<std::int64_t> raw_of(const Store &store, fieldcodec::od::address a) {
   const auto *e = store.dictionary().find(a);
   auto v = store.value(a);
   if (e == nullptr || !v || v.value().size() > 8U) return std::nullopt;
@@ -205,7 +205,7 @@ std::optional<std::uint64_t> raw_of(const Store &store, fieldcodec::od::address 
   if (od::is_signed_integer(e->type) && bits < 64U && ((raw >> (bits - 1U)) & 1U) != 0U) {
     raw |= ~std::uint64_t{0} << bits;
   }
-  return raw;
+  return static_cast<std::int64_t>(raw);
 }
 
 /// Mapping parameter `map_index` as entries (sub 0 = count).
@@ -318,7 +318,7 @@ public:
     const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1800U + n - 1U));
     if (!id) return false;
     const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1A00U + n - 1U));
-    std::vector<std::uint64_t> raws;
+    std::vector<std::int64_t> raws;
     for (const auto &m : map) {
       const auto r = raw_of(store_, {m.index, m.sub});
       if (!r) return false;
@@ -436,15 +436,15 @@ std::vector<std::string> split(const std::string &s, char sep) {
 }
 
 /// `!pack MAPPINGS VALUES`: the PDO bytes of a mapping (comma-separated 32-bit mapping values in
-/// hex) holding the values (comma-separated, hex, two's complement for negative ones).
+/// hex) holding the values (comma-separated, decimal, signed).
 void pack_command(const std::string &mappings, const std::string &values) {
   std::vector<co::pdo::mapping_entry> map;
   for (const auto &m : split(mappings, ',')) {
     map.push_back(
         co::pdo::mapping_entry::from_u32(static_cast<std::uint32_t>(std::stoul(m, nullptr, 16))));
   }
-  std::vector<std::uint64_t> raws;
-  for (const auto &v : split(values, ',')) raws.push_back(std::stoull(v, nullptr, 16));
+  std::vector<std::int64_t> raws;
+  for (const auto &v : split(values, ',')) raws.push_back(std::stoll(v, nullptr, 10));
   std::array<std::uint8_t, 8> data{};
   auto n = co::pdo::pack_all(map, raws, data);
   if (!n) return answer_error(n.error(), {});
