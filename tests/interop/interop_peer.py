@@ -626,24 +626,28 @@ def part_node(args):
                    f"TIME not decoded as {want}: {b.command('!last time', 'time')}")
         ok("time", f"python's TIME for {stamp} decoded as {want[3:]} (ms, days since 1984)")
         # EMCY both ways
-        check(b.command("!emcy 8130 11 0102030405", "emcy") == "ok", "emcy", "!emcy")
-        wait_until(lambda: any(x.code == 0x8130 for x in node.emcy.log), "emcy",
-                   "python's EmcyConsumer got no EMCY 8130")
+        check(b.command("!emcy 3210 04 0102030405", "emcy") == "ok", "emcy", "!emcy")
+        wait_until(lambda: any(x.code == 0x3210 for x in node.emcy.log), "emcy",
+                   "python's EmcyConsumer got no EMCY 3210")
         e = node.emcy.log[-1]
-        check(e.register == 0x11 and e.data == bytes([1, 2, 3, 4, 5]), "emcy",
-              f"python decoded register {e.register:02X} data {e.data.hex()}")
+        register = node.sdo.upload(0x1001, 0)[0]
+        check(e.register == register and e.register & 0x05 == 0x05 and
+              e.data == bytes([1, 2, 3, 4, 5]), "emcy",
+              f"python decoded register {e.register:02X} (1001h = {register:02X}, generic and "
+              f"voltage bits expected) data {e.data.hex()}")
         check(len(node.emcy.active) == 1, "emcy", "python's active list")
-        check(b.command("!emcy 0000 00", "emcy") == "ok", "emcy", "!emcy reset")
+        check(b.command("!emcy-clear 3210", "emcy") == "ok", "emcy", "!emcy-clear")
         wait_until(lambda: node.emcy.log[-1].code == 0, "emcy", "no error reset seen")
         check(node.emcy.active == [], "emcy", "python kept active errors after the reset")
+        check(node.sdo.upload(0x1001, 0) == b"\x00", "emcy", "1001h not 0 after the reset")
         producer = canopen.emcy.EmcyProducer(0x80 + 20)
         producer.network = s.network
         producer.send(0x5530, 0x01, b"\xaa\xbb")
         wait_until(lambda: b.command("!last emcy", "emcy") == "ok 20 5530 01 AABB000000", "emcy",
                    f"python's EMCY decoded as {b.command('!last emcy', 'emcy')}")
-        ok("emcy", "fieldcodec's EMCY 8130 (register 11, 5 manufacturer bytes) and the error "
-           "reset decoded by python's EmcyConsumer; python's EmcyProducer 5530 decoded by "
-           "fieldcodec")
+        ok("emcy", f"fieldcodec's EMCY 3210 (register {register:02X} as in 1001h, 5 manufacturer "
+           "bytes) and the error reset decoded by python's EmcyConsumer; python's EmcyProducer "
+           "5530 decoded by fieldcodec")
     finally:
         s.close()
 

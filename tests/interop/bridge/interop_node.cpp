@@ -15,7 +15,8 @@
 //   !start                                        power-on: boot-up, pre-operational
 //   !state                                        the NMT state
 //   !last sync|time|emcy                          what the node decoded last from others
-//   !emcy CODE REGISTER [MANUFACTURER-HEX]        the node sends an EMCY
+//   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
+//   !emcy-clear CODE                              the error is gone
 //   !tpdo N                                       send TPDO N as the store configures it
 //   !pack MAPPINGS VALUES                         pdo::pack_all (mappings hex, values decimal)
 //   !quit
@@ -333,6 +334,29 @@ public:
     return true;
   }
 
+  /// The application's own write (no access check).
+  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
+    return store_.set(a, v);
+  }
+  /// An application error: EMCY with 1001h kept alike.
+  [[nodiscard]] bool raise(std::uint16_t code, std::uint8_t bits,
+                           const std::array<std::uint8_t, 5> &manufacturer, std::uint32_t) {
+    const auto reg = static_cast<std::uint8_t>(bits | co::emcy::reg::generic);
+    if (store_.set({0x1001, 0}, std::array<std::uint8_t, 1>{reg}) != sdo::abort_code::none) {
+      return false;
+    }
+    transmit(co::emcy::encode(node_, {code, reg, manufacturer}).value());
+    return true;
+  }
+  /// The error is gone: "error reset / no error" (one active error at a time in this glue).
+  [[nodiscard]] bool clear(std::uint16_t, std::uint32_t) {
+    if (store_.set({0x1001, 0}, std::array<std::uint8_t, 1>{0}) != sdo::abort_code::none) {
+      return false;
+    }
+    transmit(co::emcy::encode(node_, {co::emcy::code::error_reset, 0, {}}).value());
+    return true;
+  }
+
   [[nodiscard]] co::nmt::state state() const { return state_; }
   [[nodiscard]] const received_log &log() const { return log_; }
 
@@ -499,16 +523,21 @@ int run(Store &store, std::uint8_t node) {
         } else if (w[0] == "!last" && w.size() == 2U) {
           last(glue.log(), w[1]);
         } else if (w[0] == "!emcy" && w.size() >= 3U) {
-          // !emcy CODE REGISTER [MANUFACTURER-HEX]
-          co::emcy::message m;
-          m.error_code = static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16));
-          m.error_register = static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16));
+          // !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]: an application error appears
+          std::array<std::uint8_t, 5> manufacturer{};
           if (w.size() > 3U) {
             const auto bytes = unhex(w[3]).value_or(std::vector<std::uint8_t>{});
-            for (std::size_t i = 0; i < bytes.size() && i < 5U; ++i) m.manufacturer[i] = bytes[i];
+            for (std::size_t i = 0; i < bytes.size() && i < 5U; ++i) manufacturer[i] = bytes[i];
           }
-          transmit(co::emcy::encode(node, m).value());
-          put_line("= ok ");
+          const bool done = glue.raise(static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
+                                       static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16)),
+                                       manufacturer, now);
+          put_line(done ? "= ok " : "= error bad_state 00000000");
+        } else if (w[0] == "!emcy-clear" && w.size() == 2U) {
+          // !emcy-clear CODE: the error is gone
+          const bool done =
+              glue.clear(static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)), now);
+          put_line(done ? "= ok " : "= error bad_state 00000000");
         } else if (w[0] == "!tpdo" && w.size() == 2U) {
           if (glue.send_tpdo(static_cast<std::uint16_t>(std::stoul(w[1])))) {
             put_line("= ok ");
@@ -531,7 +560,7 @@ int run(Store &store, std::uint8_t node) {
             }
           } else {
             auto data = unhex(w.size() > 3U ? w[3] : "-");
-            const auto c = data ? store.set(a, *data) : sdo::abort_code::general_error;
+            const auto c = data ? glue.set(a, *data) : sdo::abort_code::general_error;
             if (c == sdo::abort_code::none) {
               put_line("= ok ");
             } else {
