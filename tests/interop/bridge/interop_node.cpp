@@ -14,6 +14,7 @@
 //   !set INDEX SUB HEX                            … the application writes a value
 //   !start                                        power-on: boot-up, pre-operational
 //   !state                                        the NMT state
+//   !node                                         "library" (canopen/node/) or "glue"
 //   !last sync|time|emcy                          what the node decoded last from others
 //   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
 //   !emcy-clear CODE                              the error is gone
@@ -30,6 +31,12 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
+#if __has_include(<fieldcodec/canopen/node/device.hpp>)
+#include <fieldcodec/canopen/node/device.hpp>
+#define FIELDCODEC_INTEROP_LIBRARY_NODE 1
+#else
+#define FIELDCODEC_INTEROP_LIBRARY_NODE 0
+#endif
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
@@ -249,10 +256,69 @@ struct received_log {
   std::optional<co::emcy::received> emcy;
 };
 
+#if FIELDCODEC_INTEROP_LIBRARY_NODE
+/// The library's node (canopen/node/device.hpp) behind the bridge's commands. What the node
+/// does not consume (TIME, other nodes' EMCY) is decoded here for `!last`.
+template <class Store, co::node::capacity C>
+class node_glue {
+public:
+  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node) {}
+
+  void start(std::uint32_t now) {
+    if (auto s = dev_.start(now)) transmit_all(s.value().send);
+  }
+  void on_frame(const co::can_frame &f, std::uint32_t now) {
+    note(f);
+    transmit_all(dev_.on_frame(f, now).send);
+  }
+  void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
+
+  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
+    return dev_.set(a, v);
+  }
+  [[nodiscard]] bool raise(std::uint16_t code, std::uint8_t bits,
+                           const std::array<std::uint8_t, 5> &manufacturer, std::uint32_t now) {
+    auto s = dev_.raise(code, now, bits, manufacturer);
+    if (s) transmit_all(s.value().send);
+    return s.has_value();
+  }
+  [[nodiscard]] bool clear(std::uint16_t code, std::uint32_t now) {
+    auto s = dev_.clear(code, now);
+    if (s) transmit_all(s.value().send);
+    return s.has_value();
+  }
+  /// The application's event for TPDO n: the node sends it at its next poll.
+  [[nodiscard]] bool send_tpdo(std::uint16_t n, std::uint32_t now) {
+    if (!dev_.request_tpdo(n)) return false;
+    poll(now);
+    return true;
+  }
+  [[nodiscard]] co::nmt::state state() const { return dev_.state(); }
+  [[nodiscard]] const received_log &log() const { return log_; }
+
+private:
+  void note(const co::can_frame &f) {
+    if (f.id == co::cob_id::sync && !f.rtr) {
+      if (auto c = co::sync::decode(f)) {
+        ++log_.syncs;
+        log_.sync_counter = c.value();
+      }
+    } else if (f.id == co::cob_id::time && !f.rtr) {
+      if (auto t = co::time_stamp::decode(f)) log_.time = t.value();
+    } else if (f.id > co::cob_id::emcy_base && f.id <= co::cob_id::emcy_base + 127U &&
+               f.id != co::cob_id::emcy_base + node_) {
+      if (auto e = co::emcy::decode(f)) log_.emcy = e.value();
+    }
+  }
+  std::uint8_t node_;
+  co::node::device<Store, C> dev_;
+  received_log log_;
+};
+#else
 /// Which machine gets which frame, and the node's NMT state: the glue a user writes around the
 /// library's machines and codecs (SDO server, nmt, sync, emcy). This is what a library node
 /// (issue 15, canopen/node/) replaces.
-template <class Store>
+template <class Store, std::size_t = 0>
 class node_glue {
 public:
   node_glue(std::uint8_t node, Store &store)
@@ -315,7 +381,7 @@ public:
   }
 
   /// Sends TPDO `n` (1..4) from the store as 1800h+n-1 / 1A00h+n-1 configure it.
-  [[nodiscard]] bool send_tpdo(std::uint16_t n) {
+  [[nodiscard]] bool send_tpdo(std::uint16_t n, std::uint32_t) {
     const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1800U + n - 1U));
     if (!id) return false;
     const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1A00U + n - 1U));
@@ -422,6 +488,8 @@ private:
   received_log log_;
 };
 
+#endif
+
 /// `!last sync|time|emcy`: what the node decoded last from python's producers.
 void last(const received_log &log, const std::string &what) {
   char buf[96];
@@ -482,9 +550,9 @@ std::vector<std::string> words(const std::string &line) {
   return w;
 }
 
-template <class Store>
+template <class Glue, class Store>
 int run(Store &store, std::uint8_t node) {
-  node_glue<Store> glue(node, store);
+  static Glue glue(node, store);
   client_side client;
   std::string pending;
   for (;;) {
@@ -518,6 +586,8 @@ int run(Store &store, std::uint8_t node) {
         if (w[0] == "!start") {
           glue.start(now);
           put_line("= ok ");
+        } else if (w[0] == "!node") {
+          put_line(FIELDCODEC_INTEROP_LIBRARY_NODE ? "= ok library" : "= ok glue");
         } else if (w[0] == "!state") {
           put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
         } else if (w[0] == "!last" && w.size() == 2U) {
@@ -539,7 +609,7 @@ int run(Store &store, std::uint8_t node) {
               glue.clear(static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)), now);
           put_line(done ? "= ok " : "= error bad_state 00000000");
         } else if (w[0] == "!tpdo" && w.size() == 2U) {
-          if (glue.send_tpdo(static_cast<std::uint16_t>(std::stoul(w[1])))) {
+          if (glue.send_tpdo(static_cast<std::uint16_t>(std::stoul(w[1])), now)) {
             put_line("= ok ");
           } else {
             answer_error(fieldcodec::errc::bad_state, {});
@@ -590,7 +660,11 @@ int serve(std::uint8_t node) {
                  std::string(fieldcodec::to_string(s.error())).c_str());
     return 2;
   }
-  return run(store, node);
+#if FIELDCODEC_INTEROP_LIBRARY_NODE
+  return run<node_glue<decltype(store), co::node::capacity_for(Dict)>>(store, node);
+#else
+  return run<node_glue<decltype(store)>>(store, node);
+#endif
 }
 
 } // namespace
