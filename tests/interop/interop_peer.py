@@ -742,14 +742,13 @@ def part_pdo(args):
               f"python read back {got}")
         ok("pdo configure", f"python's PdoMap.save() wrote TPDO1 ({len(TPDO_LAYOUT)} entries) "
            "into the fieldcodec node; read back alike")
-        if b.command("!node", "pdo configure") == "ok library":
-            m = node.tpdo[2]
-            layout_map(m, BIT_LAYOUTS[0])
-            m.cob_id = 0x280 + node_id
-            m.enabled = True
-            expect_abort("pdo configure", 0x06040041, m.save)
-            ok("pdo configure", "a mapping shorter than its object's type (4 bits of an "
-               "INTEGER32) is refused with 06040041, as CiA 301 asks")
+        m = node.tpdo[2]
+        layout_map(m, BIT_LAYOUTS[0])
+        m.cob_id = 0x280 + node_id
+        m.enabled = True
+        expect_abort("pdo configure", 0x06040041, m.save)
+        ok("pdo configure", "a mapping shorter than its object's type (4 bits of an INTEGER32) "
+           "is refused with 06040041, as CiA 301 asks")
         tpdo = node.tpdo[1]
         for index, sub, _, value in TPDO_LAYOUT:
             var = node.object_dictionary[index][sub]

@@ -1,5 +1,5 @@
 // The fieldcodec side of the interoperability test (tests/interop/, docs/canopen.md
-// "Interoperability"): a CANopen node and an SDO client built from the library's machines,
+// "Interoperability"): the library's CANopen node (canopen/node/device.hpp) and SDO client,
 // speaking candump-style frames on standard input and output so that a python-can virtual bus
 // (python canopen, tests/interop/interop_peer.py) can carry them.
 //
@@ -14,29 +14,23 @@
 //   !set INDEX SUB HEX                            … the application writes a value
 //   !start                                        power-on: boot-up, pre-operational
 //   !state                                        the NMT state
-//   !node                                         "library" (canopen/node/) or "glue"
 //   !last sync|time|emcy                          what the node decoded last from others
 //   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
 //   !emcy-clear CODE                              the error is gone
-//   !tpdo N                                       send TPDO N as the store configures it
+//   !tpdo N                                       the application's event for TPDO N
 //   !pack MAPPINGS VALUES                         pdo::pack_all (mappings hex, values decimal)
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
 //
-// The node glue (which machine gets which frame) is the part the library's node assembly
-// replaces (issue 15): `node_glue` below.
+// `node_glue` puts the commands on the node (node::device) and notes what the node does not
+// consume (TIME, other nodes' EMCY) for `!last`.
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/object_store.hpp>
-#if __has_include(<fieldcodec/canopen/node/device.hpp>)
 #include <fieldcodec/canopen/node/device.hpp>
-#define FIELDCODEC_INTEROP_LIBRARY_NODE 1
-#else
-#define FIELDCODEC_INTEROP_LIBRARY_NODE 0
-#endif
+#include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
@@ -201,53 +195,6 @@ private:
   bool upload_ = false;
 };
 
-/// A store value as the raw bits a PDO carries (little-endian; signed values sign-extended).
-template <class Store>
-std::optional<std::int64_t> raw_of(const Store &store, fieldcodec::od::address a) {
-  const auto *e = store.dictionary().find(a);
-  auto v = store.value(a);
-  if (e == nullptr || !v || v.value().size() > 8U) return std::nullopt;
-  std::uint64_t raw = 0;
-  for (std::size_t i = v.value().size(); i-- > 0U;) raw = (raw << 8U) | v.value()[i];
-  const std::size_t bits = 8U * v.value().size();
-  if (od::is_signed_integer(e->type) && bits < 64U && ((raw >> (bits - 1U)) & 1U) != 0U) {
-    raw |= ~std::uint64_t{0} << bits;
-  }
-  return static_cast<std::int64_t>(raw);
-}
-
-/// Mapping parameter `map_index` as entries (sub 0 = count).
-template <class Store>
-std::vector<co::pdo::mapping_entry> mapping_of(const Store &store, std::uint16_t map_index) {
-  std::vector<co::pdo::mapping_entry> out;
-  auto n = store.value({map_index, 0});
-  if (!n || n.value().empty()) return out;
-  for (std::uint8_t i = 1; i <= n.value()[0]; ++i) {
-    auto v = store.value({map_index, i});
-    if (!v || v.value().size() != 4U) return {};
-    const std::uint32_t u = static_cast<std::uint32_t>(v.value()[0]) |
-                            static_cast<std::uint32_t>(v.value()[1]) << 8U |
-                            static_cast<std::uint32_t>(v.value()[2]) << 16U |
-                            static_cast<std::uint32_t>(v.value()[3]) << 24U;
-    out.push_back(co::pdo::mapping_entry::from_u32(u));
-  }
-  return out;
-}
-
-/// A COB-ID parameter (sub 1 of 1400h.. / 1800h..) when it is valid.
-template <class Store>
-std::optional<std::uint16_t> pdo_cob_id(const Store &store, std::uint16_t comm_index) {
-  auto v = store.value({comm_index, 1});
-  if (!v || v.value().size() != 4U) return std::nullopt;
-  const std::uint32_t u = static_cast<std::uint32_t>(v.value()[0]) |
-                          static_cast<std::uint32_t>(v.value()[1]) << 8U |
-                          static_cast<std::uint32_t>(v.value()[2]) << 16U |
-                          static_cast<std::uint32_t>(v.value()[3]) << 24U;
-  auto p = co::pdo::decode_cob_id(u);
-  if (!p || !p.value().valid) return std::nullopt;
-  return static_cast<std::uint16_t>(p.value().id);
-}
-
 /// What the node received from others (python's SYNC, TIME and EMCY producers), for `!last`.
 struct received_log {
   std::size_t syncs = 0;
@@ -256,7 +203,6 @@ struct received_log {
   std::optional<co::emcy::received> emcy;
 };
 
-#if FIELDCODEC_INTEROP_LIBRARY_NODE
 /// The library's node (canopen/node/device.hpp) behind the bridge's commands. What the node
 /// does not consume (TIME, other nodes' EMCY) is decoded here for `!last`.
 template <class Store, co::node::capacity C>
@@ -314,181 +260,6 @@ private:
   co::node::device<Store, C> dev_;
   received_log log_;
 };
-#else
-/// Which machine gets which frame, and the node's NMT state: the glue a user writes around the
-/// library's machines and codecs (SDO server, nmt, sync, emcy). This is what a library node
-/// (issue 15, canopen/node/) replaces.
-template <class Store, std::size_t = 0>
-class node_glue {
-public:
-  node_glue(std::uint8_t node, Store &store)
-      : node_(node), store_(store), server_(node, store, buffer_, 2000), guard_(node) {}
-
-  /// Power-on: boot-up, then pre-operational.
-  void start(std::uint32_t now) { boot(now); }
-
-  void on_frame(const co::can_frame &f, std::uint32_t now) {
-    if (f.id == co::cob_id::nmt) {
-      auto m = co::nmt::decode(f);
-      if (m && (m.value().node == 0U || m.value().node == node_)) command(m.value().cs, now);
-      return;
-    }
-    if (state_ == co::nmt::state::boot_up) return; // not started yet: silent
-    if (f.rtr && f.id == co::cob_id::nmt_error(node_).value()) {
-      // node guarding: answered whatever the DLC of the remote request
-      if (auto r = guard_.respond(f, state_)) transmit(r.value());
-      return;
-    }
-    if (f.id == co::cob_id::sync) {
-      if (auto c = co::sync::decode(f)) {
-        ++log_.syncs;
-        log_.sync_counter = c.value();
-      }
-      return;
-    }
-    if (f.id == co::cob_id::time) {
-      if (auto t = co::time_stamp::decode(f)) log_.time = t.value();
-      return;
-    }
-    if (f.id > co::cob_id::emcy_base && f.id <= co::cob_id::emcy_base + 127U) {
-      if (auto e = co::emcy::decode(f)) log_.emcy = e.value();
-      return;
-    }
-    if (state_ == co::nmt::state::operational && !f.rtr && receive_pdo(f)) return;
-    // SDO: pre-operational and operational only (CiA 301 table of services per state)
-    if (state_ == co::nmt::state::stopped) return;
-    transmit_all(server_.on_frame(f, now).send);
-  }
-
-  void poll(std::uint32_t now) {
-    transmit_all(server_.poll(now).send);
-    if (state_ == co::nmt::state::boot_up) return;
-    // heartbeat producer: the period is 1017h as it is now (0: off)
-    // (UNSIGNED16 in CiA 301; the XENAX EDS declares UNSIGNED32: any width up to 4 bytes)
-    std::uint32_t period = 0;
-    if (auto v = store_.value({0x1017, 0}); v && v.value().size() <= 4U) {
-      for (std::size_t i = v.value().size(); i-- > 0U;) period = (period << 8U) | v.value()[i];
-    }
-    if (period == 0U) {
-      next_heartbeat_.reset();
-      return;
-    }
-    if (!next_heartbeat_) next_heartbeat_ = now + period;
-    if (co::reached(*next_heartbeat_, now)) {
-      transmit(co::nmt::encode_heartbeat(node_, state_).value());
-      next_heartbeat_ = now + period;
-    }
-  }
-
-  /// Sends TPDO `n` (1..4) from the store as 1800h+n-1 / 1A00h+n-1 configure it.
-  [[nodiscard]] bool send_tpdo(std::uint16_t n, std::uint32_t) {
-    const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1800U + n - 1U));
-    if (!id) return false;
-    const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1A00U + n - 1U));
-    std::vector<std::int64_t> raws;
-    for (const auto &m : map) {
-      const auto r = raw_of(store_, {m.index, m.sub});
-      if (!r) return false;
-      raws.push_back(*r);
-    }
-    std::array<std::uint8_t, 8> data{};
-    auto len = co::pdo::pack_all(map, raws, data);
-    if (!len) return false;
-    auto f = co::make_frame(*id, std::span<const std::uint8_t>(data).first(len.value()));
-    if (!f) return false;
-    transmit(f.value());
-    return true;
-  }
-
-  /// The application's own write (no access check).
-  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
-    return store_.set(a, v);
-  }
-  /// An application error: EMCY with 1001h kept alike.
-  [[nodiscard]] bool raise(std::uint16_t code, std::uint8_t bits,
-                           const std::array<std::uint8_t, 5> &manufacturer, std::uint32_t) {
-    const auto reg = static_cast<std::uint8_t>(bits | co::emcy::reg::generic);
-    if (store_.set({0x1001, 0}, std::array<std::uint8_t, 1>{reg}) != sdo::abort_code::none) {
-      return false;
-    }
-    transmit(co::emcy::encode(node_, {code, reg, manufacturer}).value());
-    return true;
-  }
-  /// The error is gone: "error reset / no error" (one active error at a time in this glue).
-  [[nodiscard]] bool clear(std::uint16_t, std::uint32_t) {
-    if (store_.set({0x1001, 0}, std::array<std::uint8_t, 1>{0}) != sdo::abort_code::none) {
-      return false;
-    }
-    transmit(co::emcy::encode(node_, {co::emcy::code::error_reset, 0, {}}).value());
-    return true;
-  }
-
-  [[nodiscard]] co::nmt::state state() const { return state_; }
-  [[nodiscard]] const received_log &log() const { return log_; }
-
-private:
-  /// An RPDO (1400h..1403h) is written into the store, entry by entry, through the same write
-  /// an SDO download uses (limits, write hook).
-  bool receive_pdo(const co::can_frame &f) {
-    for (std::uint16_t i = 0; i < 4U; ++i) {
-      const auto id = pdo_cob_id(store_, static_cast<std::uint16_t>(0x1400U + i));
-      if (!id || *id != f.id) continue;
-      const auto map = mapping_of(store_, static_cast<std::uint16_t>(0x1600U + i));
-      std::vector<std::uint64_t> raws(map.size());
-      if (!co::pdo::unpack_all(map, f.payload(), raws)) return true; // too short: dropped
-      for (std::size_t k = 0; k < map.size(); ++k) {
-        if (map[k].is_dummy()) continue;
-        const auto *e = store_.dictionary().find({map[k].index, map[k].sub});
-        if (e == nullptr) continue;
-        std::uint64_t raw = raws[k];
-        const std::size_t bits = map[k].bits;
-        if (od::is_signed_integer(e->type) && bits < 64U && ((raw >> (bits - 1U)) & 1U) != 0U) {
-          raw |= ~std::uint64_t{0} << bits; // sign-extend a short signed field
-        }
-        std::array<std::uint8_t, 8> bytes{};
-        const std::size_t width = std::min<std::size_t>(od::info(e->type).size, 8U);
-        for (std::size_t b = 0; b < width; ++b)
-          bytes[b] = static_cast<std::uint8_t>(raw >> (8U * b));
-        const od::address a{map[k].index, map[k].sub};
-        if (store_.begin_write(a, static_cast<std::uint32_t>(width)) == sdo::abort_code::none) {
-          (void)store_.write(a, 0, std::span<const std::uint8_t>(bytes).first(width), true);
-        }
-      }
-      return true;
-    }
-    return false;
-  }
-
-  void boot(std::uint32_t now) {
-    guard_.reset();
-    transmit(co::nmt::encode_boot_up(node_).value());
-    state_ = co::nmt::state::pre_operational;
-    next_heartbeat_.reset();
-    (void)now;
-  }
-  void command(co::nmt::command cs, std::uint32_t now) {
-    switch (cs) {
-    case co::nmt::command::reset_node:
-      // the application's values go back to their defaults, then as reset communication
-      (void)store_.init_defaults(node_);
-      boot(now);
-      return;
-    case co::nmt::command::reset_communication: boot(now); return;
-    default: state_ = co::nmt::state_after(cs); return;
-    }
-  }
-
-  std::uint8_t node_;
-  Store &store_;
-  std::array<std::uint8_t, 127U * 7U> buffer_{};
-  sdo::server<Store> server_;
-  co::nmt::guard_responder guard_;
-  co::nmt::state state_ = co::nmt::state::boot_up;
-  std::optional<std::uint32_t> next_heartbeat_;
-  received_log log_;
-};
-
-#endif
 
 /// `!last sync|time|emcy`: what the node decoded last from python's producers.
 void last(const received_log &log, const std::string &what) {
@@ -586,8 +357,6 @@ int run(Store &store, std::uint8_t node) {
         if (w[0] == "!start") {
           glue.start(now);
           put_line("= ok ");
-        } else if (w[0] == "!node") {
-          put_line(FIELDCODEC_INTEROP_LIBRARY_NODE ? "= ok library" : "= ok glue");
         } else if (w[0] == "!state") {
           put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
         } else if (w[0] == "!last" && w.size() == 2U) {
@@ -660,11 +429,7 @@ int serve(std::uint8_t node) {
                  std::string(fieldcodec::to_string(s.error())).c_str());
     return 2;
   }
-#if FIELDCODEC_INTEROP_LIBRARY_NODE
   return run<node_glue<decltype(store), co::node::capacity_for(Dict)>>(store, node);
-#else
-  return run<node_glue<decltype(store)>>(store, node);
-#endif
 }
 
 } // namespace
