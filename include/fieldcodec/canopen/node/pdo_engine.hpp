@@ -77,7 +77,6 @@ namespace fieldcodec::canopen::node {
   case pdo::mapping_problem::overlap: return abort_code::not_mappable; // POWERLINK only
   case pdo::mapping_problem::too_long:
   case pdo::mapping_problem::too_many_entries: return abort_code::pdo_too_long;
-  case pdo::mapping_problem::overlap: break; // POWERLINK mappings only, never a CANopen one
   }
   return abort_code::general_error;
 }
