@@ -2,6 +2,7 @@
 // (static_asserts in the blocks; doctest cases below for what runs). tests/docs_check/run.cmake
 // fails when a block of the page and its copy here differ. Each block sits in a namespace of
 // its own (the page's blocks are complete programs; here they share one translation unit).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -10,11 +11,21 @@
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_object.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
+#include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/dpq/emergency.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
 #include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/pacontrol/axis_parameter.hpp>
+#include <fieldcodec/pacontrol/codes.hpp>
+#include <fieldcodec/pacontrol/command.hpp>
+#include <fieldcodec/pacontrol/elements.hpp>
+#include <fieldcodec/pacontrol/position.hpp>
+#include <fieldcodec/pacontrol/profibus_cmd.hpp>
+#include <fieldcodec/pacontrol/serial_decoder.hpp>
+#include <fieldcodec/pacontrol/serial_frame.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -208,6 +219,179 @@ constexpr auto bar = dpq::to_eu_decimal(p::pressure_fb, tpdo1.get_signed(f.paylo
 static_assert(mm.value().mantissa == 100000 && mm.value().places == 3);
 static_assert(bar.value().mantissa == 200000 && bar.value().places == 3);
 } // namespace cb_dpq_9
+
+namespace cb_pac_1 { // "Send a command over RS232 (with its XOR check)"
+namespace pac = fieldcodec::pacontrol;
+namespace serial = fieldcodec::pacontrol::serial;
+namespace cmds = fieldcodec::dictionaries::pacontrol_commands;
+
+// "read N2" (1906): 01 02 "1906;2;0;0" 03 "7" 04
+constexpr auto read_n2 = pac::make_request(cmds::cmd_get_int_reg, 2).value();
+constexpr bool sent_as(std::string_view wire) {
+  std::array<std::uint8_t, serial::max_frame_size> tx{};
+  auto n = serial::encode_request(read_n2, tx);
+  return n && std::ranges::equal(std::span(tx).first(n.value()), wire);
+}
+static_assert(sent_as("\x01\x02" "1906;2;0;0" "\x03" "7" "\x04"));
+
+// the check by hand: '1'^'9'^'0'^'6'^';'^'2'^';'^'0'^';'^'0' = 7
+static_assert(serial::compute_check(std::string_view("1906;2;0;0"), serial::check_rule::body) == 7);
+} // namespace cb_pac_1
+
+namespace cb_pac_2 { // "Decode the answer byte by byte"
+namespace pac = fieldcodec::pacontrol;
+namespace serial = fieldcodec::pacontrol::serial;
+namespace cmds = fieldcodec::dictionaries::pacontrol_commands;
+using fieldcodec::errc;
+
+constexpr fieldcodec::result<serial::acknowledgement> answer(std::string_view line,
+                                                             serial::check_options check = {}) {
+  serial::decoder rx({check, serial::accept::acknowledgements}); // a master hears answers only
+  errc dropped = errc::truncated;
+  for (const char c : line) {
+    auto r = rx.push(static_cast<std::uint8_t>(c));
+    if (!r) {
+      dropped = r.error(); // bad_checksum, bad_syntax, …: the decoder waits for the next SOH
+    } else if (r.value() == serial::frame_kind::acknowledgement) {
+      return rx.acknowledgement();
+    }
+  }
+  return dropped;
+}
+
+// 01 02 "0;1;1;0;0;222" 03 "58" 04: QUIT 0 (no error), BE 1 (done), STATUS 1, ERROR 0, N2 = 222
+constexpr auto ack = answer("\x01\x02" "0;1;1;0;0;222" "\x03" "58" "\x04").value();
+static_assert(ack.command_error_number == 0 && ack.end_of_processing);
+static_assert(pac::reply_value(cmds::cmd_get_int_reg, ack).value().as_int().value() == 222);
+
+// one bit flipped on the line: the check finds it
+static_assert(answer("\x01\x02" "0;1;1;0;0;223" "\x03" "58" "\x04").error() == errc::bad_checksum);
+// a device that checks its answers like requests (XOR without ETX: 57): accept either rule
+constexpr serial::check_options lenient{.acknowledgement_either_rule = true};
+static_assert(answer("\x01\x02" "0;1;1;0;0;222" "\x03" "57" "\x04").error() == errc::bad_checksum);
+static_assert(answer("\x01\x02" "0;1;1;0;0;222" "\x03" "57" "\x04", lenient).has_value());
+} // namespace cb_pac_2
+
+namespace cb_pac_3 { // "Move an axis and poll until it arrives"
+namespace pac = fieldcodec::pacontrol;
+namespace serial = fieldcodec::pacontrol::serial;
+namespace cmds = fieldcodec::dictionaries::pacontrol_commands;
+using fieldcodec::errc;
+
+// axis 2 to 5552.0: 01 02 "0A87;2;1;5552.0" 03 "95" 04 (21 bytes)
+constexpr auto move = pac::make_request(cmds::cmd_pos_axis_absolut, 2, 5552.0F);
+static_assert(move.value().code == 0x0A87 && move.value().parameter == 2);
+static_assert(pac::make_request(cmds::cmd_pos_axis_absolut, 2, 5552).is(errc::type_mismatch));
+
+constexpr std::size_t frame_length() {
+  std::array<std::uint8_t, serial::max_frame_size> tx{};
+  return serial::encode_request(move.value(), tx).value_or(0);
+}
+static_assert(frame_length() == 21);
+
+// the poll is one byte, EOT (04)
+constexpr std::uint8_t poll = [] {
+  std::array<std::uint8_t, 1> tx{};
+  return serial::encode_poll(tx) ? tx[0] : std::uint8_t{0};
+}();
+static_assert(poll == serial::eot);
+
+// done when BE is 1 and QUIT 0; the position in the date compares as a number (5552.000)
+constexpr bool arrived(const serial::acknowledgement &a) {
+  return a.end_of_processing && a.command_error_number == 0;
+}
+constexpr serial::acknowledgement last{0, true, 31, 0, pac::value::of_real({5552000, 3}).value()};
+static_assert(arrived(last) && last.date == pac::value::of_float(5552.0F).value());
+} // namespace cb_pac_3
+
+namespace cb_pac_4 { // "Say what an error number means"
+namespace pac = fieldcodec::pacontrol;
+using fieldcodec::errc;
+
+static_assert(pac::describe_command_error(41).value() == "value out of range");
+static_assert(pac::describe_command_error(43).value() == "axis not referenced");
+static_assert(pac::describe_operating_status(31).value() == "ONLINE");
+static_assert(pac::describe_controller_error(529).value() ==
+              "positive limit switch reached or cable broken");
+static_assert(pac::classify_controller_error(530) == pac::controller_error_class::operation);
+static_assert(pac::describe_command_error(42000).is(errc::unknown_object)); // not in the table
+} // namespace cb_pac_4
+
+namespace cb_pac_5 { // "Set and read an axis parameter"
+namespace pac = fieldcodec::pacontrol;
+namespace cmds = fieldcodec::dictionaries::pacontrol_commands;
+using fieldcodec::errc;
+
+// axis 3, parameter 6 (acceleration) := 200.0: 0800 with PAR_1 0306h = 774
+constexpr auto set =
+    pac::make_request(cmds::cmd_set_axis_parameter, pac::axis_parameter{3, 6}, 200.0F);
+static_assert(set.value().code == 0x0800 && set.value().parameter == 774);
+// read it back with 1800 on the same PAR_1
+constexpr auto get = pac::make_request(cmds::cmd_get_axis_parameter, pac::axis_parameter{3, 6});
+static_assert(get.value().code == 0x1800 && get.value().parameter == 774);
+// and the other way round
+static_assert(pac::decode_axis_parameter(774).value() == pac::axis_parameter{3, 6});
+
+// axis 17 or parameter 51 do not exist (the device would answer QUIT 32 / 33)
+static_assert(pac::make_axis_parameter(17, 6).is(errc::out_of_range));
+static_assert(pac::make_request(cmds::cmd_get_axis_parameter, pac::axis_parameter{1, 51})
+                  .is(errc::out_of_range));
+} // namespace cb_pac_5
+
+namespace cb_pac_6 { // "Read one input out of an input word"
+namespace pac = fieldcodec::pacontrol;
+
+// I10 is bit 9 of input word 1
+static_assert(pac::locate_element(10).value() == pac::element_bit{1, 9});
+// 1901 answered 36099 (8D03h) for word 1: I9 is set, I10 is not
+constexpr auto word1 = pac::element_word::containing(10, 36099).value();
+static_assert(word1.test(9).value() && !word1.test(10).value());
+} // namespace cb_pac_6
+
+namespace cb_pac_7 { // "Run a command through the Profibus CMD handshake"
+namespace pac = fieldcodec::pacontrol;
+namespace profibus = fieldcodec::pacontrol::profibus;
+namespace cmds = fieldcodec::dictionaries::pacontrol_commands;
+
+constexpr bool read_n2_over_profibus() {
+  profibus::cmd_handshake hs;
+  // "read N2": output bytes 00 00 00 00 | 00 02 | 99 06 (SF set, code 1906)
+  auto req = pac::start_command(hs, cmds::cmd_get_int_reg, 2);
+  if (!req) return false;
+  const std::array<std::uint8_t, 8> out = profibus::encode_cmd_request(req.value()).value();
+  if (out != std::array<std::uint8_t, 8>{0, 0, 0, 0, 0x00, 0x02, 0x99, 0x06}) return false;
+
+  // a cycle later: 00 00 00 00 | 00 1F | 00 00 — RECEIVE not yet toggled
+  const std::array<std::uint8_t, 8> seen_not{0, 0, 0, 0, 0x00, 0x1F, 0x00, 0x00};
+  if (hs.update(profibus::decode_cmd_reply(seen_not).value()) != profibus::cmd_progress::waiting) {
+    return false;
+  }
+  // then: 00 00 00 DE | 00 1F | A0 00 — RECEIVE = SEND, end of processing, date 222
+  const std::array<std::uint8_t, 8> done{0, 0, 0, 0xDE, 0x00, 0x1F, 0xA0, 0x00};
+  const auto reply = profibus::decode_cmd_reply(done).value();
+  if (hs.update(reply) != profibus::cmd_progress::done) return false;
+  return pac::reply_value(cmds::cmd_get_int_reg, reply).value().as_int().value() == 222;
+}
+static_assert(read_n2_over_profibus());
+} // namespace cb_pac_7
+
+namespace cb_pac_8 { // "Send a position as IEEE-754 or ×1000"
+namespace pac = fieldcodec::pacontrol;
+using fieldcodec::errc;
+using bytes = std::array<std::uint8_t, 4>;
+
+static_assert(pac::encode_position(5552.0F, pac::position_format::ieee_float).value() ==
+              bytes{0x45, 0xAD, 0x80, 0x00});
+static_assert(pac::encode_position(5552.0F, pac::position_format::milli_integer).value() ==
+              bytes{0x00, 0x54, 0xB7, 0x80}); // 5 552 000
+static_assert(pac::decode_position_decimal(bytes{0x00, 0x54, 0xB7, 0x81},
+                                           pac::position_format::milli_integer)
+                  .value()
+                  .mantissa == 5552001); // 5552.001
+// beyond ±2147483.647 does not fit the int32: refused, never wrapped
+static_assert(
+    pac::encode_position(2147484.0, pac::position_format::milli_integer).is(errc::overflow));
+} // namespace cb_pac_8
 // clang-format on
 
 TEST_CASE("cookbook, DPQ: an emergency and its text") {
@@ -246,4 +430,43 @@ TEST_CASE("cookbook, DPQ: the frames the recipes state, at run time") {
   // the read-back request of the bar recipe
   CHECK(fieldcodec::dpq::read_request(5, fieldcodec::dictionaries::dpq_parameters::inj_p_limit_1)
             .value() == co::can_frame{0x605, false, 8, {0x40, 0x23, 0x20, 0x00, 0, 0, 0, 0}});
+}
+
+TEST_CASE("cookbook, PA-CONTROL: the recipes' functions at run time") {
+  using fieldcodec::errc;
+  // the request frame helper tells a wrong wire text from the right one
+  CHECK(cb_pac_1::sent_as("\x01\x02"
+                          "1906;2;0;0"
+                          "\x03"
+                          "7"
+                          "\x04"));
+  CHECK_FALSE(cb_pac_1::sent_as("\x01\x02"
+                                "1906;2;0;0"
+                                "\x03"
+                                "6"
+                                "\x04"));
+  // the decoder skips noise before the frame and stops at a cut frame
+  auto ack = cb_pac_2::answer("xx\x04\x01\x02"
+                              "0;1;1;0;0;222"
+                              "\x03"
+                              "58"
+                              "\x04");
+  CHECK(ack.value().date.as_int().value() == 222); // noise dropped, the frame after it taken
+  CHECK(cb_pac_2::answer("\x01\x02"
+                         "0;1;1;0;0;2")
+            .is(errc::truncated));
+  CHECK(cb_pac_2::answer("\x01\x02"
+                         "0;1;1;0;0;222"
+                         "\x03"
+                         "58"
+                         "\x04")
+            .value()
+            .date.as_int()
+            .value() == 222);
+  CHECK(cb_pac_3::frame_length() == 21);
+  CHECK(cb_pac_7::read_n2_over_profibus());
+  // an answer still on its way is not arrived
+  const fieldcodec::pacontrol::serial::acknowledgement moving{
+      0, false, 31, 0, fieldcodec::pacontrol::value::of_real({1516950, 3}).value()};
+  CHECK_FALSE(cb_pac_3::arrived(moving));
 }
