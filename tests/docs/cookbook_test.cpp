@@ -12,10 +12,14 @@
 #include <fieldcodec/canopen/sdo_object.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/dpq/emergency.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
 #include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
+#include <fieldcodec/ds402/modes.hpp>
+#include <fieldcodec/ds402/state_machine.hpp>
+#include <fieldcodec/ds402/statusword.hpp>
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/pacontrol/axis_parameter.hpp>
 #include <fieldcodec/pacontrol/codes.hpp>
@@ -25,6 +29,9 @@
 #include <fieldcodec/pacontrol/profibus_cmd.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
+#include <fieldcodec/xenax/error_code.hpp>
+#include <fieldcodec/xenax/homing.hpp>
+#include <fieldcodec/xenax/modes.hpp>
 #include <span>
 #include <string>
 #include <string_view>
@@ -392,6 +399,180 @@ static_assert(pac::decode_position_decimal(bytes{0x00, 0x54, 0xB7, 0x81},
 static_assert(
     pac::encode_position(2147484.0, pac::position_format::milli_integer).is(errc::overflow));
 } // namespace cb_pac_8
+
+namespace cb_xenax_1 { // "Read the identity (1018h)"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+
+// 601: 40 18 10 02 … asks for the product code;
+// 581: 43 18 10 02 08 75 00 00 answers 7508h (Xvi75V8)
+static_assert(co::sdo::upload(1, x::identity_object_product_code).value().data[3] == 0x02);
+constexpr co::can_frame answer{0x581, false, 8, {0x43, 0x18, 0x10, 0x02, 0x08, 0x75, 0, 0}};
+static_assert(co::sdo::upload_value(x::identity_object_product_code, answer)
+                  .value()
+                  .to_uint64()
+                  .value() == 0x7508);
+} // namespace cb_xenax_1
+
+namespace cb_xenax_2 { // "Enable the drive (CiA 402 power state machine)"
+namespace co = fieldcodec::canopen;
+namespace ds402 = fieldcodec::ds402;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+using ds402::state;
+
+// switch on disabled (statusword 0250h) → 06 (shutdown)
+static_assert(ds402::next_controlword(0x0250, state::operation_enabled, 0x0000).value() == 0x06);
+// ready to switch on (0231h) → 0F (switch on + enable operation at once)
+static_assert(ds402::next_controlword(0x0231, state::operation_enabled, 0x0006).value() == 0x0F);
+// operation enabled (0237h) → 0F: stay
+static_assert(ds402::next_controlword(0x0237, state::operation_enabled, 0x000F).value() == 0x0F);
+static_assert(ds402::decode_state(0x0237).value() == state::operation_enabled);
+
+// the controlword by SDO: 601: 2B 40 60 00 06 00 00 00
+static_assert(co::sdo::download(1, x::controlword, 0x06).value() ==
+              co::can_frame{0x601, false, 8, {0x2B, 0x40, 0x60, 0x00, 0x06, 0, 0, 0}});
+
+// the whole walk against a drive that follows CiA 402: two cycles from switch on disabled
+constexpr int cycles_to_enable(state drive) {
+  std::uint16_t previous = 0;
+  for (int cycle = 1; cycle <= 8; ++cycle) {
+    auto cw = ds402::next_controlword(ds402::state_bits(drive), state::operation_enabled, previous);
+    if (!cw) return -1;
+    drive = ds402::apply(drive, cw.value(), previous).to;
+    previous = cw.value();
+    if (drive == state::operation_enabled) return cycle;
+  }
+  return -1;
+}
+static_assert(cycles_to_enable(state::switch_on_disabled) == 2);
+static_assert(cycles_to_enable(state::fault) == 3); // fault reset (80), then 06, then 0F
+} // namespace cb_xenax_2
+
+namespace cb_xenax_3 { // "Switch the mode of operation"
+namespace co = fieldcodec::canopen;
+namespace ds402 = fieldcodec::ds402;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+
+// profile position: 601: 2F 60 60 00 01 00 00 00
+constexpr auto pp =
+    co::sdo::download(1, x::modes_of_operation_requested, ds402::mode::profile_position);
+static_assert(pp.value() ==
+              co::can_frame{0x601, false, 8, {0x2F, 0x60, 0x60, 0x00, 0x01, 0, 0, 0}});
+// XENAX jog: 601: 2F 60 60 00 FF 00 00 00
+static_assert(co::sdo::download(1, x::modes_of_operation_requested, xenax::mode::jog)
+                  .value()
+                  .data[4] == 0xFF);
+
+// 6061h answered 581: 4F 61 60 00 FF …: the drive is in jog mode
+constexpr co::can_frame shown{0x581, false, 8, {0x4F, 0x61, 0x60, 0x00, 0xFF}};
+constexpr auto raw = co::sdo::upload_value(x::modes_of_operation_display, shown).value();
+static_assert(xenax::decode_mode(static_cast<std::int8_t>(raw.to_int64().value())).value() ==
+              xenax::mode::jog);
+// the XENAX supports pp, homing, CSP and jog (6502h)
+static_assert(xenax::is_supported(xenax::supported_modes, xenax::mode::cyclic_sync_position));
+} // namespace cb_xenax_3
+
+namespace cb_xenax_4 { // "Move to a position (profile position set-point)"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+using fieldcodec::errc;
+
+// target 100 000 increments: 601: 23 7A 60 00 A0 86 01 00
+static_assert(co::sdo::download(1, x::target_position, 100000).value() ==
+              co::can_frame{0x601, false, 8, {0x23, 0x7A, 0x60, 0x00, 0xA0, 0x86, 0x01, 0x00}});
+// speed and acceleration are checked against the dictionary's limits (6081h: 10…100 000 000)
+static_assert(co::sdo::download(1, x::speed, 50000).has_value());
+static_assert(co::sdo::download(1, x::speed, 5).is(errc::out_of_range));
+static_assert(co::sdo::download(1, x::acceleration, 1000000).has_value());
+
+// start: 1F absolute (5F relative); halt: 10F
+static_assert(xenax::pp_start(xenax::positioning::absolute) == 0x1F);
+static_assert(xenax::pp_start(xenax::positioning::relative) == 0x5F);
+// 1237h: set-point acknowledged (bit 12) → send 0F again; 0637h: target reached (bit 10)
+constexpr auto ack = xenax::decode_status(0x1237, xenax::mode::profile_position).value();
+static_assert(ack.set_point_acknowledge && !ack.target_reached);
+constexpr auto there = xenax::decode_status(0x0637, xenax::mode::profile_position).value();
+static_assert(there.target_reached && !there.following_error);
+} // namespace cb_xenax_4
+
+namespace cb_xenax_5 { // "Run the reference (homing)"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+
+// method 2 (linear, start negative): 601: 2F 98 60 00 02 …; mode 6: 601: 2F 60 60 00 06 …
+static_assert(co::sdo::download(1, x::reference_methods, xenax::reference_method::linear_negative)
+                  .value()
+                  .data[4] == 0x02);
+static_assert(co::sdo::download(1, x::modes_of_operation_requested, xenax::mode::reference)
+                  .value()
+                  .data[4] == 0x06);
+static_assert(xenax::reference_start == 0x1F);
+
+// 1637h: reference performed (bit 10) and achieved (bit 12), no error (bit 13)
+constexpr auto done = xenax::decode_status(0x1637, xenax::mode::reference).value();
+static_assert(done.reference_performed && done.reference_achieved && !done.reference_error);
+// jog is refused after a gantry reference (methods 3…6)
+static_assert(!xenax::allows_jog(xenax::reference_method::gantry_same_positive));
+} // namespace cb_xenax_5
+
+namespace cb_xenax_6 { // "Read the error code (603Fh) and its text"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+using fieldcodec::errc;
+
+// 601: 40 3F 60 00 → 581: 4B 3F 60 00 32 FF 00 00: FF32h, XENAX error 50
+constexpr co::can_frame answer{0x581, false, 8, {0x4B, 0x3F, 0x60, 0x00, 0x32, 0xFF}};
+constexpr auto code = static_cast<std::uint16_t>(
+    co::sdo::upload_value(x::error_code, answer).value().to_uint64().value());
+static_assert(code == 0xFF32);
+constexpr std::uint8_t number = xenax::decode_error_code(code).value();
+static_assert(number == 50);
+static_assert(xenax::error_text(number) == "following error (position error window exceeded)");
+// after error 50 the drive continues without a new reference (power continue, 5000h = 2010h)
+static_assert(!xenax::needs_reference_after(number));
+// a code that is not a XENAX error number
+static_assert(xenax::decode_error_code(0x8611).is(errc::out_of_range));
+} // namespace cb_xenax_6
+
+namespace cb_xenax_7 { // "Reset a fault"
+namespace ds402 = fieldcodec::ds402;
+using ds402::state;
+
+constexpr bool reset_and_enable() {
+  ds402::power_sequencer seq; // remembers the controlword it sent last
+  // fault (0218h) → 80 (fault reset); still in fault → 80 held
+  if (seq.next(0x0218, state::operation_enabled).value() != 0x80) return false;
+  if (seq.next(0x0218, state::operation_enabled).value() != 0x80) return false;
+  // switch on disabled (0250h) → 06, ready to switch on (0231h) → 0F
+  if (seq.next(0x0250, state::operation_enabled).value() != 0x06) return false;
+  return seq.next(0x0231, state::operation_enabled).value() == 0x0F;
+}
+static_assert(reset_and_enable());
+} // namespace cb_xenax_7
+
+namespace cb_xenax_8 { // "Send a set-point in RPDO2"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+
+constexpr auto rpdo2 = co::pdo::make_static_mapping(
+    x::dictionary, co::pdo::direction::rpdo, {{0x6040, 0, 16}, {0x607A, 0, 32}});
+// the mapping entries are 1601h's defaults: 60400010h, 607A0020h
+static_assert(rpdo2.values() == std::array<std::uint32_t, 2>{0x60400010, 0x607A0020});
+static_assert(x::receive_pdo_mapping_param_2[2].default_value.to_uint64().value() == 0x607A0020);
+
+// controlword 1F, target 100 000: 301: 1F 00 A0 86 01 00
+constexpr co::can_frame rpdo2_frame = [] {
+  std::array<std::uint8_t, 6> b{};
+  if (!rpdo2.set(b, 0, 0x1F) || !rpdo2.set(b, 1, 100000)) return co::can_frame{};
+  return co::pdo::to_frame({.id = 0x301}, b).value();
+}();
+static_assert(rpdo2_frame ==
+              co::can_frame{0x301, false, 6, {0x1F, 0x00, 0xA0, 0x86, 0x01, 0x00}});
+} // namespace cb_xenax_8
 // clang-format on
 
 TEST_CASE("cookbook, DPQ: an emergency and its text") {
@@ -469,4 +650,18 @@ TEST_CASE("cookbook, PA-CONTROL: the recipes' functions at run time") {
   const fieldcodec::pacontrol::serial::acknowledgement moving{
       0, false, 31, 0, fieldcodec::pacontrol::value::of_real({1516950, 3}).value()};
   CHECK_FALSE(cb_pac_3::arrived(moving));
+}
+
+TEST_CASE("cookbook, XENAX: the enable walk reaches operation enabled from every state") {
+  namespace ds402 = fieldcodec::ds402;
+  using ds402::state;
+  CHECK(cb_xenax_2::cycles_to_enable(state::switch_on_disabled) == 2);
+  CHECK(cb_xenax_2::cycles_to_enable(state::ready_to_switch_on) == 1);
+  CHECK(cb_xenax_2::cycles_to_enable(state::switched_on) == 1);
+  CHECK(cb_xenax_2::cycles_to_enable(state::operation_enabled) == 1);
+  CHECK(cb_xenax_2::cycles_to_enable(state::fault) == 3);
+  // a drive that cannot leave a state on its own gives up after eight cycles
+  CHECK(cb_xenax_2::cycles_to_enable(state::fault_reaction_active) == -1);
+  CHECK(cb_xenax_7::reset_and_enable());
+  CHECK(cb_xenax_8::rpdo2_frame.dlc == 6);
 }
