@@ -9,6 +9,7 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_object.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
@@ -35,6 +36,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <doctest/doctest.h>
 
@@ -573,6 +575,41 @@ constexpr co::can_frame rpdo2_frame = [] {
 static_assert(rpdo2_frame ==
               co::can_frame{0x301, false, 6, {0x1F, 0x00, 0xA0, 0x86, 0x01, 0x00}});
 } // namespace cb_xenax_8
+
+namespace cb_xenax_9 { // "Read the device name (1008h) with the SDO client"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+
+class device_name {
+public:
+  // sends 601: 40 08 10 00 …; false while a transfer is running
+  template <class Send> bool start(std::uint32_t now, Send send) {
+    auto s = client_.upload({x::manufacturer_device_name.index, 0}, buffer_, now);
+    if (!s) return false;
+    for (const co::can_frame &f : s.value().send) send(f);
+    return true;
+  }
+  // every frame received from the bus (frames of other COB-IDs are ignored)
+  template <class Send> void on_frame(const co::can_frame &f, std::uint32_t now, Send send) {
+    for (const co::can_frame &out : client_.on_frame(f, now).send) send(out);
+  }
+  // at the deadline: a drive that does not answer ends the transfer with an abort (timeout)
+  template <class Send> void poll(std::uint32_t now, Send send) {
+    for (const co::can_frame &out : client_.poll(now).send) send(out);
+  }
+  // the name once the upload is done ("Servocontroller XENAX Xvi 75V8"); empty before and
+  // after a failure (client_.error() says why)
+  std::string_view name() const {
+    if (client_.state() != co::sdo::transfer_state::done) return {};
+    const auto b = client_.received();
+    return {reinterpret_cast<const char *>(b.data()), b.size()};
+  }
+
+private:
+  co::sdo::client client_{1, 500}; // node 1, 500 ms for each answer
+  std::array<std::uint8_t, x::manufacturer_device_name.size> buffer_{};
+};
+} // namespace cb_xenax_9
 // clang-format on
 
 TEST_CASE("cookbook, DPQ: an emergency and its text") {
@@ -664,4 +701,56 @@ TEST_CASE("cookbook, XENAX: the enable walk reaches operation enabled from every
   CHECK(cb_xenax_2::cycles_to_enable(state::fault_reaction_active) == -1);
   CHECK(cb_xenax_7::reset_and_enable());
   CHECK(cb_xenax_8::rpdo2_frame.dlc == 6);
+}
+
+TEST_CASE("cookbook, XENAX: the device name reader through a segmented upload") {
+  namespace co = fieldcodec::canopen;
+  namespace sdo = fieldcodec::canopen::sdo;
+  const auto ch = sdo::channel::default_for(1).value();
+  std::vector<co::can_frame> sent;
+  const auto send = [&](const co::can_frame &f) { sent.push_back(f); };
+  const std::string_view text = "Servocontroller XENAX Xvi 75V8";
+
+  cb_xenax_9::device_name reader;
+  REQUIRE(reader.start(0, send));
+  REQUIRE(sent.size() == 1);
+  CHECK(sent[0] == co::can_frame{0x601, false, 8, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0}});
+  CHECK_FALSE(reader.start(0, send)); // busy
+  CHECK(reader.name().empty());
+
+  reader.on_frame(ch.response(sdo::upload_response({0x1008, 0}, 30)), 10, send);
+  bool toggle = false;
+  std::size_t offset = 0;
+  while (offset < text.size()) {
+    REQUIRE(sent.size() >= 2);
+    CHECK(sent.back() == ch.request(sdo::upload_segment_request(toggle)));
+    const std::size_t n = std::min<std::size_t>(7, text.size() - offset);
+    std::array<std::uint8_t, 7> part{};
+    for (std::size_t i = 0; i < n; ++i) part[i] = static_cast<std::uint8_t>(text[offset + i]);
+    offset += n;
+    const auto segment = sdo::upload_segment(toggle, std::span<const std::uint8_t>(part).first(n),
+                                             offset == text.size());
+    reader.on_frame(ch.response(segment).value(), 20, send);
+    toggle = !toggle;
+  }
+  CHECK(reader.name() == text);
+
+  // a drive that does not answer: the poll at the deadline aborts with a timeout
+  cb_xenax_9::device_name silent;
+  sent.clear();
+  REQUIRE(silent.start(0, send));
+  silent.poll(100, send);
+  CHECK(sent.size() == 1); // nothing yet
+  silent.poll(600, send);
+  REQUIRE(sent.size() == 2);
+  CHECK(sent[1].data[0] == 0x80); // abort 0504 0000h
+  CHECK(sent[1].data[4] == 0x00);
+  CHECK(sent[1].data[7] == 0x05);
+  CHECK(silent.name().empty());
+
+  // a drive that refuses: the abort ends it, no name
+  cb_xenax_9::device_name refused;
+  REQUIRE(refused.start(0, send));
+  refused.on_frame(ch.response(sdo::abort({0x1008, 0}, sdo::abort_code::no_object)), 5, send);
+  CHECK(refused.name().empty());
 }
