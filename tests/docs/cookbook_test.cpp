@@ -11,6 +11,17 @@
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_object.hpp>
+#include <fieldcodec/compax/control.hpp>
+#include <fieldcodec/compax/drivecom.hpp>
+#include <fieldcodec/compax/faults.hpp>
+#include <fieldcodec/compax/nx.hpp>
+#include <fieldcodec/compax/nx_text.hpp>
+#include <fieldcodec/compax/object_channel.hpp>
+#include <fieldcodec/compax/objects.hpp>
+#include <fieldcodec/compax/pcp.hpp>
+#include <fieldcodec/compax/position.hpp>
+#include <fieldcodec/compax/set_point.hpp>
+#include <fieldcodec/dictionaries/compax_objects.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
@@ -610,6 +621,165 @@ private:
   std::array<std::uint8_t, x::manufacturer_device_name.size> buffer_{};
 };
 } // namespace cb_xenax_9
+
+namespace cb_compax_1 { // "Encode a position in BCD"
+namespace cx = fieldcodec::compax;
+using fieldcodec::decimal;
+using fieldcodec::errc;
+using bcd6 = std::array<std::uint8_t, 6>;
+
+// 7350.15 mm → 00 00 07 35 01 50; −1650 mm → FF 00 01 65 00 00
+static_assert(cx::encode_bcd_position(decimal{735015, 2}).value() ==
+              bcd6{0x00, 0x00, 0x07, 0x35, 0x01, 0x50});
+static_assert(cx::encode_bcd_position(decimal{-1650, 0}).value() ==
+              bcd6{0xFF, 0x00, 0x01, 0x65, 0x00, 0x00});
+// back to 0.001 mm
+static_assert(cx::decode_bcd_position(bcd6{0x00, 0x00, 0x07, 0x35, 0x01, 0x50}).value() ==
+              7350150);
+
+// finer than 0.001 mm, beyond the travel range, or a bad digit: refused
+static_assert(cx::encode_bcd_position(decimal{12345, 4}).is(errc::not_representable));
+static_assert(cx::encode_bcd_position(decimal{4000001, 0}).is(errc::out_of_range));
+constexpr bcd6 bad{0x00, 0x00, 0x07, 0x3A, 0x01, 0x50};
+static_assert(cx::decode_bcd_position(bad).is(errc::bad_digit));
+} // namespace cb_compax_1
+
+namespace cb_compax_2 { // "Write and read a Px parameter"
+namespace cx = fieldcodec::compax;
+namespace d = fieldcodec::dictionaries::compax_objects;
+using fieldcodec::decimal;
+using bytes4 = std::array<std::uint8_t, 4>;
+
+// P11 := 5000 → 00 4C 4B 40 (resolution 0.001: raw 5 000 000)
+constexpr bytes4 p11() {
+  bytes4 out{};
+  if (!cx::encode_px(d::dictionary, 11, decimal{5000, 0}, out)) return {};
+  return out;
+}
+static_assert(p11() == bytes4{0x00, 0x4C, 0x4B, 0x40});
+// and back
+static_assert(cx::decode_px(d::dictionary, 11, bytes4{0x00, 0x4C, 0x4B, 0x40}).value().mantissa ==
+              5000);
+} // namespace cb_compax_2
+
+namespace cb_compax_3 { // "Write an object with a PCP request and check the confirmation"
+namespace cx = fieldcodec::compax;
+
+// P11 := 00 4C 4B 40: write request 8082h to 5FD4h sub 11, 4 data bytes, counter 3 + 2 = 5
+constexpr std::array<std::uint8_t, 4> value{0x00, 0x4C, 0x4B, 0x40};
+constexpr auto request = cx::pcp_write(0x5FD4, 11, value);
+static_assert(request.value().param_counter == 5 && request.value().length == 4);
+
+// the drive's positive confirmation: 80 82 00 02 00 00 00 00
+constexpr std::array<std::uint8_t, 8> reply{0x80, 0x82, 0x00, 0x02, 0x00, 0x00, 0x00, 0x00};
+constexpr auto confirmation = cx::decode_pcp_response(reply).value();
+static_assert(!confirmation.is_error && cx::answers(request.value(), confirmation));
+} // namespace cb_compax_3
+
+namespace cb_compax_4 { // "Read an object through OBJECT_REQ / OBJECT_RSP"
+namespace cx = fieldcodec::compax;
+namespace d = fieldcodec::dictionaries::compax_objects;
+
+// read SPEED (index pointer 38): OBJECT_REQ A6 00 00 00 00 00
+constexpr auto request = cx::object_read(d::speed.info.pointer).value();
+static_assert(cx::encode_object_request(request).value() ==
+              cx::object_frame{0xA6, 0x00, 0x00, 0x00, 0x00, 0x00});
+
+// OBJECT_RSP A6 00 00 00 00 32 answers it: SPEED = 50
+constexpr auto response =
+    cx::decode_object_response(cx::object_frame{0xA6, 0x00, 0x00, 0x00, 0x00, 0x32}).value();
+static_assert(cx::answers(request, response));
+// an error reply FF 00 52 00 00 00 is error 82, "wrong index pointer"
+constexpr auto refused =
+    cx::decode_object_response(cx::object_frame{0xFF, 0x00, 0x52, 0x00, 0x00, 0x00}).value();
+static_assert(refused.is_error &&
+              cx::to_string(static_cast<cx::object_error>(refused.error_number)) ==
+                  "wrong index pointer");
+} // namespace cb_compax_4
+
+namespace cb_compax_5 { // "Build an Nx program record"
+namespace nx = fieldcodec::compax::nx;
+
+constexpr auto posa = nx::make(nx::op::posa, nx::integer(250));
+static_assert(posa == nx::parse_command("POSA 250").value());
+// record: length 7, POSA (41h), the DSP number of 250 mm (00 00 00 FA 00 00), zero padding
+constexpr auto rec = nx::encode_record(posa).value();
+static_assert(rec[0] == 7 && rec[1] == 0x41 && rec[5] == 0xFA);
+
+// and back to text
+constexpr bool prints_as(std::string_view text) {
+  std::array<char, nx::text_max> buf{};
+  auto cmd = nx::decode_record(rec);
+  if (!cmd) return false;
+  auto n = nx::format_command(cmd.value(), buf);
+  return n && std::string_view(buf.data(), n.value()) == text;
+}
+static_assert(prints_as("POSA 250"));
+} // namespace cb_compax_5
+
+namespace cb_compax_6 { // "Enable the drive (DRIVECOM profile 22)"
+namespace cx = fieldcodec::compax;
+namespace ds402 = fieldcodec::ds402;
+
+// switch on disabled (0250h) → 06; ready to switch on (0231h) → 0F
+static_assert(cx::next_steuerwort(cx::statuswort{0x0250}, ds402::state::operation_enabled,
+                                  cx::steuerwort{0x0000})
+                  .value() == cx::steuerwort{0x0006});
+static_assert(cx::drivecom_state(cx::statuswort{0x0237}).value() ==
+              ds402::state::operation_enabled);
+
+// the COMPAX bits of the previous word are kept: START (bit 13) stays set
+constexpr cx::steuerwort previous =
+    cx::steuerwort{0x0006}.with(cx::steuerwort_bit::start);
+static_assert(cx::next_steuerwort(cx::statuswort{0x0231}, ds402::state::operation_enabled,
+                                  previous)
+                  .value() == cx::steuerwort{0x200F});
+// bit names, with the manual's own terms
+static_assert(cx::steuerwort{0x200F}.test(cx::steuerwort_bit::power_on));
+static_assert(cx::manual_term(cx::steuerwort_bit::rapid_stop_n) == "Rapid stop");
+} // namespace cb_compax_6
+
+namespace cb_compax_7 { // "Read the current error and its text"
+namespace cx = fieldcodec::compax;
+
+// read S30 sub 1 (5FD7h): 8081h, counter 3
+constexpr auto request = cx::pcp_read(0x5FD7, 1).value();
+static_assert(request.param_counter == 3);
+
+// 80 81 00 04 00 00 00 00 00 01 05 00: one data byte, 5 (the pad byte 00 after it)
+constexpr std::array<std::uint8_t, 12> reply{0x80, 0x81, 0x00, 0x04, 0x00, 0x00,
+                                             0x00, 0x00, 0x00, 0x01, 0x05, 0x00};
+constexpr auto answer = cx::decode_pcp_response(reply).value();
+static_assert(cx::answers(request, answer) && answer.length == 1);
+constexpr std::uint8_t error = answer.data[0];
+static_assert(cx::error_text(error) == "machine-zero initiator not found"); // E05
+static_assert(cx::fault_code_of(error).raw == 0x7300); // what STOERUNG shows for it
+} // namespace cb_compax_7
+
+namespace cb_compax_8 { // "Hand over a target with the LAGE_ZIEL handshake"
+namespace cx = fieldcodec::compax;
+using fieldcodec::decimal;
+
+constexpr bool move_to_1250_5() {
+  cx::set_point_handshake hs;
+  cx::steuerwort control{0x000F}; // operation enabled
+  cx::statuswort status{0x0237};
+  if (!hs.submit(decimal{12505, 1}, false, status, control)) return false;
+  // LAGE_ZIEL 00 13 14 C4 (1 250 500 µm), STEUERWORT 001F: new set point
+  control = hs.control(control);
+  if (hs.target_bytes() != std::array<std::uint8_t, 4>{0x00, 0x13, 0x14, 0xC4}) return false;
+  if (control != cx::steuerwort{0x001F}) return false;
+  // the drive acknowledges (STATUSWORT bit 12): back to 000F
+  status = cx::statuswort{0x1237};
+  if (!hs.poll(status, control)) return false;
+  control = hs.control(control);
+  if (control != cx::steuerwort{0x000F}) return false;
+  // the acknowledgement falls: the handshake is idle, ready for the next target
+  (void)hs.poll(cx::statuswort{0x0237}, control);
+  return !hs.busy();
+}
+static_assert(move_to_1250_5());
+} // namespace cb_compax_8
 // clang-format on
 
 TEST_CASE("cookbook, DPQ: an emergency and its text") {
@@ -753,4 +923,11 @@ TEST_CASE("cookbook, XENAX: the device name reader through a segmented upload") 
   REQUIRE(refused.start(0, send));
   refused.on_frame(ch.response(sdo::abort({0x1008, 0}, sdo::abort_code::no_object)), 5, send);
   CHECK(refused.name().empty());
+}
+
+TEST_CASE("cookbook, COMPAX: the recipes' functions at run time") {
+  CHECK(cb_compax_2::p11() == std::array<std::uint8_t, 4>{0x00, 0x4C, 0x4B, 0x40});
+  CHECK(cb_compax_5::prints_as("POSA 250"));
+  CHECK_FALSE(cb_compax_5::prints_as("POSA 0"));
+  CHECK(cb_compax_8::move_to_1250_5());
 }
