@@ -41,9 +41,11 @@
 #include <fieldcodec/pacontrol/profibus_cmd.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
+#include <fieldcodec/xenax/bus.hpp>
 #include <fieldcodec/xenax/error_code.hpp>
 #include <fieldcodec/xenax/homing.hpp>
 #include <fieldcodec/xenax/modes.hpp>
+#include <fieldcodec/xenax/units.hpp>
 #include <span>
 #include <string>
 #include <string_view>
@@ -622,6 +624,72 @@ private:
 };
 } // namespace cb_xenax_9
 
+namespace cb_xenax_10 { // "Read a TPDO with the drive's default mapping"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+
+constexpr auto entries = co::pdo::default_mapping(x::dictionary, 0x1A01).value();
+static_assert(entries.size() == 2 && entries[0].to_u32() == 0x60410010 &&
+              entries[1].to_u32() == 0x60640020);
+constexpr auto tpdo2 =
+    co::pdo::make_mapping(x::dictionary, co::pdo::direction::tpdo, entries.entries()).value();
+
+// 281: 37 02 F6 FF FF FF → statusword 0237h (operation enabled), position −10 increments
+constexpr co::can_frame f{0x281, false, 6, {0x37, 0x02, 0xF6, 0xFF, 0xFF, 0xFF}};
+static_assert(tpdo2.get<std::uint16_t>(f.payload(), 0).value() == 0x0237);
+static_assert(tpdo2.get<std::int32_t>(f.payload(), 1).value() == -10);
+} // namespace cb_xenax_10
+
+namespace cb_xenax_11 { // "Limit the force in newtons (6073h)"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+using fieldcodec::errc;
+
+// ELAX Ex F20 limited to 4 N: 48 steps (480 mA); 601: 2B 73 60 00 30 00 00 00
+constexpr auto steps = xenax::current_limit_for(xenax::newtons{{4, 0}}, xenax::motor::elax_ex_f20);
+static_assert(steps.value() == 48);
+static_assert(co::sdo::download(1, x::limit_i_force, steps.value()).value().data[4] == 0x30);
+
+// 2005h I_Force actual read 300 mA: 2.5 N
+constexpr auto force = xenax::to_newtons(300, xenax::motor::elax_ex_f20).value();
+static_assert(force.value.mantissa == 2500 && force.value.places == 3);
+
+// a ROTAX takes a torque, not a force; above 20 A is refused
+static_assert(xenax::current_limit_for(xenax::newtons{{1, 0}}, xenax::motor::rotax_rxvp_t0_04)
+                  .is(errc::invalid_argument));
+static_assert(xenax::current_limit_for(xenax::newtons{{200, 0}}, xenax::motor::elax_ex_f20)
+                  .is(errc::out_of_range));
+} // namespace cb_xenax_11
+
+namespace cb_xenax_12 { // "Send a direct command (5000h)"
+namespace co = fieldcodec::canopen;
+namespace x = fieldcodec::dictionaries::xenax_canopen;
+namespace xenax = fieldcodec::xenax;
+
+// power continue (PWC, 2010h): 601: 23 00 50 00 10 20 00 00
+static_assert(co::sdo::download(1, x::direct_commands, xenax::direct_command::power_continue)
+                  .value() ==
+              co::can_frame{0x601, false, 8, {0x23, 0x00, 0x50, 0x00, 0x10, 0x20, 0x00, 0x00}});
+static_assert(xenax::mnemonic(xenax::direct_command::power_continue) == "PWC");
+static_assert(xenax::to_string(xenax::direct_command::power_continue) ==
+              "power continue at the actual position");
+} // namespace cb_xenax_12
+
+namespace cb_xenax_13 { // "Mind what differs per bus"
+namespace xenax = fieldcodec::xenax;
+using fieldcodec::errc;
+
+static_assert(xenax::node_id(99).value() == 99);
+static_assert(xenax::node_id(100).is(errc::out_of_range)); // a CiA 301 ID the XENAX cannot take
+static_assert(xenax::node_id(0).is(errc::out_of_range));   // CI not set
+
+// 1 000 000 inc/s²: 60B2h = 20 on EtherCAT; on CANopen it does not fit the INTEGER16
+static_assert(xenax::torque_offset_from_acceleration(1000000, xenax::bus::ethercat).value() == 20);
+static_assert(xenax::torque_offset_from_acceleration(1000000, xenax::bus::canopen)
+                  .is(errc::overflow));
+static_assert(xenax::acceleration_from_torque_offset(20, xenax::bus::ethercat) == 1000000);
+} // namespace cb_xenax_13
 namespace cb_compax_1 { // "Encode a position in BCD"
 namespace cx = fieldcodec::compax;
 using fieldcodec::decimal;
@@ -930,4 +998,15 @@ TEST_CASE("cookbook, COMPAX: the recipes' functions at run time") {
   CHECK(cb_compax_5::prints_as("POSA 250"));
   CHECK_FALSE(cb_compax_5::prints_as("POSA 0"));
   CHECK(cb_compax_8::move_to_1250_5());
+}
+
+TEST_CASE("cookbook, XENAX: the default TPDO2 mapping at run time") {
+  namespace co = fieldcodec::canopen;
+  const co::can_frame f{0x281, false, 6, {0x18, 0x02, 0x40, 0x42, 0x0F, 0x00}};
+  CHECK(cb_xenax_10::tpdo2.get<std::uint16_t>(f.payload(), 0).value() == 0x0218);
+  CHECK(cb_xenax_10::tpdo2.get<std::int32_t>(f.payload(), 1).value() == 1000000);
+  CHECK(cb_xenax_10::tpdo2.get<std::int32_t>(f.payload().first(5), 1)
+            .is(fieldcodec::errc::truncated));
+  CHECK(
+      cb_xenax_10::tpdo2.get<std::int32_t>(f.payload(), 2).is(fieldcodec::errc::invalid_argument));
 }
