@@ -199,10 +199,12 @@ using fieldcodec::errc;
 constexpr co::can_frame refused{0x585, false, 8, {0x80, 0x23, 0x20, 0x00, 0x31, 0x00, 0x09, 0x06}};
 static_assert(dpq::write_response(5, p::inj_p_limit_1, refused).is(errc::aborted));
 
-constexpr auto why = co::sdo::decode(refused, co::sdo::direction::to_client).value().abort;
-static_assert(why == co::sdo::abort_code::value_too_high); // 0609 0031h
-static_assert(dpq::describe_sdo_abort(why) == "value too large");
-static_assert(dpq::sdo_abort_errc(why) == errc::out_of_range);
+constexpr auto why = dpq::write_response(5, p::inj_p_limit_1, refused).error();
+static_assert(why.abort == co::sdo::abort_code::value_too_high); // 0609 0031h, kept
+static_assert(why.address == fieldcodec::od::address{0x2023, 0x00});
+static_assert(why.text() == "value too high (download only)"); // CiA 301, canopen/sdo.hpp
+static_assert(why.cause() == errc::out_of_range);
+static_assert(dpq::describe_sdo_abort(why.abort) == "value too large"); // the DPQ's wording
 } // namespace cb_dpq_7
 
 namespace cb_dpq_8 { // "Configure the TPDO1 event timer and start the card"

@@ -196,6 +196,38 @@ TEST_CASE("dpq frames: an abort from the card (3.3 table)") {
   const auto f = frame(0x585, {0x80, 0x23, 0x20, 0x00, 0x31, 0x00, 0x09, 0x06});
   CHECK(dpq::write_response(5, inj_p_limit_1, f).error() == errc::aborted);
   CHECK(dpq::read_response(5, inj_p_limit_1, f).error() == errc::aborted);
+  // The abort code, its text and the object are kept in the error.
+  const dpq::sdo_error w = dpq::write_response(5, inj_p_limit_1, f).error();
+  CHECK(w.code == errc::aborted);
+  CHECK(w.abort == co::sdo::abort_code::value_too_high);
+  CHECK(w.address == od::address{0x2023, 0});
+  CHECK(w.text() == co::sdo::to_string(co::sdo::abort_code::value_too_high));
+  CHECK(w.text() == "value too high (download only)");
+  CHECK(w.cause() == errc::out_of_range);
+  CHECK(dpq::read_raw_response(5, inj_p_limit_1, f).error() == w);
+  CHECK(dpq::read_response(5, inj_p_limit_1, f).error() == w);
+  // A code CiA 301 does not define is kept as sent, with no text and cause aborted.
+  const auto odd = frame(0x585, {0x80, 0x23, 0x20, 0x00, 0x78, 0x56, 0x34, 0x12});
+  const dpq::sdo_error o = dpq::read_response(5, inj_p_limit_1, odd).error();
+  CHECK(static_cast<std::uint32_t>(o.abort) == 0x12345678U);
+  CHECK(o.text().empty());
+  CHECK(o.cause() == errc::aborted);
+  // An abort for another object is a wrong frame, not this object's abort.
+  const auto other = frame(0x585, {0x80, 0x24, 0x20, 0x00, 0x31, 0x00, 0x09, 0x06});
+  const dpq::sdo_error u = dpq::write_response(5, inj_p_limit_1, other).error();
+  CHECK(u.code == errc::unexpected_frame);
+  CHECK(u.abort == co::sdo::abort_code::none);
+  CHECK(u.text() == "no abort");
+  CHECK(u.cause() == errc::unexpected_frame);
+  // Every row of the DPQ table arrives with its code and the shared table's meaning.
+  for (const auto &row : dpq::sdo_abort_table) {
+    const auto a = co::sdo::abort({0x2023, 0}, row.code);
+    const co::can_frame fr{0x585, false, 8, a};
+    const dpq::sdo_error e = dpq::read_response(5, inj_p_limit_1, fr).error();
+    CHECK(e.abort == row.code);
+    CHECK(e.cause() == row.error());
+    CHECK(e.text() == row.cia_text());
+  }
   auto m = co::sdo::decode(f, co::sdo::direction::to_client);
   REQUIRE(m.has_value());
   CHECK(m.value().abort == co::sdo::abort_code::value_too_high);

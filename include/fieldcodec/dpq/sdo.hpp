@@ -23,8 +23,42 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 
 namespace fieldcodec::dpq {
+
+/// Why the card's answer was not the expected one: an error with context (docs/contributing.md,
+/// "Errors"; `r.is(errc)` and `r == errc` work on a result carrying it).
+///   code == aborted: the card sent an SDO abort, `abort` is its code (bytes 4–7), `text()` the
+///     CiA 301 description from the one abort table `canopen::sdo::abort_codes`, `cause()` the
+///     errc that table maps it to, dpq::describe_sdo_abort(abort) the DPQ manual's wording;
+///   otherwise the frame itself was wrong (unexpected_frame, bad_length, …) and `abort` is none.
+/// `address` is the object of the request.
+struct sdo_error {
+  errc code = errc::aborted;
+  canopen::sdo::abort_code abort = canopen::sdo::abort_code::none;
+  od::address address{};
+
+  constexpr sdo_error() noexcept = default;
+  constexpr sdo_error(errc e, od::address a = {},
+                      canopen::sdo::abort_code ab = canopen::sdo::abort_code::none) noexcept
+      : code(e), abort(ab), address(a) {}
+
+  /// The CiA 301 text of `abort` ("no abort" for none, empty for a code CiA 301 lacks).
+  [[nodiscard]] constexpr std::string_view text() const noexcept {
+    return canopen::sdo::to_string(abort);
+  }
+  /// The errc the abort table maps `abort` to (e.g. out_of_range for 0609 0031h); `code` for an
+  /// error that is not an abort.
+  [[nodiscard]] constexpr errc cause() const noexcept {
+    return abort == canopen::sdo::abort_code::none ? code : canopen::sdo::to_errc(abort);
+  }
+  friend constexpr bool operator==(const sdo_error &, const sdo_error &) noexcept = default;
+  friend constexpr bool operator==(const sdo_error &a, errc e) noexcept { return a.code == e; }
+};
+
+/// What write_response returns.
+using sdo_status = result<void, sdo_error>;
 
 namespace detail {
 /// The expedited download of `bytes` to `e` on the predefined channel of `node`.
@@ -70,31 +104,34 @@ write_request(std::uint8_t node, const od::descriptor &e, EU eu) noexcept {
 
 namespace detail {
 /// The response of `node` to a request about `e`, decoded. Errors: unexpected_frame (other
-/// COB-ID, other index or sub-index), aborted (the card sent an abort; decode the frame with
-/// canopen::sdo::decode(frame, direction::to_client) for the code, dpq::describe_sdo_abort names
-/// it), bad_length, unknown_command.
-[[nodiscard]] constexpr result<canopen::sdo::message>
+/// COB-ID, other index or sub-index), aborted (the card sent an abort; its code is kept),
+/// bad_length, unknown_command, invalid_argument (node).
+[[nodiscard]] constexpr result<canopen::sdo::message, sdo_error>
 response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
+  const od::address at{e.index, e.sub};
   auto ch = canopen::sdo::channel::default_for(node);
-  if (!ch) return ch.error();
-  if (!ch.value().is_response(f)) return errc::unexpected_frame;
+  if (!ch) return sdo_error{ch.error(), at};
+  if (!ch.value().is_response(f)) return sdo_error{errc::unexpected_frame, at};
   auto m = canopen::sdo::decode(f, canopen::sdo::direction::to_client);
-  if (!m) return m.error();
-  if (m.value().address != od::address{e.index, e.sub}) return errc::unexpected_frame;
-  if (m.value().type == canopen::sdo::message_type::abort) return errc::aborted;
-  return m;
+  if (!m) return sdo_error{m.error(), at};
+  if (m.value().address != at) return sdo_error{errc::unexpected_frame, at};
+  if (m.value().type == canopen::sdo::message_type::abort) {
+    return sdo_error{errc::aborted, at, m.value().abort};
+  }
+  return m.value();
 }
 } // namespace detail
 
 /// Check the card's answer to a write: a download response (0x60) for the same object.
 /// The data bytes of the response are ignored, as the manual says.
-/// Errors: those of detail::response_for, unexpected_frame (another kind of response).
-[[nodiscard]] constexpr status write_response(std::uint8_t node, const od::entry &e,
-                                              const canopen::can_frame &f) noexcept {
+/// Errors (sdo_error): those of detail::response_for (an abort keeps its code), unexpected_frame
+/// (another kind of response).
+[[nodiscard]] constexpr sdo_status write_response(std::uint8_t node, const od::entry &e,
+                                                  const canopen::can_frame &f) noexcept {
   auto m = detail::response_for(node, e, f);
   if (!m) return m.error();
   if (m.value().type != canopen::sdo::message_type::initiate_download_response) {
-    return errc::unexpected_frame;
+    return sdo_error{errc::unexpected_frame, m.value().address};
   }
   return {};
 }
@@ -102,29 +139,33 @@ response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f)
 /// The raw value in the card's answer to a read: an expedited upload response for the same
 /// object. With size indication the size must be the entry's width (bad_length otherwise);
 /// without (0x42) the first width bytes of the four are the value.
-/// Errors: those of detail::response_for, unexpected_frame (segmented or another kind),
-/// bad_length, type_mismatch.
-[[nodiscard]] constexpr result<std::int64_t>
+/// Errors (sdo_error): those of detail::response_for (an abort keeps its code),
+/// unexpected_frame (segmented or another kind), bad_length, type_mismatch.
+[[nodiscard]] constexpr result<std::int64_t, sdo_error>
 read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
   auto m = detail::response_for(node, e, f);
   if (!m) return m.error();
   const canopen::sdo::message &msg = m.value();
   if (msg.type != canopen::sdo::message_type::initiate_upload_response || !msg.expedited) {
-    return errc::unexpected_frame;
+    return sdo_error{errc::unexpected_frame, msg.address};
   }
   const std::uint32_t w = e.width();
-  if (w == 0U || w > 4U) return errc::type_mismatch;
-  if (msg.size_indicated && msg.data_size != w) return errc::bad_length;
-  return raw_from_bytes(e, msg.bytes().first(w));
+  if (w == 0U || w > 4U) return sdo_error{errc::type_mismatch, msg.address};
+  if (msg.size_indicated && msg.data_size != w) return sdo_error{errc::bad_length, msg.address};
+  auto raw = raw_from_bytes(e, msg.bytes().first(w));
+  if (!raw) return sdo_error{raw.error(), msg.address};
+  return raw.value();
 }
 
 /// The engineering value in the card's answer to a read (exact, round-trip places).
-/// Errors: those of read_raw_response and to_eu_decimal.
-[[nodiscard]] constexpr result<decimal> read_response(std::uint8_t node, const od::descriptor &e,
-                                                      const canopen::can_frame &f) noexcept {
+/// Errors (sdo_error): those of read_raw_response and to_eu_decimal.
+[[nodiscard]] constexpr result<decimal, sdo_error>
+read_response(std::uint8_t node, const od::descriptor &e, const canopen::can_frame &f) noexcept {
   auto raw = read_raw_response(node, e, f);
   if (!raw) return raw.error();
-  return to_eu_decimal(e, raw.value());
+  auto eu = to_eu_decimal(e, raw.value());
+  if (!eu) return sdo_error{eu.error(), od::address{e.index, e.sub}};
+  return eu.value();
 }
 
 } // namespace fieldcodec::dpq
