@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <set>
+#include <span>
 #include <string_view>
 
 namespace dpq = fieldcodec::dpq;
@@ -78,4 +79,59 @@ TEST_CASE("dpq emcy: register bit implied by the code class") {
   CHECK(dpq::implied_register_bit(0x8300) == 0);
   CHECK(dpq::implied_register_bit(0xFF01) == reg::manufacturer);
   CHECK(dpq::implied_register_bit(0xF001) == 0);
+}
+
+// Error history, object 1003h (manual 004, 3.5 "Error code": count in sub 0, the newest error
+// at sub 1, at most 4; a field is CiA 301's code in bits 0–15, information in bits 16–31).
+static_assert(dpq::error_history_address(0) == fieldcodec::od::address{0x1003, 0});
+static_assert(dpq::error_history_address(1) == fieldcodec::od::address{0x1003, 1});
+static_assert(dpq::decode_error_field(0x00428302U) ==
+              dpq::error_field{.code = 0x8302, .info = 0x0042});
+static_assert(dpq::decode_error_field(0x00428302U).text() == "pressure monitor tripped");
+
+TEST_CASE("dpq error history: decoded newest first with the DPQ's texts") {
+  // Two errors: sub 1 (newest) pressure monitor, sub 2 control undervoltage with info 0x1234;
+  // sub 3 holds a stale value that count 2 excludes.
+  constexpr std::array<std::uint32_t, 3> subs{0x00008302U, 0x12343422U, 0x00006010U};
+  constexpr auto h = dpq::decode_error_history(2, subs);
+  static_assert(h.has_value());
+  REQUIRE(h.has_value());
+  const auto present = h.value().present();
+  REQUIRE(present.size() == 2);
+  CHECK(!h.value().empty());
+  CHECK(present[0].code == static_cast<std::uint16_t>(dpq::emcy_code::pressure_monitor));
+  CHECK(present[0].info == 0);
+  CHECK(present[0].text() == "pressure monitor tripped");
+  CHECK(present[0].documented());
+  CHECK(present[1].code == 0x3422);
+  CHECK(present[1].info == 0x1234);
+  CHECK(present[1].text() == "control supply undervoltage");
+  CHECK(present[1].register_bit() == reg::voltage);
+}
+
+TEST_CASE("dpq error history: empty, full, undocumented code") {
+  auto empty = dpq::decode_error_history(0, {});
+  REQUIRE(empty.has_value());
+  CHECK(empty.value().empty());
+  CHECK(empty.value().present().empty());
+  constexpr std::array<std::uint32_t, 4> four{0x1000U, 0x6010U, 0x8100U, 0xBEEF7777U};
+  auto full = dpq::decode_error_history(4, four);
+  REQUIRE(full.has_value());
+  REQUIRE(full.value().present().size() == 4);
+  // An undocumented code is kept as the card sent it, with no text.
+  CHECK(full.value().present()[3].code == 0x7777);
+  CHECK(full.value().present()[3].info == 0xBEEF);
+  CHECK(!full.value().present()[3].documented());
+  CHECK(full.value().present()[3].text().empty());
+}
+
+TEST_CASE("dpq error history: bad input") {
+  constexpr std::array<std::uint32_t, 5> five{0x1000U, 0x1000U, 0x1000U, 0x1000U, 0x1000U};
+  CHECK(dpq::decode_error_history(5, five).error() == fieldcodec::errc::out_of_range);
+  CHECK(dpq::decode_error_history(255, five).error() == fieldcodec::errc::out_of_range);
+  CHECK(dpq::decode_error_history(3, std::span(five).first(2)).error() ==
+        fieldcodec::errc::truncated);
+  constexpr std::array<std::uint32_t, 2> zero{0x8302U, 0x00010000U}; // code 0000 counted
+  CHECK(dpq::decode_error_history(2, zero).error() == fieldcodec::errc::invalid_argument);
+  CHECK(dpq::decode_error_history(1, zero).has_value());
 }

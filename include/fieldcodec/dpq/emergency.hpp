@@ -9,10 +9,13 @@
 #pragma once
 
 #include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dpq {
@@ -156,6 +159,72 @@ inline constexpr std::uint8_t manufacturer = canopen::emcy::reg::manufacturer;
   case error_class::device_specific: return error_register::manufacturer;
   default: return 0;
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Error history (object 1003h; manual 3.5 "Error code", CiA 301 "pre-defined error field")
+//
+// 1003h sub 0 (UNSIGNED8) is the number of errors present; subs 1..count (UNSIGNED32) are the
+// error fields, the newest at sub 1. CiA 301 defines a field as bits 0–15 the EMCY error code
+// and bits 16–31 manufacturer-specific additional information. The DPQ keeps at most 4.
+
+/// The most error fields the DPQ keeps (3.5: "A maximum of 4 errors are saved").
+inline constexpr std::uint8_t error_history_capacity = 4;
+
+/// The object of error field `n` (1 = newest) or of the count (n = 0).
+[[nodiscard]] constexpr od::address error_history_address(std::uint8_t n) noexcept {
+  return {0x1003, n};
+}
+
+/// One error field (1003h sub 1..): the EMCY code and the manufacturer-specific information.
+struct error_field {
+  std::uint16_t code = 0; ///< bits 0–15: the EMCY error code (dpq::emcy_code if documented)
+  std::uint16_t info = 0; ///< bits 16–31: manufacturer-specific additional information
+
+  /// True if the DPQ's table (3.5) lists the code.
+  [[nodiscard]] constexpr bool documented() const noexcept { return is_documented(code); }
+  /// The DPQ's text for the code; empty for a code its table does not list.
+  [[nodiscard]] constexpr std::string_view text() const noexcept { return describe_emcy(code); }
+  /// The error register bit the code's CiA 301 class implies (see implied_register_bit).
+  [[nodiscard]] constexpr std::uint8_t register_bit() const noexcept {
+    return implied_register_bit(code);
+  }
+  friend constexpr bool operator==(const error_field &, const error_field &) noexcept = default;
+};
+
+/// Split a raw UNSIGNED32 error field (as read from 1003h sub n) into code and information.
+[[nodiscard]] constexpr error_field decode_error_field(std::uint32_t raw) noexcept {
+  return {static_cast<std::uint16_t>(raw & 0xFFFFU), static_cast<std::uint16_t>(raw >> 16U)};
+}
+
+/// The decoded error history: `count` fields, newest first.
+struct error_history {
+  std::uint8_t count = 0;
+  std::array<error_field, error_history_capacity> fields{};
+
+  /// The present errors, newest first.
+  [[nodiscard]] constexpr std::span<const error_field> present() const noexcept {
+    return std::span<const error_field>(fields).first(count);
+  }
+  [[nodiscard]] constexpr bool empty() const noexcept { return count == 0U; }
+};
+
+/// Decode 1003h from its sub 0 (`count`) and the raw values read from subs 1.. (`raw_fields`,
+/// sub 1 first; further values beyond `count` are ignored, as CiA 301 leaves them undefined).
+/// Errors: out_of_range (count above the DPQ's 4), truncated (fewer values than `count`),
+/// invalid_argument (a present field with code 0000, which means "no error" and cannot be one
+/// of the errors counted).
+[[nodiscard]] constexpr result<error_history>
+decode_error_history(std::uint8_t count, std::span<const std::uint32_t> raw_fields) noexcept {
+  if (count > error_history_capacity) return errc::out_of_range;
+  if (raw_fields.size() < count) return errc::truncated;
+  error_history h{};
+  h.count = count;
+  for (std::size_t i = 0; i < count; ++i) {
+    h.fields[i] = decode_error_field(raw_fields[i]);
+    if (h.fields[i].code == 0U) return errc::invalid_argument;
+  }
+  return h;
 }
 
 } // namespace fieldcodec::dpq
