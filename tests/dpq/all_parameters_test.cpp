@@ -142,7 +142,7 @@ TEST_CASE("dpq all parameters: table shape") {
   REQUIRE(rows.size() == 221);
   std::set<std::string> indices;
   std::map<std::string, int> types;
-  int exceeds = 0, anomalies = 0, offsets = 0;
+  int exceeds = 0, anomalies = 0, offsets = 0, guesses = 0, signed_guesses = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto &r = rows[i];
     CHECK(r.section == "4." + std::to_string(i + 1));
@@ -151,7 +151,20 @@ TEST_CASE("dpq all parameters: table shape") {
     CHECK((r.bytes == 2 || r.bytes == 4));
     CHECK(((r.data_type.find("16") != std::string::npos) == (r.bytes == 2)));
     CHECK((r.access == "rw" || r.access == "ro"));
-    CHECK(r.has_flag("signedness_guess"));
+    // signedness_guess exactly where the printed range leaves the signedness open: both raw
+    // ends non-negative and within the signed type of the width (docs/dpq.md, "Data types
+    // and signedness"); elsewhere a negative end forces signed, a 2-byte end above 32767
+    // forces unsigned, and the type must be the forced one.
+    const i128 raw_lo = reference_raw(r.low, r.offset, r.scale);
+    const i128 raw_hi = reference_raw(r.high, r.offset, r.scale);
+    const i128 signed_max = r.bytes == 2 ? 32767 : 2147483647;
+    const bool open = raw_lo >= 0 && raw_hi <= signed_max;
+    CHECK_MESSAGE(r.has_flag("signedness_guess") == open, what(r));
+    if (!open) {
+      CHECK_MESSAGE((r.data_type.rfind("INTEGER", 0) == 0) == (raw_lo < 0), what(r));
+    }
+    guesses += open ? 1 : 0;
+    signed_guesses += open && r.data_type.rfind("INTEGER", 0) == 0 ? 1 : 0;
     exceeds += r.has_flag("range_exceeds_field") ? 1 : 0;
     anomalies += r.has_flag("index_anomaly") ? 1 : 0;
     offsets += r.offset.mantissa != 0 ? 1 : 0;
@@ -164,6 +177,8 @@ TEST_CASE("dpq all parameters: table shape") {
   CHECK(exceeds == 22);
   CHECK(anomalies == 18);
   CHECK(offsets == 1);
+  CHECK(guesses == 82);        // 45 UNSIGNED32, 27 UNSIGNED16, 10 INTEGER32
+  CHECK(signed_guesses == 10); // the exceptions listed in docs/dpq.md
 }
 
 TEST_CASE("dpq all parameters: range_exceeds_field is set exactly where the range does not fit") {
