@@ -34,16 +34,16 @@ for src in examples/firmware/*.cpp; do
 done
 
 base=$(flash "$out/size_baseline.elf")
-printf '%-12s %8s %8s\n' module bytes budget
+printf '%-16s %8s %8s\n' module bytes budget
 while read -r module budget; do
   [[ -z "$module" || "$module" == \#* ]] && continue
   elf="$out/size_$module.elf"
   if [ ! -f "$elf" ]; then echo "FAIL: no size probe for $module" >&2; status=1; continue; fi
   bytes=$(( $(flash "$elf") - base ))
-  printf '%-12s %8d %8d\n' "$module" "$bytes" "$budget"
+  printf '%-16s %8d %8d\n' "$module" "$bytes" "$budget"
   if (( bytes > budget )); then echo "FAIL: $module is over its budget" >&2; status=1; fi
 done < examples/firmware/budgets.txt
 if [ -f "$out/firmware.elf" ]; then
-  printf '%-12s %8d\n' firmware "$(( $(flash "$out/firmware.elf") - base ))"
+  printf '%-16s %8d\n' firmware "$(( $(flash "$out/firmware.elf") - base ))"
 fi
 exit $status

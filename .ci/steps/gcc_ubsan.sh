@@ -8,5 +8,6 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 CXX=g++ BUILD_DIR=build-ci-gcc-ubsan CTEST_EXCLUDE=install_and_consume \
+  FIELDCODEC_CMAKE_ARGS="-DFIELDCODEC_BUILD_BENCH=OFF" \
   CXXFLAGS="-fsanitize=undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   UBSAN_OPTIONS=print_stacktrace=1 bash .ci/test

@@ -6,6 +6,7 @@
 #include <fieldcodec/od/value.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <deque>
 #include <limits>
 #include <map>
@@ -90,18 +91,20 @@ constexpr std::pair<std::string_view, key> key_names[] = {
     {"OBJECTLINKS", key::object_links},
 };
 
-// Runs for every line of a file: candidates are told apart by length, first and last letter
-// before their text is compared.
-key key_of(std::string_view upper) noexcept {
-  if (upper.empty()) return key::other;
-  for (const auto &[name, id] : key_names) {
-    if (name.size() != upper.size() || name.front() != upper.front() ||
-        name.back() != upper.back()) {
-      continue;
-    }
+// Runs for every line of a file, on the key as written (any case): candidates are told apart by
+// length, first and last letter before their text is compared.
+key key_of(std::string_view name) noexcept {
+  if (name.empty()) return key::other;
+  const auto up = [](char c) {
+    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+  };
+  const char first = up(name.front());
+  const char last = up(name.back());
+  for (const auto &[known, id] : key_names) {
+    if (known.size() != name.size() || known.front() != first || known.back() != last) continue;
     std::size_t i = 1;
-    while (i < name.size() && name[i] == upper[i]) ++i;
-    if (i == name.size()) return id;
+    while (i < known.size() && known[i] == up(name[i])) ++i;
+    if (i == known.size()) return id;
   }
   return key::other;
 }
@@ -117,7 +120,7 @@ bool known_other_key(key k) noexcept {
 
 struct ini_key {
   std::string_view name;  // as written (trimmed), points into the reader's text
-  std::string upper;      // upper case
+  std::string upper;      // upper case, only for key::other (a known key is told by its id)
   key id = key::other;    // the key when the reader knows it
   std::string_view value; // trimmed
   int line = 0;
@@ -305,9 +308,14 @@ public:
     object_lists();
     check_pdo_pairs(dict_, file_, diag_);
     if (diag_.has_errors()) return std::nullopt;
-    std::sort(dict_.entries.begin(), dict_.entries.end(), [](const entry &a, const entry &b) {
+    // Objects are read in index order, so the entries are sorted already unless the file has
+    // sub-objects out of order; sorting moves whole entries, so look first.
+    const auto by_address = [](const entry &a, const entry &b) {
       return a.index != b.index ? a.index < b.index : a.sub < b.sub;
-    });
+    };
+    if (!std::is_sorted(dict_.entries.begin(), dict_.entries.end(), by_address)) {
+      std::sort(dict_.entries.begin(), dict_.entries.end(), by_address);
+    }
     return std::move(dict_);
   }
 
@@ -320,8 +328,22 @@ private:
     std::size_t pos = 0;
     ini_section *current = nullptr;
     while (pos < text.size()) {
+      // The line ends at the first CR or LF; other bytes below 0x20 except TAB are reported.
+      // Eight bytes at a time: (w - 0x20..) & ~w & 0x80.. flags the first byte below 0x20.
       std::size_t end = pos;
-      while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+      bool control = false;
+      for (;;) {
+        while (end + 8U <= text.size()) {
+          std::uint64_t w = 0;
+          std::memcpy(&w, text.data() + end, 8);
+          if (((w - 0x2020202020202020U) & ~w & 0x8080808080808080U) != 0U) break;
+          end += 8U;
+        }
+        while (end < text.size() && static_cast<unsigned char>(text[end]) >= 0x20U) ++end;
+        if (end >= text.size() || text[end] == '\n' || text[end] == '\r') break;
+        if (text[end] != '\t') control = true;
+        ++end;
+      }
       const std::string_view line(text.data() + pos, end - pos);
       ++line_no;
       if (end < text.size() && text[end] == '\r' && end + 1U < text.size() &&
@@ -330,9 +352,8 @@ private:
       } else {
         pos = end + 1U;
       }
-      const int control = control_character(line, line_no);
-      if (control == 0) return false;
-      if (control < 0) {
+      if (control) {
+        if (control_character(line, line_no) == 0) return false;
         if (diag_.too_many()) return false;
         continue;
       }
@@ -411,8 +432,8 @@ private:
       diag_.error(file_, line_no, static_cast<int>(lead) + 1, "expected a key before '='");
       return;
     }
-    std::string upper = to_upper(name);
-    const key id = key_of(upper);
+    const key id = key_of(name);
+    std::string upper = id == key::other ? to_upper(name) : std::string();
     if (const ini_key *first = current->find(id, upper)) {
       diag_.warning(file_, line_no, static_cast<int>(lead) + 1,
                     "key '" + name + "' appears again in [" + current->name + "] (first at line " +

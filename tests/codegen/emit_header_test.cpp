@@ -47,8 +47,8 @@ TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
   // a VAR object and a named RECORD sub-object: standalone descriptors (copies of table rows)
   CHECK(has(h, "inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000"));
   CHECK(has(h, "inline constexpr od::object server_sdo_parameter{0x1200, "
-               "od::object_code::record, \"Server SDO parameter\"sv, {entries.data() + 1, 2}, "
-               "{infos.data() + 1, 2}};"));
+               "od::object_code::record, \"Server SDO parameter\"sv, "
+               "dictionary.entries().subspan(1, 2), dictionary.infos().subspan(1, 2)};"));
   CHECK(has(h, "inline constexpr od::descriptor server_sdo_parameter_cob_id_client_to_server{"
                "entries[2], infos[2]}; // 0x1200 sub 1"));
   // $NODEID+0x600 in LowLimit, HighLimit and DefaultValue: the number plus a flag each

@@ -347,3 +347,23 @@ TEST_CASE("identifiers") {
   CHECK(gen::stem_identifier("XENAX-CANopen") == "xenax_canopen");
   CHECK(gen::stem_identifier("od") == "od_");
 }
+
+// The line splitter scans eight bytes at a time (issue 18): control characters anywhere in a
+// line, on either side of an eight-byte boundary, are still found and reported at their column;
+// TAB and bytes of UTF-8 text are not control characters.
+TEST_CASE("eds: control characters at every column of a long line") {
+  const std::string head = "[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\n";
+  for (std::size_t col = 0; col < 24; ++col) {
+    std::string line = "DefaultValue=0x00020192 ; \xC3\xA4 comment text";
+    line.insert(col, 1, '\x0B');
+    auto o = read_text(head + line + "\nPDOMapping=0\n", "ctrl.eds");
+    INFO("column " << col + 1);
+    REQUIRE(!o.diags.empty());
+    CHECK(o.diags.front() ==
+          "ctrl.eds:5:" + std::to_string(col + 1) + ": error: unexpected control character 0x0B");
+  }
+  auto t = read_text(head + "DefaultValue=\t0x00020192\t\nPDOMapping=0\n", "tab.eds");
+  for (const auto &d : t.diags) CHECK(d.find("control character") == std::string::npos);
+  REQUIRE(t.dict);
+  CHECK(t.dict->entries.at(0).default_value.has_value());
+}

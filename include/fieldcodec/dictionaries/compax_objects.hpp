@@ -4540,31 +4540,31 @@ inline constexpr od::descriptor geschw_ref{entries[1477], infos[1477], scales[14
 inline constexpr od::descriptor rampe_ref{entries[1478], infos[1478], scales[1478]}; // 0x609A
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object cam_cmd{0x5FCC, od::object_code::array, "CAM_CMD"sv, {entries.data() + 5, 6}, {infos.data() + 5, 6}, {scales.data() + 5, 6}};
-inline constexpr od::object vx{0x5FCD, od::object_code::array, "VX"sv, {entries.data() + 11, 40}, {infos.data() + 11, 40}, {scales.data() + 11, 40}};
-inline constexpr od::object ped_ini{0x5FD0, od::object_code::array, "PED_INI"sv, {entries.data() + 53, 4}, {infos.data() + 53, 4}, {scales.data() + 53, 4}};
-inline constexpr od::object pad_ini{0x5FD1, od::object_code::array, "PAD_INI"sv, {entries.data() + 57, 4}, {infos.data() + 57, 4}, {scales.data() + 57, 4}};
-inline constexpr od::object px{0x5FD4, od::object_code::array, "Px"sv, {entries.data() + 63, 250}, {infos.data() + 63, 250}, {scales.data() + 63, 250}};
-inline constexpr od::object nx{0x5FD5, od::object_code::array, "Nx"sv, {entries.data() + 313, 250}, {infos.data() + 313, 250}, {scales.data() + 313, 250}};
-inline constexpr od::object s31_s39{0x5FD6, od::object_code::array, "S31_S39"sv, {entries.data() + 563, 9}, {infos.data() + 563, 9}, {scales.data() + 563, 9}};
-inline constexpr od::object s30{0x5FD7, od::object_code::array, "S30"sv, {entries.data() + 572, 2}, {infos.data() + 572, 2}, {scales.data() + 572, 2}};
-inline constexpr od::object s23_s26{0x5FD8, od::object_code::array, "S23_S26"sv, {entries.data() + 574, 4}, {infos.data() + 574, 4}, {scales.data() + 574, 4}};
-inline constexpr od::object s7_s8{0x5FDD, od::object_code::array, "S7_S8"sv, {entries.data() + 582, 2}, {infos.data() + 582, 2}, {scales.data() + 582, 2}};
-inline constexpr od::object posroutputp{0x5FE2, od::object_code::array, "POSROUTPUTP"sv, {entries.data() + 588, 16}, {infos.data() + 588, 16}, {scales.data() + 588, 16}};
-inline constexpr od::object posroutputn{0x5FE3, od::object_code::array, "POSROUTPUTN"sv, {entries.data() + 604, 16}, {infos.data() + 604, 16}, {scales.data() + 604, 16}};
-inline constexpr od::object p{0x5FE7, od::object_code::array, "P"sv, {entries.data() + 623, 250}, {infos.data() + 623, 250}, {scales.data() + 623, 250}};
-inline constexpr od::object s{0x5FE8, od::object_code::array, "S"sv, {entries.data() + 873, 250}, {infos.data() + 873, 250}, {scales.data() + 873, 250}};
-inline constexpr od::object n{0x5FF1, od::object_code::array, "N"sv, {entries.data() + 1131, 250}, {infos.data() + 1131, 250}, {scales.data() + 1131, 250}};
-inline constexpr od::object output{0x5FF6, od::object_code::array, "OUTPUT"sv, {entries.data() + 1385, 16}, {infos.data() + 1385, 16}, {scales.data() + 1385, 16}};
-inline constexpr od::object in_select{0x5FFD, od::object_code::record, "IN_SELECT"sv, {entries.data() + 1407, 3}, {infos.data() + 1407, 3}, {scales.data() + 1407, 3}};
+inline constexpr od::object cam_cmd{0x5FCC, od::object_code::array, "CAM_CMD"sv, dictionary.entries().subspan(5, 6), dictionary.infos().subspan(5, 6), dictionary.scales().subspan(5, 6)};
+inline constexpr od::object vx{0x5FCD, od::object_code::array, "VX"sv, dictionary.entries().subspan(11, 40), dictionary.infos().subspan(11, 40), dictionary.scales().subspan(11, 40)};
+inline constexpr od::object ped_ini{0x5FD0, od::object_code::array, "PED_INI"sv, dictionary.entries().subspan(53, 4), dictionary.infos().subspan(53, 4), dictionary.scales().subspan(53, 4)};
+inline constexpr od::object pad_ini{0x5FD1, od::object_code::array, "PAD_INI"sv, dictionary.entries().subspan(57, 4), dictionary.infos().subspan(57, 4), dictionary.scales().subspan(57, 4)};
+inline constexpr od::object px{0x5FD4, od::object_code::array, "Px"sv, dictionary.entries().subspan(63, 250), dictionary.infos().subspan(63, 250), dictionary.scales().subspan(63, 250)};
+inline constexpr od::object nx{0x5FD5, od::object_code::array, "Nx"sv, dictionary.entries().subspan(313, 250), dictionary.infos().subspan(313, 250), dictionary.scales().subspan(313, 250)};
+inline constexpr od::object s31_s39{0x5FD6, od::object_code::array, "S31_S39"sv, dictionary.entries().subspan(563, 9), dictionary.infos().subspan(563, 9), dictionary.scales().subspan(563, 9)};
+inline constexpr od::object s30{0x5FD7, od::object_code::array, "S30"sv, dictionary.entries().subspan(572, 2), dictionary.infos().subspan(572, 2), dictionary.scales().subspan(572, 2)};
+inline constexpr od::object s23_s26{0x5FD8, od::object_code::array, "S23_S26"sv, dictionary.entries().subspan(574, 4), dictionary.infos().subspan(574, 4), dictionary.scales().subspan(574, 4)};
+inline constexpr od::object s7_s8{0x5FDD, od::object_code::array, "S7_S8"sv, dictionary.entries().subspan(582, 2), dictionary.infos().subspan(582, 2), dictionary.scales().subspan(582, 2)};
+inline constexpr od::object posroutputp{0x5FE2, od::object_code::array, "POSROUTPUTP"sv, dictionary.entries().subspan(588, 16), dictionary.infos().subspan(588, 16), dictionary.scales().subspan(588, 16)};
+inline constexpr od::object posroutputn{0x5FE3, od::object_code::array, "POSROUTPUTN"sv, dictionary.entries().subspan(604, 16), dictionary.infos().subspan(604, 16), dictionary.scales().subspan(604, 16)};
+inline constexpr od::object p{0x5FE7, od::object_code::array, "P"sv, dictionary.entries().subspan(623, 250), dictionary.infos().subspan(623, 250), dictionary.scales().subspan(623, 250)};
+inline constexpr od::object s{0x5FE8, od::object_code::array, "S"sv, dictionary.entries().subspan(873, 250), dictionary.infos().subspan(873, 250), dictionary.scales().subspan(873, 250)};
+inline constexpr od::object n{0x5FF1, od::object_code::array, "N"sv, dictionary.entries().subspan(1131, 250), dictionary.infos().subspan(1131, 250), dictionary.scales().subspan(1131, 250)};
+inline constexpr od::object output{0x5FF6, od::object_code::array, "OUTPUT"sv, dictionary.entries().subspan(1385, 16), dictionary.infos().subspan(1385, 16), dictionary.scales().subspan(1385, 16)};
+inline constexpr od::object in_select{0x5FFD, od::object_code::record, "IN_SELECT"sv, dictionary.entries().subspan(1407, 3), dictionary.infos().subspan(1407, 3), dictionary.scales().subspan(1407, 3)};
 inline constexpr od::descriptor in_select_in_select{entries[1407], infos[1407], scales[1407]}; // 0x5FFD sub 0
 inline constexpr od::descriptor in_select_in_select_sub1{entries[1408], infos[1408], scales[1408]}; // 0x5FFD sub 1
 inline constexpr od::descriptor in_select_in_select_sub2{entries[1409], infos[1409], scales[1409]}; // 0x5FFD sub 2
-inline constexpr od::object out_select{0x5FFE, od::object_code::record, "OUT_SELECT"sv, {entries.data() + 1410, 3}, {infos.data() + 1410, 3}, {scales.data() + 1410, 3}};
+inline constexpr od::object out_select{0x5FFE, od::object_code::record, "OUT_SELECT"sv, dictionary.entries().subspan(1410, 3), dictionary.infos().subspan(1410, 3), dictionary.scales().subspan(1410, 3)};
 inline constexpr od::descriptor out_select_out_select{entries[1410], infos[1410], scales[1410]}; // 0x5FFE sub 0
 inline constexpr od::descriptor out_select_out_select_sub1{entries[1411], infos[1411], scales[1411]}; // 0x5FFE sub 1
 inline constexpr od::descriptor out_select_out_select_sub2{entries[1412], infos[1412], scales[1412]}; // 0x5FFE sub 2
-inline constexpr od::object pe_select{0x6000, od::object_code::record, "PE_SELECT"sv, {entries.data() + 1414, 14}, {infos.data() + 1414, 14}, {scales.data() + 1414, 14}};
+inline constexpr od::object pe_select{0x6000, od::object_code::record, "PE_SELECT"sv, dictionary.entries().subspan(1414, 14), dictionary.infos().subspan(1414, 14), dictionary.scales().subspan(1414, 14)};
 inline constexpr od::descriptor pe_select_pe_select{entries[1414], infos[1414], scales[1414]}; // 0x6000 sub 0
 inline constexpr od::descriptor pe_select_pe_select_sub1{entries[1415], infos[1415], scales[1415]}; // 0x6000 sub 1
 inline constexpr od::descriptor pe_select_pe_select_sub2{entries[1416], infos[1416], scales[1416]}; // 0x6000 sub 2
@@ -4579,7 +4579,7 @@ inline constexpr od::descriptor pe_select_pe_select_sub10{entries[1424], infos[1
 inline constexpr od::descriptor pe_select_pe_select_sub11{entries[1425], infos[1425], scales[1425]}; // 0x6000 sub 11
 inline constexpr od::descriptor pe_select_pe_select_sub12{entries[1426], infos[1426], scales[1426]}; // 0x6000 sub 12
 inline constexpr od::descriptor pe_select_pe_select_sub13{entries[1427], infos[1427], scales[1427]}; // 0x6000 sub 13
-inline constexpr od::object pa_select{0x6001, od::object_code::record, "PA_SELECT"sv, {entries.data() + 1428, 14}, {infos.data() + 1428, 14}, {scales.data() + 1428, 14}};
+inline constexpr od::object pa_select{0x6001, od::object_code::record, "PA_SELECT"sv, dictionary.entries().subspan(1428, 14), dictionary.infos().subspan(1428, 14), dictionary.scales().subspan(1428, 14)};
 inline constexpr od::descriptor pa_select_pa_select{entries[1428], infos[1428], scales[1428]}; // 0x6001 sub 0
 inline constexpr od::descriptor pa_select_pa_select_sub1{entries[1429], infos[1429], scales[1429]}; // 0x6001 sub 1
 inline constexpr od::descriptor pa_select_pa_select_sub2{entries[1430], infos[1430], scales[1430]}; // 0x6001 sub 2
@@ -4594,8 +4594,8 @@ inline constexpr od::descriptor pa_select_pa_select_sub10{entries[1438], infos[1
 inline constexpr od::descriptor pa_select_pa_select_sub11{entries[1439], infos[1439], scales[1439]}; // 0x6001 sub 11
 inline constexpr od::descriptor pa_select_pa_select_sub12{entries[1440], infos[1440], scales[1440]}; // 0x6001 sub 12
 inline constexpr od::descriptor pa_select_pa_select_sub13{entries[1441], infos[1441], scales[1441]}; // 0x6001 sub 13
-inline constexpr od::object fkt_gruppe{0x600F, od::object_code::array, "FKT_GRUPPE"sv, {entries.data() + 1443, 7}, {infos.data() + 1443, 7}, {scales.data() + 1443, 7}};
-inline constexpr od::object grenzen{0x607D, od::object_code::array, "GRENZEN"sv, {entries.data() + 1466, 2}, {infos.data() + 1466, 2}, {scales.data() + 1466, 2}};
+inline constexpr od::object fkt_gruppe{0x600F, od::object_code::array, "FKT_GRUPPE"sv, dictionary.entries().subspan(1443, 7), dictionary.infos().subspan(1443, 7), dictionary.scales().subspan(1443, 7)};
+inline constexpr od::object grenzen{0x607D, od::object_code::array, "GRENZEN"sv, dictionary.entries().subspan(1466, 2), dictionary.infos().subspan(1466, 2), dictionary.scales().subspan(1466, 2)};
 
 } // namespace fieldcodec::dictionaries::compax_objects
 // clang-format on

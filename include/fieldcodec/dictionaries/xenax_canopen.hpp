@@ -1007,243 +1007,243 @@ inline constexpr od::descriptor supported_modes_of_operation{entries[461], infos
 inline constexpr od::descriptor product_website_address{entries[462], infos[462]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 8, 5}, {infos.data() + 8, 5}};
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(8, 5), dictionary.infos().subspan(8, 5)};
 inline constexpr od::descriptor identity_object_nbr_of_entries{entries[8], infos[8]}; // 0x1018 sub 0
 inline constexpr od::descriptor identity_object_vendor_id{entries[9], infos[9]}; // 0x1018 sub 1
 inline constexpr od::descriptor identity_object_product_code{entries[10], infos[10]}; // 0x1018 sub 2
 inline constexpr od::descriptor identity_object_revision_number{entries[11], infos[11]}; // 0x1018 sub 3
 inline constexpr od::descriptor identity_object_serial_number{entries[12], infos[12]}; // 0x1018 sub 4
-inline constexpr od::object server_sdo_parameter_1{0x1200, od::object_code::record, "Server SDO Parameter 1"sv, {entries.data() + 13, 3}, {infos.data() + 13, 3}};
+inline constexpr od::object server_sdo_parameter_1{0x1200, od::object_code::record, "Server SDO Parameter 1"sv, dictionary.entries().subspan(13, 3), dictionary.infos().subspan(13, 3)};
 inline constexpr od::descriptor server_sdo_parameter_1_nbr_of_entries{entries[13], infos[13]}; // 0x1200 sub 0
 inline constexpr od::descriptor server_sdo_parameter_1_cob_id_client_server{entries[14], infos[14]}; // 0x1200 sub 1
 inline constexpr od::descriptor server_sdo_parameter_1_cob_id_server_client{entries[15], infos[15]}; // 0x1200 sub 2
-inline constexpr od::object receive_pdo_comm_param_1{0x1400, od::object_code::record, "Receive PDO Comm Param 1"sv, {entries.data() + 16, 6}, {infos.data() + 16, 6}};
+inline constexpr od::object receive_pdo_comm_param_1{0x1400, od::object_code::record, "Receive PDO Comm Param 1"sv, dictionary.entries().subspan(16, 6), dictionary.infos().subspan(16, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_1_nbr_of_entries{entries[16], infos[16]}; // 0x1400 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_1_cob_id{entries[17], infos[17]}; // 0x1400 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_1_transmission_type{entries[18], infos[18]}; // 0x1400 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_1_inhibit_time{entries[19], infos[19]}; // 0x1400 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_1_compatibility_entry{entries[20], infos[20]}; // 0x1400 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_1_event_timer{entries[21], infos[21]}; // 0x1400 sub 5
-inline constexpr od::object receive_pdo_comm_param_2{0x1401, od::object_code::record, "Receive PDO Comm Param 2"sv, {entries.data() + 22, 6}, {infos.data() + 22, 6}};
+inline constexpr od::object receive_pdo_comm_param_2{0x1401, od::object_code::record, "Receive PDO Comm Param 2"sv, dictionary.entries().subspan(22, 6), dictionary.infos().subspan(22, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_2_nbr_of_entries{entries[22], infos[22]}; // 0x1401 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_2_cob_id{entries[23], infos[23]}; // 0x1401 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_2_transmission_type{entries[24], infos[24]}; // 0x1401 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_2_inhibit_time{entries[25], infos[25]}; // 0x1401 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_2_compatibility_entry{entries[26], infos[26]}; // 0x1401 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_2_event_timer{entries[27], infos[27]}; // 0x1401 sub 5
-inline constexpr od::object receive_pdo_comm_param_17{0x1410, od::object_code::record, "Receive PDO Comm Param 17"sv, {entries.data() + 28, 6}, {infos.data() + 28, 6}};
+inline constexpr od::object receive_pdo_comm_param_17{0x1410, od::object_code::record, "Receive PDO Comm Param 17"sv, dictionary.entries().subspan(28, 6), dictionary.infos().subspan(28, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_17_nbr_of_entries{entries[28], infos[28]}; // 0x1410 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_17_cob_id{entries[29], infos[29]}; // 0x1410 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_17_transmission_type{entries[30], infos[30]}; // 0x1410 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_17_inhibit_time{entries[31], infos[31]}; // 0x1410 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_17_compatibility_entry{entries[32], infos[32]}; // 0x1410 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_17_event_timer{entries[33], infos[33]}; // 0x1410 sub 5
-inline constexpr od::object receive_pdo_comm_param_18{0x1411, od::object_code::record, "Receive PDO Comm Param 18"sv, {entries.data() + 34, 6}, {infos.data() + 34, 6}};
+inline constexpr od::object receive_pdo_comm_param_18{0x1411, od::object_code::record, "Receive PDO Comm Param 18"sv, dictionary.entries().subspan(34, 6), dictionary.infos().subspan(34, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_18_nbr_of_entries{entries[34], infos[34]}; // 0x1411 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_18_cob_id{entries[35], infos[35]}; // 0x1411 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_18_transmission_type{entries[36], infos[36]}; // 0x1411 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_18_inhibit_time{entries[37], infos[37]}; // 0x1411 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_18_compatibility_entry{entries[38], infos[38]}; // 0x1411 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_18_event_timer{entries[39], infos[39]}; // 0x1411 sub 5
-inline constexpr od::object receive_pdo_comm_param_19{0x1412, od::object_code::record, "Receive PDO Comm Param 19"sv, {entries.data() + 40, 6}, {infos.data() + 40, 6}};
+inline constexpr od::object receive_pdo_comm_param_19{0x1412, od::object_code::record, "Receive PDO Comm Param 19"sv, dictionary.entries().subspan(40, 6), dictionary.infos().subspan(40, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_19_nbr_of_entries{entries[40], infos[40]}; // 0x1412 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_19_cob_id{entries[41], infos[41]}; // 0x1412 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_19_transmission_type{entries[42], infos[42]}; // 0x1412 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_19_inhibit_time{entries[43], infos[43]}; // 0x1412 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_19_compatibility_entry{entries[44], infos[44]}; // 0x1412 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_19_event_timer{entries[45], infos[45]}; // 0x1412 sub 5
-inline constexpr od::object receive_pdo_comm_param_20{0x1413, od::object_code::record, "Receive PDO Comm Param 20"sv, {entries.data() + 46, 6}, {infos.data() + 46, 6}};
+inline constexpr od::object receive_pdo_comm_param_20{0x1413, od::object_code::record, "Receive PDO Comm Param 20"sv, dictionary.entries().subspan(46, 6), dictionary.infos().subspan(46, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_20_nbr_of_entries{entries[46], infos[46]}; // 0x1413 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_20_cob_id{entries[47], infos[47]}; // 0x1413 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_20_transmission_type{entries[48], infos[48]}; // 0x1413 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_20_inhibit_time{entries[49], infos[49]}; // 0x1413 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_20_compatibility_entry{entries[50], infos[50]}; // 0x1413 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_20_event_timer{entries[51], infos[51]}; // 0x1413 sub 5
-inline constexpr od::object receive_pdo_comm_param_21{0x1414, od::object_code::record, "Receive PDO Comm Param 21"sv, {entries.data() + 52, 6}, {infos.data() + 52, 6}};
+inline constexpr od::object receive_pdo_comm_param_21{0x1414, od::object_code::record, "Receive PDO Comm Param 21"sv, dictionary.entries().subspan(52, 6), dictionary.infos().subspan(52, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_21_nbr_of_entries{entries[52], infos[52]}; // 0x1414 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_21_cob_id{entries[53], infos[53]}; // 0x1414 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_21_transmission_type{entries[54], infos[54]}; // 0x1414 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_21_inhibit_time{entries[55], infos[55]}; // 0x1414 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_21_compatibility_entry{entries[56], infos[56]}; // 0x1414 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_21_event_timer{entries[57], infos[57]}; // 0x1414 sub 5
-inline constexpr od::object receive_pdo_comm_param_22{0x1415, od::object_code::record, "Receive PDO Comm Param 22"sv, {entries.data() + 58, 6}, {infos.data() + 58, 6}};
+inline constexpr od::object receive_pdo_comm_param_22{0x1415, od::object_code::record, "Receive PDO Comm Param 22"sv, dictionary.entries().subspan(58, 6), dictionary.infos().subspan(58, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_22_nbr_of_entries{entries[58], infos[58]}; // 0x1415 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_22_cob_id{entries[59], infos[59]}; // 0x1415 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_22_transmission_type{entries[60], infos[60]}; // 0x1415 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_22_inhibit_time{entries[61], infos[61]}; // 0x1415 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_22_compatibility_entry{entries[62], infos[62]}; // 0x1415 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_22_event_timer{entries[63], infos[63]}; // 0x1415 sub 5
-inline constexpr od::object receive_pdo_comm_param_23{0x1416, od::object_code::record, "Receive PDO Comm Param 23"sv, {entries.data() + 64, 6}, {infos.data() + 64, 6}};
+inline constexpr od::object receive_pdo_comm_param_23{0x1416, od::object_code::record, "Receive PDO Comm Param 23"sv, dictionary.entries().subspan(64, 6), dictionary.infos().subspan(64, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_23_nbr_of_entries{entries[64], infos[64]}; // 0x1416 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_23_cob_id{entries[65], infos[65]}; // 0x1416 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_23_transmission_type{entries[66], infos[66]}; // 0x1416 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_23_inhibit_time{entries[67], infos[67]}; // 0x1416 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_23_compatibility_entry{entries[68], infos[68]}; // 0x1416 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_23_event_timer{entries[69], infos[69]}; // 0x1416 sub 5
-inline constexpr od::object receive_pdo_comm_param_24{0x1417, od::object_code::record, "Receive PDO Comm Param 24"sv, {entries.data() + 70, 6}, {infos.data() + 70, 6}};
+inline constexpr od::object receive_pdo_comm_param_24{0x1417, od::object_code::record, "Receive PDO Comm Param 24"sv, dictionary.entries().subspan(70, 6), dictionary.infos().subspan(70, 6)};
 inline constexpr od::descriptor receive_pdo_comm_param_24_nbr_of_entries{entries[70], infos[70]}; // 0x1417 sub 0
 inline constexpr od::descriptor receive_pdo_comm_param_24_cob_id{entries[71], infos[71]}; // 0x1417 sub 1
 inline constexpr od::descriptor receive_pdo_comm_param_24_transmission_type{entries[72], infos[72]}; // 0x1417 sub 2
 inline constexpr od::descriptor receive_pdo_comm_param_24_inhibit_time{entries[73], infos[73]}; // 0x1417 sub 3
 inline constexpr od::descriptor receive_pdo_comm_param_24_compatibility_entry{entries[74], infos[74]}; // 0x1417 sub 4
 inline constexpr od::descriptor receive_pdo_comm_param_24_event_timer{entries[75], infos[75]}; // 0x1417 sub 5
-inline constexpr od::object receive_pdo_mapping_param_1{0x1600, od::object_code::record, "Receive PDO Mapping Param 1"sv, {entries.data() + 76, 2}, {infos.data() + 76, 2}};
+inline constexpr od::object receive_pdo_mapping_param_1{0x1600, od::object_code::record, "Receive PDO Mapping Param 1"sv, dictionary.entries().subspan(76, 2), dictionary.infos().subspan(76, 2)};
 inline constexpr od::descriptor receive_pdo_mapping_param_1_nbr_of_entries{entries[76], infos[76]}; // 0x1600 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_1_controlword{entries[77], infos[77]}; // 0x1600 sub 1
-inline constexpr od::object receive_pdo_mapping_param_2{0x1601, od::object_code::record, "Receive PDO Mapping Param 2"sv, {entries.data() + 78, 3}, {infos.data() + 78, 3}};
+inline constexpr od::object receive_pdo_mapping_param_2{0x1601, od::object_code::record, "Receive PDO Mapping Param 2"sv, dictionary.entries().subspan(78, 3), dictionary.infos().subspan(78, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_2_nbr_of_entries{entries[78], infos[78]}; // 0x1601 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_2_controlword{entries[79], infos[79]}; // 0x1601 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_2_target_position{entries[80], infos[80]}; // 0x1601 sub 2
-inline constexpr od::object receive_pdo_mapping_param_17{0x1610, od::object_code::record, "Receive PDO Mapping Param 17"sv, {entries.data() + 81, 2}, {infos.data() + 81, 2}};
+inline constexpr od::object receive_pdo_mapping_param_17{0x1610, od::object_code::record, "Receive PDO Mapping Param 17"sv, dictionary.entries().subspan(81, 2), dictionary.infos().subspan(81, 2)};
 inline constexpr od::descriptor receive_pdo_mapping_param_17_nbr_of_entries{entries[81], infos[81]}; // 0x1610 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_17_digital_outputs{entries[82], infos[82]}; // 0x1610 sub 1
-inline constexpr od::object receive_pdo_mapping_param_18{0x1611, od::object_code::record, "Receive PDO Mapping Param 18"sv, {entries.data() + 83, 3}, {infos.data() + 83, 3}};
+inline constexpr od::object receive_pdo_mapping_param_18{0x1611, od::object_code::record, "Receive PDO Mapping Param 18"sv, dictionary.entries().subspan(83, 3), dictionary.infos().subspan(83, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_18_nbr_of_entries{entries[83], infos[83]}; // 0x1611 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_18_acceleration{entries[84], infos[84]}; // 0x1611 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_18_s_curve{entries[85], infos[85]}; // 0x1611 sub 2
-inline constexpr od::object receive_pdo_mapping_param_19{0x1612, od::object_code::record, "Receive PDO Mapping Param 19"sv, {entries.data() + 86, 2}, {infos.data() + 86, 2}};
+inline constexpr od::object receive_pdo_mapping_param_19{0x1612, od::object_code::record, "Receive PDO Mapping Param 19"sv, dictionary.entries().subspan(86, 2), dictionary.infos().subspan(86, 2)};
 inline constexpr od::descriptor receive_pdo_mapping_param_19_nbr_of_entries{entries[86], infos[86]}; // 0x1612 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_19_speed{entries[87], infos[87]}; // 0x1612 sub 1
-inline constexpr od::object receive_pdo_mapping_param_20{0x1613, od::object_code::record, "Receive PDO Mapping Param 20"sv, {entries.data() + 88, 3}, {infos.data() + 88, 3}};
+inline constexpr od::object receive_pdo_mapping_param_20{0x1613, od::object_code::record, "Receive PDO Mapping Param 20"sv, dictionary.entries().subspan(88, 3), dictionary.infos().subspan(88, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_20_nbr_of_entries{entries[88], infos[88]}; // 0x1613 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_20_following_position_error_window{entries[89], infos[89]}; // 0x1613 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_20_target_position_error_window{entries[90], infos[90]}; // 0x1613 sub 2
-inline constexpr od::object receive_pdo_mapping_param_21{0x1614, od::object_code::record, "Receive PDO Mapping Param 21"sv, {entries.data() + 91, 2}, {infos.data() + 91, 2}};
+inline constexpr od::object receive_pdo_mapping_param_21{0x1614, od::object_code::record, "Receive PDO Mapping Param 21"sv, dictionary.entries().subspan(91, 2), dictionary.infos().subspan(91, 2)};
 inline constexpr od::descriptor receive_pdo_mapping_param_21_nbr_of_entries{entries[91], infos[91]}; // 0x1614 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_21_i_force_max{entries[92], infos[92]}; // 0x1614 sub 1
-inline constexpr od::object receive_pdo_mapping_param_22{0x1615, od::object_code::record, "Receive PDO Mapping Param 22"sv, {entries.data() + 93, 3}, {infos.data() + 93, 3}};
+inline constexpr od::object receive_pdo_mapping_param_22{0x1615, od::object_code::record, "Receive PDO Mapping Param 22"sv, dictionary.entries().subspan(93, 3), dictionary.infos().subspan(93, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_22_nbr_of_entries{entries[93], infos[93]}; // 0x1615 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_1{entries[94], infos[94]}; // 0x1615 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_2{entries[95], infos[95]}; // 0x1615 sub 2
-inline constexpr od::object receive_pdo_mapping_param_23{0x1616, od::object_code::record, "Receive PDO Mapping Param 23"sv, {entries.data() + 96, 3}, {infos.data() + 96, 3}};
+inline constexpr od::object receive_pdo_mapping_param_23{0x1616, od::object_code::record, "Receive PDO Mapping Param 23"sv, dictionary.entries().subspan(96, 3), dictionary.infos().subspan(96, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_23_nbr_of_entries{entries[96], infos[96]}; // 0x1616 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_1{entries[97], infos[97]}; // 0x1616 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_2{entries[98], infos[98]}; // 0x1616 sub 2
-inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24"sv, {entries.data() + 99, 3}, {infos.data() + 99, 3}};
+inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24"sv, dictionary.entries().subspan(99, 3), dictionary.infos().subspan(99, 3)};
 inline constexpr od::descriptor receive_pdo_mapping_param_24_nbr_of_entries{entries[99], infos[99]}; // 0x1617 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_24_controlword{entries[100], infos[100]}; // 0x1617 sub 1
 inline constexpr od::descriptor receive_pdo_mapping_param_24_reserved_for_future{entries[101], infos[101]}; // 0x1617 sub 2
-inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1"sv, {entries.data() + 102, 6}, {infos.data() + 102, 6}};
+inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1"sv, dictionary.entries().subspan(102, 6), dictionary.infos().subspan(102, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_1_nbr_of_entries{entries[102], infos[102]}; // 0x1800 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_1_cob_id{entries[103], infos[103]}; // 0x1800 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_1_transmission_type{entries[104], infos[104]}; // 0x1800 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_1_inhibit_time{entries[105], infos[105]}; // 0x1800 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_1_compatibility_entry{entries[106], infos[106]}; // 0x1800 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_1_event_timer{entries[107], infos[107]}; // 0x1800 sub 5
-inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2"sv, {entries.data() + 108, 6}, {infos.data() + 108, 6}};
+inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2"sv, dictionary.entries().subspan(108, 6), dictionary.infos().subspan(108, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_2_nbr_of_entries{entries[108], infos[108]}; // 0x1801 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_2_cob_id{entries[109], infos[109]}; // 0x1801 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_2_transmission_type{entries[110], infos[110]}; // 0x1801 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_2_inhibit_time{entries[111], infos[111]}; // 0x1801 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_2_compatibility_entry{entries[112], infos[112]}; // 0x1801 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_2_event_timer{entries[113], infos[113]}; // 0x1801 sub 5
-inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17"sv, {entries.data() + 114, 6}, {infos.data() + 114, 6}};
+inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17"sv, dictionary.entries().subspan(114, 6), dictionary.infos().subspan(114, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_17_nbr_of_entries{entries[114], infos[114]}; // 0x1810 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_17_cob_id{entries[115], infos[115]}; // 0x1810 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_17_transmission_type{entries[116], infos[116]}; // 0x1810 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_17_inhibit_time{entries[117], infos[117]}; // 0x1810 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_17_compatibility_entry{entries[118], infos[118]}; // 0x1810 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_17_event_timer{entries[119], infos[119]}; // 0x1810 sub 5
-inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18"sv, {entries.data() + 120, 6}, {infos.data() + 120, 6}};
+inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18"sv, dictionary.entries().subspan(120, 6), dictionary.infos().subspan(120, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_18_nbr_of_entries{entries[120], infos[120]}; // 0x1811 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_18_cob_id{entries[121], infos[121]}; // 0x1811 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_18_transmission_type{entries[122], infos[122]}; // 0x1811 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_18_inhibit_time{entries[123], infos[123]}; // 0x1811 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_18_compatibility_entry{entries[124], infos[124]}; // 0x1811 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_18_event_timer{entries[125], infos[125]}; // 0x1811 sub 5
-inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19"sv, {entries.data() + 126, 6}, {infos.data() + 126, 6}};
+inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19"sv, dictionary.entries().subspan(126, 6), dictionary.infos().subspan(126, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_19_nbr_of_entries{entries[126], infos[126]}; // 0x1812 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_19_cob_id{entries[127], infos[127]}; // 0x1812 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_19_transmission_type{entries[128], infos[128]}; // 0x1812 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_19_inhibit_time{entries[129], infos[129]}; // 0x1812 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_19_compatibility_entry{entries[130], infos[130]}; // 0x1812 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_19_event_timer{entries[131], infos[131]}; // 0x1812 sub 5
-inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20"sv, {entries.data() + 132, 6}, {infos.data() + 132, 6}};
+inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20"sv, dictionary.entries().subspan(132, 6), dictionary.infos().subspan(132, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_20_nbr_of_entries{entries[132], infos[132]}; // 0x1813 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_20_cob_id{entries[133], infos[133]}; // 0x1813 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_20_transmission_type{entries[134], infos[134]}; // 0x1813 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_20_inhibit_time{entries[135], infos[135]}; // 0x1813 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_20_compatibility_entry{entries[136], infos[136]}; // 0x1813 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_20_event_timer{entries[137], infos[137]}; // 0x1813 sub 5
-inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21"sv, {entries.data() + 138, 6}, {infos.data() + 138, 6}};
+inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21"sv, dictionary.entries().subspan(138, 6), dictionary.infos().subspan(138, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_21_nbr_of_entries{entries[138], infos[138]}; // 0x1814 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_21_cob_id{entries[139], infos[139]}; // 0x1814 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_21_transmission_type{entries[140], infos[140]}; // 0x1814 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_21_inhibit_time{entries[141], infos[141]}; // 0x1814 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_21_compatibility_entry{entries[142], infos[142]}; // 0x1814 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_21_event_timer{entries[143], infos[143]}; // 0x1814 sub 5
-inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22"sv, {entries.data() + 144, 6}, {infos.data() + 144, 6}};
+inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22"sv, dictionary.entries().subspan(144, 6), dictionary.infos().subspan(144, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_22_nbr_of_entries{entries[144], infos[144]}; // 0x1815 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_22_cob_id{entries[145], infos[145]}; // 0x1815 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_22_transmission_type{entries[146], infos[146]}; // 0x1815 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_22_inhibit_time{entries[147], infos[147]}; // 0x1815 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_22_compatibility_entry{entries[148], infos[148]}; // 0x1815 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_22_event_timer{entries[149], infos[149]}; // 0x1815 sub 5
-inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23"sv, {entries.data() + 150, 6}, {infos.data() + 150, 6}};
+inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23"sv, dictionary.entries().subspan(150, 6), dictionary.infos().subspan(150, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_23_nbr_of_entries{entries[150], infos[150]}; // 0x1816 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_23_cob_id{entries[151], infos[151]}; // 0x1816 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_23_transmission_type{entries[152], infos[152]}; // 0x1816 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_23_inhibit_time{entries[153], infos[153]}; // 0x1816 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_23_compatibility_entry{entries[154], infos[154]}; // 0x1816 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_23_event_timer{entries[155], infos[155]}; // 0x1816 sub 5
-inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24"sv, {entries.data() + 156, 6}, {infos.data() + 156, 6}};
+inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24"sv, dictionary.entries().subspan(156, 6), dictionary.infos().subspan(156, 6)};
 inline constexpr od::descriptor transmit_pdo_comm_param_24_nbr_of_entries{entries[156], infos[156]}; // 0x1817 sub 0
 inline constexpr od::descriptor transmit_pdo_comm_param_24_cob_id{entries[157], infos[157]}; // 0x1817 sub 1
 inline constexpr od::descriptor transmit_pdo_comm_param_24_transmission_type{entries[158], infos[158]}; // 0x1817 sub 2
 inline constexpr od::descriptor transmit_pdo_comm_param_24_inhibit_time{entries[159], infos[159]}; // 0x1817 sub 3
 inline constexpr od::descriptor transmit_pdo_comm_param_24_compatibility_entry{entries[160], infos[160]}; // 0x1817 sub 4
 inline constexpr od::descriptor transmit_pdo_comm_param_24_event_timer{entries[161], infos[161]}; // 0x1817 sub 5
-inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1"sv, {entries.data() + 162, 2}, {infos.data() + 162, 2}};
+inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1"sv, dictionary.entries().subspan(162, 2), dictionary.infos().subspan(162, 2)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_1_nbr_of_entries{entries[162], infos[162]}; // 0x1A00 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_1_statusword{entries[163], infos[163]}; // 0x1A00 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2"sv, {entries.data() + 164, 3}, {infos.data() + 164, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2"sv, dictionary.entries().subspan(164, 3), dictionary.infos().subspan(164, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_2_nbr_of_entries{entries[164], infos[164]}; // 0x1A01 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_2_statusword{entries[165], infos[165]}; // 0x1A01 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_2_actual_position{entries[166], infos[166]}; // 0x1A01 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17"sv, {entries.data() + 167, 2}, {infos.data() + 167, 2}};
+inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17"sv, dictionary.entries().subspan(167, 2), dictionary.infos().subspan(167, 2)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_17_nbr_of_entries{entries[167], infos[167]}; // 0x1A10 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_17_digital_inputs{entries[168], infos[168]}; // 0x1A10 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_18{0x1A11, od::object_code::record, "Transmit PDO Mapping Param 18"sv, {entries.data() + 169, 3}, {infos.data() + 169, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_18{0x1A11, od::object_code::record, "Transmit PDO Mapping Param 18"sv, dictionary.entries().subspan(169, 3), dictionary.infos().subspan(169, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_18_nbr_of_entries{entries[169], infos[169]}; // 0x1A11 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_1{entries[170], infos[170]}; // 0x1A11 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_2{entries[171], infos[171]}; // 0x1A11 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_19{0x1A12, od::object_code::record, "Transmit PDO Mapping Param 19"sv, {entries.data() + 172, 3}, {infos.data() + 172, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_19{0x1A12, od::object_code::record, "Transmit PDO Mapping Param 19"sv, dictionary.entries().subspan(172, 3), dictionary.infos().subspan(172, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_19_nbr_of_entries{entries[172], infos[172]}; // 0x1A12 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_1{entries[173], infos[173]}; // 0x1A12 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_2{entries[174], infos[174]}; // 0x1A12 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20"sv, {entries.data() + 175, 3}, {infos.data() + 175, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20"sv, dictionary.entries().subspan(175, 3), dictionary.infos().subspan(175, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_20_nbr_of_entries{entries[175], infos[175]}; // 0x1A13 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_20_actual_following_position_error{entries[176], infos[176]}; // 0x1A13 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_20_process_status_register{entries[177], infos[177]}; // 0x1A13 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21"sv, {entries.data() + 178, 2}, {infos.data() + 178, 2}};
+inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21"sv, dictionary.entries().subspan(178, 2), dictionary.infos().subspan(178, 2)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_21_nbr_of_entries{entries[178], infos[178]}; // 0x1A14 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_21_actual_current{entries[179], infos[179]}; // 0x1A14 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_22{0x1A15, od::object_code::record, "Transmit PDO Mapping Param 22"sv, {entries.data() + 180, 3}, {infos.data() + 180, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_22{0x1A15, od::object_code::record, "Transmit PDO Mapping Param 22"sv, dictionary.entries().subspan(180, 3), dictionary.infos().subspan(180, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_22_nbr_of_entries{entries[180], infos[180]}; // 0x1A15 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_1{entries[181], infos[181]}; // 0x1A15 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_2{entries[182], infos[182]}; // 0x1A15 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23"sv, {entries.data() + 183, 3}, {infos.data() + 183, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23"sv, dictionary.entries().subspan(183, 3), dictionary.infos().subspan(183, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_23_nbr_of_entries{entries[183], infos[183]}; // 0x1A16 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_23_i_force_actual{entries[184], infos[184]}; // 0x1A16 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_23_process_status_register{entries[185], infos[185]}; // 0x1A16 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24"sv, {entries.data() + 186, 3}, {infos.data() + 186, 3}};
+inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24"sv, dictionary.entries().subspan(186, 3), dictionary.infos().subspan(186, 3)};
 inline constexpr od::descriptor transmit_pdo_mapping_param_24_nbr_of_entries{entries[186], infos[186]}; // 0x1A17 sub 0
 inline constexpr od::descriptor transmit_pdo_mapping_param_24_statusword{entries[187], infos[187]}; // 0x1A17 sub 1
 inline constexpr od::descriptor transmit_pdo_mapping_param_24_i_force_actual{entries[188], infos[188]}; // 0x1A17 sub 2
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 201, 46}, {infos.data() + 201, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 247, 17}, {infos.data() + 247, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 264, 107}, {infos.data() + 264, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 371, 12}, {infos.data() + 371, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 383, 14}, {infos.data() + 383, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 397, 11}, {infos.data() + 397, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 408, 15}, {infos.data() + 408, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 440, 3}, {infos.data() + 440, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 447, 3}, {infos.data() + 447, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 452, 3}, {infos.data() + 452, 3}};
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, dictionary.entries().subspan(201, 46), dictionary.infos().subspan(201, 46)};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, dictionary.entries().subspan(247, 17), dictionary.infos().subspan(247, 17)};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, dictionary.entries().subspan(264, 107), dictionary.infos().subspan(264, 107)};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, dictionary.entries().subspan(371, 12), dictionary.infos().subspan(371, 12)};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, dictionary.entries().subspan(383, 14), dictionary.infos().subspan(383, 14)};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, dictionary.entries().subspan(397, 11), dictionary.infos().subspan(397, 11)};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, dictionary.entries().subspan(408, 15), dictionary.infos().subspan(408, 15)};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(440, 3), dictionary.infos().subspan(440, 3)};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(447, 3), dictionary.infos().subspan(447, 3)};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(452, 3), dictionary.infos().subspan(452, 3)};
 inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[452], infos[452]}; // 0x60C2 sub 0
 inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[453], infos[453]}; // 0x60C2 sub 1
 inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[454], infos[454]}; // 0x60C2 sub 2
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 457, 3}, {infos.data() + 457, 3}};
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(457, 3), dictionary.infos().subspan(457, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_canopen
 // clang-format on

@@ -795,25 +795,25 @@ inline constexpr od::descriptor supported_modes_of_operation{entries[356], infos
 inline constexpr od::descriptor product_website_address{entries[357], infos[357]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 5, 5}, {infos.data() + 5, 5}};
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(5, 5), dictionary.infos().subspan(5, 5)};
 inline constexpr od::descriptor identity_object_nbr_of_entries{entries[5], infos[5]}; // 0x1018 sub 0
 inline constexpr od::descriptor identity_object_vendor_id{entries[6], infos[6]}; // 0x1018 sub 1
 inline constexpr od::descriptor identity_object_product_code{entries[7], infos[7]}; // 0x1018 sub 2
 inline constexpr od::descriptor identity_object_revision_number{entries[8], infos[8]}; // 0x1018 sub 3
 inline constexpr od::descriptor identity_object_serial_number{entries[9], infos[9]}; // 0x1018 sub 4
-inline constexpr od::object receive_pdo_1{0x1600, od::object_code::record, "Receive PDO 1"sv, {entries.data() + 10, 2}, {infos.data() + 10, 2}};
+inline constexpr od::object receive_pdo_1{0x1600, od::object_code::record, "Receive PDO 1"sv, dictionary.entries().subspan(10, 2), dictionary.infos().subspan(10, 2)};
 inline constexpr od::descriptor receive_pdo_1_nbr_of_entries{entries[10], infos[10]}; // 0x1600 sub 0
 inline constexpr od::descriptor receive_pdo_1_controlword{entries[11], infos[11]}; // 0x1600 sub 1
-inline constexpr od::object receive_pdo_2{0x1601, od::object_code::record, "Receive PDO 2"sv, {entries.data() + 12, 3}, {infos.data() + 12, 3}};
+inline constexpr od::object receive_pdo_2{0x1601, od::object_code::record, "Receive PDO 2"sv, dictionary.entries().subspan(12, 3), dictionary.infos().subspan(12, 3)};
 inline constexpr od::descriptor receive_pdo_2_nbr_of_entries{entries[12], infos[12]}; // 0x1601 sub 0
 inline constexpr od::descriptor receive_pdo_2_controlword{entries[13], infos[13]}; // 0x1601 sub 1
 inline constexpr od::descriptor receive_pdo_2_target_position{entries[14], infos[14]}; // 0x1601 sub 2
-inline constexpr od::object receive_pdo_17{0x1611, od::object_code::record, "Receive PDO 17"sv, {entries.data() + 15, 4}, {infos.data() + 15, 4}};
+inline constexpr od::object receive_pdo_17{0x1611, od::object_code::record, "Receive PDO 17"sv, dictionary.entries().subspan(15, 4), dictionary.infos().subspan(15, 4)};
 inline constexpr od::descriptor receive_pdo_17_nbr_of_entries{entries[15], infos[15]}; // 0x1611 sub 0
 inline constexpr od::descriptor receive_pdo_17_controlword{entries[16], infos[16]}; // 0x1611 sub 1
 inline constexpr od::descriptor receive_pdo_17_target_position{entries[17], infos[17]}; // 0x1611 sub 2
 inline constexpr od::descriptor receive_pdo_17_digital_outputs{entries[18], infos[18]}; // 0x1611 sub 3
-inline constexpr od::object receive_pdo_18{0x1612, od::object_code::record, "Receive PDO 18"sv, {entries.data() + 19, 10}, {infos.data() + 19, 10}};
+inline constexpr od::object receive_pdo_18{0x1612, od::object_code::record, "Receive PDO 18"sv, dictionary.entries().subspan(19, 10), dictionary.infos().subspan(19, 10)};
 inline constexpr od::descriptor receive_pdo_18_nbr_of_entries{entries[19], infos[19]}; // 0x1612 sub 0
 inline constexpr od::descriptor receive_pdo_18_controlword{entries[20], infos[20]}; // 0x1612 sub 1
 inline constexpr od::descriptor receive_pdo_18_target_position{entries[21], infos[21]}; // 0x1612 sub 2
@@ -824,76 +824,76 @@ inline constexpr od::descriptor receive_pdo_18_s_curve{entries[25], infos[25]}; 
 inline constexpr od::descriptor receive_pdo_18_following_position_error_window{entries[26], infos[26]}; // 0x1612 sub 7
 inline constexpr od::descriptor receive_pdo_18_target_position_error_window{entries[27], infos[27]}; // 0x1612 sub 8
 inline constexpr od::descriptor receive_pdo_18_digital_outputs{entries[28], infos[28]}; // 0x1612 sub 9
-inline constexpr od::object receive_pdo_19_reserved_for_future{0x1613, od::object_code::record, "Receive PDO 19 (reserved for future)"sv, {entries.data() + 29, 6}, {infos.data() + 29, 6}};
+inline constexpr od::object receive_pdo_19_reserved_for_future{0x1613, od::object_code::record, "Receive PDO 19 (reserved for future)"sv, dictionary.entries().subspan(29, 6), dictionary.infos().subspan(29, 6)};
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_nbr_of_entries{entries[29], infos[29]}; // 0x1613 sub 0
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_controlword{entries[30], infos[30]}; // 0x1613 sub 1
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_speed{entries[31], infos[31]}; // 0x1613 sub 2
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2001{entries[32], infos[32]}; // 0x1613 sub 3
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2003{entries[33], infos[33]}; // 0x1613 sub 4
 inline constexpr od::descriptor receive_pdo_19_reserved_for_future_digital_outputs{entries[34], infos[34]}; // 0x1613 sub 5
-inline constexpr od::object receive_pdo_20_reserved_for_future{0x1614, od::object_code::record, "Receive PDO 20 (reserved for future)"sv, {entries.data() + 35, 4}, {infos.data() + 35, 4}};
+inline constexpr od::object receive_pdo_20_reserved_for_future{0x1614, od::object_code::record, "Receive PDO 20 (reserved for future)"sv, dictionary.entries().subspan(35, 4), dictionary.infos().subspan(35, 4)};
 inline constexpr od::descriptor receive_pdo_20_reserved_for_future_nbr_of_entries{entries[35], infos[35]}; // 0x1614 sub 0
 inline constexpr od::descriptor receive_pdo_20_reserved_for_future_controlword{entries[36], infos[36]}; // 0x1614 sub 1
 inline constexpr od::descriptor receive_pdo_20_reserved_for_future_reserved_for_future_2002{entries[37], infos[37]}; // 0x1614 sub 2
 inline constexpr od::descriptor receive_pdo_20_reserved_for_future_digital_outputs{entries[38], infos[38]}; // 0x1614 sub 3
-inline constexpr od::object receive_pdo_21{0x1615, od::object_code::record, "Receive PDO 21"sv, {entries.data() + 39, 6}, {infos.data() + 39, 6}};
+inline constexpr od::object receive_pdo_21{0x1615, od::object_code::record, "Receive PDO 21"sv, dictionary.entries().subspan(39, 6), dictionary.infos().subspan(39, 6)};
 inline constexpr od::descriptor receive_pdo_21_nbr_of_entries{entries[39], infos[39]}; // 0x1615 sub 0
 inline constexpr od::descriptor receive_pdo_21_controlword{entries[40], infos[40]}; // 0x1615 sub 1
 inline constexpr od::descriptor receive_pdo_21_target_position{entries[41], infos[41]}; // 0x1615 sub 2
 inline constexpr od::descriptor receive_pdo_21_following_position_error_window{entries[42], infos[42]}; // 0x1615 sub 3
 inline constexpr od::descriptor receive_pdo_21_target_position_error_window{entries[43], infos[43]}; // 0x1615 sub 4
 inline constexpr od::descriptor receive_pdo_21_i_force_max{entries[44], infos[44]}; // 0x1615 sub 5
-inline constexpr od::object transmit_pdo_1{0x1A00, od::object_code::record, "Transmit PDO 1"sv, {entries.data() + 45, 2}, {infos.data() + 45, 2}};
+inline constexpr od::object transmit_pdo_1{0x1A00, od::object_code::record, "Transmit PDO 1"sv, dictionary.entries().subspan(45, 2), dictionary.infos().subspan(45, 2)};
 inline constexpr od::descriptor transmit_pdo_1_nbr_of_entries{entries[45], infos[45]}; // 0x1A00 sub 0
 inline constexpr od::descriptor transmit_pdo_1_statusword{entries[46], infos[46]}; // 0x1A00 sub 1
-inline constexpr od::object transmit_pdo_2{0x1A01, od::object_code::record, "Transmit PDO 2"sv, {entries.data() + 47, 3}, {infos.data() + 47, 3}};
+inline constexpr od::object transmit_pdo_2{0x1A01, od::object_code::record, "Transmit PDO 2"sv, dictionary.entries().subspan(47, 3), dictionary.infos().subspan(47, 3)};
 inline constexpr od::descriptor transmit_pdo_2_nbr_of_entries{entries[47], infos[47]}; // 0x1A01 sub 0
 inline constexpr od::descriptor transmit_pdo_2_statusword{entries[48], infos[48]}; // 0x1A01 sub 1
 inline constexpr od::descriptor transmit_pdo_2_actual_position{entries[49], infos[49]}; // 0x1A01 sub 2
-inline constexpr od::object transmit_pdo_17{0x1A10, od::object_code::record, "Transmit PDO 17"sv, {entries.data() + 50, 4}, {infos.data() + 50, 4}};
+inline constexpr od::object transmit_pdo_17{0x1A10, od::object_code::record, "Transmit PDO 17"sv, dictionary.entries().subspan(50, 4), dictionary.infos().subspan(50, 4)};
 inline constexpr od::descriptor transmit_pdo_17_nbr_of_entries{entries[50], infos[50]}; // 0x1A10 sub 0
 inline constexpr od::descriptor transmit_pdo_17_statusword{entries[51], infos[51]}; // 0x1A10 sub 1
 inline constexpr od::descriptor transmit_pdo_17_actual_position{entries[52], infos[52]}; // 0x1A10 sub 2
 inline constexpr od::descriptor transmit_pdo_17_digital_inputs{entries[53], infos[53]}; // 0x1A10 sub 3
-inline constexpr od::object transmit_pdo_18{0x1A11, od::object_code::record, "Transmit PDO 18"sv, {entries.data() + 54, 6}, {infos.data() + 54, 6}};
+inline constexpr od::object transmit_pdo_18{0x1A11, od::object_code::record, "Transmit PDO 18"sv, dictionary.entries().subspan(54, 6), dictionary.infos().subspan(54, 6)};
 inline constexpr od::descriptor transmit_pdo_18_nbr_of_entries{entries[54], infos[54]}; // 0x1A11 sub 0
 inline constexpr od::descriptor transmit_pdo_18_statusword{entries[55], infos[55]}; // 0x1A11 sub 1
 inline constexpr od::descriptor transmit_pdo_18_actual_position{entries[56], infos[56]}; // 0x1A11 sub 2
 inline constexpr od::descriptor transmit_pdo_18_actual_following_position_error{entries[57], infos[57]}; // 0x1A11 sub 3
 inline constexpr od::descriptor transmit_pdo_18_actual_current{entries[58], infos[58]}; // 0x1A11 sub 4
 inline constexpr od::descriptor transmit_pdo_18_digital_inputs{entries[59], infos[59]}; // 0x1A11 sub 5
-inline constexpr od::object transmit_pdo_19_reserved_for_future{0x1A12, od::object_code::record, "Transmit PDO 19 (reserved for future)"sv, {entries.data() + 60, 5}, {infos.data() + 60, 5}};
+inline constexpr od::object transmit_pdo_19_reserved_for_future{0x1A12, od::object_code::record, "Transmit PDO 19 (reserved for future)"sv, dictionary.entries().subspan(60, 5), dictionary.infos().subspan(60, 5)};
 inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_nbr_of_entries{entries[60], infos[60]}; // 0x1A12 sub 0
 inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_statusword{entries[61], infos[61]}; // 0x1A12 sub 1
 inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_actual_position{entries[62], infos[62]}; // 0x1A12 sub 2
 inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_i_force_actual{entries[63], infos[63]}; // 0x1A12 sub 3
 inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_digital_inputs{entries[64], infos[64]}; // 0x1A12 sub 4
-inline constexpr od::object transmit_pdo_21{0x1A13, od::object_code::record, "Transmit PDO 21"sv, {entries.data() + 65, 6}, {infos.data() + 65, 6}};
+inline constexpr od::object transmit_pdo_21{0x1A13, od::object_code::record, "Transmit PDO 21"sv, dictionary.entries().subspan(65, 6), dictionary.infos().subspan(65, 6)};
 inline constexpr od::descriptor transmit_pdo_21_nbr_of_entries{entries[65], infos[65]}; // 0x1A13 sub 0
 inline constexpr od::descriptor transmit_pdo_21_statusword{entries[66], infos[66]}; // 0x1A13 sub 1
 inline constexpr od::descriptor transmit_pdo_21_actual_position{entries[67], infos[67]}; // 0x1A13 sub 2
 inline constexpr od::descriptor transmit_pdo_21_actual_following_position_error{entries[68], infos[68]}; // 0x1A13 sub 3
 inline constexpr od::descriptor transmit_pdo_21_actual_current{entries[69], infos[69]}; // 0x1A13 sub 4
 inline constexpr od::descriptor transmit_pdo_21_process_status_register{entries[70], infos[70]}; // 0x1A13 sub 5
-inline constexpr od::object sync_manager_communication_type{0x1C00, od::object_code::array, "Sync Manager Communication Type"sv, {entries.data() + 71, 6}, {infos.data() + 71, 6}};
-inline constexpr od::object sync_manager_pdo_assignment_0{0x1C10, od::object_code::array, "Sync Manager PDO Assignment 0"sv, {entries.data() + 77, 1}, {infos.data() + 77, 1}};
-inline constexpr od::object sync_manager_pdo_assignment_1{0x1C11, od::object_code::array, "Sync Manager PDO Assignment 1"sv, {entries.data() + 78, 1}, {infos.data() + 78, 1}};
-inline constexpr od::object sync_manager_pdo_assignment_2{0x1C12, od::object_code::array, "Sync Manager PDO Assignment 2"sv, {entries.data() + 79, 2}, {infos.data() + 79, 2}};
-inline constexpr od::object sync_manager_pdo_assignment_3{0x1C13, od::object_code::array, "Sync Manager PDO Assignment 3"sv, {entries.data() + 81, 2}, {infos.data() + 81, 2}};
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 95, 46}, {infos.data() + 95, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 141, 17}, {infos.data() + 141, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 158, 107}, {infos.data() + 158, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 265, 12}, {infos.data() + 265, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 277, 14}, {infos.data() + 277, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 291, 11}, {infos.data() + 291, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 302, 15}, {infos.data() + 302, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 334, 3}, {infos.data() + 334, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 342, 3}, {infos.data() + 342, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 347, 3}, {infos.data() + 347, 3}};
+inline constexpr od::object sync_manager_communication_type{0x1C00, od::object_code::array, "Sync Manager Communication Type"sv, dictionary.entries().subspan(71, 6), dictionary.infos().subspan(71, 6)};
+inline constexpr od::object sync_manager_pdo_assignment_0{0x1C10, od::object_code::array, "Sync Manager PDO Assignment 0"sv, dictionary.entries().subspan(77, 1), dictionary.infos().subspan(77, 1)};
+inline constexpr od::object sync_manager_pdo_assignment_1{0x1C11, od::object_code::array, "Sync Manager PDO Assignment 1"sv, dictionary.entries().subspan(78, 1), dictionary.infos().subspan(78, 1)};
+inline constexpr od::object sync_manager_pdo_assignment_2{0x1C12, od::object_code::array, "Sync Manager PDO Assignment 2"sv, dictionary.entries().subspan(79, 2), dictionary.infos().subspan(79, 2)};
+inline constexpr od::object sync_manager_pdo_assignment_3{0x1C13, od::object_code::array, "Sync Manager PDO Assignment 3"sv, dictionary.entries().subspan(81, 2), dictionary.infos().subspan(81, 2)};
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, dictionary.entries().subspan(95, 46), dictionary.infos().subspan(95, 46)};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, dictionary.entries().subspan(141, 17), dictionary.infos().subspan(141, 17)};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, dictionary.entries().subspan(158, 107), dictionary.infos().subspan(158, 107)};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, dictionary.entries().subspan(265, 12), dictionary.infos().subspan(265, 12)};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, dictionary.entries().subspan(277, 14), dictionary.infos().subspan(277, 14)};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, dictionary.entries().subspan(291, 11), dictionary.infos().subspan(291, 11)};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, dictionary.entries().subspan(302, 15), dictionary.infos().subspan(302, 15)};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(334, 3), dictionary.infos().subspan(334, 3)};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(342, 3), dictionary.infos().subspan(342, 3)};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(347, 3), dictionary.infos().subspan(347, 3)};
 inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[347], infos[347]}; // 0x60C2 sub 0
 inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[348], infos[348]}; // 0x60C2 sub 1
 inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[349], infos[349]}; // 0x60C2 sub 2
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 352, 3}, {infos.data() + 352, 3}};
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(352, 3), dictionary.infos().subspan(352, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_ethercat
 // clang-format on

@@ -816,19 +816,19 @@ inline constexpr od::descriptor supported_modes_of_operation{entries[362], infos
 inline constexpr od::descriptor product_website_address{entries[363], infos[363]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
-inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 6, 5}, {infos.data() + 6, 5}};
+inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(6, 5), dictionary.infos().subspan(6, 5)};
 inline constexpr od::descriptor identity_object_nbr_of_entries{entries[6], infos[6]}; // 0x1018 sub 0
 inline constexpr od::descriptor identity_object_vendor_id{entries[7], infos[7]}; // 0x1018 sub 1
 inline constexpr od::descriptor identity_object_product_code{entries[8], infos[8]}; // 0x1018 sub 2
 inline constexpr od::descriptor identity_object_revision_number{entries[9], infos[9]}; // 0x1018 sub 3
 inline constexpr od::descriptor identity_object_serial_number{entries[10], infos[10]}; // 0x1018 sub 4
-inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration"sv, {entries.data() + 11, 5}, {infos.data() + 11, 5}};
+inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration"sv, dictionary.entries().subspan(11, 5), dictionary.infos().subspan(11, 5)};
 inline constexpr od::descriptor cfm_verifyconfiguration_nbr_of_entries{entries[11], infos[11]}; // 0x1020 sub 0
 inline constexpr od::descriptor cfm_verifyconfiguration_confdate_u32{entries[12], infos[12]}; // 0x1020 sub 1
 inline constexpr od::descriptor cfm_verifyconfiguration_conftime_u32{entries[13], infos[13]}; // 0x1020 sub 2
 inline constexpr od::descriptor cfm_verifyconfiguration_confid_u32{entries[14], infos[14]}; // 0x1020 sub 3
 inline constexpr od::descriptor cfm_verifyconfiguration_verifyconfinvalid_u32{entries[15], infos[15]}; // 0x1020 sub 4
-inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC"sv, {entries.data() + 16, 10}, {infos.data() + 16, 10}};
+inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC"sv, dictionary.entries().subspan(16, 10), dictionary.infos().subspan(16, 10)};
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_nbr_of_entries{entries[16], infos[16]}; // 0x1030 sub 0
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceindex_u16{entries[17], infos[17]}; // 0x1030 sub 1
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacedescription_vstr{entries[18], infos[18]}; // 0x1030 sub 2
@@ -839,43 +839,43 @@ inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacename_vstr{ent
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceoperstatus_u8{entries[23], infos[23]}; // 0x1030 sub 7
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceadminstate_u8{entries[24], infos[24]}; // 0x1030 sub 8
 inline constexpr od::descriptor nmt_interfacegroup_0h_rec_valid_bool{entries[25], infos[25]}; // 0x1030 sub 9
-inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC"sv, {entries.data() + 28, 3}, {infos.data() + 28, 3}};
+inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC"sv, dictionary.entries().subspan(28, 3), dictionary.infos().subspan(28, 3)};
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nbr_of_entries{entries[28], infos[28]}; // 0x1400 sub 0
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nodeid_u8{entries[29], infos[29]}; // 0x1400 sub 1
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_mappingversion_u8{entries[30], infos[30]}; // 0x1400 sub 2
-inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::array, "PDO_RxMappParam_00h_AU64"sv, {entries.data() + 31, 9}, {infos.data() + 31, 9}};
-inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC"sv, {entries.data() + 40, 3}, {infos.data() + 40, 3}};
+inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::array, "PDO_RxMappParam_00h_AU64"sv, dictionary.entries().subspan(31, 9), dictionary.infos().subspan(31, 9)};
+inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC"sv, dictionary.entries().subspan(40, 3), dictionary.infos().subspan(40, 3)};
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_nbr_of_entries{entries[40], infos[40]}; // 0x1800 sub 0
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_nodeid_u8{entries[41], infos[41]}; // 0x1800 sub 1
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_mappingversion_u8{entries[42], infos[42]}; // 0x1800 sub 2
-inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::array, "PDO_TxMappParam_00h_AU64"sv, {entries.data() + 43, 9}, {infos.data() + 43, 9}};
-inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC"sv, {entries.data() + 52, 4}, {infos.data() + 52, 4}};
+inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::array, "PDO_TxMappParam_00h_AU64"sv, dictionary.entries().subspan(43, 9), dictionary.infos().subspan(43, 9)};
+inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC"sv, dictionary.entries().subspan(52, 4), dictionary.infos().subspan(52, 4)};
 inline constexpr od::descriptor dll_cnlosssoc_rec_numberofentries{entries[52], infos[52]}; // 0x1C0B sub 0
 inline constexpr od::descriptor dll_cnlosssoc_rec_cumulativecnt_u32{entries[53], infos[53]}; // 0x1C0B sub 1
 inline constexpr od::descriptor dll_cnlosssoc_rec_thresholdcnt_u32{entries[54], infos[54]}; // 0x1C0B sub 2
 inline constexpr od::descriptor dll_cnlosssoc_rec_threshold_u32{entries[55], infos[55]}; // 0x1C0B sub 3
-inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC"sv, {entries.data() + 56, 4}, {infos.data() + 56, 4}};
+inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC"sv, dictionary.entries().subspan(56, 4), dictionary.infos().subspan(56, 4)};
 inline constexpr od::descriptor dll_cncrcerror_rec_numberofentries{entries[56], infos[56]}; // 0x1C0F sub 0
 inline constexpr od::descriptor dll_cncrcerror_rec_cumulativecnt_u32{entries[57], infos[57]}; // 0x1C0F sub 1
 inline constexpr od::descriptor dll_cncrcerror_rec_thresholdcnt_u32{entries[58], infos[58]}; // 0x1C0F sub 2
 inline constexpr od::descriptor dll_cncrcerror_rec_threshold_u32{entries[59], infos[59]}; // 0x1C0F sub 3
-inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC"sv, {entries.data() + 61, 6}, {infos.data() + 61, 6}};
+inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC"sv, dictionary.entries().subspan(61, 6), dictionary.infos().subspan(61, 6)};
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_numberofentries{entries[61], infos[61]}; // 0x1E40 sub 0
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_ifindex_u16{entries[62], infos[62]}; // 0x1E40 sub 1
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_addr_ipad{entries[63], infos[63]}; // 0x1E40 sub 2
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_netmask_ipad{entries[64], infos[64]}; // 0x1E40 sub 3
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_reasmmaxsize_u16{entries[65], infos[65]}; // 0x1E40 sub 4
 inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_defaultgateway_ipad{entries[66], infos[66]}; // 0x1E40 sub 5
-inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC"sv, {entries.data() + 67, 4}, {infos.data() + 67, 4}};
+inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC"sv, dictionary.entries().subspan(67, 4), dictionary.infos().subspan(67, 4)};
 inline constexpr od::descriptor nwl_ipgroup_rec_numberofentries{entries[67], infos[67]}; // 0x1E4A sub 0
 inline constexpr od::descriptor nwl_ipgroup_rec_forwarding_bool{entries[68], infos[68]}; // 0x1E4A sub 1
 inline constexpr od::descriptor nwl_ipgroup_rec_defaultttl_u16{entries[69], infos[69]}; // 0x1E4A sub 2
 inline constexpr od::descriptor nwl_ipgroup_rec_forwarddatagrams_u32{entries[70], infos[70]}; // 0x1E4A sub 3
-inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC"sv, {entries.data() + 74, 3}, {infos.data() + 74, 3}};
+inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC"sv, dictionary.entries().subspan(74, 3), dictionary.infos().subspan(74, 3)};
 inline constexpr od::descriptor nmt_eplnodeid_rec_numberofentries{entries[74], infos[74]}; // 0x1F93 sub 0
 inline constexpr od::descriptor nmt_eplnodeid_rec_nodeid_u8{entries[75], infos[75]}; // 0x1F93 sub 1
 inline constexpr od::descriptor nmt_eplnodeid_rec_nodeidbyhw_bool{entries[76], infos[76]}; // 0x1F93 sub 2
-inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC"sv, {entries.data() + 77, 10}, {infos.data() + 77, 10}};
+inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC"sv, dictionary.entries().subspan(77, 10), dictionary.infos().subspan(77, 10)};
 inline constexpr od::descriptor nmt_cycletiming_rec_numberofentries{entries[77], infos[77]}; // 0x1F98 sub 0
 inline constexpr od::descriptor nmt_cycletiming_rec_isochrtxmaxpayload_u16{entries[78], infos[78]}; // 0x1F98 sub 1
 inline constexpr od::descriptor nmt_cycletiming_rec_isochrrxmaxpayload_u16{entries[79], infos[79]}; // 0x1F98 sub 2
@@ -886,20 +886,20 @@ inline constexpr od::descriptor nmt_cycletiming_rec_asndmaxlatency_u32{entries[8
 inline constexpr od::descriptor nmt_cycletiming_rec_multiplcyclecnt_u8{entries[84], infos[84]}; // 0x1F98 sub 7
 inline constexpr od::descriptor nmt_cycletiming_rec_asyncmtusize_u16{entries[85], infos[85]}; // 0x1F98 sub 8
 inline constexpr od::descriptor nmt_cycletiming_rec_prescaler_u16{entries[86], infos[86]}; // 0x1F98 sub 9
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 102, 46}, {infos.data() + 102, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 148, 17}, {infos.data() + 148, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 165, 107}, {infos.data() + 165, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 272, 12}, {infos.data() + 272, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 284, 14}, {infos.data() + 284, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 298, 11}, {infos.data() + 298, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 309, 15}, {infos.data() + 309, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 341, 3}, {infos.data() + 341, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 348, 3}, {infos.data() + 348, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 353, 3}, {infos.data() + 353, 3}};
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, dictionary.entries().subspan(102, 46), dictionary.infos().subspan(102, 46)};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, dictionary.entries().subspan(148, 17), dictionary.infos().subspan(148, 17)};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, dictionary.entries().subspan(165, 107), dictionary.infos().subspan(165, 107)};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, dictionary.entries().subspan(272, 12), dictionary.infos().subspan(272, 12)};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, dictionary.entries().subspan(284, 14), dictionary.infos().subspan(284, 14)};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, dictionary.entries().subspan(298, 11), dictionary.infos().subspan(298, 11)};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, dictionary.entries().subspan(309, 15), dictionary.infos().subspan(309, 15)};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(341, 3), dictionary.infos().subspan(341, 3)};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(348, 3), dictionary.infos().subspan(348, 3)};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(353, 3), dictionary.infos().subspan(353, 3)};
 inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[353], infos[353]}; // 0x60C2 sub 0
 inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[354], infos[354]}; // 0x60C2 sub 1
 inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[355], infos[355]}; // 0x60C2 sub 2
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 358, 3}, {infos.data() + 358, 3}};
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(358, 3), dictionary.infos().subspan(358, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_powerlink
 // clang-format on
