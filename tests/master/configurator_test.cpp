@@ -245,3 +245,36 @@ TEST_CASE("configurator: refusals") {
     CHECK(s.value().send.empty());
   }
 }
+
+// The list fieldcodec-gen wrote from tests/master/fixtures/xenax_axis.dcf (kept current by the
+// codegen test "the fixture of the master tests matches its checked-in header").
+#include "master/generated/xenax_axis_config.hpp"
+
+namespace axis_config = fieldcodec::dictionaries::xenax_axis::config;
+
+TEST_CASE("configurator: the generated list of a DCF brings the device to the DCF's values") {
+  static_assert(axis_config::node_id == 5);
+  static_assert(axis_config::identity.vendor_id == 0x21BU);
+  static_assert(axis_config::items.size() == 8U);
+  // the concise DCF the generator wrote is what write_concise_dcf makes for node 5
+  std::array<std::uint8_t, sizeof axis_config::concise_dcf> concise{};
+  REQUIRE(master::write_concise_dcf(axis_config::configuration, 5, concise).value() ==
+          concise.size());
+  CHECK(std::equal(concise.begin(), concise.end(), std::begin(axis_config::concise_dcf)));
+
+  for (const std::uint8_t n : {std::uint8_t{5}, std::uint8_t{9}}) {
+    CAPTURE(n);
+    sim::device d(n);
+    csdo::client client(n, 200);
+    master::configurator c(client, {.verify = true});
+    std::uint32_t now = 0;
+    run(c, d, c.start(axis_config::configuration, now, n).value(), now);
+    CHECK(c.state() == config_state::done);
+    CHECK(d.get({0x1800, 1}) == 0x180U + n);
+    CHECK(d.get({0x1800, 2}) == 1U);
+    CHECK(d.get({0x1A00, 0}) == 1U);
+    CHECK(d.get({0x1A00, 1}) == 0x60640020U);
+    CHECK(d.get({0x6065, 0}) == 500U);
+    CHECK(d.get({0x6098, 0}) == 12U);
+  }
+}
