@@ -493,3 +493,34 @@ TEST_CASE("drive: jog is XENAX only") {
   enable_in(b, -1);
   CHECK(b.axis.jog(xenax::jog_direction::negative, b.now).error() == errc::bad_state);
 }
+
+TEST_CASE("drive: an aborted target write fails the move; an EMCY with code 0 clears the last") {
+  sim::bench b({.target_over_sdo = true});
+  enable_in(b, 1);
+  b.dev.abort_next = fieldcodec::canopen::sdo::abort_code::value_too_low;
+  REQUIRE(b.axis.move_to(-5, b.now));
+  b.run();
+  CHECK(b.axis.state() == drive_state::failed);
+  CHECK(b.axis.error()->failure == drive_failure::sdo_failed);
+  CHECK(b.axis.error()->sdo->address == fieldcodec::od::address{0x607A, 0});
+  CHECK(rising_edges(b.controlwords, 0x10) == 0); // bit 4 never raised
+
+  b.axis.on_emcy({0x2310, 0x03, {}});
+  b.axis.on_emcy({0x0000, 0x00, {}}); // error reset
+  b.dev.fault(0x2310);
+  b.cycle();
+  CHECK(b.axis.state() == drive_state::fault);
+  CHECK_FALSE(b.axis.error()->emcy);
+}
+
+TEST_CASE("drive: an SDO that never completes keeps motion commands waiting") {
+  sim::bench b({.set_point_timeout_ms = 50, .target_over_sdo = true});
+  enable_in(b, 1);
+  b.dev.sdo_silent = true;
+  REQUIRE(b.axis.move_to(100, b.now));
+  b.run();
+  // the caller's SDO client would report its timeout; without it the set-point times out
+  CHECK(b.axis.error()->failure == drive_failure::set_point_not_acknowledged);
+  CHECK(rising_edges(b.controlwords, 0x10) == 0);
+  CHECK(b.axis.sdo_pending());
+}

@@ -217,8 +217,8 @@ public:
   }
   /// Walk to `target` (switch on disabled, ready to switch on or switched on) from any state
   /// but fault. Errors: invalid_argument (other targets), bad_state (fault).
-  [[nodiscard]] constexpr status disable(std::uint32_t now,
-                                         ds402::state target = ds402::state::switch_on_disabled) {
+  [[nodiscard]] constexpr status
+  disable(std::uint32_t now, ds402::state target = ds402::state::switch_on_disabled) noexcept {
     if (target != ds402::state::switch_on_disabled && target != ds402::state::ready_to_switch_on &&
         target != ds402::state::switched_on) {
       return errc::invalid_argument;
