@@ -139,8 +139,8 @@ struct drive {
       abort_next.reset();
       return sdo::transfer_error{fieldcodec::errc::aborted, code, r.address};
     }
-    const auto v = static_cast<std::uint32_t>(r.data[0] | (r.data[1] << 8U) | (r.data[2] << 16U) |
-                                              (static_cast<std::uint32_t>(r.data[3]) << 24U));
+    std::uint32_t v = 0;
+    for (std::size_t i = 0; i < 4U; ++i) v |= std::uint32_t{r.data[i]} << (8U * i);
     if (r.what == master::sdo_request::kind::download) {
       if (r.address == master::obj::modes_of_operation) {
         mode_request = static_cast<std::int8_t>(r.data[0]);

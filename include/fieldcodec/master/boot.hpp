@@ -240,8 +240,8 @@ private:
     if (v.size() != 4U) {
       return fail({boot_failure::identity_read_failed, errc::bad_length, field_});
     }
-    const auto actual = static_cast<std::uint32_t>(v[0] | (v[1] << 8U) | (v[2] << 16U) |
-                                                   (static_cast<std::uint32_t>(v[3]) << 24U));
+    std::uint32_t actual = 0;
+    for (std::size_t i = 0; i < 4U; ++i) actual |= std::uint32_t{v[i]} << (8U * i);
     set(read_, field_, actual);
     const auto expected = value_of(config_.expected, field_);
     if (actual != expected) {
