@@ -48,8 +48,8 @@ void fill_inputs() {
     p.accel = r.between(1, 0xFFFF);
     p.ok = true;
     g_posr_records[i] =
-        nx::encode_record(nx::then(nx::then(nx::make(nx::op::posr, nx::integer(p.posr)),
-                                            nx::op::speed, nx::integer(p.speed)),
+        nx::encode_record(nx::then(nx::then(nx::make(nx::op::posr, nx::dsp_raw(p.posr)),
+                                            nx::op::speed, nx::dsp_raw(p.speed)),
                                    nx::op::accel, nx::integer(p.accel)))
             .value();
   }
@@ -154,8 +154,8 @@ bench::registry make_registry() {
   bench::add<g_posr>(
       r, "nx/encode_record POSR+SPEED+ACCEL",
       [](const posr_record &p) {
-        const auto c = nx::then(nx::then(nx::make(nx::op::posr, nx::integer(p.posr)), nx::op::speed,
-                                         nx::integer(p.speed)),
+        const auto c = nx::then(nx::then(nx::make(nx::op::posr, nx::dsp_raw(p.posr)), nx::op::speed,
+                                         nx::dsp_raw(p.speed)),
                                 nx::op::accel, nx::integer(p.accel));
         return nx::encode_record(c).value_or(nx::record{});
       },
@@ -165,14 +165,18 @@ bench::registry make_registry() {
       [](const nx::record &rec) {
         posr_record p;
         auto c = nx::decode_record(rec);
-        if (!c || c.value().code != nx::op::posr || c.value().code2 != nx::op::speed ||
-            c.value().code3 != nx::op::accel || c.value().a.kind != nx::arg_kind::value ||
-            c.value().b.kind != nx::arg_kind::value || c.value().c.kind != nx::arg_kind::value) {
+        if (!c || c.value().operation != nx::op::posr ||
+            c.value().second_operation != nx::op::speed ||
+            c.value().third_operation != nx::op::accel ||
+            c.value().third_argument.kind != nx::arg_kind::value) {
           return p;
         }
-        p.posr = c.value().a.value;
-        p.speed = c.value().b.value;
-        p.accel = c.value().c.value;
+        auto posr = nx::dsp_of(c.value().argument);
+        auto speed = nx::dsp_of(c.value().second_argument);
+        if (!posr || !speed) return p;
+        p.posr = posr.value().raw;
+        p.speed = speed.value().raw;
+        p.accel = c.value().third_argument.number;
         p.ok = true;
         return p;
       },

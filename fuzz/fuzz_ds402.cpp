@@ -15,7 +15,8 @@
 //   statuswords (bad_state), and — driving a simulated drive (apply) with its answers — reaches
 //   the target within a few cycles from every state that has no automatic transition pending.
 //   power_sequencer does the same and keeps the caller's mode bits.
-// * decode_mode: what decodes re-encodes to the same byte.
+// * decode_mode: every standard and manufacturer-specific value decodes to a mode holding that
+//   value; only the reserved values (5, 12..127) give out_of_range.
 #include "check.hpp"
 
 #include <fieldcodec/ds402/controlword.hpp>
@@ -170,12 +171,15 @@ void check_mode(std::uint8_t byte) {
   const auto v = static_cast<std::int8_t>(byte);
   auto m = ds402::decode_mode(v);
   if (m) {
-    FUZZ_CHECK(ds402::mode_byte(m.value()) == byte);
-    FUZZ_CHECK(ds402::is_standard_mode(v));
-    FUZZ_CHECK(ds402::to_string(m.value()) != "?");
+    // the mode holds the INTEGER8 value itself: standard or manufacturer-specific
+    FUZZ_CHECK(static_cast<std::uint8_t>(static_cast<std::int8_t>(m.value())) == byte);
+    FUZZ_CHECK(ds402::is_standard_mode(v) != ds402::is_manufacturer_mode(v));
+    FUZZ_CHECK(ds402::is_manufacturer_mode(m.value()) == (v < 0));
+    FUZZ_CHECK(ds402::to_string(m.value()) != "?" && ds402::to_string(m.value()) != "reserved");
+    FUZZ_CHECK((ds402::to_string(m.value()) == "manufacturer-specific") == (v < 0));
   } else {
-    FUZZ_CHECK(m.error() == (v < 0 ? errc::unknown_command : errc::out_of_range));
-    FUZZ_CHECK(!ds402::is_standard_mode(v));
+    FUZZ_CHECK(m.error() == errc::out_of_range);
+    FUZZ_CHECK(!ds402::is_standard_mode(v) && !ds402::is_manufacturer_mode(v));
   }
 }
 

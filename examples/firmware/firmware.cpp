@@ -65,8 +65,7 @@ void canopen_cycle(master &m) {
   auto cw = m.power.next(static_cast<std::uint16_t>(sw.value()), ds402::state::operation_enabled);
   if (!cw) return;
   std::array<std::uint8_t, 8> rpdo{};
-  if (rx_map.set(rpdo, 0, cw.value()) &&
-      rx_map.set(rpdo, 1, static_cast<std::uint32_t>(m.target))) {
+  if (rx_map.set(rpdo, 0, cw.value()) && rx_map.set(rpdo, 1, m.target)) {
     fw::transmit(std::span(rpdo).first(rx_map.bytes()));
   }
 }

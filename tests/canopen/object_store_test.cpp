@@ -4,11 +4,14 @@
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/dictionaries/xenax_ethercat.hpp>
+#include <fieldcodec/dictionaries/xenax_powerlink.hpp>
 
 #include <doctest/doctest.h>
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -214,41 +217,86 @@ TEST_CASE("server: an object larger than its buffer, through the store's staging
   }
 }
 
-// Issue 12 #1: every string object of the XENAX CAN dictionary is readable over SDO with its EDS
-// default as the initial value. The store takes a string's capacity from `entry.size`; the
-// generator fills it from the EDS (declared size, default's length, generator option: the
-// codegen/od work of this round). Until the regenerated XENAX header carries the sizes, the
-// strings without one are counted and the test is marked may_fail: remove the decorator when
-// the sizes land.
-TEST_CASE("XENAX CAN dictionary: strings served with their default text" * doctest::may_fail()) {
-  namespace x = fieldcodec::dictionaries::xenax_canopen;
-  constexpr auto xl = sdo::make_layout<x::dictionary.size()>(x::dictionary);
-  std::vector<std::uint8_t> storage(xl.storage_size());
-  sdo::dictionary_store<> s{x::dictionary, xl, storage};
-  CHECK(s.init_defaults(1).has_value());
-  std::vector<std::uint8_t> buffer(256);
-  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
-  sdo::client c(1);
-  std::size_t strings = 0, served = 0;
-  for (const auto &e : x::dictionary) {
-    if (!od::is_byte_string(e.type) || !od::readable(e.access_type)) continue;
-    ++strings;
-    if (e.size == 0) continue;
-    CAPTURE(e.index);
-    std::vector<std::uint8_t> out(e.size + 8);
-    auto st = c.upload({e.index, e.sub}, out, 0).value();
-    for (int i = 0; i < 100 && !st.send.empty(); ++i) {
+// Issue 12 #1: every string object of the XENAX dictionaries (CANopen, EtherCAT, POWERLINK) is
+// readable over SDO with its EDS default as the initial value, and writable where the dictionary
+// says rw: a value up to the capacity is stored and read back with its length, one byte more is
+// refused with 06070012h, a read-only string refuses every write with 06010002h. The capacity is
+// the generated `entry.size`: the EDS's `Size=` (printed lengths, or fieldcodec's choice where
+// the manual prints none, docs/xenax.md) or the default's length.
+namespace {
+struct sdo_pair {
+  sdo::server<sdo::dictionary_store<>> &srv;
+  sdo::client c{1};
+
+  void talk(sdo::step st) {
+    for (int i = 0; i < 200 && !st.send.empty(); ++i) {
       auto r = srv.on_frame(st.send[0], 0);
       if (r.send.empty()) break;
       st = c.on_frame(r.send[0], 0);
     }
-    CHECK(c.state() == sdo::transfer_state::done);
-    CHECK(text(c.received()) == e.default_text.substr(0, e.size));
-    ++served;
   }
-  MESSAGE("XENAX CAN strings: " << strings << ", with a capacity: " << served);
-  CHECK(strings > 0);
-  CHECK(served == strings);
+  std::string read(od::address a, std::size_t capacity) {
+    std::vector<std::uint8_t> out(capacity + 8);
+    talk(c.upload(a, out, 0).value());
+    REQUIRE(c.state() == sdo::transfer_state::done);
+    return std::string(text(c.received()));
+  }
+  abort_code write(od::address a, std::string_view v) {
+    std::vector<std::uint8_t> in(v.begin(), v.end());
+    talk(c.download(a, in, 0).value());
+    if (c.state() == sdo::transfer_state::done) return abort_code::none;
+    REQUIRE(c.error().has_value());
+    return c.error()->abort;
+  }
+};
+
+template <const auto &Dictionary>
+void check_xenax_strings(std::size_t expected_strings) {
+  constexpr auto xl = sdo::make_layout<Dictionary.size()>(Dictionary);
+  std::vector<std::uint8_t> storage(xl.storage_size());
+  sdo::dictionary_store<> s{Dictionary, xl, storage};
+  REQUIRE(s.init_defaults(1).has_value());
+  std::vector<std::uint8_t> buffer(256);
+  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
+  sdo_pair p{srv};
+  std::size_t strings = 0, writable = 0;
+  for (const auto &e : Dictionary) {
+    if (!od::is_byte_string(e.type)) continue;
+    ++strings;
+    CAPTURE(e.index);
+    CAPTURE(e.sub);
+    REQUIRE(e.size > 0);
+    REQUIRE(od::readable(e.access_type));
+    const od::address a{e.index, e.sub};
+    CHECK(e.default_text.size() <= e.size);
+    CHECK(p.read(a, e.size) == e.default_text);
+    if (!od::writable(e.access_type)) {
+      CHECK(p.write(a, "x") == abort_code::write_read_only);
+      CHECK(p.read(a, e.size) == e.default_text);
+      continue;
+    }
+    ++writable;
+    const std::string full(e.size, 'Q');
+    CHECK(p.write(a, full) == abort_code::none);
+    CHECK(p.read(a, e.size) == full);
+    CHECK(p.write(a, "LX-44") == abort_code::none); // shorter: its own length, no padding
+    CHECK(p.read(a, e.size) == "LX-44");
+    CHECK(p.write(a, full + "Q") == abort_code::length_too_high);
+    CHECK(p.read(a, e.size) == "LX-44"); // the refused write left the value
+  }
+  MESSAGE("XENAX strings: " << strings << ", writable: " << writable);
+  CHECK(strings == expected_strings);
+  CHECK(writable > 0);
+}
+} // namespace
+
+TEST_CASE("XENAX dictionaries: every string is served with its default text and its capacity") {
+  namespace dict = fieldcodec::dictionaries;
+  // 1008h, 1009h, 100Ah, 2008h, 5011h, 5012h, 5020h, 5021h, 6505h
+  SUBCASE("CANopen") { check_xenax_strings<dict::xenax_canopen::dictionary>(9); }
+  SUBCASE("EtherCAT") { check_xenax_strings<dict::xenax_ethercat::dictionary>(9); }
+  // and 1030h sub 2, 5, 6, 1F9Ah
+  SUBCASE("POWERLINK") { check_xenax_strings<dict::xenax_powerlink::dictionary>(13); }
 }
 
 TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 14)") {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 namespace cx = fieldcodec::compax;
 using fieldcodec::decimal;
@@ -86,6 +87,18 @@ static_assert(cx::decode_bcd_speed(b3{0x03, 0x50, 0x00}).value() == 35'000);
 static_assert(cx::encode_bcd_speed(600'000).value() == b3{0x60, 0x00, 0x00});
 static_assert(cx::encode_bcd_speed(600'001).error() == errc::out_of_range);
 static_assert(cx::encode_bcd_speed(0).error() == errc::out_of_range);
+// Any integer type, checked, never wrapped (issue 13): 2^32 + 35 000 is not 35.000 %, and
+// 2^64 − 1000 is not −1.000 mm.
+static_assert(cx::encode_bcd_speed((std::int64_t{1} << 32) + 35'000).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_speed(-35'000).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_speed(std::uint64_t{35'000}).value() == b3{0x03, 0x50, 0x00});
+static_assert(cx::encode_bcd_position(~std::uint64_t{0} - 999U).error() == errc::out_of_range);
+static_assert(cx::encode_bcd_position(std::uint64_t{7'350'150}).value() ==
+              std::array<std::uint8_t, 6>{0x00, 0x00, 0x07, 0x35, 0x01, 0x50});
+static_assert(cx::encode_bcd_position(short{-1}).value() ==
+              std::array<std::uint8_t, 6>{0xFF, 0x00, 0x00, 0x00, 0x00, 0x01});
+static_assert(cx::encode_identification(-1).error() == errc::out_of_range);
+static_assert(cx::encode_identification(1'000'000'000'000ULL).error() == errc::overflow);
 static_assert(cx::decode_bcd_speed(b3{0x00, 0x00, 0x00}).error() == errc::out_of_range);
 static_assert(cx::decode_bcd_speed(b3{0x60, 0x00, 0x01}).error() == errc::out_of_range);
 static_assert(cx::decode_bcd_speed(b3{0x0B, 0x00, 0x00}).error() == errc::bad_digit);
@@ -159,4 +172,27 @@ TEST_CASE("compax: visible strings") {
   CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
   buf[3] = 0x80;
   CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
+}
+
+// Issue 12: a drive may pad a string reply with NUL instead of spaces (docs/compax.md, "Visible
+// strings"). The text ends at the first NUL; only NUL and space may follow it.
+TEST_CASE("compax: visible strings padded with NUL") {
+  const auto text = [](std::span<const std::uint8_t> in) {
+    auto t = cx::decode_visible_string(in);
+    REQUIRE(t.has_value());
+    return std::string(t.value().begin(), t.value().end());
+  };
+  std::array<std::uint8_t, 12> buf{'P', '0', '0', '3', '=', '1', '.', '5'};
+  CHECK(text(buf) == "P003=1.5"); // NUL padding
+  buf[9] = ' ';
+  CHECK(text(buf) == "P003=1.5"); // NUL and space mixed after the text
+  buf[8] = ' ';
+  buf[9] = 0;
+  CHECK(text(buf) == "P003=1.5"); // spaces, then NUL
+  const std::array<std::uint8_t, 4> empty{};
+  CHECK(text(empty).empty());
+  buf[10] = 'X'; // a character after the NUL is not padding
+  CHECK(cx::decode_visible_string(buf).error() == errc::bad_character);
+  const std::array<std::uint8_t, 4> inner{'A', 0, 'B', 0};
+  CHECK(cx::decode_visible_string(inner).error() == errc::bad_character);
 }

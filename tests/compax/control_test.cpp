@@ -107,6 +107,18 @@ TEST_CASE("CONTROL, selection codes, polarity, override, I/O words") {
   CHECK(v.bytes() == b2{0x80, 0x00});
   CHECK(v.virtual_input(32).value());
   CHECK(v.virtual_input(16).error() == errc::out_of_range);
+  // any integer type, checked (2^32 + 17 is not E17)
+  CHECK(v.virtual_input((std::int64_t{1} << 32) + 17).error() == errc::out_of_range);
+  CHECK(v.set_virtual_input(std::uint64_t{17}, true).has_value());
+  CHECK(v.virtual_input(short{17}).value());
+  CHECK(w.test(-1).error() == errc::out_of_range);
+  CHECK(w.test((std::int64_t{1} << 32) + 1).error() == errc::out_of_range);
+  CHECK(w.set(std::uint64_t{17}).error() == errc::out_of_range);
+  cx::steuerbyte sb{};
+  CHECK(sb.set_record(271).error() == errc::out_of_range); // would be record 15 if wrapped
+  CHECK(sb.set_record(-1).error() == errc::out_of_range);
+  CHECK(sb.set_record(std::uint64_t{15}).has_value());
+  CHECK(sb.record() == 15);
 }
 
 TEST_CASE("STOERUNG fault codes and error texts (2.5.1, chapter 5)") {

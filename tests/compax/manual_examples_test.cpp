@@ -72,7 +72,7 @@ void check_write(const printed &p, const bytes &ours) {
 
 void check_read(const printed &p) {
   CAPTURE(p.line);
-  const auto r = cx::pcp_read(p.index, p.sub);
+  const auto r = cx::pcp_read(p.index, p.sub).value();
   CHECK(static_cast<std::uint16_t>(r.service) == p.service);
   CHECK(r.param_counter == p.counter);
   if (p.length >= 0) CHECK(static_cast<int>(r.length) == p.length);
@@ -261,21 +261,32 @@ TEST_CASE("manual 000 process-data parameter values (P135..P142, 2.12.1, 2.12.2)
   CHECK(cx::pd_select_subindex_size(14).error() == errc::unknown_object);
 }
 
+TEST_CASE("PCP request: index and sub-index of any integer type, checked") {
+  CHECK(cx::pcp_read(0x5FE8, 300).error() == errc::out_of_range); // not sub-index 44
+  CHECK(cx::pcp_read(0x15FE8, 1).error() == errc::out_of_range);  // not index 0x5FE8
+  CHECK(cx::pcp_read(-1, 1).error() == errc::out_of_range);
+  CHECK(cx::pcp_read(std::uint64_t{0x5FE8}, 23L).value().sub == 23);
+  const std::array<std::uint8_t, 1> one{0x01};
+  CHECK(cx::pcp_write(0x5FE9, 256, one).error() == errc::out_of_range);
+  CHECK(cx::pcp_write(0x5FE9U, std::int8_t{0}, one).value().index == 0x5FE9);
+}
+
 TEST_CASE("PCP request bad input") {
   CHECK(cx::pcp_write(0x5FE6, 0, std::span<const std::uint8_t>{}).error() == errc::bad_length);
   const std::array<std::uint8_t, 33> big{};
   CHECK(cx::pcp_write(0x5FE6, 0, big).error() == errc::bad_length);
-  auto r = cx::pcp_read(0x5FE8, 1);
+  auto r = cx::pcp_read(0x5FE8, 1).value();
   r.service = static_cast<cx::pcp_service>(0x8083);
   CHECK(cx::check_pcp_request(r).error() == errc::unknown_command);
-  r = cx::pcp_read(0x5FE8, 1);
+  r = cx::pcp_read(0x5FE8, 1).value();
   r.length = 2;
   CHECK(cx::check_pcp_request(r).error() == errc::bad_length);
   std::array<std::uint8_t, 4> small{};
-  CHECK(cx::encode_pcp_request(cx::pcp_read(0x5FE8, 1), small).error() == errc::buffer_too_small);
+  CHECK(cx::encode_pcp_request(cx::pcp_read(0x5FE8, 1).value(), small).error() ==
+        errc::buffer_too_small);
   // wire: read request is 10 bytes; one byte less is truncated, one more is left over
   std::array<std::uint8_t, 11> wire{};
-  REQUIRE(cx::encode_pcp_request(cx::pcp_read(0x5FE8, 23), wire).value() == 10);
+  REQUIRE(cx::encode_pcp_request(cx::pcp_read(0x5FE8, 23).value(), wire).value() == 10);
   CHECK(wire[0] == 0x80);
   CHECK(wire[1] == 0x81);
   CHECK(wire[3] == 3);
@@ -285,4 +296,19 @@ TEST_CASE("PCP request bad input") {
   CHECK(cx::decode_pcp_request(std::span<const std::uint8_t>{wire}.first(9)).error() ==
         errc::truncated);
   CHECK(cx::decode_pcp_request(wire).error() == errc::bad_length);
+}
+
+// Issue 12: the pad byte after odd-length data must be 0x00, like every other padding of the
+// module that a decoder checks.
+TEST_CASE("PCP request: non-zero pad byte after odd-length data") {
+  const std::array<std::uint8_t, 1> one{0x01};
+  auto r = cx::pcp_write(0x5FE9, 0, one);
+  REQUIRE(r.has_value());
+  std::array<std::uint8_t, 12> wire{};
+  REQUIRE(cx::encode_pcp_request(r.value(), wire).value() == 12);
+  CHECK(wire[10] == 0x01);
+  CHECK(wire[11] == 0x00);
+  CHECK(cx::decode_pcp_request(wire).value() == r.value());
+  wire[11] = 0x20;
+  CHECK(cx::decode_pcp_request(wire).error() == errc::unexpected_frame);
 }

@@ -13,6 +13,7 @@
 
 namespace cx = fieldcodec::compax;
 namespace nx = fieldcodec::compax::nx;
+using fieldcodec::decimal;
 using fieldcodec::errc;
 using bytes = std::vector<std::uint8_t>;
 
@@ -88,8 +89,36 @@ static_assert(nx::decode_record(nx::record{3, 0x47, 0x00, 0x0C}).value() ==
               nx::make(nx::op::goto_, nx::integer(12)));
 static_assert(nx::parse_command("IF E5=1 GOTO 12").value() ==
               nx::make_if_input(5, nx::pattern{1, {1}}, nx::jump::goto_, 12));
-static_assert(nx::parse_command("POSA 250").value() ==
-              nx::make(nx::op::posa, nx::number(cx::dsp_number{250 * cx::dsp_format::one})));
+// Numbers carry the command's unit: POSA 250 is 250 mm however it is written (issue 13).
+static_assert(nx::parse_command("POSA 250").value() == nx::make(nx::op::posa, nx::integer(250)));
+static_assert(nx::make(nx::op::posa, nx::integer(250)) ==
+              nx::make(nx::op::posa, nx::value(decimal{250000, 3})));
+static_assert(nx::make(nx::op::posa, nx::integer(250)) ==
+              nx::make(nx::op::posa, nx::dsp_raw(250 * cx::dsp_format::one)));
+static_assert(nx::make(nx::op::posa, nx::integer(250)) != nx::make(nx::op::posa, nx::dsp_raw(250)));
+
+// Integer arguments: any integer type (core/integer.hpp integer_argument), not a character.
+template <class T>
+constexpr bool integer_accepts = requires(T v) {
+  nx::integer(v);
+};
+static_assert(integer_accepts<long long> && integer_accepts<std::uint8_t> &&
+              integer_accepts<bool> && !integer_accepts<char> && !integer_accepts<double>);
+
+// On the 0.001 grid or not (what decoding keeps as a decimal or as a raw value).
+static_assert(cx::dsp_number{250 * cx::dsp_format::one}.exact_thousandths().value() == 250'000);
+static_assert(mm(1).exact_thousandths().value() == 1);
+static_assert(cx::dsp_number{250}.exact_thousandths().error() == errc::not_representable);
+static_assert(cx::dsp_number{cx::dsp_format::raw_max + 1}.exact_thousandths().error() ==
+              errc::overflow);
+// The DSP number of an argument.
+static_assert(nx::dsp_of(nx::integer(250)).value().raw == 250 * cx::dsp_format::one);
+static_assert(nx::dsp_of(nx::value(decimal{-15, 1})).value() == mm(-1'500));
+static_assert(nx::dsp_of(nx::dsp_raw(3)).value().raw == 3);
+static_assert(nx::dsp_of(nx::parameter(3)).error() == errc::type_mismatch);
+static_assert(nx::dsp_of(nx::special()).error() == errc::type_mismatch);
+static_assert(nx::dsp_of(nx::value(decimal{1, 4})).error() == errc::not_representable);
+static_assert(nx::dsp_of(nx::integer(8'388'608)).error() == errc::overflow);
 
 TEST_CASE("DSP number bytes: NL NM NH VL VM VH") {
   CHECK(dsp_bytes(mm(250'000)) == bytes{0x00, 0x00, 0x00, 0xFA, 0x00, 0x00});
@@ -134,27 +163,27 @@ TEST_CASE("Nx set-memory table: simple commands, value / parameter / variable fo
   round_trip(nx::make(op::gosub, nx::integer(200)), {0x42, 0x00, 0xC8}, "GOSUB 200");
   round_trip(nx::make(op::gosub, nx::special()), {0x42, 0x00, 0x00}, "GOSUB EXT");
   // POSA / POSR / SPEED / SETM: 6-byte DSP value, parameter/variable number + 4 zero bytes
-  round_trip(nx::make(op::posa, nx::number(mm(250'000))), cat({{0x41}, dsp_bytes(mm(250'000))}),
-             "POSA 250");
-  round_trip(nx::make(op::posa, nx::number(mm(-12'345))), cat({{0x41}, dsp_bytes(mm(-12'345))}),
-             "POSA -12.345");
+  round_trip(nx::make(op::posa, nx::value(decimal{250'000, 3})),
+             cat({{0x41}, dsp_bytes(mm(250'000))}), "POSA 250");
+  round_trip(nx::make(op::posa, nx::value(decimal{-12'345, 3})),
+             cat({{0x41}, dsp_bytes(mm(-12'345))}), "POSA -12.345");
   round_trip(nx::make(op::posa, nx::parameter(12)), {0x61, 0x00, 0x0C, 0, 0, 0, 0}, "POSA P12");
   round_trip(nx::make(op::posa, nx::variable(3)), {0xC1, 0x00, 0x03, 0, 0, 0, 0}, "POSA V3");
   round_trip(nx::make(op::posa, nx::special()), {0x41, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
              "POSA HOME");
-  round_trip(nx::make(op::posr, nx::number(mm(15'800))), cat({{0x52}, dsp_bytes(mm(15'800))}),
-             "POSR 15.8");
+  round_trip(nx::make(op::posr, nx::value(decimal{15'800, 3})),
+             cat({{0x52}, dsp_bytes(mm(15'800))}), "POSR 15.8");
   round_trip(nx::make(op::posr, nx::parameter(40)), {0x72, 0x00, 0x28, 0, 0, 0, 0}, "POSR P40");
   round_trip(nx::make(op::posr, nx::variable(10)), {0xD2, 0x00, 0x0A, 0, 0, 0, 0}, "POSR V10");
   round_trip(nx::make(op::posr, nx::special()), {0x52, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
              "POSR CAM");
-  round_trip(nx::make(op::speed, nx::number(mm(75'000))), cat({{0x53}, dsp_bytes(mm(75'000))}),
-             "SPEED 75");
+  round_trip(nx::make(op::speed, nx::value(decimal{75'000, 3})),
+             cat({{0x53}, dsp_bytes(mm(75'000))}), "SPEED 75");
   round_trip(nx::make(op::speed, nx::parameter(2)), {0x73, 0x00, 0x02, 0, 0, 0, 0}, "SPEED P2");
   round_trip(nx::make(op::speed, nx::variable(7)), {0xD3, 0x00, 0x07, 0, 0, 0, 0}, "SPEED V7");
   round_trip(nx::make(op::speed, nx::special()), {0x53, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF},
              "SPEED SYNC");
-  round_trip(nx::make(op::setm, nx::number(mm(1'250))), cat({{0x4D}, dsp_bytes(mm(1'250))}),
+  round_trip(nx::make(op::setm, nx::value(decimal{1'250, 3})), cat({{0x4D}, dsp_bytes(mm(1'250))}),
              "SETM 1.25");
   round_trip(nx::make(op::setm, nx::parameter(30)), {0x6D, 0x00, 0x1E, 0, 0, 0, 0}, "SETM P30");
   round_trip(nx::make(op::setm, nx::variable(31)), {0xCD, 0x00, 0x1F, 0, 0, 0, 0}, "SETM V31");
@@ -184,7 +213,7 @@ TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
       {0x4A, 0x56, 0x00, 0x01, 0, 0, 0, 0, 0xBE, 0x50, 0x00, 0x05, 0, 0, 0, 0, 0x47, 0x00, 0x07},
       "IF V1>=P5 GOTO 7");
   round_trip(nx::make_if_compare(nx::operand_of(nx::operand_type::status, 1), nx::comparison::lt,
-                                 nx::constant(mm(100'500)), jump::gosub, 9),
+                                 nx::constant(decimal{100'500, 3}), jump::gosub, 9),
              cat({{0x4A, 0x53, 0x00, 0x01, 0, 0, 0, 0, 0x3C, 0x20},
                   dsp_bytes(mm(100'500)),
                   {0x42, 0x00, 0x09}}),
@@ -198,7 +227,7 @@ TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
        {cmp_case{nx::comparison::eq, "=", 0x3D}, cmp_case{nx::comparison::gt, ">", 0x3E},
         cmp_case{nx::comparison::le, "<=", 0xBC}, cmp_case{nx::comparison::ne, "<>", 0xBB}}) {
     const auto c = nx::make_if_compare(nx::operand_of(nx::operand_type::variable, 2), cmp,
-                                       nx::constant(mm(-3'000)), jump::goto_, 1);
+                                       nx::constant(decimal{-3'000, 3}), jump::goto_, 1);
     CHECK(content(c)[8] == code);
     CHECK(text(c) == "IF V2" + std::string(sym) + "-3 GOTO 1");
     CHECK(nx::parse_command(text(c)).value() == c);
@@ -213,20 +242,20 @@ TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
   round_trip(nx::make_output(0, nx::pattern{1, {2}}), {0x4F, 0x00, 0x00, 0x32}, "OUTPUT A0=2");
   // Pn= / Vn=
   round_trip(
-      nx::make_assign(false, 12, nx::operand_of(nx::operand_type::variable, 3), nx::arithmetic::add,
-                      nx::constant(mm(5'000))),
+      nx::make_assign(nx::op::assign_p, 12, nx::operand_of(nx::operand_type::variable, 3),
+                      nx::arithmetic::add, nx::constant(decimal{5'000, 3})),
       cat({{0x50, 0x00, 0x0C, 0x56, 0x00, 0x03, 0, 0, 0, 0, 0x2B, 0x20}, dsp_bytes(mm(5'000))}),
       "P12=V3+5");
   round_trip(
-      nx::make_assign(true, 1, nx::operand_of(nx::operand_type::status, 2), nx::arithmetic::mul,
-                      nx::constant(mm(500))),
+      nx::make_assign(nx::op::assign_v, 1, nx::operand_of(nx::operand_type::status, 2),
+                      nx::arithmetic::mul, nx::constant(decimal{500, 3})),
       cat({{0x56, 0x00, 0x01, 0x53, 0x00, 0x02, 0, 0, 0, 0, 0x2A, 0x20}, dsp_bytes(mm(500))}),
       "V1=S2*0.5");
-  round_trip(nx::make_assign(true, 4, nx::constant(mm(-7'000))),
+  round_trip(nx::make_assign(nx::op::assign_v, 4, nx::constant(decimal{-7'000, 3})),
              cat({{0x56, 0x00, 0x04, 0x20}, dsp_bytes(mm(-7'000))}), "V4=-7");
   round_trip(
-      nx::make_assign(true, 4, nx::operand_of(nx::operand_type::variable, 4), nx::arithmetic::sub,
-                      nx::constant(mm(-1'000))),
+      nx::make_assign(nx::op::assign_v, 4, nx::operand_of(nx::operand_type::variable, 4),
+                      nx::arithmetic::sub, nx::constant(decimal{-1'000, 3})),
       cat({{0x56, 0x00, 0x04, 0x56, 0x00, 0x04, 0, 0, 0, 0, 0x2D, 0x20}, dsp_bytes(mm(-1'000))}),
       "V4=V4--1");
   struct ari_case {
@@ -237,8 +266,9 @@ TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
   for (auto [ari, sym, code] :
        {ari_case{nx::arithmetic::sub, '-', 0x2D}, ari_case{nx::arithmetic::div, '/', 0x2F},
         ari_case{nx::arithmetic::int_div, '\\', 0x5C}, ari_case{nx::arithmetic::mod, '%', 0x25}}) {
-    const auto c = nx::make_assign(false, 7, nx::operand_of(nx::operand_type::parameter, 8), ari,
-                                   nx::operand_of(nx::operand_type::variable, 9));
+    const auto c =
+        nx::make_assign(nx::op::assign_p, 7, nx::operand_of(nx::operand_type::parameter, 8), ari,
+                        nx::operand_of(nx::operand_type::variable, 9));
     CHECK(content(c)[10] == code);
     CHECK(text(c) == std::string("P7=P8") + sym + "V9");
     CHECK(nx::parse_command(text(c)).value() == c);
@@ -247,12 +277,13 @@ TEST_CASE("Nx set-memory table: IF, OUTPUT, assignments") {
 
 TEST_CASE("Nx set-memory table: combined commands") {
   using nx::op;
-  const auto posr = nx::make(op::posr, nx::number(mm(100'000)));
-  round_trip(nx::then(nx::make(op::posa, nx::number(mm(250'000))), op::wait, nx::integer(500)),
-             cat({{0x41}, dsp_bytes(mm(250'000)), {0x57, 0x01, 0xF4}}), "POSA 250 WAIT 500");
+  const auto posr = nx::make(op::posr, nx::value(decimal{100'000, 3}));
+  round_trip(
+      nx::then(nx::make(op::posa, nx::value(decimal{250'000, 3})), op::wait, nx::integer(500)),
+      cat({{0x41}, dsp_bytes(mm(250'000)), {0x57, 0x01, 0xF4}}), "POSA 250 WAIT 500");
   round_trip(nx::then(nx::make(op::posa, nx::variable(1)), op::wait, nx::variable(2)),
              {0xC1, 0x00, 0x01, 0, 0, 0, 0, 0xD7, 0x00, 0x02}, "POSA V1 WAIT V2");
-  round_trip(nx::then(nx::make(op::posa, nx::number(mm(1'000))), op::wait, nx::variable(12)),
+  round_trip(nx::then(nx::make(op::posa, nx::value(decimal{1'000, 3})), op::wait, nx::variable(12)),
              cat({{0x41}, dsp_bytes(mm(1'000)), {0xD7, 0x00, 0x0C}}), "POSA 1 WAIT V12");
   round_trip(nx::then_output(posr, 3, nx::pattern{1, {1}}),
              cat({{0x52}, dsp_bytes(mm(100'000)), {0x4F, 0x00, 0x03, 0x31}}),
@@ -261,14 +292,15 @@ TEST_CASE("Nx set-memory table: combined commands") {
              {0x72, 0x00, 0x28, 0, 0, 0, 0, 0x4F, 0x00, 0x04, 0x30}, "POSR P40 OUTPUT A4=0");
   round_trip(nx::then_output(nx::make(op::posr, nx::variable(10)), 4, nx::pattern{1, {1}}),
              {0xD2, 0x00, 0x0A, 0, 0, 0, 0, 0x4F, 0x00, 0x04, 0x31}, "POSR V10 OUTPUT A4=1");
-  round_trip(nx::then(posr, op::speed, nx::number(mm(50'000))),
+  round_trip(nx::then(posr, op::speed, nx::value(decimal{50'000, 3})),
              cat({{0x52}, dsp_bytes(mm(100'000)), {0x53}, dsp_bytes(mm(50'000))}),
              "POSR 100 SPEED 50");
   round_trip(nx::then(nx::make(op::posr, nx::variable(1)), op::speed, nx::variable(2)),
              {0xD2, 0x00, 0x01, 0, 0, 0, 0, 0xD3, 0x00, 0x02, 0, 0, 0, 0}, "POSR V1 SPEED V2");
   // POSR … SPEED … ACCEL …: the ACCEL word MSB first (decision against the printed LSB…MSB row)
   round_trip(
-      nx::then(nx::then(posr, op::speed, nx::number(mm(50'000))), op::accel, nx::integer(0x0102)),
+      nx::then(nx::then(posr, op::speed, nx::value(decimal{50'000, 3})), op::accel,
+               nx::integer(0x0102)),
       cat({{0x52}, dsp_bytes(mm(100'000)), {0x53}, dsp_bytes(mm(50'000)), {0x4C, 0x01, 0x02}}),
       "POSR 100 SPEED 50 ACCEL 258");
   round_trip(nx::then(nx::then(nx::make(op::posr, nx::variable(1)), op::speed, nx::variable(2)),
@@ -283,13 +315,14 @@ TEST_CASE("Nx set-memory table: combined commands") {
              cat({{0x52}, dsp_bytes(mm(100'000)), {0x57, 0x00, 0x14}}), "POSR 100 WAIT 20");
   round_trip(nx::then(nx::make(op::posr, nx::variable(5)), op::wait, nx::variable(6)),
              {0xD2, 0x00, 0x05, 0, 0, 0, 0, 0xD7, 0x00, 0x06}, "POSR V5 WAIT V6");
-  round_trip(nx::then(nx::make(op::speed, nx::number(mm(10'000))), op::wait, nx::integer(100)),
-             cat({{0x53}, dsp_bytes(mm(10'000)), {0x57, 0x00, 0x64}}), "SPEED 10 WAIT 100");
+  round_trip(
+      nx::then(nx::make(op::speed, nx::value(decimal{10'000, 3})), op::wait, nx::integer(100)),
+      cat({{0x53}, dsp_bytes(mm(10'000)), {0x57, 0x00, 0x64}}), "SPEED 10 WAIT 100");
   round_trip(nx::then(nx::make(op::speed, nx::variable(1)), op::wait, nx::variable(2)),
              {0xD3, 0x00, 0x01, 0, 0, 0, 0, 0xD7, 0x00, 0x02}, "SPEED V1 WAIT V2");
-  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posa, nx::number(mm(100'000))),
+  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posa, nx::value(decimal{100'000, 3})),
              cat({{0x57, 0x00, 0x00, 0x41}, dsp_bytes(mm(100'000))}), "WAIT POSA 100");
-  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posr, nx::number(mm(-5'000))),
+  round_trip(nx::then(nx::make(op::wait, nx::special()), op::posr, nx::value(decimal{-5'000, 3})),
              cat({{0x57, 0x00, 0x00, 0x52}, dsp_bytes(mm(-5'000))}), "WAIT POSR -5");
 }
 
@@ -378,7 +411,7 @@ TEST_CASE("Nx encoder refuses what it cannot write") {
   CHECK(nx::encode_content(nx::make(op::goto_, nx::integer(0)), b).error() == errc::out_of_range);
   CHECK(nx::encode_content(nx::make(op::loop, nx::integer(65536)), b).error() ==
         errc::out_of_range);
-  CHECK(nx::encode_content(nx::make(op::posa, nx::integer(-1)), b).error() == errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::posa, nx::dsp_raw(-1)), b).error() == errc::out_of_range);
   CHECK(nx::encode_content(nx::make(op::end, nx::integer(1)), b).error() == errc::invalid_argument);
   CHECK(
       nx::encode_content(nx::then(nx::make(op::accel, nx::integer(1)), op::wait, nx::integer(1)), b)
@@ -393,18 +426,106 @@ TEST_CASE("Nx encoder refuses what it cannot write") {
 }
 
 TEST_CASE("Nx: DSP extremes through text") {
-  // POSA with the largest and the smallest 48-bit value
-  for (const bytes &b : {bytes{0x41, 0xFE, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F},
-                         bytes{0x41, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80}}) {
-    auto c = nx::decode_content(b);
-    REQUIRE(c.has_value());
-    std::array<char, nx::text_max> t{};
-    auto n = nx::format_command(c.value(), t);
-    REQUIRE(n.has_value());
-    CHECK(nx::parse_command(std::string_view{t.data(), n.value()}).has_value());
-  }
-  CHECK(text(nx::make(nx::op::posa, nx::number(cx::dsp_number{cx::dsp_format::raw_min}))) ==
+  // the smallest 48-bit value is -8388608 exactly: on the 0.001 grid
+  const bytes lowest{0x41, 0x00, 0x00, 0x00, 0x00, 0x00, 0x80};
+  auto c = nx::decode_content(lowest);
+  REQUIRE(c.has_value());
+  CHECK(c.value().argument == nx::integer(-8388608));
+  CHECK(text(c.value()) == "POSA -8388608");
+  CHECK(nx::parse_command("POSA -8388608").value() == c.value());
+  // the largest is 2^23 - 2^-24: between two thousandths, so it stays a raw value and has no
+  // program text (not printed rounded)
+  const bytes highest{0x41, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F};
+  auto h = nx::decode_content(highest);
+  REQUIRE(h.has_value());
+  CHECK(h.value().argument.kind == nx::arg_kind::dsp_raw);
+  CHECK(content(h.value()) == highest);
+  std::array<char, nx::text_max> t{};
+  CHECK(nx::format_command(h.value(), t).error() == errc::not_representable);
+  CHECK(text(nx::make(nx::op::posa, nx::dsp_raw(cx::dsp_number{cx::dsp_format::raw_min}))) ==
         "POSA -8388608");
+}
+
+// Issue 13: nx::make(op::posa, nx::integer(250)) encoded 250 raw DSP units (250 / 2^24 mm) and
+// printed back as "POSA 0". Numbers now carry the command's unit; the raw form is dsp_raw().
+TEST_CASE("Nx operands carry their unit; the raw DSP form is explicit") {
+  using nx::op;
+  // 2.11.1 N example: record 5 = "POSA 250", i.e. 250 mm; the Nx record of the same command
+  const auto posa = nx::make(op::posa, nx::integer(250));
+  CHECK(content(posa) == cat({{0x41}, dsp_bytes(mm(250'000))}));
+  CHECK(content(posa) == bytes{0x41, 0x00, 0x00, 0x00, 0xFA, 0x00, 0x00});
+  CHECK(text(posa) == "POSA 250");
+  CHECK(nx::parse_command("POSA 250").value() == posa);
+  // 2.4.11 COMMAND example: "POSR15.8" travels 15.8 mm relative
+  const auto posr = nx::make(op::posr, nx::value(decimal{158, 1}));
+  CHECK(content(posr) == cat({{0x52}, dsp_bytes(mm(15'800))}));
+  CHECK(text(posr) == "POSR 15.8");
+  // every integer type means the same number; negative positions are positions
+  CHECK(nx::make(op::posa, nx::integer(std::int8_t{-5})) ==
+        nx::make(op::posa, nx::value(decimal{-5, 0})));
+  CHECK(content(nx::make(op::posa, nx::integer(250ULL))) == content(posa));
+  CHECK(content(nx::make(op::posa, nx::integer(-1))) == cat({{0x41}, dsp_bytes(mm(-1'000))}));
+  // 2-byte commands: the number itself (ms, count, record)
+  CHECK(content(nx::make(op::accel, nx::integer(std::uint64_t{200}))) == bytes{0x4C, 0x00, 0xC8});
+  CHECK(content(nx::make(op::goto_, nx::integer(short{12}))) == bytes{0x47, 0x00, 0x0C});
+  // the raw form, spelled explicitly: 250 raw units are 250 / 2^24 mm
+  const auto raw = nx::make(op::posa, nx::dsp_raw(250));
+  CHECK(raw.argument.kind == nx::arg_kind::dsp_raw);
+  CHECK(content(raw) == bytes{0x41, 0xFA, 0x00, 0x00, 0x00, 0x00, 0x00});
+  CHECK(nx::decode_content(content(raw)).value() == raw);
+  std::array<char, nx::text_max> t{};
+  CHECK(nx::format_command(raw, t).error() == errc::not_representable); // not "POSA 0"
+  // a raw value on the 0.001 grid is the decimal it stands for
+  CHECK(nx::dsp_raw(mm(1'500)) == nx::value(decimal{15, 1}));
+  CHECK(nx::constant_raw(mm(1'500)) == nx::constant(decimal{15, 1}));
+  CHECK(nx::constant_raw(cx::dsp_number{3}).raw);
+  // constants of IF and assignments carry their unit too
+  const auto v = nx::make_assign(op::assign_v, 4, nx::constant(-7));
+  CHECK(content(v) == cat({{0x56, 0x00, 0x04, 0x20}, dsp_bytes(mm(-7'000))}));
+  CHECK(text(v) == "V4=-7");
+  const auto raw_constant = nx::make_assign(op::assign_v, 4, nx::constant_raw(cx::dsp_number{3}));
+  CHECK(nx::decode_content(content(raw_constant)).value() == raw_constant);
+  CHECK(nx::format_command(raw_constant, t).error() == errc::not_representable);
+}
+
+// Issue 13 "Nothing narrows silently": every number argument takes any integer type and the
+// encoder checks it against its field; nothing wraps.
+TEST_CASE("Nx numbers of any integer type are checked, not wrapped") {
+  using nx::op;
+  std::array<std::uint8_t, nx::content_max> b{};
+  const auto refused = [&b](const nx::command &c) { return nx::encode_content(c, b).error(); };
+  // 65537 would wrap to 1 in a 16-bit field
+  CHECK(refused(nx::make(op::posa, nx::parameter(65537))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::accel, nx::variable(65537L))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::accel, nx::parameter(-1))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::loop, nx::integer(65537))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::loop, nx::integer(-65535))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::loop, nx::integer(~std::uint64_t{0}))) == errc::out_of_range);
+  CHECK(refused(nx::make(op::posa, nx::integer(~std::uint64_t{0}))) == errc::overflow);
+  CHECK(refused(nx::make(op::posa, nx::integer(8'388'608))) == errc::overflow);
+  CHECK(refused(nx::make(op::posa, nx::value(decimal{10005, 4}))) == errc::not_representable);
+  CHECK(refused(nx::make(op::accel, nx::value(decimal{15, 1}))) == errc::not_representable);
+  CHECK(refused(nx::make(op::accel, nx::dsp_raw(1))) == errc::type_mismatch);
+  CHECK(refused(nx::make(op::posa, nx::dsp_raw(std::int64_t{1} << 47))) == errc::overflow);
+  CHECK(refused(nx::make_if_input(65537, nx::pattern{1, {1}}, nx::jump::goto_, 1)) ==
+        errc::out_of_range);
+  CHECK(refused(nx::make_if_input(5, nx::pattern{1, {1}}, nx::jump::goto_, 65537U)) ==
+        errc::out_of_range);
+  CHECK(refused(nx::make_if_error(nx::jump::goto_, -1)) == errc::out_of_range);
+  CHECK(refused(nx::make_output(65536LL, nx::pattern{1, {1}})) == errc::out_of_range);
+  CHECK(refused(nx::then_output(nx::make(op::posr, nx::integer(1)), 70000, nx::pattern{1, {1}})) ==
+        errc::out_of_range);
+  CHECK(refused(nx::make_assign(op::assign_p, 65537, nx::constant(1))) == errc::out_of_range);
+  CHECK(
+      refused(nx::make_assign(op::assign_p, 1, nx::operand_of(nx::operand_type::status, 65537))) ==
+      errc::out_of_range);
+  CHECK(refused(nx::make_assign(op::assign_p, 1, nx::constant(decimal{1, 4}))) ==
+        errc::not_representable);
+  CHECK(refused(nx::make_assign(op::assign_p, 1, nx::constant(9'000'000))) == errc::overflow);
+  // the widest argument types work where the value fits
+  CHECK(content(nx::make_if_input(std::uint64_t{5}, nx::pattern{1, {1}}, nx::jump::goto_,
+                                  std::int64_t{12})) ==
+        bytes{0x49, 0x00, 0x05, 0x31, 0x47, 0x00, 0x0C});
 }
 
 TEST_CASE("Nx text bad input") {
@@ -444,6 +565,7 @@ TEST_CASE("Nx: whatever decodes re-encodes to the same bytes and survives text")
       0x51, 0x52, 0x53, 0x54, 0x55, 0x56, 0x57, 0x61, 0x6B, 0x6C, 0x6D, 0x72, 0x73, 0x74,
       0x77, 0xC1, 0xCB, 0xCC, 0xCD, 0xD2, 0xD3, 0xD4, 0xD7, 0x30, 0x31, 0xFF};
   std::size_t decoded = 0;
+  std::size_t printed = 0;
   for (int i = 0; i < 200000; ++i) {
     bytes b(1 + rnd() % nx::content_max);
     for (auto &v : b) {
@@ -458,13 +580,26 @@ TEST_CASE("Nx: whatever decodes re-encodes to the same bytes and survives text")
     CHECK(content(c.value()) == b);
     std::array<char, nx::text_max> t{};
     auto n = nx::format_command(c.value(), t);
-    REQUIRE(n.has_value());
+    if (!n) {
+      // only a raw DSP value off the 0.001 grid has no text
+      CHECK(n.error() == errc::not_representable);
+      continue;
+    }
+    ++printed;
     auto p = nx::parse_command(std::string_view{t.data(), n.value()});
     REQUIRE(p.has_value());
-    // text keeps 3 decimals of DSP values: compare through the text again
-    std::array<char, nx::text_max> t2{};
-    CHECK(nx::format_command(p.value(), t2).value() == n.value());
-    CHECK(std::string_view{t2.data(), n.value()} == std::string_view{t.data(), n.value()});
+    CHECK(p.value() == c.value()); // text is exact for everything it can print
   }
   CHECK(decoded > 1000);
+  CHECK(printed > 1000);
+  // values on the 0.001 grid (what program text and nx::value() give) survive every trip
+  for (int i = 0; i < 20000; ++i) {
+    const auto t = static_cast<std::int64_t>(rnd() % 16'000'000'001U) - 8'000'000'000;
+    const auto c = nx::then(nx::make(nx::op::posr, nx::value(decimal{t, 3})), nx::op::speed,
+                            nx::value(decimal{static_cast<std::int64_t>(rnd() % 600'000U), 3}));
+    CAPTURE(t);
+    const bytes b = content(c);
+    CHECK(nx::decode_content(b).value() == c);
+    CHECK(nx::parse_command(text(c)).value() == c);
+  }
 }

@@ -12,15 +12,22 @@ using fieldcodec::errc;
 using frame = cx::object_frame;
 
 // Read request for SPEED (pointer 38), sub-index 0: bit 7 set + pointer.
-static_assert(cx::encode_object_request(cx::object_read(38)).value() == frame{0xA6, 0, 0, 0, 0, 0});
+static_assert(cx::encode_object_request(cx::object_read(38).value()).value() ==
+              frame{0xA6, 0, 0, 0, 0, 0});
 // Write P23 (Px pointer 14, sub 23) = 200 % → raw 200 (P23 resolution 1): the manual's
 // "P23=200% write" picture.
 static_assert(cx::encode_object_request(
                   cx::object_write(14, 23, std::array<std::uint8_t, 4>{0, 0, 0, 200}).value())
                   .value() == frame{0x0E, 23, 0, 0, 0, 200});
 static_assert(cx::decode_object_request(frame{0x8E, 23, 0, 0, 0, 0}).value() ==
-              cx::object_read(14, 23));
-static_assert(cx::encode_object_request(cx::object_read(127)).error() == errc::out_of_range);
+              cx::object_read(14, 23).value());
+static_assert(cx::object_read(127).error() == errc::out_of_range);
+static_assert(cx::encode_object_request(cx::object_request{cx::object_access::read, 127, 0, {}})
+                  .error() == errc::out_of_range);
+// any integer type, checked: 300 is not pointer 44, sub-index 256 is not 0
+static_assert(cx::object_read(300).error() == errc::out_of_range);
+static_assert(cx::object_read(38, 256).error() == errc::out_of_range);
+static_assert(cx::object_read(38ULL, short{2}).value().sub == 2);
 static_assert(cx::decode_object_request(frame{0xFF, 0, 0, 0, 0, 0}).error() == errc::out_of_range);
 static_assert(cx::decode_object_request(std::array<std::uint8_t, 5>{}).error() == errc::truncated);
 static_assert(cx::decode_object_request(std::array<std::uint8_t, 7>{}).error() == errc::bad_length);
@@ -35,7 +42,7 @@ static_assert(cx::to_string(cx::object_error::bad_pointer) == "wrong index point
 static_assert(cx::to_string(cx::object_error::not_writable) == "object not writable");
 
 TEST_CASE("OBJECT_RSP matching") {
-  const auto req = cx::object_read(67); // LAGE_IST
+  const auto req = cx::object_read(67).value(); // LAGE_IST
   cx::object_response rsp{};
   rsp.access = cx::object_access::read;
   rsp.pointer = 67;
@@ -55,7 +62,7 @@ TEST_CASE("OBJECT_RSP matching") {
   cx::object_response err{};
   err.is_error = true;
   err.error_number = 85;
-  CHECK(cx::answers(cx::object_read(38), err));
+  CHECK(cx::answers(cx::object_read(38).value(), err));
   CHECK(cx::encode_object_response(err) == frame{0xFF, 0, 85, 0, 0, 0});
 }
 
@@ -90,19 +97,20 @@ TEST_CASE("object_channel: AckToggle handshake and pointer 0 between identical r
   REQUIRE(p.value().has_value());
 
   // an error reply is a response, not a failure
-  REQUIRE(ch.submit(cx::object_read(99), true).has_value());
+  REQUIRE(ch.submit(cx::object_read(99).value(), true).has_value());
   p = ch.poll(false, frame{0xFF, 0, 82, 0, 0, 0});
   REQUIRE(p.value().has_value());
   CHECK(p.value()->error_number == 82);
 
   // a reply for another object is unexpected
-  REQUIRE(ch.submit(cx::object_read(38), false).has_value());
+  REQUIRE(ch.submit(cx::object_read(38).value(), false).has_value());
   CHECK(ch.poll(true, frame{0xA7, 0, 0, 0, 0, 0}).error() == errc::unexpected_frame);
   CHECK(!ch.busy());
 
-  CHECK(ch.submit(cx::object_read(0), true).error() == errc::invalid_argument);
-  CHECK(ch.submit(cx::object_read(127), true).error() == errc::out_of_range);
-  REQUIRE(ch.submit(cx::object_read(38), true).has_value());
+  CHECK(ch.submit(cx::object_read(0).value(), true).error() == errc::invalid_argument);
+  CHECK(ch.submit(cx::object_request{cx::object_access::read, 127, 0, {}}, true).error() ==
+        errc::out_of_range);
+  REQUIRE(ch.submit(cx::object_read(38).value(), true).has_value());
   ch.cancel();
   CHECK(!ch.busy());
 }

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace cx = fieldcodec::compax;
@@ -156,5 +157,58 @@ TEST_CASE("generated COMPAX dictionary: manual examples by name") {
   // pointers for OBJECT_REQ
   CHECK(d::lage_ist.info.pointer == 67);
   CHECK(d::speed.info.pointer == 38);
+}
+
+// Issue 13: arrays and records are od::object. Their elements are encoded by object and
+// sub-index, and the single-value call does not compile for them (the difference is visible at
+// the call site; `d::grenzen[1]` names the element's descriptor too).
+template <class O>
+constexpr bool encodes_without_sub = requires(const O &o, std::span<std::uint8_t> out) {
+  cx::encode_object(o, decimal{}, out);
+};
+template <class O>
+constexpr bool decodes_without_sub = requires(const O &o, std::span<const std::uint8_t> in) {
+  cx::decode_object(o, in);
+};
+static_assert(encodes_without_sub<od::descriptor> && decodes_without_sub<od::descriptor>);
+static_assert(!encodes_without_sub<od::object> && !decodes_without_sub<od::object>);
+
+TEST_CASE("generated COMPAX dictionary: array elements by object and sub-index") {
+  namespace d = fieldcodec::dictionaries::compax_objects;
+  std::array<std::uint8_t, 4> b{};
+  // 2.7.9 example (L1860-1866): negative limit −1650.000 mm = FF E6 D2 B0 (erratum CX-20)
+  REQUIRE(cx::encode_object(d::grenzen, 1, decimal{-1650, 0}, b).value() == 4);
+  CHECK(b == std::array<std::uint8_t, 4>{0xFF, 0xE6, 0xD2, 0xB0});
+  CHECK(fieldcodec::equal(cx::decode_object(d::grenzen, 1, b).value(), decimal{-1650, 0}));
+  CHECK(fieldcodec::equal(cx::decode_object(d::grenzen, std::uint64_t{2}, b).value(),
+                          decimal{-1650, 0}));
+  // the same as the descriptor the array holds
+  CHECK(cx::encode_object(d::grenzen[2], decimal{1, 0}, b).value() == 4);
+  CHECK(b == std::array<std::uint8_t, 4>{0x00, 0x00, 0x03, 0xE8});
+  // sub-indices the array does not have, of any integer type, never wrapped
+  CHECK(cx::encode_object(d::grenzen, 3, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_object(d::grenzen, 257, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_object(d::grenzen, -255, decimal{1, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::decode_object(d::grenzen, 0, b).error() == errc::unknown_object);
+  // S7_S8 sub 2 (2.6.7): intermediate circuit voltage, 1 = 0.1 V
+  const std::array<std::uint8_t, 2> volts{0x0F, 0xA0};
+  CHECK(fieldcodec::equal(cx::decode_object(d::s7_s8, 2, volts).value(), decimal{400, 0}));
+  // Px by number: any integer type; 267 is not parameter 11
+  CHECK(cx::encode_px(d::dictionary, 267, decimal{5000, 0}, b).error() == errc::unknown_object);
+  CHECK(cx::encode_px(d::dictionary, 11LL, decimal{5000, 0}, b).value() == 4);
+  CHECK(cx::decode_px(d::dictionary, -1, b).error() == errc::unknown_object);
+}
+
+// Issue 12: CONTROL (2.4.10) takes command numbers 1..21; 22..24 are "not assigned".
+TEST_CASE("generated COMPAX dictionary: CONTROL refuses 0 and 22") {
+  namespace d = fieldcodec::dictionaries::compax_objects;
+  std::array<std::uint8_t, 1> b{};
+  CHECK(cx::encode_object(d::control, decimal{0, 0}, b).error() == errc::out_of_range);
+  CHECK(cx::encode_object(d::control, decimal{22, 0}, b).error() == errc::out_of_range);
+  CHECK(cx::encode_object(d::control, decimal{255, 0}, b).error() == errc::out_of_range);
+  // 2.4.10 example: go to machine zero = command 1 → data byte 0x01
+  CHECK(enc(d::control, decimal{1, 0}) == bytes{0x01});
+  CHECK(enc(d::control, decimal{21, 0}) == bytes{0x15});
+  CHECK(cx::decode_object(d::control, bytes{0x00}).has_value()); // a read is not refused
 }
 #endif

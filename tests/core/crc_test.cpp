@@ -29,7 +29,7 @@ std::uint16_t reference(const std::vector<std::uint8_t> &data) {
     if ((reg & 0x10000U) != 0U) reg ^= 0x11021U;
   };
   for (auto b : data) {
-    for (int i = 7; i >= 0; --i) feed((b >> static_cast<unsigned>(i)) & 1U);
+    for (int i = 7; i >= 0; --i) feed((unsigned{b} >> static_cast<unsigned>(i)) & 1U);
   }
   for (int i = 0; i < 16; ++i) feed(0);
   return static_cast<std::uint16_t>(reg);

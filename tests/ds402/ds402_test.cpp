@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 namespace ds402 = fieldcodec::ds402;
 using ds402::command;
@@ -47,7 +48,7 @@ constexpr printed_row printed_table[] = {
 bool matches(std::string_view pattern, std::uint16_t word) {
   for (std::size_t i = 0; i < 16; ++i) {
     const char c = pattern[i];
-    const bool bit = ((word >> (15U - i)) & 1U) != 0U;
+    const bool bit = ((static_cast<unsigned>(word) >> (15U - i)) & 1U) != 0U;
     if (c == '1' && !bit) return false;
     if (c == '0' && bit) return false;
   }
@@ -293,12 +294,38 @@ TEST_CASE("modes of operation") {
   CHECK(ds402::decode_mode(11).value() == ds402::mode::cyclic_sync_torque_commutation);
   CHECK(ds402::decode_mode(5) == errc::out_of_range);
   CHECK(ds402::decode_mode(12) == errc::out_of_range);
-  CHECK(ds402::decode_mode(-1) == errc::unknown_command);
+  // Issue 13: a manufacturer-specific mode is a valid mode, not an unknown command. It comes
+  // back holding its value for the vendor's module (xenax::decode_mode(-1) = jog).
+  const auto vendor = ds402::decode_mode(-1);
+  REQUIRE(vendor.has_value());
+  CHECK(static_cast<std::int8_t>(vendor.value()) == -1);
+  CHECK(ds402::is_manufacturer_mode(vendor.value()));
+  CHECK(!ds402::is_standard_mode(vendor.value()));
+  CHECK(ds402::to_string(vendor.value()) == "manufacturer-specific");
+  CHECK(static_cast<std::int8_t>(ds402::decode_mode(-128).value()) == -128);
   CHECK(ds402::is_manufacturer_mode(-1));
-  CHECK(ds402::mode_byte(std::int8_t{-1}) == 0xFF);
-  CHECK(ds402::mode_byte(ds402::mode::cyclic_sync_position) == 0x08);
-  for (std::int8_t v = 0; v <= 11; ++v) {
-    if (v == 5) continue;
-    CHECK(!ds402::to_string(ds402::decode_mode(v).value()).empty());
+  CHECK(!ds402::is_manufacturer_mode(0));
+  CHECK(ds402::is_standard_mode(ds402::mode::cyclic_sync_position));
+  CHECK(ds402::to_string(static_cast<ds402::mode>(5)) == "reserved");
+  int standard = 0;
+  int vendor_modes = 0;
+  for (int v = -128; v <= 127; ++v) {
+    const auto m = ds402::decode_mode(static_cast<std::int8_t>(v));
+    if (!m) {
+      CHECK(m == errc::out_of_range);
+      CHECK((v == 5 || v >= 12));
+      continue;
+    }
+    CHECK(static_cast<int>(static_cast<std::int8_t>(m.value())) == v);
+    if (ds402::is_standard_mode(m.value())) {
+      ++standard;
+      CHECK(ds402::to_string(m.value()) != "manufacturer-specific");
+    } else {
+      ++vendor_modes;
+    }
   }
+  CHECK(standard == 11);
+  CHECK(vendor_modes == 128);
 }
+
+static_assert(std::is_same_v<std::underlying_type_t<ds402::mode>, std::int8_t>);

@@ -11,6 +11,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/ds402/state_machine.hpp>
+#include <fieldcodec/xenax/bus.hpp>
 #include <fieldcodec/xenax/error_code.hpp>
 #include <fieldcodec/xenax/homing.hpp>
 #include <fieldcodec/xenax/modes.hpp>
@@ -32,7 +33,7 @@ namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 using fieldcodec::byte_order;
 
 namespace {
-constexpr std::uint8_t node = 1;
+constexpr std::uint8_t node = xenax::node_id(1).value(); // the XENAX takes 1-99 (2.5, CI)
 
 co::can_frame F(std::uint16_t id, std::initializer_list<std::uint8_t> b) {
   return co::make_frame(id, b).value();
@@ -158,7 +159,7 @@ struct simulated_xenax {
           co::make_frame(co::cob_id::tpdo(1, node).value(), std::span(b).first(map_tpdo1.bytes()))
               .value());
       REQUIRE(map_tpdo2.set(b, 0, statusword()).has_value());
-      REQUIRE(map_tpdo2.set(b, 1, static_cast<std::uint64_t>(std::int64_t{position})).has_value());
+      REQUIRE(map_tpdo2.set(b, 1, position).has_value());
       out.push_back(
           co::make_frame(co::cob_id::tpdo(2, node).value(), std::span(b).first(map_tpdo2.bytes()))
               .value());
@@ -222,7 +223,7 @@ struct master {
   void rpdo2(std::uint16_t cw, std::int32_t target) {
     std::array<std::uint8_t, 8> b{};
     REQUIRE(map_rpdo2.set(b, 0, cw).has_value());
-    REQUIRE(map_rpdo2.set(b, 1, static_cast<std::uint64_t>(std::int64_t{target})).has_value());
+    REQUIRE(map_rpdo2.set(b, 1, target).has_value());
     previous_cw = cw;
     send(co::make_frame(co::cob_id::rpdo(2, node).value(), std::span(b).first(map_rpdo2.bytes()))
              .value());

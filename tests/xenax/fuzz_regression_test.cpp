@@ -19,3 +19,15 @@ TEST_CASE("fuzz F7: a decoded cycle time re-encodes") {
   REQUIRE(back.has_value());
   CHECK(xe::decode_cycle_time(back.value()).value() == us.value());
 }
+
+// F17 (fuzz_xenax, issue 13 helpers): a force (or current) so small that it rounds to 0 steps
+// gave 6073h = 0, which the XENAX takes as "no limitation" (6.1.2, l. 1849): asking for a
+// 0.04 N limit on an ELAX removed the limit. Input: corpus regression_f17_limit_rounds_to_zero
+// (ELAX, 0.04 N = 0.48 steps).
+TEST_CASE("fuzz F17: a current limit never rounds to 0 (= no limit)") {
+  using fieldcodec::errc;
+  CHECK(xe::current_limit_for(xe::newtons{{4, 2}}, xe::motor::elax_ex_f20).error() ==
+        errc::out_of_range);
+  CHECK(xe::current_limit_from_ma({4, 0}).error() == errc::out_of_range);
+  CHECK(xe::current_limit_for(xe::newtons{{5, 2}}, xe::motor::elax_ex_f20).value() == 1);
+}

@@ -136,26 +136,25 @@ public:
     node_ = node;
     status result{};
     for (std::size_t i = 0; i < dict_.size(); ++i) {
+      if (!fill_default(i)) result = errc::too_long;
+    }
+    return result;
+  }
+
+  /// Set the entries of objects `first`..`last` that the network can write (access rw, wo,
+  /// rwr, rww) back to their defaults for node(), as init_defaults() does: what an NMT reset
+  /// does to the communication area (1000h–1FFFh) and the application area (2000h–FFFFh).
+  /// Read-only and constant entries keep their values (the identity, names and versions the
+  /// application gave them; 1001h and 1003h are the node's). No write hook is asked.
+  /// Errors: as init_defaults.
+  [[nodiscard]] constexpr status restore_defaults(std::uint16_t first,
+                                                  std::uint16_t last) noexcept {
+    if (!layout_fits()) return errc::buffer_too_small;
+    status result{};
+    for (std::size_t i = 0; i < dict_.size(); ++i) {
       const od::entry &e = dict_.entries()[i];
-      auto slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
-      for (auto &b : slot) b = 0;
-      if (od::is_byte_string(e.type)) {
-        if (slot.empty()) continue;
-        std::size_t n = e.default_text.size();
-        if (n > e.size) {
-          n = e.size;
-          result = errc::too_long;
-        }
-        for (std::size_t k = 0; k < n; ++k) {
-          slot[length_prefix + k] = static_cast<std::uint8_t>(e.default_text[k]);
-        }
-        set_length(slot, n);
-      } else if (auto d = e.default_for(node)) {
-        // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
-        if (auto desc = dict_.describe(e)) {
-          (void)od::encode(desc.value(), d.value(), slot, byte_order::little, node);
-        }
-      }
+      if (e.index < first || e.index > last || !od::writable(e.access_type)) continue;
+      if (!fill_default(i)) result = errc::too_long;
     }
     return result;
   }
@@ -246,6 +245,31 @@ private:
 
   [[nodiscard]] constexpr bool layout_fits() const noexcept {
     return offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size();
+  }
+
+  /// Entry i's default for node_ into its slot; false when a default text had to be cut.
+  constexpr bool fill_default(std::size_t i) noexcept {
+    const od::entry &e = dict_.entries()[i];
+    auto slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
+    for (auto &b : slot) b = 0;
+    if (od::is_byte_string(e.type)) {
+      if (slot.empty()) return true;
+      std::size_t n = e.default_text.size();
+      const bool fits = n <= e.size;
+      if (!fits) n = e.size;
+      for (std::size_t k = 0; k < n; ++k) {
+        slot[length_prefix + k] = static_cast<std::uint8_t>(e.default_text[k]);
+      }
+      set_length(slot, n);
+      return fits;
+    }
+    if (auto d = e.default_for(node_)) {
+      // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
+      if (auto desc = dict_.describe(e)) {
+        (void)od::encode(desc.value(), d.value(), slot, byte_order::little, node_);
+      }
+    }
+    return true;
   }
 
   [[nodiscard]] constexpr located locate(od::address a) const noexcept {

@@ -1,11 +1,21 @@
-// fieldcodec — PDO mapping entries, bit-level packing, mappings checked against a dictionary
-// (at run time and at compile time), and PDO communication parameters (CiA 301).
+// fieldcodec — PDO mapping entries (CiA 301 32-bit and POWERLINK 64-bit), bit-level packing,
+// mappings checked against a dictionary (at run time and at compile time) that read and write
+// values with the mapped object's signedness, the default mappings a dictionary declares, and
+// PDO communication parameters (CiA 301).
 //
-// A mapping entry (sub 1..64 of objects 1600h..17FFh / 1A00h..1BFFh) is
-//   index << 16 | sub-index << 8 | length in bits.
-// Values are packed in mapping order from bit 0 of byte 0 upwards; inside the PDO, bit k is
-// bit (k mod 8) of byte k / 8 and every value is little-endian ("little-endian bit order"), so
-// byte-aligned values look exactly like their SDO encoding.
+// A CiA 301 mapping entry (sub 1..64 of objects 1600h..17FFh / 1A00h..1BFFh) is
+//   index << 16 | sub-index << 8 | length in bits,
+// and the entries are packed in mapping order from bit 0 of byte 0 upwards. A POWERLINK mapping
+// entry (EPSG DS 301, UNSIGNED64, sub 1..254 of 1600h..16FFh / 1A00h..1AFFh) names its place:
+//   length << 48 | bit offset << 32 | (reserved, 0) << 24 | sub-index << 16 | index.
+// Inside the PDO, bit k is bit (k mod 8) of byte k / 8 and every value is little-endian
+// ("little-endian bit order"), so byte-aligned values look exactly like their SDO encoding.
+//
+// Values: a mapping built from a dictionary knows each object's signedness. Its get/set and
+// pack_all/unpack_all take and return any integer type, checked: an INTEGER32 holding -1 comes
+// out as -1, -1 for an UNSIGNED16 or 70000 for an INTEGER16 is refused with overflow, nothing
+// wraps. A mapping built without a dictionary reads raw bits (zero-extended) and accepts a value
+// that fits the field either as unsigned or as two's complement.
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -16,19 +26,25 @@
 #include <fieldcodec/od/entry.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace fieldcodec::canopen::pdo {
 
 /// Longest PDO in bits on classic CAN (8 bytes). CoE and POWERLINK PDOs are longer: pass the
 /// limit of the transport (e.g. 8 * 1490 bytes for POWERLINK, the sync-manager size for CoE).
 inline constexpr std::size_t can_max_bits = 64;
-/// Most entries a mapping object holds (sub 1..64).
+/// Most entries a CiA 301 mapping object holds (sub 1..64).
 inline constexpr std::size_t max_entries = 64;
+/// Most entries a POWERLINK mapping object holds (sub 1..254).
+inline constexpr std::size_t powerlink_max_entries = 254;
 
+/// A CiA 301 mapping entry (UNSIGNED32).
 struct mapping_entry {
   std::uint16_t index = 0;
   std::uint8_t sub = 0;
@@ -49,6 +65,38 @@ struct mapping_entry {
 [[nodiscard]] constexpr std::uint32_t mapping_value(std::uint16_t index, std::uint8_t sub,
                                                     std::uint8_t bits) noexcept {
   return mapping_entry{index, sub, bits}.to_u32();
+}
+
+/// A POWERLINK mapping entry (UNSIGNED64, EPSG DS 301): the object, its bit offset in the PDO
+/// and its bit length. The value 0 is an empty entry (nothing mapped; POWERLINK skips it).
+struct powerlink_mapping_entry {
+  std::uint16_t index = 0;
+  std::uint8_t sub = 0;
+  std::uint16_t offset = 0; ///< bit offset in the PDO
+  std::uint16_t bits = 0;   ///< bit length
+
+  /// Errors: out_of_range (reserved bits 24..31 set).
+  [[nodiscard]] static constexpr result<powerlink_mapping_entry>
+  from_u64(std::uint64_t v) noexcept {
+    if ((v & 0xFF00'0000U) != 0U) return errc::out_of_range;
+    return powerlink_mapping_entry{
+        static_cast<std::uint16_t>(v & 0xFFFFU), static_cast<std::uint8_t>((v >> 16U) & 0xFFU),
+        static_cast<std::uint16_t>((v >> 32U) & 0xFFFFU), static_cast<std::uint16_t>(v >> 48U)};
+  }
+  [[nodiscard]] constexpr std::uint64_t to_u64() const noexcept {
+    return (std::uint64_t{bits} << 48U) | (std::uint64_t{offset} << 32U) |
+           (std::uint64_t{sub} << 16U) | index;
+  }
+  [[nodiscard]] constexpr bool is_empty() const noexcept { return to_u64() == 0U; }
+  [[nodiscard]] constexpr bool is_dummy() const noexcept { return index >= 1U && index <= 7U; }
+  friend constexpr bool operator==(const powerlink_mapping_entry &,
+                                   const powerlink_mapping_entry &) = default;
+};
+
+[[nodiscard]] constexpr std::uint64_t powerlink_mapping_value(std::uint16_t index, std::uint8_t sub,
+                                                              std::uint16_t offset,
+                                                              std::uint16_t bits) noexcept {
+  return powerlink_mapping_entry{index, sub, offset, bits}.to_u64();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -121,12 +169,102 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
 /// Read `length` bits as a two's complement number, sign-extended.
 [[nodiscard]] constexpr result<std::int64_t>
 unpack_signed(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length) noexcept {
-  auto u = unpack(pdo, offset, length);
-  if (!u) return u.error();
-  std::uint64_t v = u.value();
+  FIELDCODEC_TRY(std::uint64_t v, unpack(pdo, offset, length));
   if (length < 64U && ((v >> (length - 1U)) & 1U) != 0U) v |= ~std::uint64_t{0} << length;
   return static_cast<std::int64_t>(v);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Values with the object's signedness
+
+/// How the bits of a mapped object are read and written.
+enum class signedness : std::uint8_t {
+  unknown,   ///< no type known (mapping without dictionary, REAL, strings): raw bits
+  unsigned_, ///< UNSIGNEDn, BOOLEAN
+  signed_,   ///< INTEGERn
+};
+
+[[nodiscard]] constexpr signedness signedness_of(od::data_type t) noexcept {
+  if (od::is_signed_integer(t)) return signedness::signed_;
+  if (od::is_unsigned_integer(t) || t == od::data_type::boolean) return signedness::unsigned_;
+  return signedness::unknown;
+}
+
+namespace detail {
+template <class T>
+concept integer = std::integral<T> && !std::same_as<T, bool>;
+/// A scoped enum over an integer type (ds402::mode, xenax::mode, …): written as its value.
+template <class T>
+concept scoped_enum = std::is_enum_v<T> && !std::is_convertible_v<T, std::underlying_type_t<T>> &&
+                      integer<std::underlying_type_t<T>>;
+template <class T>
+concept pdo_value = integer<T> || scoped_enum<T>;
+template <pdo_value T>
+[[nodiscard]] constexpr auto as_integer(T v) noexcept {
+  if constexpr (scoped_enum<T>) {
+    return static_cast<std::underlying_type_t<T>>(v);
+  } else {
+    return v;
+  }
+}
+
+/// The `length` low bits that carry `v`. Errors: bad_length, overflow (v outside the field:
+/// signed range for signed_, unsigned range for unsigned_, either for unknown).
+template <integer T>
+[[nodiscard]] constexpr result<std::uint64_t> field_bits(T v, std::size_t length,
+                                                         signedness s) noexcept {
+  if (length < 1U || length > 64U) return errc::bad_length;
+  const std::uint64_t mask = length == 64U ? ~std::uint64_t{0} : (std::uint64_t{1} << length) - 1U;
+  if constexpr (std::is_signed_v<T>) {
+    if (v < 0) {
+      if (s == signedness::unsigned_) return errc::overflow;
+      const auto x = static_cast<std::int64_t>(v);
+      if (length < 64U && x < -(std::int64_t{1} << (length - 1U))) return errc::overflow;
+      return static_cast<std::uint64_t>(x) & mask;
+    }
+  }
+  const auto u = static_cast<std::uint64_t>(v);
+  const std::uint64_t max = s == signedness::signed_ ? mask >> 1U : mask;
+  if (u > max) return errc::overflow;
+  return u;
+}
+
+/// `raw` (the field's `length` low bits) as T, with the field's signedness.
+/// Errors: overflow (the value does not fit T).
+template <integer T>
+[[nodiscard]] constexpr result<T> field_value(std::uint64_t raw, std::size_t length,
+                                              signedness s) noexcept {
+  if (s == signedness::signed_ && length < 64U && ((raw >> (length - 1U)) & 1U) != 0U) {
+    raw |= ~std::uint64_t{0} << length; // sign-extend
+  }
+  if (s == signedness::signed_ && (raw >> 63U) != 0U) { // negative
+    const auto x = static_cast<std::int64_t>(raw);
+    if constexpr (std::is_signed_v<T>) {
+      if (x < static_cast<std::int64_t>(std::numeric_limits<T>::min())) return errc::overflow;
+      return static_cast<T>(x);
+    } else {
+      return errc::overflow;
+    }
+  }
+  if (raw > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return errc::overflow;
+  return static_cast<T>(raw);
+}
+
+template <integer T>
+[[nodiscard]] constexpr status pack_value(std::span<std::uint8_t> pdo, std::size_t offset,
+                                          std::size_t length, signedness s, T v) noexcept {
+  FIELDCODEC_TRY(const std::uint64_t bits, field_bits(v, length, s));
+  return pack(pdo, offset, length, bits);
+}
+
+template <integer T>
+[[nodiscard]] constexpr result<T> unpack_value(std::span<const std::uint8_t> pdo,
+                                               std::size_t offset, std::size_t length,
+                                               signedness s) noexcept {
+  FIELDCODEC_TRY(const std::uint64_t raw, unpack(pdo, offset, length));
+  return field_value<T>(raw, length, s);
+}
+} // namespace detail
 
 // ---------------------------------------------------------------------------------------------
 // Mappings against a dictionary
@@ -151,7 +289,8 @@ enum class mapping_problem : std::uint8_t {
   no_access,        ///< RPDO of a read-only or TPDO of a write-only object (0604 0041)
   length_mismatch,  ///< length does not fit the object's type (0607 0010)
   too_long,         ///< the mapping exceeds the PDO length (0604 0042)
-  too_many_entries, ///< more than 64 entries
+  too_many_entries, ///< more than 64 entries (POWERLINK: 254)
+  overlap,          ///< POWERLINK: two entries claim the same bits
 };
 
 [[nodiscard]] constexpr std::string_view to_string(mapping_problem p) noexcept {
@@ -163,7 +302,8 @@ enum class mapping_problem : std::uint8_t {
   case mapping_problem::no_access: return "object access does not allow this direction";
   case mapping_problem::length_mismatch: return "bit length does not match the object's type";
   case mapping_problem::too_long: return "mapping exceeds the PDO length";
-  case mapping_problem::too_many_entries: return "more than 64 entries";
+  case mapping_problem::too_many_entries: return "more entries than the mapping object holds";
+  case mapping_problem::overlap: return "entries overlap";
   }
   return "?";
 }
@@ -178,35 +318,63 @@ enum class mapping_problem : std::uint8_t {
   case mapping_problem::no_access: return errc::access_denied;
   case mapping_problem::too_long:
   case mapping_problem::too_many_entries: return errc::too_long;
+  case mapping_problem::overlap:
   case mapping_problem::none: break;
   }
   return errc::invalid_argument;
 }
 
+namespace detail {
+/// The sub-entry `sub` among the sub-entries of one object, as a position in `object`
+/// (object.size() when absent). A position, not a pointer: g++ with -fsanitize=undefined
+/// instruments `pointer == nullptr` and then cannot evaluate it in a constant expression when
+/// the pointer addresses an element of a constexpr table (issue 12 #13), which made
+/// make_static_mapping(dictionary, …) fail to compile under the sanitizer.
+[[nodiscard]] constexpr std::size_t sub_position(std::span<const od::entry> object,
+                                                 std::uint8_t sub) noexcept {
+  std::size_t i = 0;
+  while (i < object.size() && object[i].sub != sub) ++i;
+  return i;
+}
+
+/// Check one mapped object (index, sub, length) against a dictionary; dummy entries against
+/// their data type. `type` receives the object's data type when the check passes.
+[[nodiscard]] constexpr mapping_problem check_object(const od::dictionary &dict, direction d,
+                                                     std::uint16_t index, std::uint8_t sub,
+                                                     std::size_t bits,
+                                                     od::data_type &type) noexcept {
+  if (bits == 0U) return mapping_problem::zero_length;
+  if (index >= 1U && index <= 7U) { // dummy entry
+    if (sub != 0U) return mapping_problem::no_object;
+    type = static_cast<od::data_type>(index);
+    if (type == od::data_type::boolean) {
+      return bits == 1U ? mapping_problem::none : mapping_problem::length_mismatch;
+    }
+    return bits == 8U * od::fixed_size(type) ? mapping_problem::none
+                                             : mapping_problem::length_mismatch;
+  }
+  const std::span<const od::entry> object = dict.object(index);
+  const std::size_t at = sub_position(object, sub);
+  if (at == object.size()) return mapping_problem::no_object;
+  const od::entry &e = object[at];
+  if (d == direction::rpdo) {
+    if (!od::mappable_rx(e.pdo)) return mapping_problem::not_mappable;
+    if (!od::writable(e.access_type)) return mapping_problem::no_access;
+  } else {
+    if (!od::mappable_tx(e.pdo)) return mapping_problem::not_mappable;
+    if (!od::readable(e.access_type)) return mapping_problem::no_access;
+  }
+  if (!length_fits(e, bits)) return mapping_problem::length_mismatch;
+  type = e.type;
+  return mapping_problem::none;
+}
+} // namespace detail
+
 /// Check one entry against a dictionary (dummy entries against their data type).
 [[nodiscard]] constexpr mapping_problem check_entry(const od::dictionary &dict, direction d,
                                                     mapping_entry m) noexcept {
-  if (m.bits == 0U) return mapping_problem::zero_length;
-  if (m.is_dummy()) {
-    if (m.sub != 0U) return mapping_problem::no_object;
-    const auto t = static_cast<od::data_type>(m.index);
-    if (t == od::data_type::boolean) {
-      return m.bits == 1U ? mapping_problem::none : mapping_problem::length_mismatch;
-    }
-    return m.bits == 8U * od::fixed_size(t) ? mapping_problem::none
-                                            : mapping_problem::length_mismatch;
-  }
-  const od::entry *e = dict.find(m.index, m.sub);
-  if (e == nullptr) return mapping_problem::no_object;
-  if (d == direction::rpdo) {
-    if (!od::mappable_rx(e->pdo)) return mapping_problem::not_mappable;
-    if (!od::writable(e->access_type)) return mapping_problem::no_access;
-  } else {
-    if (!od::mappable_tx(e->pdo)) return mapping_problem::not_mappable;
-    if (!od::readable(e->access_type)) return mapping_problem::no_access;
-  }
-  if (!length_fits(*e, m.bits)) return mapping_problem::length_mismatch;
-  return mapping_problem::none;
+  od::data_type type{};
+  return detail::check_object(dict, d, m.index, m.sub, m.bits, type);
 }
 
 /// Where a check failed.
@@ -231,6 +399,38 @@ struct mapping_report {
   return {mapping_problem::none, 0, total};
 }
 
+/// Check a POWERLINK mapping: every non-empty entry against the dictionary, at most 254
+/// entries, every entry inside max_bits, no two entries on the same bits. Empty entries (value
+/// 0) are skipped. total_bits is the end of the last mapped bit.
+[[nodiscard]] constexpr mapping_report
+check_mapping(const od::dictionary &dict, direction d,
+              std::span<const powerlink_mapping_entry> entries, std::size_t max_bits) noexcept {
+  if (entries.size() > powerlink_max_entries) {
+    return {mapping_problem::too_many_entries, powerlink_max_entries, 0};
+  }
+  std::size_t end = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const powerlink_mapping_entry &m = entries[i];
+    if (m.is_empty()) continue;
+    od::data_type type{};
+    if (auto p = detail::check_object(dict, d, m.index, m.sub, m.bits, type);
+        p != mapping_problem::none) {
+      return {p, i, 0};
+    }
+    const std::size_t last = std::size_t{m.offset} + m.bits;
+    if (last > max_bits) return {mapping_problem::too_long, i, 0};
+    for (std::size_t j = 0; j < i; ++j) {
+      const powerlink_mapping_entry &o = entries[j];
+      if (o.is_empty()) continue;
+      if (m.offset < std::size_t{o.offset} + o.bits && o.offset < last) {
+        return {mapping_problem::overlap, i, 0};
+      }
+    }
+    if (last > end) end = last;
+  }
+  return {mapping_problem::none, 0, end};
+}
+
 /// check_mapping as a result: the total length in bits. Errors: see to_errc.
 [[nodiscard]] constexpr result<std::size_t> validate(const od::dictionary &dict, direction d,
                                                      std::span<const mapping_entry> entries,
@@ -239,45 +439,280 @@ struct mapping_report {
   if (!r.ok()) return to_errc(r.problem);
   return r.total_bits;
 }
+[[nodiscard]] constexpr result<std::size_t>
+validate(const od::dictionary &dict, direction d, std::span<const powerlink_mapping_entry> entries,
+         std::size_t max_bits) noexcept {
+  const auto r = check_mapping(dict, d, entries, max_bits);
+  if (!r.ok()) return to_errc(r.problem);
+  return r.total_bits;
+}
 
-/// Pack one raw value per entry (dummy entries take 0) into `pdo`; returns the bytes used
-/// (total bits rounded up). Signed objects take their two's complement bits, e.g.
-/// static_cast<std::uint64_t>(-5) for an INTEGER16 is fine: only the low `bits` are checked to
-/// be the sign-extension. Errors: bad_length (value count != entry count, zero length),
-/// overflow, buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> pack_all(std::span<const mapping_entry> entries,
-                                                     std::span<const std::uint64_t> raws,
+// ---------------------------------------------------------------------------------------------
+// Whole mappings without a dictionary (raw bits)
+
+namespace detail {
+template <integer T>
+[[nodiscard]] constexpr result<std::size_t> pack_raw(std::span<const mapping_entry> entries,
+                                                     std::span<const T> values,
                                                      std::span<std::uint8_t> pdo) noexcept {
-  if (raws.size() != entries.size()) return errc::bad_length;
+  if (values.size() != entries.size()) return errc::bad_length;
   std::size_t offset = 0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    const std::size_t n = entries[i].bits;
-    std::uint64_t v = raws[i];
-    if (n < 64U && n > 0U) {
-      const std::uint64_t high = v >> (n - 1U);
-      const std::uint64_t all_ones = ~std::uint64_t{0} >> (n - 1U);
-      if (high == all_ones) v &= (std::uint64_t{1} << n) - 1U; // a sign-extended negative value
-    }
-    FIELDCODEC_TRY_STATUS(pack(pdo, offset, n, v));
-    offset += n;
+    FIELDCODEC_TRY_STATUS(pack_value(pdo, offset, entries[i].bits, signedness::unknown, values[i]));
+    offset += entries[i].bits;
   }
   return (offset + 7U) / 8U;
 }
+} // namespace detail
 
-/// Unpack every entry's raw bits (zero-extended) into `raws`. Errors: bad_length (raws too
-/// small), truncated (the PDO is shorter than the mapping).
+/// Pack one value per entry (dummy entries take 0) into `pdo` in mapping order; returns the
+/// bytes used (total bits rounded up). Without a dictionary the signedness is unknown: a value
+/// is accepted when it fits the field as unsigned or as two's complement (-5 for 16 bits gives
+/// 0xFFFB; a uint64 is never taken as a negative number). Use a mapping built from a
+/// dictionary (make_mapping) to have values checked against each object's signedness.
+/// Errors: bad_length (value count != entry count, zero length), overflow, buffer_too_small.
+[[nodiscard]] constexpr result<std::size_t> pack_all(std::span<const mapping_entry> entries,
+                                                     std::span<const std::uint64_t> values,
+                                                     std::span<std::uint8_t> pdo) noexcept {
+  return detail::pack_raw(entries, values, pdo);
+}
+[[nodiscard]] constexpr result<std::size_t> pack_all(std::span<const mapping_entry> entries,
+                                                     std::span<const std::int64_t> values,
+                                                     std::span<std::uint8_t> pdo) noexcept {
+  return detail::pack_raw(entries, values, pdo);
+}
+
+/// Unpack every entry's raw bits (zero-extended: no dictionary, no signedness) into `raws`.
+/// For values with their signedness use a mapping built from a dictionary (make_mapping).
+/// Errors: bad_length (raws too small), truncated (the PDO is shorter than the mapping).
 [[nodiscard]] constexpr status unpack_all(std::span<const mapping_entry> entries,
                                           std::span<const std::uint8_t> pdo,
                                           std::span<std::uint64_t> raws) noexcept {
   if (raws.size() < entries.size()) return errc::bad_length;
   std::size_t offset = 0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    auto v = unpack(pdo, offset, entries[i].bits);
-    if (!v) return v.error();
-    raws[i] = v.value();
+    FIELDCODEC_TRY(raws[i], unpack(pdo, offset, entries[i].bits));
     offset += entries[i].bits;
   }
   return {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mappings built from a dictionary (run time)
+
+/// One mapped object: where its bits are and how to read them.
+struct slot {
+  std::uint16_t index = 0;
+  std::uint8_t sub = 0;
+  signedness sign = signedness::unknown;
+  std::uint16_t offset = 0; ///< bit offset in the PDO
+  std::uint16_t bits = 0;   ///< bit length
+  friend constexpr bool operator==(const slot &, const slot &) = default;
+};
+
+/// A mapping checked against a dictionary, with each object's place and signedness. Fixed
+/// capacity, no heap; build it with make_mapping. Values of any integer type are checked
+/// against the object's signedness and width (overflow otherwise); reads return the value with
+/// the object's signedness (INTEGER32 0xFFFFFFFF is -1).
+template <std::size_t Capacity = max_entries>
+class mapping {
+public:
+  constexpr mapping() noexcept = default;
+
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0U; }
+  /// End of the last mapped bit.
+  [[nodiscard]] constexpr std::size_t total_bits() const noexcept { return total_bits_; }
+  [[nodiscard]] constexpr std::size_t bytes() const noexcept { return (total_bits_ + 7U) / 8U; }
+  [[nodiscard]] constexpr std::span<const slot> slots() const noexcept {
+    return std::span<const slot>(slots_.data(), count_);
+  }
+  [[nodiscard]] constexpr const slot &operator[](std::size_t i) const noexcept { return slots_[i]; }
+
+  /// The value of entry i. Errors: invalid_argument (no entry i), truncated, overflow (does not
+  /// fit T).
+  template <detail::integer T = std::int64_t>
+  [[nodiscard]] constexpr result<T> get(std::span<const std::uint8_t> pdo,
+                                        std::size_t i) const noexcept {
+    if (i >= count_) return errc::invalid_argument;
+    return detail::unpack_value<T>(pdo, slots_[i].offset, slots_[i].bits, slots_[i].sign);
+  }
+  /// Pack the value of entry i (any integer type, or a scoped enum such as ds402::mode as its
+  /// value). Errors: invalid_argument, overflow, buffer_too_small.
+  template <detail::pdo_value T>
+  [[nodiscard]] constexpr status set(std::span<std::uint8_t> pdo, std::size_t i,
+                                     T value) const noexcept {
+    if (i >= count_) return errc::invalid_argument;
+    return detail::pack_value(pdo, slots_[i].offset, slots_[i].bits, slots_[i].sign,
+                              detail::as_integer(value));
+  }
+
+  /// Every entry's value. Errors: bad_length (values too small), truncated, overflow (an
+  /// UNSIGNED64 above INT64_MAX for int64 values, a negative value for uint64 values).
+  [[nodiscard]] constexpr status unpack_all(std::span<const std::uint8_t> pdo,
+                                            std::span<std::int64_t> values) const noexcept {
+    return unpack_into(pdo, values);
+  }
+  [[nodiscard]] constexpr status unpack_all(std::span<const std::uint8_t> pdo,
+                                            std::span<std::uint64_t> values) const noexcept {
+    return unpack_into(pdo, values);
+  }
+  /// Pack one value per entry; returns bytes(). Errors: bad_length (count differs), overflow,
+  /// buffer_too_small.
+  [[nodiscard]] constexpr result<std::size_t> pack_all(std::span<const std::int64_t> values,
+                                                       std::span<std::uint8_t> pdo) const noexcept {
+    return pack_from(values, pdo);
+  }
+  [[nodiscard]] constexpr result<std::size_t> pack_all(std::span<const std::uint64_t> values,
+                                                       std::span<std::uint8_t> pdo) const noexcept {
+    return pack_from(values, pdo);
+  }
+
+  /// Append a slot (make_mapping does this after the dictionary check). Errors: too_long (full).
+  [[nodiscard]] constexpr status add(slot s) noexcept {
+    if (count_ == Capacity) return errc::too_long;
+    slots_[count_++] = s;
+    if (std::size_t{s.offset} + s.bits > total_bits_) total_bits_ = std::size_t{s.offset} + s.bits;
+    return {};
+  }
+
+private:
+  template <class T>
+  [[nodiscard]] constexpr status unpack_into(std::span<const std::uint8_t> pdo,
+                                             std::span<T> values) const noexcept {
+    if (values.size() < count_) return errc::bad_length;
+    for (std::size_t i = 0; i < count_; ++i) {
+      FIELDCODEC_TRY(values[i], get<T>(pdo, i));
+    }
+    return {};
+  }
+  template <class T>
+  [[nodiscard]] constexpr result<std::size_t>
+  pack_from(std::span<const T> values, std::span<std::uint8_t> pdo) const noexcept {
+    if (values.size() != count_) return errc::bad_length;
+    for (std::size_t i = 0; i < count_; ++i) FIELDCODEC_TRY_STATUS(set(pdo, i, values[i]));
+    return bytes();
+  }
+
+  std::array<slot, Capacity> slots_{};
+  std::size_t count_ = 0;
+  std::size_t total_bits_ = 0;
+};
+
+/// A CiA 301 mapping checked against `dict` (check_mapping) with each object's signedness.
+/// Errors: those of validate, too_long (more entries than Capacity).
+template <std::size_t Capacity = max_entries>
+[[nodiscard]] constexpr result<mapping<Capacity>>
+make_mapping(const od::dictionary &dict, direction d, std::span<const mapping_entry> entries,
+             std::size_t max_bits = can_max_bits) noexcept {
+  const auto r = check_mapping(dict, d, entries, max_bits);
+  if (!r.ok()) return to_errc(r.problem);
+  if (r.total_bits > 0xFFFFU) return errc::too_long; // slot offsets are 16-bit, as POWERLINK's
+  mapping<Capacity> m;
+  std::size_t offset = 0;
+  for (const mapping_entry &e : entries) {
+    od::data_type type{};
+    (void)detail::check_object(dict, d, e.index, e.sub, e.bits, type);
+    FIELDCODEC_TRY_STATUS(m.add(
+        slot{e.index, e.sub, signedness_of(type), static_cast<std::uint16_t>(offset), e.bits}));
+    offset += e.bits;
+  }
+  return m;
+}
+
+/// A POWERLINK mapping checked against `dict`; empty entries are left out.
+/// Errors: those of validate, too_long (more entries than Capacity).
+template <std::size_t Capacity = max_entries>
+[[nodiscard]] constexpr result<mapping<Capacity>>
+make_mapping(const od::dictionary &dict, direction d,
+             std::span<const powerlink_mapping_entry> entries, std::size_t max_bits) noexcept {
+  const auto r = check_mapping(dict, d, entries, max_bits);
+  if (!r.ok()) return to_errc(r.problem);
+  mapping<Capacity> m;
+  for (const powerlink_mapping_entry &e : entries) {
+    if (e.is_empty()) continue;
+    od::data_type type{};
+    (void)detail::check_object(dict, d, e.index, e.sub, e.bits, type);
+    FIELDCODEC_TRY_STATUS(m.add(slot{e.index, e.sub, signedness_of(type), e.offset, e.bits}));
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Default mappings declared in a dictionary
+
+/// A list of mapping entries with a fixed capacity (no heap).
+template <class Entry, std::size_t Capacity>
+struct entry_list {
+  std::array<Entry, Capacity> items{};
+  std::size_t count = 0;
+
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return count == 0U; }
+  [[nodiscard]] constexpr const Entry &operator[](std::size_t i) const noexcept { return items[i]; }
+  [[nodiscard]] constexpr std::span<const Entry> entries() const noexcept {
+    return std::span<const Entry>(items.data(), count);
+  }
+  [[nodiscard]] constexpr const Entry *begin() const noexcept { return items.data(); }
+  [[nodiscard]] constexpr const Entry *end() const noexcept { return items.data() + count; }
+};
+
+namespace detail {
+/// The default of sub `sub` of `object` as an unsigned integer of type `type`.
+[[nodiscard]] constexpr result<std::uint64_t>
+default_of(std::span<const od::entry> object, std::uint8_t sub, od::data_type type) noexcept {
+  const std::size_t at = sub_position(object, sub);
+  if (at == object.size()) return errc::unknown_object;
+  if (object[at].type != type) return errc::type_mismatch;
+  auto n = object[at].default_for(0);
+  if (!n) return errc::unknown_object;
+  return n.value().to_uint64();
+}
+
+template <class Entry, std::size_t Capacity, class Decode>
+[[nodiscard]] constexpr result<entry_list<Entry, Capacity>>
+read_default(const od::dictionary &dict, std::uint16_t index, od::data_type type,
+             Decode decode) noexcept {
+  const std::span<const od::entry> object = dict.object(index);
+  FIELDCODEC_TRY(const std::uint64_t count, default_of(object, 0, od::data_type::unsigned8));
+  for (const od::entry &e : object) { // every entry, also those beyond the default count
+    if (e.sub != 0U && e.type != type) return errc::type_mismatch;
+  }
+  if (count > Capacity) return errc::too_long;
+  entry_list<Entry, Capacity> list;
+  for (std::size_t i = 1; i <= count; ++i) {
+    FIELDCODEC_TRY(const std::uint64_t v, default_of(object, static_cast<std::uint8_t>(i), type));
+    FIELDCODEC_TRY(list.items[list.count], decode(v));
+    ++list.count;
+  }
+  return list;
+}
+} // namespace detail
+
+/// The default mapping a dictionary declares in CiA 301 mapping object `index` (1600h..17FFh,
+/// 1A00h..1BFFh): sub 0's default is the number of entries, subs 1..n hold UNSIGNED32 entries.
+/// Errors: unknown_object (no such object, a sub-entry 0..n missing or without a default),
+/// type_mismatch (sub 0 not UNSIGNED8, an entry not UNSIGNED32 — a POWERLINK dictionary:
+/// use default_powerlink_mapping), too_long (more than Capacity entries).
+template <std::size_t Capacity = max_entries>
+[[nodiscard]] constexpr result<entry_list<mapping_entry, Capacity>>
+default_mapping(const od::dictionary &dict, std::uint16_t index) noexcept {
+  return detail::read_default<mapping_entry, Capacity>(
+      dict, index, od::data_type::unsigned32, [](std::uint64_t v) -> result<mapping_entry> {
+        if (v > 0xFFFF'FFFFU) return errc::overflow;
+        return mapping_entry::from_u32(static_cast<std::uint32_t>(v));
+      });
+}
+
+/// The default mapping a POWERLINK dictionary declares in mapping object `index` (1600h..16FFh,
+/// 1A00h..1AFFh): subs 1..n hold UNSIGNED64 entries. Errors: as default_mapping (type_mismatch
+/// when the entries are not UNSIGNED64), out_of_range (reserved bits set in an entry).
+template <std::size_t Capacity = powerlink_max_entries>
+[[nodiscard]] constexpr result<entry_list<powerlink_mapping_entry, Capacity>>
+default_powerlink_mapping(const od::dictionary &dict, std::uint16_t index) noexcept {
+  return detail::read_default<powerlink_mapping_entry, Capacity>(
+      dict, index, od::data_type::unsigned64,
+      [](std::uint64_t v) { return powerlink_mapping_entry::from_u64(v); });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -293,13 +728,16 @@ inline void pdo_mapping_object_access_forbids_this_direction() noexcept {}
 inline void pdo_mapping_length_does_not_match_object_type() noexcept {}
 inline void pdo_mapping_exceeds_pdo_length() noexcept {}
 inline void pdo_mapping_has_more_than_64_entries() noexcept {}
+inline void pdo_mapping_entries_overlap() noexcept {}
 } // namespace compile_error
 
-/// A mapping fixed at compile time with its bit offsets.
+/// A mapping fixed at compile time with its bit offsets. Built from a dictionary it knows each
+/// object's signedness (`signs`); built from lengths only, every sign is unknown (raw bits).
 template <std::size_t N>
 struct static_mapping {
   std::array<mapping_entry, N> entries{};
   std::array<std::size_t, N> offsets{};
+  std::array<signedness, N> signs{};
   std::size_t total_bits = 0;
 
   [[nodiscard]] constexpr std::size_t bytes() const noexcept { return (total_bits + 7U) / 8U; }
@@ -309,21 +747,25 @@ struct static_mapping {
     for (std::size_t i = 0; i < N; ++i) v[i] = entries[i].to_u32();
     return v;
   }
-  /// Pack the value of entry i (two's complement bits for signed objects are accepted).
+  /// Pack the value of entry i (any integer type, or a scoped enum such as ds402::mode as its
+  /// value), checked against the object's signedness and width. Errors: invalid_argument (no
+  /// entry i), overflow, buffer_too_small.
+  template <detail::pdo_value T>
   [[nodiscard]] constexpr status set(std::span<std::uint8_t> pdo, std::size_t i,
-                                     std::uint64_t raw) const noexcept {
+                                     T value) const noexcept {
     if (i >= N) return errc::invalid_argument;
-    const std::size_t n = entries[i].bits;
-    if (n < 64U && (raw >> (n - 1U)) == (~std::uint64_t{0} >> (n - 1U))) {
-      raw &= (std::uint64_t{1} << n) - 1U;
-    }
-    return pack(pdo, offsets[i], n, raw);
+    return detail::pack_value(pdo, offsets[i], entries[i].bits, signs[i],
+                              detail::as_integer(value));
   }
-  [[nodiscard]] constexpr result<std::uint64_t> get(std::span<const std::uint8_t> pdo,
-                                                    std::size_t i) const noexcept {
+  /// The value of entry i with the object's signedness (raw bits when unknown).
+  /// Errors: invalid_argument, truncated, overflow (does not fit T).
+  template <detail::integer T = std::int64_t>
+  [[nodiscard]] constexpr result<T> get(std::span<const std::uint8_t> pdo,
+                                        std::size_t i) const noexcept {
     if (i >= N) return errc::invalid_argument;
-    return unpack(pdo, offsets[i], entries[i].bits);
+    return detail::unpack_value<T>(pdo, offsets[i], entries[i].bits, signs[i]);
   }
+  /// Entry i read as two's complement whatever the object's type (for length-only mappings).
   [[nodiscard]] constexpr result<std::int64_t> get_signed(std::span<const std::uint8_t> pdo,
                                                           std::size_t i) const noexcept {
     if (i >= N) return errc::invalid_argument;
@@ -350,10 +792,11 @@ consteval void raise(mapping_problem p) {
   case mapping_problem::too_many_entries:
     compile_error::pdo_mapping_has_more_than_64_entries();
     return;
+  case mapping_problem::overlap: compile_error::pdo_mapping_entries_overlap(); return;
   }
 }
 template <std::size_t N>
-consteval static_mapping<N> layout(const mapping_entry (&e)[N]) {
+constexpr static_mapping<N> layout(const mapping_entry (&e)[N]) noexcept {
   static_mapping<N> m;
   for (std::size_t i = 0; i < N; ++i) {
     m.entries[i] = e[i];
@@ -379,14 +822,21 @@ consteval static_mapping<N> make_static_mapping(const mapping_entry (&e)[N],
   return detail::layout(e);
 }
 
-/// A mapping checked at compile time against a (constexpr) dictionary. Mistakes do not compile.
+/// A mapping checked at compile time against a (constexpr) dictionary, with each object's
+/// signedness. Mistakes do not compile.
 template <std::size_t N>
 consteval static_mapping<N> make_static_mapping(const od::dictionary &dict, direction d,
                                                 const mapping_entry (&e)[N],
                                                 std::size_t max_bits = can_max_bits) {
   const auto r = check_mapping(dict, d, std::span<const mapping_entry>(e, N), max_bits);
   detail::raise(r.problem);
-  return detail::layout(e);
+  auto m = detail::layout(e);
+  for (std::size_t i = 0; i < N; ++i) {
+    od::data_type type{};
+    (void)detail::check_object(dict, d, e[i].index, e[i].sub, e[i].bits, type);
+    m.signs[i] = signedness_of(type);
+  }
+  return m;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -41,6 +41,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <string_view>
 
@@ -137,27 +138,36 @@ inline constexpr abort_info abort_codes[] = {
     {abort_code::no_data, errc::bad_state, "no data available"},
 };
 
+namespace detail {
+/// Position of `code` in abort_codes (std::size(abort_codes) when absent). The lookups below
+/// compare positions, not pointers with nullptr: g++ -fsanitize=undefined cannot evaluate the
+/// null comparison of a pointer into a constexpr table in a constant expression.
+[[nodiscard]] constexpr std::size_t abort_position(abort_code code) noexcept {
+  std::size_t i = 0;
+  while (i < std::size(abort_codes) && abort_codes[i].code != code) ++i;
+  return i;
+}
+} // namespace detail
+
 /// The row of `code`, or nullptr for a code CiA 301 does not define (and for `none`).
 [[nodiscard]] constexpr const abort_info *find_abort(abort_code code) noexcept {
-  for (const auto &row : abort_codes) {
-    if (row.code == code) return &row;
-  }
-  return nullptr;
+  const std::size_t i = detail::abort_position(code);
+  return i < std::size(abort_codes) ? &abort_codes[i] : nullptr;
 }
 /// True for the codes of the CiA 301 table.
 [[nodiscard]] constexpr bool is_known(abort_code code) noexcept {
-  return find_abort(code) != nullptr;
+  return detail::abort_position(code) < std::size(abort_codes);
 }
 /// The description of a code: "no abort" for none, empty for a code CiA 301 does not define.
 [[nodiscard]] constexpr std::string_view to_string(abort_code code) noexcept {
   if (code == abort_code::none) return "no abort";
-  const abort_info *row = find_abort(code);
-  return row != nullptr ? row->text : std::string_view{};
+  const std::size_t i = detail::abort_position(code);
+  return i < std::size(abort_codes) ? abort_codes[i].text : std::string_view{};
 }
 /// The fieldcodec error closest to a code; errc::aborted for a code CiA 301 does not define.
 [[nodiscard]] constexpr errc to_errc(abort_code code) noexcept {
-  const abort_info *row = find_abort(code);
-  return row != nullptr ? row->error : errc::aborted;
+  const std::size_t i = detail::abort_position(code);
+  return i < std::size(abort_codes) ? abort_codes[i].error : errc::aborted;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -291,17 +301,19 @@ inline constexpr command commands[] = {
     {direction::to_client, 0xE1, 0xC1, message_type::block_end, layout::block_end},
 };
 
-[[nodiscard]] constexpr const command *command_for(message_type t) noexcept {
-  for (const auto &c : commands) {
-    if (c.type == t) return &c;
-  }
-  return nullptr;
+// Positions in `commands` (std::size(commands) when absent), not pointers: see abort_position.
+[[nodiscard]] constexpr std::size_t command_for(message_type t) noexcept {
+  std::size_t i = 0;
+  while (i < std::size(commands) && commands[i].type != t) ++i;
+  return i;
 }
-[[nodiscard]] constexpr const command *command_for(direction d, std::uint8_t byte0) noexcept {
-  for (const auto &c : commands) {
-    if (c.dir == d && (byte0 & c.mask) == c.bits) return &c;
+[[nodiscard]] constexpr std::size_t command_for(direction d, std::uint8_t byte0) noexcept {
+  std::size_t i = 0;
+  while (i < std::size(commands) &&
+         !(commands[i].dir == d && (byte0 & commands[i].mask) == commands[i].bits)) {
+    ++i;
   }
-  return nullptr;
+  return i;
 }
 
 constexpr void put_address(payload &p, od::address a) noexcept {
@@ -339,8 +351,9 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
     for (std::size_t i = 0; i < m.data_size; ++i) p[1U + i] = m.data[i];
     return p;
   }
-  const detail::command *c = detail::command_for(m.type);
-  if (c == nullptr) return errc::invalid_argument;
+  const std::size_t ci = detail::command_for(m.type);
+  if (ci == std::size(detail::commands)) return errc::invalid_argument;
+  const detail::command *c = &detail::commands[ci];
   unsigned b0 = c->bits;
   switch (c->lay) {
   case detail::layout::segment:
@@ -407,8 +420,9 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
 /// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
 /// reported as they are. Errors: unknown_command (no such command in that direction).
 [[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
-  const detail::command *c = detail::command_for(d, p[0]);
-  if (c == nullptr) return errc::unknown_command;
+  const std::size_t ci = detail::command_for(d, p[0]);
+  if (ci == std::size(detail::commands)) return errc::unknown_command;
+  const detail::command *c = &detail::commands[ci];
   message m;
   m.type = c->type;
   const unsigned b0 = p[0];

@@ -159,6 +159,11 @@ public:
   }
   /// Bytes transferred so far (a block download counts acknowledged bytes).
   [[nodiscard]] constexpr std::size_t transferred() const noexcept { return count_; }
+  /// When the running transfer times out (the deadline of the last step; empty when idle), for
+  /// a caller that holds several machines and did not just call this one.
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline() const noexcept {
+    return core_.make({}).deadline;
+  }
   [[nodiscard]] constexpr const channel &connection() const noexcept { return ch_; }
   /// Use another channel (between transfers). Errors: bad_state.
   [[nodiscard]] constexpr status set_connection(channel ch) noexcept {

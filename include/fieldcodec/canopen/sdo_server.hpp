@@ -111,6 +111,11 @@ public:
   [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept {
     return core_.error();
   }
+  /// When the running transfer times out (the deadline of the last step; empty when idle), for
+  /// a caller that holds several machines and did not just call this one.
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline() const noexcept {
+    return core_.make({}).deadline;
+  }
   [[nodiscard]] constexpr const channel &connection() const noexcept { return ch_; }
   /// Follow a new SDO server parameter (1200h sub 1/2); ends a running transfer silently.
   constexpr void set_connection(channel ch) noexcept {

@@ -20,6 +20,7 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 namespace fieldcodec::compax {
 
@@ -41,10 +42,11 @@ struct steuerbyte : bit_word<steuerbyte_bit, std::uint8_t> {
   [[nodiscard]] constexpr std::uint8_t record() const noexcept {
     return static_cast<std::uint8_t>(raw & 0x0FU);
   }
-  /// Select a record. Errors: out_of_range (above 15).
-  [[nodiscard]] constexpr status set_record(std::uint8_t n) noexcept {
-    if (n > 15U) return errc::out_of_range;
-    raw = static_cast<std::uint8_t>((raw & 0xF0U) | n);
+  /// Select a record (any integer type). Errors: out_of_range (not 0..15).
+  template <integer_argument T>
+  [[nodiscard]] constexpr status set_record(T n) noexcept {
+    if (!in_closed_range(n, 0, 15)) return errc::out_of_range;
+    raw = static_cast<std::uint8_t>((raw & 0xF0U) | static_cast<unsigned>(n));
     return {};
   }
 };
@@ -83,14 +85,16 @@ enum class cpx_stw_bit : std::uint8_t {
 };
 
 struct cpx_stw : bit_word<cpx_stw_bit, std::uint16_t> {
-  /// Virtual input E17..E32 (word bit n − 17). Errors: out_of_range.
-  [[nodiscard]] constexpr result<bool> virtual_input(unsigned n) const noexcept {
-    if (n < 17U || n > 32U) return errc::out_of_range;
-    return ((raw >> (n - 17U)) & 1U) != 0U;
+  /// Virtual input E17..E32 (word bit n − 17; any integer type). Errors: out_of_range.
+  template <integer_argument T>
+  [[nodiscard]] constexpr result<bool> virtual_input(T n) const noexcept {
+    if (!in_closed_range(n, 17, 32)) return errc::out_of_range;
+    return ((raw >> (static_cast<unsigned>(n) - 17U)) & 1U) != 0U;
   }
-  [[nodiscard]] constexpr status set_virtual_input(unsigned n, bool on) noexcept {
-    if (n < 17U || n > 32U) return errc::out_of_range;
-    const auto m = static_cast<std::uint16_t>(1U << (n - 17U));
+  template <integer_argument T>
+  [[nodiscard]] constexpr status set_virtual_input(T n, bool on) noexcept {
+    if (!in_closed_range(n, 17, 32)) return errc::out_of_range;
+    const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 17U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};
   }
@@ -164,36 +168,68 @@ template <cpx_status_word W>
 
 // ------------------------------------------------ STEUERWORT / STATUSWORT (0x6040/0x6041)
 
-/// STEUERWORT. Bits 7..0 are the DRIVECOM/CiA 402 controlword bits (names of CiA 402; the
-/// manual prints "Power on", "Disable voltage", "Rapid stop", "Reset fault": bits 1 and 2 are
-/// active low, i.e. 1 = voltage enabled, 1 = no rapid stop). Bits 15..8 are COMPAX functions.
+/// STEUERWORT. Bits 7..0 are the DRIVECOM/CiA 402 controlword bits, bits 15..8 COMPAX
+/// functions. Every bit has its CiA 402 name and, where it differs, the manual's own term
+/// (2.4.7) as a second name with the same value. Bits 1 and 2 are active low: the manual's
+/// "Disable voltage" and "Rapid stop" happen when the bit is 0, so their manual names carry the
+/// suffix _n (0 = active): set(enable_voltage) == set(disable_voltage_n) enables the voltage.
 enum class steuerwort_bit : std::uint8_t {
   switch_on = 0,
-  enable_voltage = 1, ///< "disable voltage" when 0
-  quick_stop = 2,     ///< "rapid stop" when 0
+  power_on = 0, ///< manual: "Power on"
+  enable_voltage = 1,
+  disable_voltage_n = 1, ///< manual: "Disable voltage", active low (0 = disable voltage)
+  quick_stop = 2,
+  rapid_stop_n = 2, ///< manual: "Rapid stop", active low (0 = rapid stop)
   enable_operation = 3,
-  new_set_point = 4,
-  relative = 6, ///< target position relative (1) or absolute (0)
+  new_set_point = 4, ///< LAGE_ZIEL handshake (set_point.hpp)
+  relative = 6,
+  target_position_relative = 6, ///< manual: "Target position relative (1) or absolute (0)"
   fault_reset = 7,
-  freeze_pad = 8,        ///< 1[0]
-  object_req_enable = 9, ///< 1[1]
-  approach_machine_zero = 10,
-  hand_plus = 11,
-  hand_minus = 12,
-  start = 13,
-  stop = 14,
-  spm = 15, ///< toggled by the master to acknowledge a pop-up message
+  reset_fault = 7,            ///< manual: "Reset fault"
+  freeze_pad = 8,             ///< 1[0] "FreezePAD"
+  object_req_enable = 9,      ///< 1[1] "ObjectReqEnable"
+  approach_machine_zero = 10, ///< 1[2] "Approach machine zero (MZ)"
+  hand_plus = 11,             ///< 1[3] "Hand+"
+  hand_minus = 12,            ///< 1[4] "Hand-"
+  start = 13,                 ///< 1[5] "START"
+  stop = 14,                  ///< 1[6] "STOP"
+  spm = 15,                   ///< 1[7] "SPM", toggled by the master to acknowledge a pop-up message
 };
 using steuerwort = bit_word<steuerwort_bit, std::uint16_t>;
 
-/// STATUSWORT (normal display, i.e. while SPM of status and control word are equal).
+/// The manual's term for a STEUERWORT bit (2.4.7; "" for bit 5, which it leaves empty).
+[[nodiscard]] constexpr std::string_view manual_term(steuerwort_bit b) noexcept {
+  constexpr std::array<std::string_view, 16> terms{"Power on",
+                                                   "Disable voltage",
+                                                   "Rapid stop",
+                                                   "Enable operation",
+                                                   "New set point",
+                                                   "",
+                                                   "Target position relative or absolute",
+                                                   "Reset fault",
+                                                   "FreezePAD",
+                                                   "ObjectReqEnable",
+                                                   "Approach machine zero (MZ)",
+                                                   "Hand+",
+                                                   "Hand-",
+                                                   "START",
+                                                   "STOP",
+                                                   "SPM"};
+  const auto n = static_cast<std::size_t>(b);
+  return n < terms.size() ? terms[n] : std::string_view{};
+}
+
+/// STATUSWORT (normal display, i.e. while SPM of status and control word are equal). CiA 402
+/// names and, where they differ, the manual's terms (2.4.8) as second names.
 enum class statuswort_bit : std::uint8_t {
-  ready_to_switch_on = 0, ///< printed "Ready to start"
+  ready_to_switch_on = 0,
+  ready_to_start = 0, ///< manual: "Ready to start"
   switched_on = 1,
   operation_enabled = 2,
   fault = 3,
-  voltage_disabled = 4,
-  quick_stop = 5, ///< printed "Rapid stop"; active low as in CiA 402
+  voltage_disabled = 4, ///< manual: "Voltage disabled" (CiA 402: voltage enabled)
+  quick_stop = 5,
+  rapid_stop_n = 5, ///< manual: "Rapid stop", active low as in CiA 402 (0 = rapid stop)
   switch_on_disabled = 6,
   warning = 7,
   message = 8, ///< also AckToggle in the 8-byte OBJECT_REQ mode
@@ -201,12 +237,36 @@ enum class statuswort_bit : std::uint8_t {
   remote = 9,
   set_point_reached = 10,
   limit_value = 11,
-  set_point_acknowledge = 12, ///< printed "Actual value acknowledgement"
+  set_point_acknowledge = 12,        ///< LAGE_ZIEL handshake (set_point.hpp); erratum CX-36
+  actual_value_acknowledgement = 12, ///< manual's table: "Actual value acknowledgement"
   machine_zero_reached = 13,
+  mn_reached = 13, ///< manual: "MN was reached"
   idle_after_stop = 14,
   spm = 15,
 };
 using statuswort = bit_word<statuswort_bit, std::uint16_t>;
+
+/// The manual's term for a STATUSWORT bit (2.4.8).
+[[nodiscard]] constexpr std::string_view manual_term(statuswort_bit b) noexcept {
+  constexpr std::array<std::string_view, 16> terms{"Ready to start",
+                                                   "Switched on",
+                                                   "Operation enabled",
+                                                   "Fault",
+                                                   "Voltage disabled",
+                                                   "Rapid stop",
+                                                   "Switch on disabled",
+                                                   "Warning",
+                                                   "Message/AckToggle",
+                                                   "Remote",
+                                                   "Set point reached",
+                                                   "Limit value",
+                                                   "Actual value acknowledgement",
+                                                   "MN was reached",
+                                                   "Idle after stop",
+                                                   "SPM"};
+  const auto n = static_cast<std::size_t>(b);
+  return n < terms.size() ? terms[n] : std::string_view{};
+}
 
 /// Kind of a pop-up message (2.4.9; enabled by P193).
 enum class popup_kind : std::uint8_t {
@@ -386,14 +446,16 @@ inline constexpr scaling::linear override_scale{decimal{255, 2}, decimal{0, 0}};
 /// INPUT_WORD, OUTPUT_WORD, OUTPUT_MASK: bit n − 1 is input/output n (1..16).
 struct io_word {
   std::uint16_t raw = 0;
-  /// Errors: out_of_range (n not 1..16).
-  [[nodiscard]] constexpr result<bool> test(unsigned n) const noexcept {
-    if (n < 1U || n > 16U) return errc::out_of_range;
-    return ((raw >> (n - 1U)) & 1U) != 0U;
+  /// Input/output n (any integer type). Errors: out_of_range (n not 1..16).
+  template <integer_argument T>
+  [[nodiscard]] constexpr result<bool> test(T n) const noexcept {
+    if (!in_closed_range(n, 1, 16)) return errc::out_of_range;
+    return ((raw >> (static_cast<unsigned>(n) - 1U)) & 1U) != 0U;
   }
-  [[nodiscard]] constexpr status set(unsigned n, bool on = true) noexcept {
-    if (n < 1U || n > 16U) return errc::out_of_range;
-    const auto m = static_cast<std::uint16_t>(1U << (n - 1U));
+  template <integer_argument T>
+  [[nodiscard]] constexpr status set(T n, bool on = true) noexcept {
+    if (!in_closed_range(n, 1, 16)) return errc::out_of_range;
+    const auto m = static_cast<std::uint16_t>(1U << (static_cast<unsigned>(n) - 1U));
     raw = on ? static_cast<std::uint16_t>(raw | m) : static_cast<std::uint16_t>(raw & ~m);
     return {};
   }

@@ -60,6 +60,17 @@ struct dsp_number {
     const std::int64_t v = neg ? -t : t;
     return v > max_thousandths ? max_thousandths : v;
   }
+  /// The value in units of 0.001 when `raw` lies exactly on the 0.001 grid, i.e. is what
+  /// from_thousandths() gives for it (every value written in program text or as a decimal with
+  /// at most 3 places is). Errors: not_representable (between two thousandths), overflow
+  /// (outside 48 bits).
+  [[nodiscard]] constexpr result<std::int64_t> exact_thousandths() const noexcept {
+    if (raw < dsp_format::raw_min || raw > dsp_format::raw_max) return errc::overflow;
+    const std::int64_t t = to_thousandths();
+    auto back = from_thousandths(t);
+    if (!back || back.value().raw != raw) return errc::not_representable;
+    return t;
+  }
   friend constexpr bool operator==(const dsp_number &, const dsp_number &) = default;
 };
 

@@ -1,9 +1,16 @@
 // fieldcodec — COMPAX Nx binary program records (object 0x5FD5, manual 000, 2.11.2).
 //
 // A record is 20 bytes: data byte 1 = record length (number of content bytes, 1..19), then the
-// content, then padding (written as 0x00, ignored when read). The content is one command: a
-// 1-byte command code and its operands, possibly followed by a second and third command of a
-// combined record (POSR … SPEED … ACCEL …, … WAIT …, … OUTPUT …, WAIT POSA/POSR …).
+// content, then padding (written as 0x00, ignored when read: the manual calls only the first
+// "record length" bytes relevant). The content is one command: a 1-byte command code and its
+// operands, possibly followed by the second and third command of a combined record
+// (POSR … SPEED … ACCEL …, … WAIT …, … OUTPUT …, WAIT POSA/POSR …).
+//
+// Numbers carry their unit, as the program text writes them: nx::integer(250) and
+// nx::value(decimal{2505, 1}) are 250 and 250.5 in the command's unit (mm or inch for POSA,
+// POSR; % for SPEED; ms for ACCEL and WAIT; a count or record number otherwise). The 6-byte
+// fields of POSA/POSR/SPEED/SETM and of IF/assignment constants hold such a number in the DSP
+// format (dsp_number.hpp); a raw DSP value is spelled explicitly: nx::dsp_raw(…).
 //
 // Code-table decisions (the manual's three tables disagree; evidence in docs/compax.md):
 // * Value / parameter / variable forms: parameter code = value code | 0x20, variable code =
@@ -21,7 +28,9 @@
 #pragma once
 
 #include <fieldcodec/compax/dsp_number.hpp>
+#include <fieldcodec/compax/values.hpp>
 #include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
@@ -36,7 +45,7 @@ inline constexpr std::size_t content_max = record_size - 1U;
 
 using record = std::array<std::uint8_t, record_size>;
 
-/// Command operations. `none` marks an unused second/third part of a record.
+/// Command operations. `none` marks an unused second or third command of a record.
 enum class op : std::uint8_t {
   none,
   nop,        ///< 0x20 empty instruction
@@ -64,44 +73,132 @@ enum class op : std::uint8_t {
 
 /// Form of a command's argument.
 enum class arg_kind : std::uint8_t {
-  value,     ///< a number (DSP raw value for POSA/POSR/SPEED/SETM, an integer otherwise)
+  value,     ///< a number in the command's unit, as the program text writes it
+  dsp_raw,   ///< a raw DSP value off the 0.001 grid (POSA/POSR/SPEED/SETM only): raw / 2^24
   parameter, ///< P<number>
   variable,  ///< V<number>
   special,   ///< POSA HOME, POSR CAM, SPEED SYNC, WAIT START, GOTO EXT, GOSUB EXT
 };
 
+/// The argument of a single-argument command. `number` is, by kind: the number in the
+/// command's unit times 10^places (value()), the raw DSP integer, the parameter or variable
+/// number, or 0 for a special; `places` is 0 except for a value. Build it with the functions
+/// below; they keep one representation per argument (a normalized decimal) so that equal
+/// arguments compare equal.
 struct arg {
   arg_kind kind = arg_kind::value;
-  std::int64_t value = 0; ///< DSP raw, integer, or parameter/variable number; 0 when special
+  std::uint8_t places = 0;
+  std::int64_t number = 0;
+
+  /// The number as a decimal (kind value: in the command's unit).
+  [[nodiscard]] constexpr decimal value() const noexcept { return {number, places}; }
   friend constexpr bool operator==(const arg &, const arg &) = default;
 };
 
-[[nodiscard]] constexpr arg integer(std::int64_t v) noexcept { return {arg_kind::value, v}; }
-[[nodiscard]] constexpr arg number(dsp_number n) noexcept { return {arg_kind::value, n.raw}; }
-[[nodiscard]] constexpr arg parameter(std::uint16_t n) noexcept { return {arg_kind::parameter, n}; }
-[[nodiscard]] constexpr arg variable(std::uint16_t n) noexcept { return {arg_kind::variable, n}; }
-[[nodiscard]] constexpr arg special() noexcept { return {arg_kind::special, 0}; }
+namespace detail {
+/// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
+/// (kind value), otherwise the raw integer (kind dsp_raw).
+[[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
+  auto t = n.exact_thousandths();
+  if (!t) return arg{arg_kind::dsp_raw, 0, n.raw};
+  // the normalized decimal of t / 1000 (at most 3 trailing zeros to drop)
+  std::int64_t v = t.value();
+  std::uint8_t places = 3;
+  while (places > 0U && v % 10 == 0) {
+    v /= 10;
+    --places;
+  }
+  return arg{arg_kind::value, places, v};
+}
+
+/// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
+/// beyond `target` places), overflow (outside int64).
+[[nodiscard]] constexpr result<std::int64_t> scaled_to(std::int64_t number, std::uint8_t places,
+                                                       std::uint8_t target) noexcept {
+  for (; places > target; --places) {
+    if (number % 10 != 0) return errc::not_representable;
+    number /= 10;
+  }
+  for (; places < target; ++places) {
+    if (__builtin_mul_overflow(number, 10, &number)) return errc::overflow;
+  }
+  return number;
+}
+} // namespace detail
+
+/// The whole number `v` in the command's unit: nx::make(op::posa, nx::integer(250)) is
+/// POSA 250 (mm), nx::make(op::accel, nx::integer(200)) is ACCEL 200 (ms). Any integer type; a
+/// value the field cannot hold is refused by the encoder (out_of_range / overflow), never
+/// wrapped.
+template <integer_argument T>
+[[nodiscard]] constexpr arg integer(T v) noexcept {
+  return {arg_kind::value, 0, compax::detail::saturate_i64(v)};
+}
+/// An exact decimal in the command's unit: nx::value(decimal{2505, 1}) is 250.5. The 6-byte DSP
+/// fields take at most 3 decimal places (the program's resolution), the 2-byte fields whole
+/// numbers; the encoder says not_representable otherwise.
+[[nodiscard]] constexpr arg value(decimal d) noexcept {
+  const decimal n = normalize(d);
+  return {arg_kind::value, n.places, n.mantissa};
+}
+/// A raw DSP value (value = raw / 2^24 of the unit), for the 6-byte fields only. A raw value on
+/// the 0.001 grid is kept as the decimal it stands for (kind value).
+[[nodiscard]] constexpr arg dsp_raw(dsp_number n) noexcept { return detail::from_dsp(n); }
+template <integer_argument T>
+[[nodiscard]] constexpr arg dsp_raw(T raw) noexcept {
+  return detail::from_dsp(dsp_number{compax::detail::saturate_i64(raw)});
+}
+/// P<n> / V<n>, n = 0..65535 (checked by the encoder).
+template <integer_argument T>
+[[nodiscard]] constexpr arg parameter(T n) noexcept {
+  return {arg_kind::parameter, 0, compax::detail::saturate_i64(n)};
+}
+template <integer_argument T>
+[[nodiscard]] constexpr arg variable(T n) noexcept {
+  return {arg_kind::variable, 0, compax::detail::saturate_i64(n)};
+}
+[[nodiscard]] constexpr arg special() noexcept { return {arg_kind::special, 0, 0}; }
 
 /// IF / assignment operands (7 bytes: type + 6 data bytes).
 enum class operand_type : std::uint8_t {
-  constant = 0x20,  ///< DSP number
+  constant = 0x20,  ///< a number in DSP format
   parameter = 0x50, ///< P<n>
   status = 0x53,    ///< S<n>
   variable = 0x56,  ///< V<n>
 };
 
+/// One operand. `number` is, by type: the constant times 10^places (value(); or the raw DSP
+/// integer when `raw`), or the parameter / status / variable number (places 0).
 struct operand {
   operand_type type = operand_type::constant;
-  std::uint16_t number = 0; ///< parameter / status / variable number
-  dsp_number constant{};    ///< the constant
+  std::uint8_t places = 0;
+  bool raw = false; ///< a constant given as a raw DSP value off the 0.001 grid
+  std::int64_t number = 0;
+
+  /// The constant as a decimal (meaningful for a constant that is not `raw`).
+  [[nodiscard]] constexpr decimal value() const noexcept { return {number, places}; }
   friend constexpr bool operator==(const operand &, const operand &) = default;
 };
 
-[[nodiscard]] constexpr operand constant(dsp_number n) noexcept {
-  return {operand_type::constant, 0, n};
+/// The constant `v` (IF V1>=5: constant(5)); at most 3 decimal places (encoder:
+/// not_representable), DSP range (overflow).
+template <integer_argument T>
+[[nodiscard]] constexpr operand constant(T v) noexcept {
+  return {operand_type::constant, 0, false, compax::detail::saturate_i64(v)};
 }
-[[nodiscard]] constexpr operand operand_of(operand_type t, std::uint16_t n) noexcept {
-  return {t, n, {}};
+[[nodiscard]] constexpr operand constant(decimal d) noexcept {
+  const decimal n = normalize(d);
+  return {operand_type::constant, n.places, false, n.mantissa};
+}
+/// A constant given as a raw DSP value (kept as the decimal it stands for when on the grid).
+[[nodiscard]] constexpr operand constant_raw(dsp_number n) noexcept {
+  const arg a = detail::from_dsp(n);
+  return {operand_type::constant, a.places, a.kind == arg_kind::dsp_raw, a.number};
+}
+/// P<n>, S<n> or V<n> (n = 0..65535, checked by the encoder).
+template <integer_argument T>
+[[nodiscard]] constexpr operand operand_of(operand_type t, T n) noexcept {
+  return {t, 0, false, compax::detail::saturate_i64(n)};
 }
 
 enum class comparison : std::uint8_t {
@@ -136,24 +233,27 @@ struct pattern {
   friend constexpr bool operator==(const pattern &, const pattern &) = default;
 };
 
-/// One Nx command. Which members are used depends on `code`; unused ones stay zero so that
-/// equal commands compare equal.
+/// One Nx command. Which members are used depends on `operation`; unused ones stay at their
+/// defaults so that equal commands compare equal (the encoder refuses a command that sets
+/// members its operation does not use). Numbers are kept as given (any integer type through
+/// the builders) and range-checked by the encoder.
 struct command {
-  op code = op::nop;
-  arg a{};             ///< argument of a single-argument command
-  op code2 = op::none; ///< combined record: second command (SPEED, WAIT, OUTPUT, POSA, POSR)
-  arg b{};
-  op code3 = op::none; ///< combined record: third command (ACCEL after POSR … SPEED …)
-  arg c{};
-  std::uint16_t number = 0; ///< Ex, Ax, Pn, Vn
-  pattern pat{};            ///< IF Ex / OUTPUT Ax digits (also the OUTPUT of POSR … OUTPUT)
-  jump jmp = jump::goto_;   ///< IF …
-  std::uint16_t target = 0; ///< IF … GOTO/GOSUB target record
-  operand o1{};
-  comparison cmp = comparison::eq;
-  arithmetic ari = arithmetic::none;
-  operand o2{};
-  char letter = 0; ///< VALID: 'P', 'C' or 'F'
+  op operation = op::nop;                    ///< the command (the first one of a combined record)
+  op second_operation = op::none;            ///< combined record: SPEED, WAIT, OUTPUT, POSA or POSR
+  op third_operation = op::none;             ///< combined record: ACCEL after POSR … SPEED …
+  jump jump_kind = jump::goto_;              ///< IF …: GOTO or GOSUB
+  comparison comparison_op = comparison::eq; ///< IF <left><comparison_op><right> …
+  arithmetic arithmetic_op = arithmetic::none; ///< Pn=/Vn=: none, or the operator before `right`
+  char valid_letter = 0;                       ///< VALID: 'P', 'C' or 'F'
+  arg argument{};          ///< the argument of `operation` (single-argument commands)
+  arg second_argument{};   ///< the argument of `second_operation`
+  arg third_argument{};    ///< the argument of `third_operation`
+  std::int64_t number = 0; ///< x of IF Ex=… / OUTPUT Ax=… (also POSR … OUTPUT), n of Pn= / Vn=
+  std::int64_t target = 0; ///< IF …: the record jumped to
+  pattern io_pattern{};    ///< the y digits of IF Ex=y… / OUTPUT Ax=y…
+  operand left{};          ///< IF: the operand before the comparison; Pn=/Vn=: the first operand
+  operand right{};         ///< IF: the operand after the comparison; Pn=/Vn=: the second operand
+
   friend constexpr bool operator==(const command &, const command &) = default;
 };
 
@@ -163,25 +263,25 @@ struct command {
 /// SETC, GOTO, GOSUB) or none (NOP, SETS, END, RETURN).
 [[nodiscard]] constexpr command make(op o, arg a = {}) noexcept {
   command c{};
-  c.code = o;
-  c.a = a;
+  c.operation = o;
+  c.argument = a;
   return c;
 }
-/// Append the second / third command of a combined record.
+/// Append the second (or, when there is one, the third) command of a combined record.
 [[nodiscard]] constexpr command then(command c, op o, arg a) noexcept {
-  if (c.code2 == op::none) {
-    c.code2 = o;
-    c.b = a;
+  if (c.second_operation == op::none) {
+    c.second_operation = o;
+    c.second_argument = a;
   } else {
-    c.code3 = o;
-    c.c = a;
+    c.third_operation = o;
+    c.third_argument = a;
   }
   return c;
 }
 [[nodiscard]] constexpr command make_valid(char letter) noexcept {
   command c{};
-  c.code = op::valid;
-  c.letter = letter;
+  c.operation = op::valid;
+  c.valid_letter = letter;
   return c;
 }
 [[nodiscard]] constexpr result<pattern>
@@ -192,60 +292,71 @@ make_pattern(std::span<const std::uint8_t> digits) noexcept {
   for (std::size_t i = 0; i < digits.size(); ++i) p.digits[i] = digits[i];
   return p;
 }
-[[nodiscard]] constexpr command make_if_input(std::uint16_t input, pattern p, jump j,
-                                              std::uint16_t target) noexcept {
+/// IF E<input>=<p> GOTO|GOSUB <target> (input and target 0..65535, checked by the encoder).
+template <integer_argument X, integer_argument N>
+[[nodiscard]] constexpr command make_if_input(X input, pattern p, jump j, N target) noexcept {
   command c{};
-  c.code = op::if_input;
-  c.number = input;
-  c.pat = p;
-  c.jmp = j;
-  c.target = target;
+  c.operation = op::if_input;
+  c.number = compax::detail::saturate_i64(input);
+  c.io_pattern = p;
+  c.jump_kind = j;
+  c.target = compax::detail::saturate_i64(target);
   return c;
 }
-[[nodiscard]] constexpr command make_if_error(jump j, std::uint16_t target) noexcept {
+template <integer_argument N>
+[[nodiscard]] constexpr command make_if_error(jump j, N target) noexcept {
   return make_if_input(input_error, pattern{1, {1}}, j, target);
 }
-[[nodiscard]] constexpr command make_if_stop(jump j, std::uint16_t target) noexcept {
+template <integer_argument N>
+[[nodiscard]] constexpr command make_if_stop(jump j, N target) noexcept {
   return make_if_input(input_stop, pattern{1, {1}}, j, target);
 }
-[[nodiscard]] constexpr command make_if_compare(operand a, comparison cmp, operand b, jump j,
-                                                std::uint16_t target) noexcept {
+/// IF <left><cmp><right> GOTO|GOSUB <target>.
+template <integer_argument N>
+[[nodiscard]] constexpr command make_if_compare(operand left, comparison cmp, operand right, jump j,
+                                                N target) noexcept {
   command c{};
-  c.code = op::if_compare;
-  c.o1 = a;
-  c.cmp = cmp;
-  c.o2 = b;
-  c.jmp = j;
-  c.target = target;
+  c.operation = op::if_compare;
+  c.left = left;
+  c.comparison_op = cmp;
+  c.right = right;
+  c.jump_kind = j;
+  c.target = compax::detail::saturate_i64(target);
   return c;
 }
-[[nodiscard]] constexpr command make_output(std::uint16_t output, pattern p) noexcept {
+/// OUTPUT A<output>=<p> (output 0..65535, checked by the encoder).
+template <integer_argument X>
+[[nodiscard]] constexpr command make_output(X output, pattern p) noexcept {
   command c{};
-  c.code = op::output;
-  c.number = output;
-  c.pat = p;
+  c.operation = op::output;
+  c.number = compax::detail::saturate_i64(output);
+  c.io_pattern = p;
   return c;
 }
-/// POSR … OUTPUT Ax=y…
-[[nodiscard]] constexpr command then_output(command c, std::uint16_t output, pattern p) noexcept {
-  c.code2 = op::output;
-  c.number = output;
-  c.pat = p;
+/// POSR … OUTPUT A<output>=<p>.
+template <integer_argument X>
+[[nodiscard]] constexpr command then_output(command c, X output, pattern p) noexcept {
+  c.second_operation = op::output;
+  c.number = compax::detail::saturate_i64(output);
+  c.io_pattern = p;
   return c;
 }
-/// Pn=… (is_variable = false) or Vn=… with one operand.
-[[nodiscard]] constexpr command make_assign(bool is_variable, std::uint16_t n, operand a) noexcept {
+/// P<n>=<value> (assignment = op::assign_p) or V<n>=<value> (op::assign_v); n = 0..65535.
+template <integer_argument N>
+[[nodiscard]] constexpr command make_assign(op assignment, N n, operand value) noexcept {
   command c{};
-  c.code = is_variable ? op::assign_v : op::assign_p;
-  c.number = n;
-  c.o1 = a;
+  c.operation = assignment;
+  c.number = compax::detail::saturate_i64(n);
+  c.left = value;
   return c;
 }
-[[nodiscard]] constexpr command make_assign(bool is_variable, std::uint16_t n, operand a,
-                                            arithmetic ari, operand b) noexcept {
-  command c = make_assign(is_variable, n, a);
-  c.ari = ari;
-  c.o2 = b;
+/// P<n>=<left><ari><right> / V<n>=<left><ari><right>.
+template <integer_argument N>
+[[nodiscard]] constexpr command make_assign(op assignment, N n, operand left, arithmetic ari,
+                                            operand right) noexcept {
+  command c = make_assign(assignment, n, left);
+  c.arithmetic_op = ari;
+  c.right = right;
   return c;
 }
 
@@ -291,6 +402,8 @@ inline constexpr std::array<family, 16> families{{
 
 inline constexpr std::uint8_t parameter_flag = 0x20;
 inline constexpr std::uint8_t variable_flag = 0x80;
+inline constexpr std::uint8_t code_valid = 0x01;
+inline constexpr std::uint8_t valid_marker = 0x56; ///< "V" of VALIDP / VALIDC / VALIDF
 inline constexpr std::uint8_t code_if_input = 0x49;
 inline constexpr std::uint8_t code_if_compare = 0x4A;
 inline constexpr std::uint8_t code_output = 0x4F;
@@ -322,37 +435,43 @@ struct decoded_code {
   return errc::unknown_command;
 }
 
-/// May `second` follow `first` in a combined record (and `third` after both)?
+/// May c.second_operation follow c.operation in a combined record (and c.third_operation
+/// follow both)?
 [[nodiscard]] constexpr bool combination_allowed(const command &c) noexcept {
-  if (c.code2 == op::none) return c.code3 == op::none;
+  if (c.second_operation == op::none) return c.third_operation == op::none;
   bool ok = false;
-  switch (c.code) {
-  case op::posa: ok = c.code2 == op::wait; break;
-  case op::posr: ok = c.code2 == op::speed || c.code2 == op::wait || c.code2 == op::output; break;
-  case op::speed: ok = c.code2 == op::wait; break;
+  switch (c.operation) {
+  case op::posa: ok = c.second_operation == op::wait; break;
+  case op::posr:
+    ok = c.second_operation == op::speed || c.second_operation == op::wait ||
+         c.second_operation == op::output;
+    break;
+  case op::speed: ok = c.second_operation == op::wait; break;
   case op::wait:
-    ok = c.a.kind == arg_kind::special && (c.code2 == op::posa || c.code2 == op::posr);
+    ok = c.argument.kind == arg_kind::special &&
+         (c.second_operation == op::posa || c.second_operation == op::posr);
     break;
   default: break;
   }
   if (!ok) return false;
-  if (c.code3 == op::none) return true;
-  return c.code == op::posr && c.code2 == op::speed && c.code3 == op::accel;
+  if (c.third_operation == op::none) return true;
+  return c.operation == op::posr && c.second_operation == op::speed &&
+         c.third_operation == op::accel;
 }
 
 /// Can a further command follow the `parts` (1 or 2) commands already in `c`?
 [[nodiscard]] constexpr bool can_continue(const command &c, int parts) noexcept {
   if (parts == 1) {
-    return c.code == op::posa || c.code == op::posr || c.code == op::speed ||
-           (c.code == op::wait && c.a.kind == arg_kind::special);
+    return c.operation == op::posa || c.operation == op::posr || c.operation == op::speed ||
+           (c.operation == op::wait && c.argument.kind == arg_kind::special);
   }
-  return parts == 2 && c.code == op::posr && c.code2 == op::speed;
+  return parts == 2 && c.operation == op::posr && c.second_operation == op::speed;
 }
 
-[[nodiscard]] constexpr status check_pattern(const pattern &p, std::uint16_t x,
+[[nodiscard]] constexpr status check_pattern(const pattern &p, std::int64_t x,
                                              bool is_output) noexcept {
   if (p.count < 1U || p.count > 8U) return errc::bad_length;
-  const bool a0 = is_output && x == 0U;
+  const bool a0 = is_output && x == 0;
   if (a0 && p.count != 1U) return errc::bad_length;
   for (std::size_t i = 0; i < p.count; ++i) {
     if (p.digits[i] > (a0 ? 2U : 1U)) return errc::bad_digit;
@@ -363,10 +482,50 @@ struct decoded_code {
   return {};
 }
 
-[[nodiscard]] constexpr status write_word(byte_writer &w, std::int64_t v) noexcept {
-  if (v < 0 || v > 0xFFFF) return errc::out_of_range;
-  return w.write(static_cast<std::uint16_t>(v), byte_order::big);
+/// A number of a 2-byte field (numbers of P, S, V, E, A, records; 2-byte values).
+/// Errors: out_of_range (not 0..65535).
+[[nodiscard]] constexpr result<std::uint16_t> field16(std::int64_t v) noexcept {
+  auto u = checked_narrow<std::uint16_t>(v);
+  if (!u) return errc::out_of_range;
+  return u;
 }
+
+/// A number of a 2-byte field, MSB first. Errors: out_of_range (not 0..65535).
+[[nodiscard]] constexpr status write_word(byte_writer &w, std::int64_t v) noexcept {
+  auto u = field16(v);
+  if (!u) return u.error();
+  return w.write(u.value(), byte_order::big);
+}
+
+/// A whole number from a value argument. Errors: not_representable (decimal places).
+[[nodiscard]] constexpr result<std::int64_t> whole(decimal d) noexcept {
+  return scaled_to(d.mantissa, d.places, 0);
+}
+
+/// A value or raw DSP number → its DSP number.
+/// Errors: not_representable (more than 3 places), overflow (outside the DSP range).
+[[nodiscard]] constexpr result<dsp_number> to_dsp(decimal v, bool raw) noexcept {
+  if (raw) {
+    const dsp_number n{v.mantissa};
+    if (n.raw < dsp_format::raw_min || n.raw > dsp_format::raw_max) return errc::overflow;
+    return n;
+  }
+  auto t = scaled_to(v.mantissa, v.places, 3);
+  if (!t) return t.error();
+  return dsp_number::from_thousandths(t.value());
+}
+
+} // namespace detail
+
+/// The DSP number a 6-byte field carries for a value or raw argument (value = raw / 2^24).
+/// Errors: type_mismatch (parameter, variable or special), not_representable (a value with more
+/// than 3 decimal places), overflow (outside the DSP range).
+[[nodiscard]] constexpr result<dsp_number> dsp_of(const arg &a) noexcept {
+  if (a.kind != arg_kind::value && a.kind != arg_kind::dsp_raw) return errc::type_mismatch;
+  return detail::to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
+}
+
+namespace detail {
 
 /// Code and operands of one single-argument command.
 [[nodiscard]] constexpr status write_simple(byte_writer &w, op o, const arg &a) noexcept {
@@ -375,32 +534,43 @@ struct decoded_code {
   std::uint8_t code = f->code;
   if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
     if (!f->has_forms) return errc::type_mismatch;
-    if (a.value < 0 || a.value > 0xFFFF) return errc::out_of_range;
     code = static_cast<std::uint8_t>(
         code | (a.kind == arg_kind::parameter ? parameter_flag : variable_flag));
   }
   if (a.kind == arg_kind::special && !f->has_special) return errc::type_mismatch;
+  if (a.kind == arg_kind::dsp_raw && f->s != shape::dsp) return errc::type_mismatch;
   if ((f->s == shape::none || f->s == shape::zero) && a != arg{}) return errc::invalid_argument;
+  if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
+    // check the number before anything is written
+    if (auto n = detail::field16(a.number); !n) return n.error();
+  }
   FIELDCODEC_TRY_STATUS(w.write_u8(code));
   switch (f->s) {
   case shape::none: return {};
   case shape::zero: return w.write_u8(0);
-  case shape::dsp:
+  case shape::dsp: {
     if (a.kind == arg_kind::special) return w.pad(6, 0xFF);
-    if (a.kind == arg_kind::value) {
-      if (a.value == -1) return errc::out_of_range; // FF FF FF FF FF FF is the special form
-      std::array<std::uint8_t, 6> b{};
-      FIELDCODEC_TRY_STATUS(encode_dsp(dsp_number{a.value}, b));
-      return w.write_bytes(b);
+    if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
+      FIELDCODEC_TRY_STATUS(write_word(w, a.number));
+      return w.pad(4, 0);
     }
-    FIELDCODEC_TRY_STATUS(w.write(static_cast<std::uint16_t>(a.value), byte_order::big));
-    return w.pad(4, 0);
+    auto n = to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
+    if (!n) return n.error();
+    if (n.value().raw == -1) return errc::out_of_range; // FF FF FF FF FF FF is the special form
+    std::array<std::uint8_t, 6> b{};
+    FIELDCODEC_TRY_STATUS(encode_dsp(n.value(), b));
+    return w.write_bytes(b);
+  }
   case shape::word:
-  case shape::word_only:
+  case shape::word_only: {
     if (a.kind == arg_kind::special) return w.write(std::uint16_t{0}, byte_order::big);
+    if (a.kind != arg_kind::value) return write_word(w, a.number);
+    auto v = whole(a.value());
+    if (!v) return v.error();
     // value 0 of WAIT / GOTO / GOSUB would read back as START / EXT
-    if (a.kind == arg_kind::value && a.value == 0 && f->has_special) return errc::out_of_range;
-    return write_word(w, a.value);
+    if (v.value() == 0 && f->has_special) return errc::out_of_range;
+    return write_word(w, v.value());
+  }
   }
   return {};
 }
@@ -408,18 +578,20 @@ struct decoded_code {
 [[nodiscard]] constexpr status write_operand(byte_writer &w, const operand &o) noexcept {
   switch (o.type) {
   case operand_type::constant: {
-    if (o.number != 0U) return errc::invalid_argument;
+    auto n = to_dsp(o.value(), o.raw);
+    if (!n) return n.error();
     FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(o.type)));
     std::array<std::uint8_t, 6> b{};
-    FIELDCODEC_TRY_STATUS(encode_dsp(o.constant, b));
+    FIELDCODEC_TRY_STATUS(encode_dsp(n.value(), b));
     return w.write_bytes(b);
   }
   case operand_type::parameter:
   case operand_type::status:
   case operand_type::variable:
-    if (o.constant != dsp_number{}) return errc::invalid_argument;
+    if (o.raw || o.places != 0U) return errc::invalid_argument;
+    if (auto n = detail::field16(o.number); !n) return n.error();
     FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(o.type)));
-    FIELDCODEC_TRY_STATUS(w.write(o.number, byte_order::big));
+    FIELDCODEC_TRY_STATUS(write_word(w, o.number));
     return w.pad(4, 0);
   }
   return errc::invalid_argument;
@@ -434,10 +606,12 @@ struct decoded_code {
          a == arithmetic::div || a == arithmetic::int_div || a == arithmetic::mod;
 }
 
-[[nodiscard]] constexpr status write_jump(byte_writer &w, jump j, std::uint16_t target) noexcept {
+[[nodiscard]] constexpr status write_jump(byte_writer &w, jump j, std::int64_t target) noexcept {
   if (j != jump::goto_ && j != jump::gosub) return errc::invalid_argument;
+  auto t = detail::field16(target);
+  if (!t) return t.error();
   FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(j)));
-  return w.write(target, byte_order::big);
+  return w.write(t.value(), byte_order::big);
 }
 
 [[nodiscard]] constexpr status write_pattern(byte_writer &w, const pattern &p) noexcept {
@@ -447,76 +621,91 @@ struct decoded_code {
   return {};
 }
 
+/// OUTPUT A<number>=<io_pattern> (the code and its operands).
+[[nodiscard]] constexpr status write_output(byte_writer &w, const command &c) noexcept {
+  FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, true));
+  auto x = detail::field16(c.number);
+  if (!x) return x.error();
+  FIELDCODEC_TRY_STATUS(w.write_u8(code_output));
+  FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
+  return write_pattern(w, c.io_pattern);
+}
+
 } // namespace detail
 
 /// The content bytes of `c` (without the length byte) into `out`; returns their number.
 /// Errors: unknown_command, type_mismatch (a form the command does not have), invalid_argument
 /// (combination not in the table, members set that the command does not use), out_of_range
-/// (number beyond its field, WAIT/GOTO/GOSUB 0, a DSP value that reads as the special form),
-/// bad_digit / bad_length (pattern), overflow (DSP value), buffer_too_small.
+/// (a number beyond its field: P/S/V/E/A/record numbers and 2-byte values 0..65535;
+/// WAIT/GOTO/GOSUB 0; a DSP value that reads as the special form), not_representable (a DSP
+/// value with more than 3 decimal places, a 2-byte value with any), overflow (DSP range),
+/// bad_digit / bad_length (pattern), buffer_too_small.
 [[nodiscard]] constexpr result<std::size_t> encode_content(const command &c,
                                                            std::span<std::uint8_t> out) noexcept {
   byte_writer w{out};
-  switch (c.code) {
+  switch (c.operation) {
   case op::if_input: {
     const bool special = c.number == input_error || c.number == input_stop;
-    if (special && c.pat != pattern{1, {1}}) return errc::invalid_argument;
-    FIELDCODEC_TRY_STATUS(detail::check_pattern(c.pat, c.number, false));
+    if (special && c.io_pattern != pattern{1, {1}}) return errc::invalid_argument;
+    FIELDCODEC_TRY_STATUS(detail::check_pattern(c.io_pattern, c.number, false));
+    auto x = detail::field16(c.number);
+    if (!x) return x.error();
     FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_if_input));
-    FIELDCODEC_TRY_STATUS(w.write(c.number, byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_pattern(w, c.pat));
-    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jmp, c.target));
+    FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
+    FIELDCODEC_TRY_STATUS(detail::write_pattern(w, c.io_pattern));
+    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jump_kind, c.target));
     return w.size();
   }
   case op::if_compare:
-    if (!detail::known(c.cmp)) return errc::invalid_argument;
+    if (!detail::known(c.comparison_op)) return errc::invalid_argument;
     FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_if_compare));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.o1));
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.cmp)));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.o2));
-    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jmp, c.target));
+    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.left));
+    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.comparison_op)));
+    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.right));
+    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jump_kind, c.target));
     return w.size();
-  case op::output:
-    FIELDCODEC_TRY_STATUS(detail::check_pattern(c.pat, c.number, true));
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_output));
-    FIELDCODEC_TRY_STATUS(w.write(c.number, byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_pattern(w, c.pat));
-    return w.size();
+  case op::output: FIELDCODEC_TRY_STATUS(detail::write_output(w, c)); return w.size();
   case op::assign_p:
-  case op::assign_v:
+  case op::assign_v: {
+    auto n = detail::field16(c.number);
+    if (!n) return n.error();
     FIELDCODEC_TRY_STATUS(
-        w.write_u8(c.code == op::assign_p ? detail::code_assign_p : detail::code_assign_v));
-    FIELDCODEC_TRY_STATUS(w.write(c.number, byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.o1));
-    if (c.ari != arithmetic::none) {
-      if (!detail::known(c.ari)) return errc::invalid_argument;
-      FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.ari)));
-      FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.o2));
-    } else if (c.o2 != operand{}) {
+        w.write_u8(c.operation == op::assign_p ? detail::code_assign_p : detail::code_assign_v));
+    FIELDCODEC_TRY_STATUS(w.write(n.value(), byte_order::big));
+    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.left));
+    if (c.arithmetic_op != arithmetic::none) {
+      if (!detail::known(c.arithmetic_op)) return errc::invalid_argument;
+      FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.arithmetic_op)));
+      FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.right));
+    } else if (c.right != operand{}) {
       return errc::invalid_argument;
     }
     return w.size();
+  }
   case op::valid:
-    if (c.letter != 'P' && c.letter != 'C' && c.letter != 'F') return errc::invalid_argument;
-    FIELDCODEC_TRY_STATUS(w.write_u8(0x01));
-    FIELDCODEC_TRY_STATUS(w.write_u8(0x56)); // "V"
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.letter)));
+    if (c.valid_letter != 'P' && c.valid_letter != 'C' && c.valid_letter != 'F') {
+      return errc::invalid_argument;
+    }
+    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_valid));
+    FIELDCODEC_TRY_STATUS(w.write_u8(detail::valid_marker));
+    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.valid_letter)));
     return w.size();
   case op::none: return errc::unknown_command;
   default: break;
   }
   if (!detail::combination_allowed(c)) return errc::invalid_argument;
-  FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.code, c.a));
-  if (c.code2 == op::output) {
-    FIELDCODEC_TRY_STATUS(detail::check_pattern(c.pat, c.number, true));
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_output));
-    FIELDCODEC_TRY_STATUS(w.write(c.number, byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_pattern(w, c.pat));
+  FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.operation, c.argument));
+  if (c.second_operation == op::output) {
+    FIELDCODEC_TRY_STATUS(detail::write_output(w, c));
     return w.size();
   }
-  if (c.number != 0U || c.pat != pattern{}) return errc::invalid_argument;
-  if (c.code2 != op::none) FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.code2, c.b));
-  if (c.code3 != op::none) FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.code3, c.c));
+  if (c.number != 0 || c.io_pattern != pattern{}) return errc::invalid_argument;
+  if (c.second_operation != op::none) {
+    FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.second_operation, c.second_argument));
+  }
+  if (c.third_operation != op::none) {
+    FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.third_operation, c.third_argument));
+  }
   return w.size();
 }
 
@@ -531,6 +720,14 @@ struct decoded_code {
 }
 
 namespace detail {
+
+/// The number in a P/S/V form: 2 bytes MSB first, then four 0x00.
+/// Errors: out_of_range (non-zero padding).
+[[nodiscard]] constexpr result<std::uint16_t>
+read_number_form(std::span<const std::uint8_t> d) noexcept {
+  if (d[2] != 0U || d[3] != 0U || d[4] != 0U || d[5] != 0U) return errc::out_of_range;
+  return load<std::uint16_t>(d, byte_order::big);
+}
 
 [[nodiscard]] constexpr result<arg> read_simple_arg(byte_reader &rd, const family &f,
                                                     arg_kind kind) noexcept {
@@ -553,17 +750,20 @@ namespace detail {
         if (!f.has_special) return errc::out_of_range;
         return special();
       }
-      return arg{arg_kind::value, decode_dsp(d).value().raw};
+      auto n = decode_dsp(d);
+      if (!n) return n.error();
+      return from_dsp(n.value());
     }
-    if (d[2] != 0U || d[3] != 0U || d[4] != 0U || d[5] != 0U) return errc::out_of_range;
-    return arg{kind, static_cast<std::int64_t>((d[0] << 8U) | d[1])};
+    auto n = read_number_form(d);
+    if (!n) return n.error();
+    return arg{kind, 0, n.value()};
   }
   case shape::word:
   case shape::word_only: {
     auto v = rd.read<std::uint16_t>(byte_order::big);
     if (!v) return v.error();
     if (kind == arg_kind::value && v.value() == 0U && f.has_special) return special();
-    return arg{kind, v.value()};
+    return arg{kind, 0, v.value()};
   }
   }
   return errc::unknown_command;
@@ -576,13 +776,18 @@ namespace detail {
   if (!b) return b.error();
   const auto d = b.value();
   switch (t.value()) {
-  case static_cast<std::uint8_t>(operand_type::constant): return constant(decode_dsp(d).value());
+  case static_cast<std::uint8_t>(operand_type::constant): {
+    auto n = decode_dsp(d);
+    if (!n) return n.error();
+    return constant_raw(n.value());
+  }
   case static_cast<std::uint8_t>(operand_type::parameter):
   case static_cast<std::uint8_t>(operand_type::status):
-  case static_cast<std::uint8_t>(operand_type::variable):
-    if (d[2] != 0U || d[3] != 0U || d[4] != 0U || d[5] != 0U) return errc::out_of_range;
-    return operand_of(static_cast<operand_type>(t.value()),
-                      static_cast<std::uint16_t>((d[0] << 8U) | d[1]));
+  case static_cast<std::uint8_t>(operand_type::variable): {
+    auto n = read_number_form(d);
+    if (!n) return n.error();
+    return operand_of(static_cast<operand_type>(t.value()), n.value());
+  }
   default: return errc::unknown_command;
   }
 }
@@ -596,7 +801,7 @@ namespace detail {
   }
   auto t = rd.read<std::uint16_t>(byte_order::big);
   if (!t) return t.error();
-  c.jmp = static_cast<jump>(j.value());
+  c.jump_kind = static_cast<jump>(j.value());
   c.target = t.value();
   return {};
 }
@@ -619,93 +824,93 @@ namespace detail {
   return {};
 }
 
+/// x and y… of OUTPUT Ax=y… after its code.
+[[nodiscard]] constexpr status read_output(byte_reader &rd, command &c) noexcept {
+  auto x = rd.read<std::uint16_t>(byte_order::big);
+  if (!x) return x.error();
+  c.number = x.value();
+  FIELDCODEC_TRY_STATUS(read_pattern(rd, c.io_pattern, true));
+  return check_pattern(c.io_pattern, c.number, true);
+}
+
 [[nodiscard]] constexpr result<command> read_content(byte_reader &rd) noexcept {
   auto code = rd.read_u8();
   if (!code) return code.error();
   command c{};
   switch (code.value()) {
   case code_if_input: {
-    c.code = op::if_input;
+    c.operation = op::if_input;
     auto x = rd.read<std::uint16_t>(byte_order::big);
     if (!x) return x.error();
     c.number = x.value();
-    FIELDCODEC_TRY_STATUS(read_pattern(rd, c.pat, false));
-    FIELDCODEC_TRY_STATUS(check_pattern(c.pat, c.number, false));
-    if ((c.number == input_error || c.number == input_stop) && c.pat != pattern{1, {1}}) {
+    FIELDCODEC_TRY_STATUS(read_pattern(rd, c.io_pattern, false));
+    FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, false));
+    if ((c.number == input_error || c.number == input_stop) && c.io_pattern != pattern{1, {1}}) {
       return errc::out_of_range;
     }
     FIELDCODEC_TRY_STATUS(read_jump(rd, c));
     return c;
   }
   case code_if_compare: {
-    c.code = op::if_compare;
+    c.operation = op::if_compare;
     auto a = read_operand(rd);
     if (!a) return a.error();
     auto cmp = rd.read_u8();
     if (!cmp) return cmp.error();
-    c.cmp = static_cast<comparison>(cmp.value());
-    if (!known(c.cmp)) return errc::unknown_command;
+    c.comparison_op = static_cast<comparison>(cmp.value());
+    if (!known(c.comparison_op)) return errc::unknown_command;
     auto b = read_operand(rd);
     if (!b) return b.error();
-    c.o1 = a.value();
-    c.o2 = b.value();
+    c.left = a.value();
+    c.right = b.value();
     FIELDCODEC_TRY_STATUS(read_jump(rd, c));
     return c;
   }
-  case code_output: {
-    c.code = op::output;
-    auto x = rd.read<std::uint16_t>(byte_order::big);
-    if (!x) return x.error();
-    c.number = x.value();
-    FIELDCODEC_TRY_STATUS(read_pattern(rd, c.pat, true));
-    FIELDCODEC_TRY_STATUS(check_pattern(c.pat, c.number, true));
+  case code_output:
+    c.operation = op::output;
+    FIELDCODEC_TRY_STATUS(read_output(rd, c));
     return c;
-  }
   case code_assign_p:
   case code_assign_v: {
-    c.code = code.value() == code_assign_p ? op::assign_p : op::assign_v;
+    c.operation = code.value() == code_assign_p ? op::assign_p : op::assign_v;
     auto n = rd.read<std::uint16_t>(byte_order::big);
     if (!n) return n.error();
     c.number = n.value();
     auto a = read_operand(rd);
     if (!a) return a.error();
-    c.o1 = a.value();
+    c.left = a.value();
     if (rd.empty()) return c;
     auto ari = rd.read_u8();
-    c.ari = static_cast<arithmetic>(ari.value());
-    if (!known(c.ari)) return errc::unknown_command;
+    c.arithmetic_op = static_cast<arithmetic>(ari.value());
+    if (!known(c.arithmetic_op)) return errc::unknown_command;
     auto b = read_operand(rd);
     if (!b) return b.error();
-    c.o2 = b.value();
+    c.right = b.value();
     return c;
   }
-  case 0x01: {
-    c.code = op::valid;
+  case code_valid: {
+    c.operation = op::valid;
     auto v = rd.read_u8();
     auto l = rd.read_u8();
     if (!v || !l) return errc::truncated;
-    if (v.value() != 0x56U) return errc::unknown_command;
+    if (v.value() != valid_marker) return errc::unknown_command;
     if (l.value() != 'P' && l.value() != 'C' && l.value() != 'F') return errc::unknown_command;
-    c.letter = static_cast<char>(l.value());
+    c.valid_letter = static_cast<char>(l.value());
     return c;
   }
   default: break;
   }
   auto d = find_code(code.value());
   if (!d) return d.error();
-  c.code = d.value().f->o;
+  c.operation = d.value().f->o;
   auto a = read_simple_arg(rd, *d.value().f, d.value().kind);
   if (!a) return a.error();
-  c.a = a.value();
+  c.argument = a.value();
   for (int part = 0; part < 2 && !rd.empty() && can_continue(c, part + 1); ++part) {
     auto next = rd.read_u8();
     if (next.value() == code_output && part == 0) {
-      c.code2 = op::output;
-      auto x = rd.read<std::uint16_t>(byte_order::big);
-      if (!x) return x.error();
-      c.number = x.value();
-      FIELDCODEC_TRY_STATUS(read_pattern(rd, c.pat, true));
-      FIELDCODEC_TRY_STATUS(check_pattern(c.pat, c.number, true));
+      c.second_operation = op::output;
+      FIELDCODEC_TRY_STATUS(read_output(rd, c));
       break;
     }
     auto nd = find_code(next.value());
@@ -713,11 +918,11 @@ namespace detail {
     auto na = read_simple_arg(rd, *nd.value().f, nd.value().kind);
     if (!na) return na.error();
     if (part == 0) {
-      c.code2 = nd.value().f->o;
-      c.b = na.value();
+      c.second_operation = nd.value().f->o;
+      c.second_argument = na.value();
     } else {
-      c.code3 = nd.value().f->o;
-      c.c = na.value();
+      c.third_operation = nd.value().f->o;
+      c.third_argument = na.value();
     }
   }
   if (!combination_allowed(c)) return errc::unknown_command;
@@ -726,7 +931,8 @@ namespace detail {
 
 } // namespace detail
 
-/// Content bytes (no length byte) → command. All bytes must be used.
+/// Content bytes (no length byte) → command. All bytes must be used. DSP values on the 0.001
+/// grid come back as the decimal they stand for (kind value), others as dsp_raw.
 /// Errors: truncated (content ends inside a command), bad_length (bytes left over),
 /// unknown_command (command, operand, comparison or arithmetic code not in the table, or a
 /// combination the table does not have), bad_digit (y not 0x30/0x31), out_of_range (non-zero

@@ -3,8 +3,8 @@
 //
 // Text form (one space between words, no spaces inside an operand expression):
 //   NOP  SETS  END  RETURN  VALIDP|VALIDC|VALIDF  SETC n
-//   POSA|POSR|SPEED|SETM x      x = decimal with up to 3 places, Pn, Vn; POSA HOME, POSR CAM,
-//                               SPEED SYNC
+//   POSA|POSR|SPEED|SETM x      x = decimal with up to 3 places (in the command's unit), Pn,
+//                               Vn; POSA HOME, POSR CAM, SPEED SYNC
 //   ACCEL|WAIT|REPEAT|LOOP x    x = integer 0..65535, Pn, Vn; WAIT START
 //   GOTO n|EXT  GOSUB n|EXT
 //   IF Ex=y… GOTO|GOSUB n   IF ERROR …   IF STOP …   IF <o1><cmp><o2> GOTO|GOSUB n
@@ -12,7 +12,9 @@
 //   POSA x WAIT y   POSR x SPEED y [ACCEL z]   POSR x WAIT y   POSR x OUTPUT Ax=y…
 //   SPEED x WAIT y   WAIT POSA x   WAIT POSR x
 // Operands: Pn, Sn, Vn or a decimal constant; comparisons = < > <= >= <>; arithmetic
-// + - * / \ %. DSP values print with the fewest decimals (at most 3) that show them.
+// + - * / \ %. DSP values print with the fewest decimals (at most 3) that show them; a raw DSP
+// value off the 0.001 grid (nx::dsp_raw) has no program text: format_command says
+// not_representable instead of printing a rounded number.
 #pragma once
 
 #include <fieldcodec/compax/dsp_number.hpp>
@@ -37,13 +39,18 @@ namespace detail {
 struct text_writer {
   std::span<char> out;
   std::size_t pos = 0;
-  bool ok = true;
+  errc error = errc::truncated; ///< meaningful only when `failed`
+  bool failed = false;
 
+  constexpr void fail(errc e) noexcept {
+    if (!failed) error = e;
+    failed = true;
+  }
   constexpr void put(char c) noexcept {
     if (pos < out.size()) {
       out[pos++] = c;
     } else {
-      ok = false;
+      fail(errc::buffer_too_small);
     }
   }
   constexpr void put(std::string_view s) noexcept {
@@ -54,12 +61,11 @@ struct text_writer {
     auto n = ascii::format_unsigned(v, tmp);
     put(std::string_view{tmp, n.value()});
   }
-  constexpr void put_dsp(dsp_number d) noexcept {
+  constexpr void put_decimal(decimal d) noexcept {
     char tmp[32]{};
-    const decimal dec = normalize(decimal{d.to_thousandths(), 3});
-    auto n = format_decimal(dec, tmp);
+    auto n = format_decimal(normalize(d), tmp);
     if (!n) {
-      ok = false;
+      fail(n.error());
       return;
     }
     put(std::string_view{tmp, n.value()});
@@ -105,25 +111,22 @@ inline constexpr std::array<names, 14> op_names{{
   return o == op::posa || o == op::posr || o == op::speed || o == op::setm;
 }
 
+/// The argument as text (the command was validated by encode_content first, so numbers are in
+/// range and values have the places their field allows).
 constexpr void put_arg(text_writer &w, op o, const arg &a) noexcept {
   const names *n = find_names(o);
   switch (a.kind) {
   case arg_kind::special: w.put(n->special); return;
   case arg_kind::parameter:
     w.put('P');
-    w.put_unsigned(static_cast<std::uint64_t>(a.value));
+    w.put_decimal(a.value());
     return;
   case arg_kind::variable:
     w.put('V');
-    w.put_unsigned(static_cast<std::uint64_t>(a.value));
+    w.put_decimal(a.value());
     return;
-  case arg_kind::value:
-    if (is_dsp_op(o)) {
-      w.put_dsp(dsp_number{a.value});
-    } else {
-      w.put_unsigned(static_cast<std::uint64_t>(a.value));
-    }
-    return;
+  case arg_kind::value: w.put_decimal(a.value()); return;
+  case arg_kind::dsp_raw: w.fail(errc::not_representable); return;
   }
 }
 
@@ -138,12 +141,18 @@ constexpr void put_simple(text_writer &w, op o, const arg &a) noexcept {
 
 constexpr void put_operand(text_writer &w, const operand &o) noexcept {
   switch (o.type) {
-  case operand_type::constant: w.put_dsp(o.constant); return;
+  case operand_type::constant:
+    if (o.raw) {
+      w.fail(errc::not_representable);
+    } else {
+      w.put_decimal(o.value());
+    }
+    return;
   case operand_type::parameter: w.put('P'); break;
   case operand_type::status: w.put('S'); break;
   case operand_type::variable: w.put('V'); break;
   }
-  w.put_unsigned(o.number);
+  w.put_decimal(o.value());
 }
 
 [[nodiscard]] constexpr std::string_view symbol(comparison c) noexcept {
@@ -170,32 +179,32 @@ constexpr void put_operand(text_writer &w, const operand &o) noexcept {
   return '?';
 }
 
-constexpr void put_pattern(text_writer &w, char letter, std::uint16_t x,
-                           const pattern &p) noexcept {
+constexpr void put_pattern(text_writer &w, char letter, std::int64_t x, const pattern &p) noexcept {
   w.put(letter);
-  w.put_unsigned(x);
+  w.put_unsigned(static_cast<std::uint64_t>(x));
   w.put('=');
   for (std::size_t i = 0; i < p.count; ++i) w.put(static_cast<char>('0' + p.digits[i]));
 }
 
-constexpr void put_jump(text_writer &w, jump j, std::uint16_t target) noexcept {
+constexpr void put_jump(text_writer &w, jump j, std::int64_t target) noexcept {
   w.put(j == jump::gosub ? " GOSUB " : " GOTO ");
-  w.put_unsigned(target);
+  w.put_unsigned(static_cast<std::uint64_t>(target));
 }
 
 } // namespace detail
 
 /// Write the program text of `c` into `out`; returns the number of characters.
-/// Errors: those of encode_content (the command is validated first), buffer_too_small.
+/// Errors: those of encode_content (the command is validated first), not_representable (a raw
+/// DSP value off the 0.001 grid: the program text has no spelling for it), buffer_too_small.
 [[nodiscard]] constexpr result<std::size_t> format_command(const command &c,
                                                            std::span<char> out) noexcept {
   std::array<std::uint8_t, content_max> scratch{};
   if (auto e = encode_content(c, scratch); !e) return e.error();
   detail::text_writer w{out};
-  switch (c.code) {
+  switch (c.operation) {
   case op::valid:
     w.put("VALID");
-    w.put(c.letter);
+    w.put(c.valid_letter);
     break;
   case op::return_: w.put("RETURN"); break;
   case op::if_input:
@@ -205,52 +214,52 @@ constexpr void put_jump(text_writer &w, jump j, std::uint16_t target) noexcept {
     } else if (c.number == input_stop) {
       w.put("STOP");
     } else {
-      detail::put_pattern(w, 'E', c.number, c.pat);
+      detail::put_pattern(w, 'E', c.number, c.io_pattern);
     }
-    detail::put_jump(w, c.jmp, c.target);
+    detail::put_jump(w, c.jump_kind, c.target);
     break;
   case op::if_compare:
     w.put("IF ");
-    detail::put_operand(w, c.o1);
-    w.put(detail::symbol(c.cmp));
-    detail::put_operand(w, c.o2);
-    detail::put_jump(w, c.jmp, c.target);
+    detail::put_operand(w, c.left);
+    w.put(detail::symbol(c.comparison_op));
+    detail::put_operand(w, c.right);
+    detail::put_jump(w, c.jump_kind, c.target);
     break;
   case op::output:
     w.put("OUTPUT ");
-    detail::put_pattern(w, 'A', c.number, c.pat);
+    detail::put_pattern(w, 'A', c.number, c.io_pattern);
     break;
   case op::assign_p:
   case op::assign_v:
-    w.put(c.code == op::assign_p ? 'P' : 'V');
-    w.put_unsigned(c.number);
+    w.put(c.operation == op::assign_p ? 'P' : 'V');
+    w.put_unsigned(static_cast<std::uint64_t>(c.number));
     w.put('=');
-    detail::put_operand(w, c.o1);
-    if (c.ari != arithmetic::none) {
-      w.put(detail::symbol(c.ari));
-      detail::put_operand(w, c.o2);
+    detail::put_operand(w, c.left);
+    if (c.arithmetic_op != arithmetic::none) {
+      w.put(detail::symbol(c.arithmetic_op));
+      detail::put_operand(w, c.right);
     }
     break;
   default:
-    if (c.code == op::wait && c.code2 != op::none) {
+    if (c.operation == op::wait && c.second_operation != op::none) {
       w.put("WAIT"); // WAIT POSA x / WAIT POSR x: the START is implied
     } else {
-      detail::put_simple(w, c.code, c.a);
+      detail::put_simple(w, c.operation, c.argument);
     }
-    if (c.code2 == op::output) {
+    if (c.second_operation == op::output) {
       w.put(" OUTPUT ");
-      detail::put_pattern(w, 'A', c.number, c.pat);
-    } else if (c.code2 != op::none) {
+      detail::put_pattern(w, 'A', c.number, c.io_pattern);
+    } else if (c.second_operation != op::none) {
       w.put(' ');
-      detail::put_simple(w, c.code2, c.b);
+      detail::put_simple(w, c.second_operation, c.second_argument);
     }
-    if (c.code3 != op::none) {
+    if (c.third_operation != op::none) {
       w.put(' ');
-      detail::put_simple(w, c.code3, c.c);
+      detail::put_simple(w, c.third_operation, c.third_argument);
     }
     break;
   }
-  if (!w.ok) return errc::buffer_too_small;
+  if (w.failed) return w.error;
   return w.pos;
 }
 
@@ -280,10 +289,13 @@ struct tokens {
   return static_cast<std::uint16_t>(v.value());
 }
 
-[[nodiscard]] constexpr result<dsp_number> parse_dsp(std::string_view s) noexcept {
+/// A DSP number as the program writes it: a decimal with at most 3 places in the command's
+/// unit. Errors: those of parse_fixed (not_representable for a 4th place), overflow (DSP range).
+[[nodiscard]] constexpr result<decimal> parse_dsp(std::string_view s) noexcept {
   auto t = parse_fixed(s, 3);
   if (!t) return t.error();
-  return dsp_number::from_thousandths(t.value());
+  if (auto n = dsp_number::from_thousandths(t.value()); !n) return n.error();
+  return normalize(decimal{t.value(), 3});
 }
 
 [[nodiscard]] constexpr result<arg> parse_arg(op o, std::string_view s) noexcept {
@@ -298,7 +310,7 @@ struct tokens {
   if (is_dsp_op(o)) {
     auto d = parse_dsp(s);
     if (!d) return d.error();
-    return number(d.value());
+    return value(d.value());
   }
   auto v = parse_u16(s);
   if (!v) return v.error();
@@ -353,16 +365,16 @@ struct tokens {
   auto p = parse_pattern(s.substr(eq + 1U));
   if (!p) return p.error();
   c.number = x.value();
-  c.pat = p.value();
+  c.io_pattern = p.value();
   return {};
 }
 
 [[nodiscard]] constexpr status parse_jump(tokens &t, command &c) noexcept {
   const auto j = t.next();
   if (j == "GOTO") {
-    c.jmp = jump::goto_;
+    c.jump_kind = jump::goto_;
   } else if (j == "GOSUB") {
-    c.jmp = jump::gosub;
+    c.jump_kind = jump::gosub;
   } else {
     return errc::bad_syntax;
   }
@@ -391,10 +403,10 @@ struct tokens {
   if (cond == "ERROR" || cond == "STOP") {
     c = make_if_input(cond == "ERROR" ? input_error : input_stop, pattern{1, {1}}, jump::goto_, 0);
   } else if (!cond.empty() && cond.front() == 'E') {
-    c.code = op::if_input;
+    c.operation = op::if_input;
     FIELDCODEC_TRY_STATUS(parse_io(cond, 'E', c));
   } else {
-    c.code = op::if_compare;
+    c.operation = op::if_compare;
     std::string_view s = cond;
     const std::size_t n1 = operand_length(s);
     auto a = parse_operand(s.substr(0, n1));
@@ -404,9 +416,9 @@ struct tokens {
     if (!cmp) return cmp.error();
     auto b = parse_operand(s);
     if (!b) return b.error();
-    c.o1 = a.value();
-    c.cmp = cmp.value();
-    c.o2 = b.value();
+    c.left = a.value();
+    c.comparison_op = cmp.value();
+    c.right = b.value();
   }
   FIELDCODEC_TRY_STATUS(parse_jump(t, c));
   return c;
@@ -414,7 +426,7 @@ struct tokens {
 
 [[nodiscard]] constexpr result<command> parse_assign(std::string_view s) noexcept {
   command c{};
-  c.code = s.front() == 'P' ? op::assign_p : op::assign_v;
+  c.operation = s.front() == 'P' ? op::assign_p : op::assign_v;
   const auto eq = s.find('=');
   if (eq == std::string_view::npos) return errc::bad_syntax;
   auto n = parse_u16(s.substr(1, eq - 1U));
@@ -424,18 +436,18 @@ struct tokens {
   const std::size_t n1 = operand_length(s);
   auto a = parse_operand(s.substr(0, n1));
   if (!a) return a.error();
-  c.o1 = a.value();
+  c.left = a.value();
   s.remove_prefix(n1);
   if (s.empty()) return c;
   constexpr std::array<arithmetic, 6> ops{arithmetic::add, arithmetic::sub,     arithmetic::mul,
                                           arithmetic::div, arithmetic::int_div, arithmetic::mod};
   for (const arithmetic o : ops) {
-    if (s.front() == symbol(o)) c.ari = o;
+    if (s.front() == symbol(o)) c.arithmetic_op = o;
   }
-  if (c.ari == arithmetic::none) return errc::bad_syntax;
+  if (c.arithmetic_op == arithmetic::none) return errc::bad_syntax;
   auto b = parse_operand(s.substr(1));
   if (!b) return b.error();
-  c.o2 = b.value();
+  c.right = b.value();
   return c;
 }
 
@@ -445,7 +457,7 @@ struct tokens {
   if (w == "IF") return parse_if(t);
   if (w == "OUTPUT") {
     command c{};
-    c.code = op::output;
+    c.operation = op::output;
     FIELDCODEC_TRY_STATUS(parse_io(t.next(), 'A', c));
     return c;
   }
@@ -463,11 +475,11 @@ struct tokens {
     const auto save = t;
     const auto nw = t.next();
     if (nw == "POSA" || nw == "POSR") {
-      c.a = special();
-      c.code2 = nw == "POSA" ? op::posa : op::posr;
-      auto b = parse_arg(c.code2, t.next());
+      c.argument = special();
+      c.second_operation = nw == "POSA" ? op::posa : op::posr;
+      auto b = parse_arg(c.second_operation, t.next());
       if (!b) return b.error();
-      c.b = b.value();
+      c.second_argument = b.value();
       return c;
     }
     t = save;
@@ -475,12 +487,12 @@ struct tokens {
   if (f->s != shape::none && f->s != shape::zero) {
     auto a = parse_arg(n->o, t.next());
     if (!a) return a.error();
-    c.a = a.value();
+    c.argument = a.value();
   }
   for (int part = 0; part < 2 && !t.done() && can_continue(c, part + 1); ++part) {
     const auto nw = t.next();
     if (nw == "OUTPUT" && part == 0) {
-      c.code2 = op::output;
+      c.second_operation = op::output;
       FIELDCODEC_TRY_STATUS(parse_io(t.next(), 'A', c));
       break;
     }

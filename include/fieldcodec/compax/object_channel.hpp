@@ -12,6 +12,8 @@
 // writing index pointer 0 in between (object_channel below does that).
 #pragma once
 
+#include <fieldcodec/compax/values.hpp>
+#include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
@@ -44,18 +46,34 @@ struct object_request {
   friend constexpr bool operator==(const object_request &, const object_request &) = default;
 };
 
-/// A read request for `pointer`/`sub`.
-[[nodiscard]] constexpr object_request object_read(std::uint8_t pointer,
-                                                   std::uint8_t sub = 0) noexcept {
-  return object_request{object_access::read, pointer, sub, {}};
+namespace detail {
+/// Pointer (0..126) and sub-index (0..255) of any integer types. Errors: out_of_range.
+template <integer_argument P, integer_argument S>
+[[nodiscard]] constexpr result<object_request> object_address(object_access a, P pointer,
+                                                              S sub) noexcept {
+  auto p = checked_narrow<std::uint8_t>(pointer);
+  auto s = checked_narrow<std::uint8_t>(sub);
+  if (!p || !s || p.value() > object_pointer_max) return errc::out_of_range;
+  return object_request{a, p.value(), s.value(), {}};
+}
+} // namespace detail
+
+/// A read request for `pointer`/`sub` (any integer types; pointer 0 is the "no object" request).
+/// Errors: out_of_range (pointer above 126, sub-index above 255 or negative).
+template <integer_argument P, integer_argument S = std::uint8_t>
+[[nodiscard]] constexpr result<object_request> object_read(P pointer, S sub = 0) noexcept {
+  return detail::object_address(object_access::read, pointer, sub);
 }
 
 /// A write request; `data` (1..4 bytes, the object's bytes as on PCP) is left aligned.
-/// Errors: bad_length (empty or more than 4 bytes).
+/// Errors: out_of_range (pointer, sub-index), bad_length (data empty or more than 4 bytes).
+template <integer_argument P, integer_argument S>
 [[nodiscard]] constexpr result<object_request>
-object_write(std::uint8_t pointer, std::uint8_t sub, std::span<const std::uint8_t> data) noexcept {
+object_write(P pointer, S sub, std::span<const std::uint8_t> data) noexcept {
+  auto a = detail::object_address(object_access::write, pointer, sub);
+  if (!a) return a.error();
   if (data.empty() || data.size() > object_data_max) return errc::bad_length;
-  object_request r{object_access::write, pointer, sub, {}};
+  object_request r = a.value();
   for (std::size_t i = 0; i < data.size(); ++i) r.data[i] = data[i];
   return r;
 }

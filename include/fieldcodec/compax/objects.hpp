@@ -1,12 +1,16 @@
 // fieldcodec — COMPAX objects by dictionary entry: encode and decode an object's data bytes
 // in engineering units, whatever its coding (big-endian integer with scale, signed BCD
-// position, BCD speed, boolean). Works with any od::entry, in particular the generated
+// position, BCD speed, boolean). Works with any od::descriptor, in particular the generated
 // descriptors of include/fieldcodec/dictionaries/compax_objects.hpp:
 //
 //   namespace d = fieldcodec::dictionaries::compax_objects;
 //   std::array<std::uint8_t, 4> buf{};
 //   compax::encode_object(d::lage_ziel, decimal{-1000, 0}, buf);        // FF F0 BD C0
+//   compax::encode_object(d::grenzen, 1, decimal{-1650, 0}, buf);      // FF E6 D2 B0
 //   compax::encode_px(d::dictionary, 11, decimal{5000, 0}, buf);        // 00 4C 4B 40
+//
+// A single object (VAR) is named by its descriptor; an element of an ARRAY or RECORD (GRENZEN,
+// Px, VX, S7_S8, …) by the object and its sub-index, so the call says which element it means.
 #pragma once
 
 #include <fieldcodec/compax/position.hpp>
@@ -17,6 +21,7 @@
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/object.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -162,20 +167,66 @@ enum class coding : std::uint8_t {
   return errc::type_mismatch;
 }
 
-/// Px parameter `n` (1..250) in engineering units, with the resolution of its dictionary row.
-/// Errors: unknown_object (no such parameter), and those of encode_object.
-[[nodiscard]] constexpr result<std::size_t> encode_px(const od::dictionary &d, std::uint8_t n,
-                                                      decimal eu,
+namespace detail {
+/// The element `sub` of an ARRAY/RECORD object. Any integer type. Errors: unknown_object.
+template <integer_argument S>
+[[nodiscard]] constexpr result<od::descriptor> element(const od::object &o, S sub) noexcept {
+  auto s = checked_narrow<std::uint8_t>(sub);
+  if (!s) return errc::unknown_object;
+  return o.at(s.value());
+}
+/// The entry (index, sub) of a dictionary. Any integer type. Errors: unknown_object.
+template <integer_argument S>
+[[nodiscard]] constexpr result<od::descriptor> element(const od::dictionary &d, std::uint16_t index,
+                                                       S sub) noexcept {
+  auto s = checked_narrow<std::uint8_t>(sub);
+  if (!s) return errc::unknown_object;
+  return d.at(index, s.value());
+}
+} // namespace detail
+
+/// Element `sub` of an ARRAY or RECORD object (e.g. GRENZEN sub 1, the negative limit) in
+/// engineering units. `sub` of any integer type. Errors: unknown_object (no such sub-index),
+/// and those of encode_object(descriptor, …).
+template <integer_argument S>
+[[nodiscard]] constexpr result<std::size_t> encode_object(const od::object &o, S sub, decimal eu,
+                                                          std::span<std::uint8_t> out) noexcept {
+  auto e = detail::element(o, sub);
+  if (!e) return e.error();
+  return encode_object(e.value(), eu, out);
+}
+
+/// Element `sub` of an ARRAY or RECORD object from its bytes. Errors: unknown_object, and those
+/// of decode_object(descriptor, …).
+template <integer_argument S>
+[[nodiscard]] constexpr result<decimal> decode_object(const od::object &o, S sub,
+                                                      std::span<const std::uint8_t> in,
+                                                      unsigned places = 6) noexcept {
+  auto e = detail::element(o, sub);
+  if (!e) return e.error();
+  return decode_object(e.value(), in, places);
+}
+
+/// An ARRAY or RECORD has no single value: name the element, encode_object(d::grenzen, 1, …).
+std::size_t encode_object(const od::object &, decimal, std::span<std::uint8_t>) = delete;
+/// An ARRAY or RECORD has no single value: name the element, decode_object(d::grenzen, 1, …).
+decimal decode_object(const od::object &, std::span<const std::uint8_t>, unsigned = 6) = delete;
+
+/// Px parameter `n` (1..250, any integer type) in engineering units, with the resolution of its
+/// dictionary row. Errors: unknown_object (no such parameter), and those of encode_object.
+template <integer_argument N>
+[[nodiscard]] constexpr result<std::size_t> encode_px(const od::dictionary &d, N n, decimal eu,
                                                       std::span<std::uint8_t> out) noexcept {
-  auto e = d.at(index::px, n);
+  auto e = detail::element(d, index::px, n);
   if (!e) return e.error();
   return encode_object(e.value(), eu, out);
 }
 
 /// Px parameter `n` from its 4 bytes. Errors: unknown_object, and those of decode_object.
-[[nodiscard]] constexpr result<decimal> decode_px(const od::dictionary &d, std::uint8_t n,
+template <integer_argument N>
+[[nodiscard]] constexpr result<decimal> decode_px(const od::dictionary &d, N n,
                                                   std::span<const std::uint8_t> in) noexcept {
-  auto e = d.at(index::px, n);
+  auto e = detail::element(d, index::px, n);
   if (!e) return e.error();
   return decode_object(e.value(), in);
 }

@@ -8,12 +8,15 @@
 #pragma once
 
 #include <fieldcodec/core/bcd.hpp>
+#include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 namespace fieldcodec::compax {
 
@@ -26,13 +29,14 @@ inline constexpr unsigned position_places = 3;
 
 using bcd_position_bytes = std::array<std::uint8_t, bcd_position_size>;
 
-/// A position in 0.001 mm → 6 BCD bytes. Errors: out_of_range (beyond ±4 000 000.000).
-[[nodiscard]] constexpr result<bcd_position_bytes>
-encode_bcd_position(std::int64_t thousandths) noexcept {
-  if (thousandths > bcd_position_limit || thousandths < -bcd_position_limit) {
+/// A position in 0.001 mm (any integer type) → 6 BCD bytes.
+/// Errors: out_of_range (beyond ±4 000 000.000).
+template <integer_argument T>
+[[nodiscard]] constexpr result<bcd_position_bytes> encode_bcd_position(T thousandths) noexcept {
+  if (!in_closed_range(thousandths, -bcd_position_limit, bcd_position_limit)) {
     return errc::out_of_range;
   }
-  return bcd::encode_signed<bcd_position_size>(thousandths);
+  return bcd::encode_signed<bcd_position_size>(checked_narrow<std::int64_t>(thousandths).value());
 }
 
 /// A position given as an exact decimal in mm ("7350.15"). Errors: not_representable (finer
@@ -64,13 +68,14 @@ inline constexpr std::uint32_t bcd_speed_max = 600'000; ///< 600.000 %
 
 using bcd_speed_bytes = std::array<std::uint8_t, bcd_speed_size>;
 
-/// A speed in 0.001 % → 3 BCD bytes (POSR0SPEED). Errors: out_of_range (outside 1..600 000).
-[[nodiscard]] constexpr result<bcd_speed_bytes>
-encode_bcd_speed(std::uint32_t thousandths_percent) noexcept {
-  if (thousandths_percent < bcd_speed_min || thousandths_percent > bcd_speed_max) {
+/// A speed in 0.001 % (any integer type) → 3 BCD bytes (POSR0SPEED).
+/// Errors: out_of_range (outside 1..600 000).
+template <integer_argument T>
+[[nodiscard]] constexpr result<bcd_speed_bytes> encode_bcd_speed(T thousandths_percent) noexcept {
+  if (!in_closed_range(thousandths_percent, bcd_speed_min, bcd_speed_max)) {
     return errc::out_of_range;
   }
-  return bcd::encode<bcd_speed_size>(thousandths_percent);
+  return bcd::encode<bcd_speed_size>(checked_narrow<std::uint64_t>(thousandths_percent).value());
 }
 
 /// 3 BCD bytes → speed in 0.001 %. Errors: truncated, bad_length, bad_digit, out_of_range.

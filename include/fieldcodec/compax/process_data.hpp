@@ -39,15 +39,15 @@ inline constexpr std::size_t assignment_size = 3;
 /// index high byte, index low byte, sub-index.
 [[nodiscard]] constexpr std::array<std::uint8_t, assignment_size>
 encode_assignment(pd_assignment a) noexcept {
-  return {static_cast<std::uint8_t>(a.index >> 8U), static_cast<std::uint8_t>(a.index & 0xFFU),
-          a.sub};
+  const auto index = to_bytes<std::uint16_t>(a.index, byte_order::big);
+  return {index[0], index[1], a.sub};
 }
 /// Errors: truncated, bad_length.
 [[nodiscard]] constexpr result<pd_assignment>
 decode_assignment(std::span<const std::uint8_t> in) noexcept {
   if (in.size() < assignment_size) return errc::truncated;
   if (in.size() > assignment_size) return errc::bad_length;
-  return pd_assignment{static_cast<std::uint16_t>((in[0] << 8U) | in[1]), in[2]};
+  return pd_assignment{load<std::uint16_t>(in, byte_order::big).value(), in[2]};
 }
 
 /// PE_SELECT / PA_SELECT (record of 19 bytes): sub-index 1 = channel length (bytes), then for

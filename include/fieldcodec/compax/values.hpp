@@ -7,6 +7,7 @@
 #pragma once
 
 #include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/integer.hpp>
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
@@ -16,8 +17,20 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 
 namespace fieldcodec::compax {
+
+namespace detail {
+/// An integer argument of any type as an int64; values above INT64_MAX (only an unsigned 64-bit
+/// argument has them) become INT64_MAX, which every field's range check refuses: builders that
+/// cannot fail keep the value this way and the encoder reports it, nothing wraps.
+template <integer_argument T>
+[[nodiscard]] constexpr std::int64_t saturate_i64(T v) noexcept {
+  auto n = checked_narrow<std::int64_t>(v);
+  return n ? n.value() : std::numeric_limits<std::int64_t>::max();
+}
+} // namespace detail
 
 /// Byte order of every integer object on this bus.
 inline constexpr byte_order bus_order = byte_order::big;
@@ -83,7 +96,8 @@ template <wire_integer T>
 }
 
 /// Visible strings (COMMAND, P, S, N): characters 0x20..0x7F, padded with spaces to the
-/// object's length. Errors: too_long (text longer than `out`), bad_character.
+/// object's length (the manual's examples, e.g. 2.4.11 COMMAND, pad with 0x20). Errors: too_long
+/// (text longer than `out`), bad_character.
 [[nodiscard]] constexpr status encode_visible_string(std::string_view text,
                                                      std::span<std::uint8_t> out) noexcept {
   if (text.size() > out.size()) return errc::too_long;
@@ -95,13 +109,21 @@ template <wire_integer T>
   return {};
 }
 
-/// The text of a visible string without its trailing space padding; the characters stay in
-/// `in` (no copy). Errors: bad_character (a byte outside 0x20..0x7F).
+/// The text of a visible string without its padding; the characters stay in `in` (no copy).
+/// Padding is what follows the text: spaces (as the manual's examples and encode_visible_string
+/// write it) or NUL bytes (as some drives and masters fill a reply). The text ends at the first
+/// NUL; after it only NUL and space may follow; trailing spaces of the text are padding too.
+/// Errors: bad_character (a byte outside 0x20..0x7F in the text, or anything but NUL or space
+/// after the first NUL).
 [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
 decode_visible_string(std::span<const std::uint8_t> in) noexcept {
-  std::size_t n = in.size();
-  for (const std::uint8_t b : in) {
-    if (b < 0x20U || b > 0x7FU) return errc::bad_character;
+  std::size_t n = 0;
+  while (n < in.size() && in[n] != 0x00U) {
+    if (in[n] < 0x20U || in[n] > 0x7FU) return errc::bad_character;
+    ++n;
+  }
+  for (std::size_t i = n; i < in.size(); ++i) {
+    if (in[i] != 0x00U && in[i] != 0x20U) return errc::bad_character;
   }
   while (n > 0U && in[n - 1U] == 0x20U) --n;
   return in.first(n);

@@ -1145,7 +1145,7 @@ inline constexpr std::array<od::entry, 1479> entries{{
     {.index = 0x5FE8, .sub = 248, .object = od::object_code::array, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x5FE8, .sub = 249, .object = od::object_code::array, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x5FE8, .sub = 250, .object = od::object_code::array, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
-    {.index = 0x5FE9, .type = od::data_type::unsigned8, .access_type = od::access::wo, .pdo = od::pdo_mapping::rx},
+    {.index = 0x5FE9, .type = od::data_type::unsigned8, .access_type = od::access::wo, .pdo = od::pdo_mapping::rx, .low = od::signed_number(1), .high = od::signed_number(21)},
     {.index = 0x5FEA, .type = od::data_type::unsigned16, .access_type = od::access::wo, .flags = od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(65000)},
     {.index = 0x5FEB, .type = od::data_type::unsigned16, .access_type = od::access::wo, .flags = od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(65000)},
     {.index = 0x5FEC, .type = od::data_type::integer16, .pdo = od::pdo_mapping::rx, .flags = od::flag::scaled},

@@ -21,7 +21,7 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_canopen.eds";
 
-inline constexpr std::array<od::entry, 448> entries{{
+inline constexpr std::array<od::entry, 463> entries{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(131474U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1005, .type = od::data_type::unsigned32, .low = od::unsigned_number(1U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(2147483776U)},
@@ -115,6 +115,12 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x1613, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1617362976U)},
     {.index = 0x1614, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(1U)},
     {.index = 0x1614, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1618149392U)},
+    {.index = 0x1615, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1615, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1615, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1616, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1616, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1616, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
     {.index = 0x1617, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(2U)},
     {.index = 0x1617, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1614807056U)},
     {.index = 0x1617, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(537002016U)},
@@ -185,11 +191,20 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x1A01, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1617166368U)},
     {.index = 0x1A10, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(1U)},
     {.index = 0x1A10, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1627193376U)},
+    {.index = 0x1A11, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A11, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A11, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A12, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A12, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A12, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
     {.index = 0x1A13, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(2U)},
     {.index = 0x1A13, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1626603552U)},
     {.index = 0x1A13, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(537264160U)},
     {.index = 0x1A14, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(1U)},
     {.index = 0x1A14, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1618477072U)},
+    {.index = 0x1A15, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A15, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A15, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
     {.index = 0x1A16, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(2U)},
     {.index = 0x1A16, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(537198624U)},
     {.index = 0x1A16, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(537264160U)},
@@ -204,7 +219,7 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x2005, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2006, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2007, .type = od::data_type::unsigned16, .low = od::unsigned_number(100U), .high = od::unsigned_number(10000U), .default_value = od::unsigned_number(1000U)},
-    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro},
+    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x2009, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x200A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x5000, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
@@ -332,7 +347,7 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x5003, .sub = 58, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 59, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(1), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 60, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(1), .default_value = od::signed_number(0)},
-    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(0), .default_value = od::signed_number(0)},
+    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 62, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(2), .default_value = od::signed_number(1)},
     {.index = 0x5003, .sub = 63, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(3), .default_value = od::signed_number(1)},
     {.index = 0x5003, .sub = 64, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(500), .high = od::signed_number(100000), .default_value = od::signed_number(5000)},
@@ -430,10 +445,10 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x5010, .sub = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .low = od::signed_number(0), .high = od::signed_number(7), .default_value = od::signed_number(0)},
     {.index = 0x5010, .sub = 13, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(1000), .default_value = od::signed_number(50)},
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(10000000), .default_value = od::signed_number(1000)},
-    {.index = 0x5011, .type = od::data_type::visible_string},
-    {.index = 0x5012, .type = od::data_type::visible_string},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 8, .default_text = "no error"sv},
-    {.index = 0x5021, .type = od::data_type::visible_string},
+    {.index = 0x5011, .type = od::data_type::visible_string, .size = 30},
+    {.index = 0x5012, .type = od::data_type::visible_string, .size = 30},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 100, .default_text = "no error"sv},
+    {.index = 0x5021, .type = od::data_type::visible_string, .size = 32},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6041, .type = od::data_type::unsigned16, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
@@ -472,7 +487,7 @@ inline constexpr std::array<od::entry, 448> entries{{
     {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .default_text = "http://www.jennyscience.ch"sv},
 }};
 
-inline constexpr std::array<od::entry_info, 448> infos{{
+inline constexpr std::array<od::entry_info, 463> infos{{
     {.name = "Device Type"sv},
     {.name = "Error Register"sv},
     {.name = "COB-ID SYNC"sv},
@@ -567,6 +582,12 @@ inline constexpr std::array<od::entry_info, 448> infos{{
     {.name = "Nbr of Entries"sv},
     {.name = "I Force Max"sv},
     {.name = "Nbr of Entries"sv},
+    {.name = "Mapping Entry 1"sv},
+    {.name = "Mapping Entry 2"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Mapping Entry 1"sv},
+    {.name = "Mapping Entry 2"sv},
+    {.name = "Nbr of Entries"sv},
     {.name = "Controlword"sv},
     {.name = "Reserved for future"sv},
     {.name = "Nbr of Entries"sv},
@@ -637,10 +658,19 @@ inline constexpr std::array<od::entry_info, 448> infos{{
     {.name = "Nbr of Entries"sv},
     {.name = "Digital Inputs"sv},
     {.name = "Nbr of Entries"sv},
+    {.name = "Mapping Entry 1"sv},
+    {.name = "Mapping Entry 2"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Mapping Entry 1"sv},
+    {.name = "Mapping Entry 2"sv},
+    {.name = "Nbr of Entries"sv},
     {.name = "Actual Following Position Error"sv},
     {.name = "Process Status Register"sv},
     {.name = "Nbr of Entries"sv},
     {.name = "Actual Current"sv},
+    {.name = "Nbr of Entries"sv},
+    {.name = "Mapping Entry 1"sv},
+    {.name = "Mapping Entry 2"sv},
     {.name = "Nbr of Entries"sv},
     {.name = "I Force Actual"sv},
     {.name = "Process Status Register"sv},
@@ -935,46 +965,46 @@ inline constexpr od::descriptor manufacturer_hardware_version{entries[4], infos[
 inline constexpr od::descriptor manufacturer_software_version{entries[5], infos[5]}; // 0x100A
 inline constexpr od::descriptor cob_id_emcy{entries[6], infos[6]}; // 0x1014
 inline constexpr od::descriptor producer_heartbeat_time{entries[7], infos[7]}; // 0x1017
-inline constexpr od::descriptor s_curve_profile{entries[174], infos[174]}; // 0x2000
-inline constexpr od::descriptor reserved_2001{entries[175], infos[175]}; // 0x2001
-inline constexpr od::descriptor reserved_2002{entries[176], infos[176]}; // 0x2002
-inline constexpr od::descriptor reserved_2003{entries[177], infos[177]}; // 0x2003
-inline constexpr od::descriptor xenax_error_number{entries[178], infos[178]}; // 0x2004
-inline constexpr od::descriptor i_force_actual{entries[179], infos[179]}; // 0x2005
-inline constexpr od::descriptor process_status_register{entries[180], infos[180]}; // 0x2006
-inline constexpr od::descriptor pdo_cycle_time{entries[181], infos[181]}; // 0x2007
-inline constexpr od::descriptor motor_type{entries[182], infos[182]}; // 0x2008
-inline constexpr od::descriptor limit_force{entries[183], infos[183]}; // 0x2009
-inline constexpr od::descriptor force_actual_value{entries[184], infos[184]}; // 0x200A
-inline constexpr od::descriptor direct_commands{entries[185], infos[185]}; // 0x5000
-inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{entries[408], infos[408]}; // 0x5011
-inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{entries[409], infos[409]}; // 0x5012
-inline constexpr od::descriptor tell_error_string_tes{entries[410], infos[410]}; // 0x5020
-inline constexpr od::descriptor servo_identification_string_sid{entries[411], infos[411]}; // 0x5021
-inline constexpr od::descriptor error_code{entries[412], infos[412]}; // 0x603F
-inline constexpr od::descriptor controlword{entries[413], infos[413]}; // 0x6040
-inline constexpr od::descriptor statusword{entries[414], infos[414]}; // 0x6041
-inline constexpr od::descriptor modes_of_operation_requested{entries[415], infos[415]}; // 0x6060
-inline constexpr od::descriptor modes_of_operation_display{entries[416], infos[416]}; // 0x6061
-inline constexpr od::descriptor position_actual_value{entries[417], infos[417]}; // 0x6064
-inline constexpr od::descriptor following_position_error_window{entries[418], infos[418]}; // 0x6065
-inline constexpr od::descriptor target_position_window{entries[419], infos[419]}; // 0x6067
-inline constexpr od::descriptor position_window_time{entries[420], infos[420]}; // 0x6068
-inline constexpr od::descriptor velocity_actual_value{entries[421], infos[421]}; // 0x606C
-inline constexpr od::descriptor limit_i_force{entries[422], infos[422]}; // 0x6073
-inline constexpr od::descriptor motor_current_actual_value{entries[423], infos[423]}; // 0x6078
-inline constexpr od::descriptor target_position{entries[424], infos[424]}; // 0x607A
-inline constexpr od::descriptor speed{entries[428], infos[428]}; // 0x6081
-inline constexpr od::descriptor acceleration{entries[429], infos[429]}; // 0x6083
-inline constexpr od::descriptor quick_stop_deceleration{entries[430], infos[430]}; // 0x6085
-inline constexpr od::descriptor reference_methods{entries[431], infos[431]}; // 0x6098
-inline constexpr od::descriptor velocity_offset{entries[435], infos[435]}; // 0x60B1
-inline constexpr od::descriptor torque_offset{entries[436], infos[436]}; // 0x60B2
-inline constexpr od::descriptor actual_position_following_error{entries[440], infos[440]}; // 0x60F4
-inline constexpr od::descriptor digital_inputs{entries[441], infos[441]}; // 0x60FD
-inline constexpr od::descriptor target_velocity{entries[445], infos[445]}; // 0x60FF
-inline constexpr od::descriptor supported_modes_of_operation{entries[446], infos[446]}; // 0x6502
-inline constexpr od::descriptor product_website_address{entries[447], infos[447]}; // 0x6505
+inline constexpr od::descriptor s_curve_profile{entries[189], infos[189]}; // 0x2000
+inline constexpr od::descriptor reserved_2001{entries[190], infos[190]}; // 0x2001
+inline constexpr od::descriptor reserved_2002{entries[191], infos[191]}; // 0x2002
+inline constexpr od::descriptor reserved_2003{entries[192], infos[192]}; // 0x2003
+inline constexpr od::descriptor xenax_error_number{entries[193], infos[193]}; // 0x2004
+inline constexpr od::descriptor i_force_actual{entries[194], infos[194]}; // 0x2005
+inline constexpr od::descriptor process_status_register{entries[195], infos[195]}; // 0x2006
+inline constexpr od::descriptor pdo_cycle_time{entries[196], infos[196]}; // 0x2007
+inline constexpr od::descriptor motor_type{entries[197], infos[197]}; // 0x2008
+inline constexpr od::descriptor limit_force{entries[198], infos[198]}; // 0x2009
+inline constexpr od::descriptor force_actual_value{entries[199], infos[199]}; // 0x200A
+inline constexpr od::descriptor direct_commands{entries[200], infos[200]}; // 0x5000
+inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{entries[423], infos[423]}; // 0x5011
+inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{entries[424], infos[424]}; // 0x5012
+inline constexpr od::descriptor tell_error_string_tes{entries[425], infos[425]}; // 0x5020
+inline constexpr od::descriptor servo_identification_string_sid{entries[426], infos[426]}; // 0x5021
+inline constexpr od::descriptor error_code{entries[427], infos[427]}; // 0x603F
+inline constexpr od::descriptor controlword{entries[428], infos[428]}; // 0x6040
+inline constexpr od::descriptor statusword{entries[429], infos[429]}; // 0x6041
+inline constexpr od::descriptor modes_of_operation_requested{entries[430], infos[430]}; // 0x6060
+inline constexpr od::descriptor modes_of_operation_display{entries[431], infos[431]}; // 0x6061
+inline constexpr od::descriptor position_actual_value{entries[432], infos[432]}; // 0x6064
+inline constexpr od::descriptor following_position_error_window{entries[433], infos[433]}; // 0x6065
+inline constexpr od::descriptor target_position_window{entries[434], infos[434]}; // 0x6067
+inline constexpr od::descriptor position_window_time{entries[435], infos[435]}; // 0x6068
+inline constexpr od::descriptor velocity_actual_value{entries[436], infos[436]}; // 0x606C
+inline constexpr od::descriptor limit_i_force{entries[437], infos[437]}; // 0x6073
+inline constexpr od::descriptor motor_current_actual_value{entries[438], infos[438]}; // 0x6078
+inline constexpr od::descriptor target_position{entries[439], infos[439]}; // 0x607A
+inline constexpr od::descriptor speed{entries[443], infos[443]}; // 0x6081
+inline constexpr od::descriptor acceleration{entries[444], infos[444]}; // 0x6083
+inline constexpr od::descriptor quick_stop_deceleration{entries[445], infos[445]}; // 0x6085
+inline constexpr od::descriptor reference_methods{entries[446], infos[446]}; // 0x6098
+inline constexpr od::descriptor velocity_offset{entries[450], infos[450]}; // 0x60B1
+inline constexpr od::descriptor torque_offset{entries[451], infos[451]}; // 0x60B2
+inline constexpr od::descriptor actual_position_following_error{entries[455], infos[455]}; // 0x60F4
+inline constexpr od::descriptor digital_inputs{entries[456], infos[456]}; // 0x60FD
+inline constexpr od::descriptor target_velocity{entries[460], infos[460]}; // 0x60FF
+inline constexpr od::descriptor supported_modes_of_operation{entries[461], infos[461]}; // 0x6502
+inline constexpr od::descriptor product_website_address{entries[462], infos[462]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, {entries.data() + 8, 5}, {infos.data() + 8, 5}};
@@ -1081,119 +1111,139 @@ inline constexpr od::descriptor receive_pdo_mapping_param_20_target_position_err
 inline constexpr od::object receive_pdo_mapping_param_21{0x1614, od::object_code::record, "Receive PDO Mapping Param 21"sv, {entries.data() + 91, 2}, {infos.data() + 91, 2}};
 inline constexpr od::descriptor receive_pdo_mapping_param_21_nbr_of_entries{entries[91], infos[91]}; // 0x1614 sub 0
 inline constexpr od::descriptor receive_pdo_mapping_param_21_i_force_max{entries[92], infos[92]}; // 0x1614 sub 1
-inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24"sv, {entries.data() + 93, 3}, {infos.data() + 93, 3}};
-inline constexpr od::descriptor receive_pdo_mapping_param_24_nbr_of_entries{entries[93], infos[93]}; // 0x1617 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_24_controlword{entries[94], infos[94]}; // 0x1617 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_24_reserved_for_future{entries[95], infos[95]}; // 0x1617 sub 2
-inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1"sv, {entries.data() + 96, 6}, {infos.data() + 96, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_1_nbr_of_entries{entries[96], infos[96]}; // 0x1800 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_1_cob_id{entries[97], infos[97]}; // 0x1800 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_1_transmission_type{entries[98], infos[98]}; // 0x1800 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_1_inhibit_time{entries[99], infos[99]}; // 0x1800 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_1_compatibility_entry{entries[100], infos[100]}; // 0x1800 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_1_event_timer{entries[101], infos[101]}; // 0x1800 sub 5
-inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2"sv, {entries.data() + 102, 6}, {infos.data() + 102, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_2_nbr_of_entries{entries[102], infos[102]}; // 0x1801 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_2_cob_id{entries[103], infos[103]}; // 0x1801 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_2_transmission_type{entries[104], infos[104]}; // 0x1801 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_2_inhibit_time{entries[105], infos[105]}; // 0x1801 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_2_compatibility_entry{entries[106], infos[106]}; // 0x1801 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_2_event_timer{entries[107], infos[107]}; // 0x1801 sub 5
-inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17"sv, {entries.data() + 108, 6}, {infos.data() + 108, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_17_nbr_of_entries{entries[108], infos[108]}; // 0x1810 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_17_cob_id{entries[109], infos[109]}; // 0x1810 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_17_transmission_type{entries[110], infos[110]}; // 0x1810 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_17_inhibit_time{entries[111], infos[111]}; // 0x1810 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_17_compatibility_entry{entries[112], infos[112]}; // 0x1810 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_17_event_timer{entries[113], infos[113]}; // 0x1810 sub 5
-inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18"sv, {entries.data() + 114, 6}, {infos.data() + 114, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_18_nbr_of_entries{entries[114], infos[114]}; // 0x1811 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_18_cob_id{entries[115], infos[115]}; // 0x1811 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_18_transmission_type{entries[116], infos[116]}; // 0x1811 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_18_inhibit_time{entries[117], infos[117]}; // 0x1811 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_18_compatibility_entry{entries[118], infos[118]}; // 0x1811 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_18_event_timer{entries[119], infos[119]}; // 0x1811 sub 5
-inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19"sv, {entries.data() + 120, 6}, {infos.data() + 120, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_19_nbr_of_entries{entries[120], infos[120]}; // 0x1812 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_19_cob_id{entries[121], infos[121]}; // 0x1812 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_19_transmission_type{entries[122], infos[122]}; // 0x1812 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_19_inhibit_time{entries[123], infos[123]}; // 0x1812 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_19_compatibility_entry{entries[124], infos[124]}; // 0x1812 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_19_event_timer{entries[125], infos[125]}; // 0x1812 sub 5
-inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20"sv, {entries.data() + 126, 6}, {infos.data() + 126, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_20_nbr_of_entries{entries[126], infos[126]}; // 0x1813 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_20_cob_id{entries[127], infos[127]}; // 0x1813 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_20_transmission_type{entries[128], infos[128]}; // 0x1813 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_20_inhibit_time{entries[129], infos[129]}; // 0x1813 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_20_compatibility_entry{entries[130], infos[130]}; // 0x1813 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_20_event_timer{entries[131], infos[131]}; // 0x1813 sub 5
-inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21"sv, {entries.data() + 132, 6}, {infos.data() + 132, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_21_nbr_of_entries{entries[132], infos[132]}; // 0x1814 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_21_cob_id{entries[133], infos[133]}; // 0x1814 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_21_transmission_type{entries[134], infos[134]}; // 0x1814 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_21_inhibit_time{entries[135], infos[135]}; // 0x1814 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_21_compatibility_entry{entries[136], infos[136]}; // 0x1814 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_21_event_timer{entries[137], infos[137]}; // 0x1814 sub 5
-inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22"sv, {entries.data() + 138, 6}, {infos.data() + 138, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_22_nbr_of_entries{entries[138], infos[138]}; // 0x1815 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_22_cob_id{entries[139], infos[139]}; // 0x1815 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_22_transmission_type{entries[140], infos[140]}; // 0x1815 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_22_inhibit_time{entries[141], infos[141]}; // 0x1815 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_22_compatibility_entry{entries[142], infos[142]}; // 0x1815 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_22_event_timer{entries[143], infos[143]}; // 0x1815 sub 5
-inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23"sv, {entries.data() + 144, 6}, {infos.data() + 144, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_23_nbr_of_entries{entries[144], infos[144]}; // 0x1816 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_23_cob_id{entries[145], infos[145]}; // 0x1816 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_23_transmission_type{entries[146], infos[146]}; // 0x1816 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_23_inhibit_time{entries[147], infos[147]}; // 0x1816 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_23_compatibility_entry{entries[148], infos[148]}; // 0x1816 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_23_event_timer{entries[149], infos[149]}; // 0x1816 sub 5
-inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24"sv, {entries.data() + 150, 6}, {infos.data() + 150, 6}};
-inline constexpr od::descriptor transmit_pdo_comm_param_24_nbr_of_entries{entries[150], infos[150]}; // 0x1817 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_24_cob_id{entries[151], infos[151]}; // 0x1817 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_24_transmission_type{entries[152], infos[152]}; // 0x1817 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_24_inhibit_time{entries[153], infos[153]}; // 0x1817 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_24_compatibility_entry{entries[154], infos[154]}; // 0x1817 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_24_event_timer{entries[155], infos[155]}; // 0x1817 sub 5
-inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1"sv, {entries.data() + 156, 2}, {infos.data() + 156, 2}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_1_nbr_of_entries{entries[156], infos[156]}; // 0x1A00 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_1_statusword{entries[157], infos[157]}; // 0x1A00 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2"sv, {entries.data() + 158, 3}, {infos.data() + 158, 3}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_nbr_of_entries{entries[158], infos[158]}; // 0x1A01 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_statusword{entries[159], infos[159]}; // 0x1A01 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_actual_position{entries[160], infos[160]}; // 0x1A01 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17"sv, {entries.data() + 161, 2}, {infos.data() + 161, 2}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_17_nbr_of_entries{entries[161], infos[161]}; // 0x1A10 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_17_digital_inputs{entries[162], infos[162]}; // 0x1A10 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20"sv, {entries.data() + 163, 3}, {infos.data() + 163, 3}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_nbr_of_entries{entries[163], infos[163]}; // 0x1A13 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_actual_following_position_error{entries[164], infos[164]}; // 0x1A13 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_process_status_register{entries[165], infos[165]}; // 0x1A13 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21"sv, {entries.data() + 166, 2}, {infos.data() + 166, 2}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_21_nbr_of_entries{entries[166], infos[166]}; // 0x1A14 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_21_actual_current{entries[167], infos[167]}; // 0x1A14 sub 1
-inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23"sv, {entries.data() + 168, 3}, {infos.data() + 168, 3}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_nbr_of_entries{entries[168], infos[168]}; // 0x1A16 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_i_force_actual{entries[169], infos[169]}; // 0x1A16 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_process_status_register{entries[170], infos[170]}; // 0x1A16 sub 2
-inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24"sv, {entries.data() + 171, 3}, {infos.data() + 171, 3}};
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_nbr_of_entries{entries[171], infos[171]}; // 0x1A17 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_statusword{entries[172], infos[172]}; // 0x1A17 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_i_force_actual{entries[173], infos[173]}; // 0x1A17 sub 2
-inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 186, 46}, {infos.data() + 186, 46}};
-inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 232, 17}, {infos.data() + 232, 17}};
-inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 249, 107}, {infos.data() + 249, 107}};
-inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 356, 12}, {infos.data() + 356, 12}};
-inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 368, 14}, {infos.data() + 368, 14}};
-inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 382, 11}, {infos.data() + 382, 11}};
-inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 393, 15}, {infos.data() + 393, 15}};
-inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 425, 3}, {infos.data() + 425, 3}};
-inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 432, 3}, {infos.data() + 432, 3}};
-inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 437, 3}, {infos.data() + 437, 3}};
-inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[437], infos[437]}; // 0x60C2 sub 0
-inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[438], infos[438]}; // 0x60C2 sub 1
-inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[439], infos[439]}; // 0x60C2 sub 2
-inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 442, 3}, {infos.data() + 442, 3}};
+inline constexpr od::object receive_pdo_mapping_param_22{0x1615, od::object_code::record, "Receive PDO Mapping Param 22"sv, {entries.data() + 93, 3}, {infos.data() + 93, 3}};
+inline constexpr od::descriptor receive_pdo_mapping_param_22_nbr_of_entries{entries[93], infos[93]}; // 0x1615 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_1{entries[94], infos[94]}; // 0x1615 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_2{entries[95], infos[95]}; // 0x1615 sub 2
+inline constexpr od::object receive_pdo_mapping_param_23{0x1616, od::object_code::record, "Receive PDO Mapping Param 23"sv, {entries.data() + 96, 3}, {infos.data() + 96, 3}};
+inline constexpr od::descriptor receive_pdo_mapping_param_23_nbr_of_entries{entries[96], infos[96]}; // 0x1616 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_1{entries[97], infos[97]}; // 0x1616 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_2{entries[98], infos[98]}; // 0x1616 sub 2
+inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24"sv, {entries.data() + 99, 3}, {infos.data() + 99, 3}};
+inline constexpr od::descriptor receive_pdo_mapping_param_24_nbr_of_entries{entries[99], infos[99]}; // 0x1617 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_24_controlword{entries[100], infos[100]}; // 0x1617 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_24_reserved_for_future{entries[101], infos[101]}; // 0x1617 sub 2
+inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1"sv, {entries.data() + 102, 6}, {infos.data() + 102, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_1_nbr_of_entries{entries[102], infos[102]}; // 0x1800 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_1_cob_id{entries[103], infos[103]}; // 0x1800 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_1_transmission_type{entries[104], infos[104]}; // 0x1800 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_1_inhibit_time{entries[105], infos[105]}; // 0x1800 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_1_compatibility_entry{entries[106], infos[106]}; // 0x1800 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_1_event_timer{entries[107], infos[107]}; // 0x1800 sub 5
+inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2"sv, {entries.data() + 108, 6}, {infos.data() + 108, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_2_nbr_of_entries{entries[108], infos[108]}; // 0x1801 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_2_cob_id{entries[109], infos[109]}; // 0x1801 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_2_transmission_type{entries[110], infos[110]}; // 0x1801 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_2_inhibit_time{entries[111], infos[111]}; // 0x1801 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_2_compatibility_entry{entries[112], infos[112]}; // 0x1801 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_2_event_timer{entries[113], infos[113]}; // 0x1801 sub 5
+inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17"sv, {entries.data() + 114, 6}, {infos.data() + 114, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_17_nbr_of_entries{entries[114], infos[114]}; // 0x1810 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_17_cob_id{entries[115], infos[115]}; // 0x1810 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_17_transmission_type{entries[116], infos[116]}; // 0x1810 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_17_inhibit_time{entries[117], infos[117]}; // 0x1810 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_17_compatibility_entry{entries[118], infos[118]}; // 0x1810 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_17_event_timer{entries[119], infos[119]}; // 0x1810 sub 5
+inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18"sv, {entries.data() + 120, 6}, {infos.data() + 120, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_18_nbr_of_entries{entries[120], infos[120]}; // 0x1811 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_18_cob_id{entries[121], infos[121]}; // 0x1811 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_18_transmission_type{entries[122], infos[122]}; // 0x1811 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_18_inhibit_time{entries[123], infos[123]}; // 0x1811 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_18_compatibility_entry{entries[124], infos[124]}; // 0x1811 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_18_event_timer{entries[125], infos[125]}; // 0x1811 sub 5
+inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19"sv, {entries.data() + 126, 6}, {infos.data() + 126, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_19_nbr_of_entries{entries[126], infos[126]}; // 0x1812 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_19_cob_id{entries[127], infos[127]}; // 0x1812 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_19_transmission_type{entries[128], infos[128]}; // 0x1812 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_19_inhibit_time{entries[129], infos[129]}; // 0x1812 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_19_compatibility_entry{entries[130], infos[130]}; // 0x1812 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_19_event_timer{entries[131], infos[131]}; // 0x1812 sub 5
+inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20"sv, {entries.data() + 132, 6}, {infos.data() + 132, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_20_nbr_of_entries{entries[132], infos[132]}; // 0x1813 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_20_cob_id{entries[133], infos[133]}; // 0x1813 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_20_transmission_type{entries[134], infos[134]}; // 0x1813 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_20_inhibit_time{entries[135], infos[135]}; // 0x1813 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_20_compatibility_entry{entries[136], infos[136]}; // 0x1813 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_20_event_timer{entries[137], infos[137]}; // 0x1813 sub 5
+inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21"sv, {entries.data() + 138, 6}, {infos.data() + 138, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_21_nbr_of_entries{entries[138], infos[138]}; // 0x1814 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_21_cob_id{entries[139], infos[139]}; // 0x1814 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_21_transmission_type{entries[140], infos[140]}; // 0x1814 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_21_inhibit_time{entries[141], infos[141]}; // 0x1814 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_21_compatibility_entry{entries[142], infos[142]}; // 0x1814 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_21_event_timer{entries[143], infos[143]}; // 0x1814 sub 5
+inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22"sv, {entries.data() + 144, 6}, {infos.data() + 144, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_22_nbr_of_entries{entries[144], infos[144]}; // 0x1815 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_22_cob_id{entries[145], infos[145]}; // 0x1815 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_22_transmission_type{entries[146], infos[146]}; // 0x1815 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_22_inhibit_time{entries[147], infos[147]}; // 0x1815 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_22_compatibility_entry{entries[148], infos[148]}; // 0x1815 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_22_event_timer{entries[149], infos[149]}; // 0x1815 sub 5
+inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23"sv, {entries.data() + 150, 6}, {infos.data() + 150, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_23_nbr_of_entries{entries[150], infos[150]}; // 0x1816 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_23_cob_id{entries[151], infos[151]}; // 0x1816 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_23_transmission_type{entries[152], infos[152]}; // 0x1816 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_23_inhibit_time{entries[153], infos[153]}; // 0x1816 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_23_compatibility_entry{entries[154], infos[154]}; // 0x1816 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_23_event_timer{entries[155], infos[155]}; // 0x1816 sub 5
+inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24"sv, {entries.data() + 156, 6}, {infos.data() + 156, 6}};
+inline constexpr od::descriptor transmit_pdo_comm_param_24_nbr_of_entries{entries[156], infos[156]}; // 0x1817 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_24_cob_id{entries[157], infos[157]}; // 0x1817 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_24_transmission_type{entries[158], infos[158]}; // 0x1817 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_24_inhibit_time{entries[159], infos[159]}; // 0x1817 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_24_compatibility_entry{entries[160], infos[160]}; // 0x1817 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_24_event_timer{entries[161], infos[161]}; // 0x1817 sub 5
+inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1"sv, {entries.data() + 162, 2}, {infos.data() + 162, 2}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_1_nbr_of_entries{entries[162], infos[162]}; // 0x1A00 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_1_statusword{entries[163], infos[163]}; // 0x1A00 sub 1
+inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2"sv, {entries.data() + 164, 3}, {infos.data() + 164, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_nbr_of_entries{entries[164], infos[164]}; // 0x1A01 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_statusword{entries[165], infos[165]}; // 0x1A01 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_actual_position{entries[166], infos[166]}; // 0x1A01 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17"sv, {entries.data() + 167, 2}, {infos.data() + 167, 2}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_17_nbr_of_entries{entries[167], infos[167]}; // 0x1A10 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_17_digital_inputs{entries[168], infos[168]}; // 0x1A10 sub 1
+inline constexpr od::object transmit_pdo_mapping_param_18{0x1A11, od::object_code::record, "Transmit PDO Mapping Param 18"sv, {entries.data() + 169, 3}, {infos.data() + 169, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_nbr_of_entries{entries[169], infos[169]}; // 0x1A11 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_1{entries[170], infos[170]}; // 0x1A11 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_2{entries[171], infos[171]}; // 0x1A11 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_19{0x1A12, od::object_code::record, "Transmit PDO Mapping Param 19"sv, {entries.data() + 172, 3}, {infos.data() + 172, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_nbr_of_entries{entries[172], infos[172]}; // 0x1A12 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_1{entries[173], infos[173]}; // 0x1A12 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_2{entries[174], infos[174]}; // 0x1A12 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20"sv, {entries.data() + 175, 3}, {infos.data() + 175, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_nbr_of_entries{entries[175], infos[175]}; // 0x1A13 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_actual_following_position_error{entries[176], infos[176]}; // 0x1A13 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_process_status_register{entries[177], infos[177]}; // 0x1A13 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21"sv, {entries.data() + 178, 2}, {infos.data() + 178, 2}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_21_nbr_of_entries{entries[178], infos[178]}; // 0x1A14 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_21_actual_current{entries[179], infos[179]}; // 0x1A14 sub 1
+inline constexpr od::object transmit_pdo_mapping_param_22{0x1A15, od::object_code::record, "Transmit PDO Mapping Param 22"sv, {entries.data() + 180, 3}, {infos.data() + 180, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_nbr_of_entries{entries[180], infos[180]}; // 0x1A15 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_1{entries[181], infos[181]}; // 0x1A15 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_2{entries[182], infos[182]}; // 0x1A15 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23"sv, {entries.data() + 183, 3}, {infos.data() + 183, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_nbr_of_entries{entries[183], infos[183]}; // 0x1A16 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_i_force_actual{entries[184], infos[184]}; // 0x1A16 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_process_status_register{entries[185], infos[185]}; // 0x1A16 sub 2
+inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24"sv, {entries.data() + 186, 3}, {infos.data() + 186, 3}};
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_nbr_of_entries{entries[186], infos[186]}; // 0x1A17 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_statusword{entries[187], infos[187]}; // 0x1A17 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_i_force_actual{entries[188], infos[188]}; // 0x1A17 sub 2
+inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, {entries.data() + 201, 46}, {infos.data() + 201, 46}};
+inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, {entries.data() + 247, 17}, {infos.data() + 247, 17}};
+inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, {entries.data() + 264, 107}, {infos.data() + 264, 107}};
+inline constexpr od::object motor_parameter{0x5004, od::object_code::array, "Motor Parameter"sv, {entries.data() + 371, 12}, {infos.data() + 371, 12}};
+inline constexpr od::object smu_parameter{0x5005, od::object_code::array, "SMU Parameter"sv, {entries.data() + 383, 14}, {infos.data() + 383, 14}};
+inline constexpr od::object xvi75v8s_and_xvi48v8_parameter{0x5006, od::object_code::array, "Xvi75V8S and Xvi48V8 Parameter"sv, {entries.data() + 397, 11}, {infos.data() + 397, 11}};
+inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::array, "Forceteq pro Parameter"sv, {entries.data() + 408, 15}, {infos.data() + 408, 15}};
+inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, {entries.data() + 440, 3}, {infos.data() + 440, 3}};
+inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, {entries.data() + 447, 3}, {infos.data() + 447, 3}};
+inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, {entries.data() + 452, 3}, {infos.data() + 452, 3}};
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[452], infos[452]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[453], infos[453]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[454], infos[454]}; // 0x60C2 sub 2
+inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, {entries.data() + 457, 3}, {infos.data() + 457, 3}};
 
 } // namespace fieldcodec::dictionaries::xenax_canopen
 // clang-format on

@@ -40,11 +40,11 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1020, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(1U)},
     {.index = 0x1030, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(9U)},
     {.index = 0x1030, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .default_value = od::unsigned_number(1U)},
-    {.index = 0x1030, .sub = 2, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro},
+    {.index = 0x1030, .sub = 2, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x1030, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(6U)},
-    {.index = 0x1030, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .default_value = od::unsigned_number(646U)},
-    {.index = 0x1030, .sub = 5, .object = od::object_code::record, .type = od::data_type::octet_string, .access_type = od::access::ro},
-    {.index = 0x1030, .sub = 6, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro},
+    {.index = 0x1030, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned16, .access_type = od::access::ro, .default_value = od::unsigned_number(646U)},
+    {.index = 0x1030, .sub = 5, .object = od::object_code::record, .type = od::data_type::octet_string, .access_type = od::access::ro, .size = 6},
+    {.index = 0x1030, .sub = 6, .object = od::object_code::record, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x1030, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(0U)},
     {.index = 0x1030, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(1U)},
     {.index = 0x1030, .sub = 9, .object = od::object_code::record, .type = od::data_type::boolean, .access_type = od::access::ro, .default_value = od::unsigned_number(0U)},
@@ -53,27 +53,27 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1400, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(2U)},
     {.index = 0x1400, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
     {.index = 0x1400, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1600, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .object = od::object_code::array, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 1, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 3, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 4, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 5, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 6, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 7, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1600, .sub = 8, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
     {.index = 0x1800, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(2U)},
     {.index = 0x1800, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
     {.index = 0x1800, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .object = od::object_code::record, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 3, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 4, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 5, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 6, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 7, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
-    {.index = 0x1A00, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .object = od::object_code::array, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 1, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 2, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 3, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 4, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 5, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 6, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 7, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
+    {.index = 0x1A00, .sub = 8, .object = od::object_code::array, .type = od::data_type::unsigned64, .default_value = od::unsigned_number(0U)},
     {.index = 0x1C0B, .object = od::object_code::record, .type = od::data_type::unsigned8, .access_type = od::access::ro, .default_value = od::unsigned_number(3U)},
     {.index = 0x1C0B, .sub = 1, .object = od::object_code::record, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(0U)},
     {.index = 0x1C0B, .sub = 2, .object = od::object_code::record, .type = od::data_type::unsigned32, .access_type = od::access::ro, .default_value = od::unsigned_number(0U)},
@@ -110,7 +110,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x1F98, .sub = 8, .object = od::object_code::record, .type = od::data_type::unsigned16, .default_value = od::unsigned_number(300U)},
     {.index = 0x1F98, .sub = 9, .object = od::object_code::record, .type = od::data_type::unsigned16, .default_value = od::unsigned_number(2U)},
     {.index = 0x1F99, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(5000000U)},
-    {.index = 0x1F9A, .type = od::data_type::visible_string},
+    {.index = 0x1F9A, .type = od::data_type::visible_string, .size = 32},
     {.index = 0x1F9E, .type = od::data_type::unsigned8, .default_value = od::unsigned_number(255U)},
     {.index = 0x2000, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(1U), .high = od::unsigned_number(100U), .default_value = od::unsigned_number(20U)},
     {.index = 0x2001, .type = od::data_type::unsigned32, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
@@ -120,7 +120,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x2005, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2006, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x2007, .type = od::data_type::unsigned16, .low = od::unsigned_number(100U), .high = od::unsigned_number(10000U), .default_value = od::unsigned_number(1000U)},
-    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro},
+    {.index = 0x2008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 32},
     {.index = 0x2009, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x200A, .type = od::data_type::integer32, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x5000, .type = od::data_type::unsigned32, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(0U)},
@@ -248,7 +248,7 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x5003, .sub = 58, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(-2147483648), .high = od::signed_number(2147483647), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 59, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(1), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 60, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(1), .default_value = od::signed_number(0)},
-    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .high = od::signed_number(0), .default_value = od::signed_number(0)},
+    {.index = 0x5003, .sub = 61, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(0), .default_value = od::signed_number(0)},
     {.index = 0x5003, .sub = 62, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(2), .default_value = od::signed_number(1)},
     {.index = 0x5003, .sub = 63, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(3), .default_value = od::signed_number(1)},
     {.index = 0x5003, .sub = 64, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(500), .high = od::signed_number(100000), .default_value = od::signed_number(5000)},
@@ -346,10 +346,10 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x5010, .sub = 12, .object = od::object_code::array, .type = od::data_type::integer32, .access_type = od::access::ro, .low = od::signed_number(0), .high = od::signed_number(7), .default_value = od::signed_number(0)},
     {.index = 0x5010, .sub = 13, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(1000), .default_value = od::signed_number(50)},
     {.index = 0x5010, .sub = 14, .object = od::object_code::array, .type = od::data_type::integer32, .low = od::signed_number(1), .high = od::signed_number(10000000), .default_value = od::signed_number(1000)},
-    {.index = 0x5011, .type = od::data_type::visible_string},
-    {.index = 0x5012, .type = od::data_type::visible_string},
-    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 8, .default_text = "no error"sv},
-    {.index = 0x5021, .type = od::data_type::visible_string},
+    {.index = 0x5011, .type = od::data_type::visible_string, .size = 30},
+    {.index = 0x5012, .type = od::data_type::visible_string, .size = 30},
+    {.index = 0x5020, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 100, .default_text = "no error"sv},
+    {.index = 0x5021, .type = od::data_type::visible_string, .size = 32},
     {.index = 0x603F, .type = od::data_type::unsigned16, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6040, .type = od::data_type::unsigned16, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
     {.index = 0x6041, .type = od::data_type::unsigned16, .access_type = od::access::ro, .pdo = od::pdo_mapping::yes, .low = od::unsigned_number(0U), .high = od::unsigned_number(65535U), .default_value = od::unsigned_number(0U)},
@@ -843,30 +843,12 @@ inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::rec
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nbr_of_entries{entries[28], infos[28]}; // 0x1400 sub 0
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nodeid_u8{entries[29], infos[29]}; // 0x1400 sub 1
 inline constexpr od::descriptor pdo_rxcommparam_00h_rec_mappingversion_u8{entries[30], infos[30]}; // 0x1400 sub 2
-inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::record, "PDO_RxMappParam_00h_AU64"sv, {entries.data() + 31, 9}, {infos.data() + 31, 9}};
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_nbr_of_entries{entries[31], infos[31]}; // 0x1600 sub 0
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_1{entries[32], infos[32]}; // 0x1600 sub 1
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_2{entries[33], infos[33]}; // 0x1600 sub 2
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_3{entries[34], infos[34]}; // 0x1600 sub 3
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_4{entries[35], infos[35]}; // 0x1600 sub 4
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_5{entries[36], infos[36]}; // 0x1600 sub 5
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_6{entries[37], infos[37]}; // 0x1600 sub 6
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_7{entries[38], infos[38]}; // 0x1600 sub 7
-inline constexpr od::descriptor pdo_rxmappparam_00h_au64_objectmapping_8{entries[39], infos[39]}; // 0x1600 sub 8
+inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::array, "PDO_RxMappParam_00h_AU64"sv, {entries.data() + 31, 9}, {infos.data() + 31, 9}};
 inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC"sv, {entries.data() + 40, 3}, {infos.data() + 40, 3}};
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_nbr_of_entries{entries[40], infos[40]}; // 0x1800 sub 0
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_nodeid_u8{entries[41], infos[41]}; // 0x1800 sub 1
 inline constexpr od::descriptor pdo_txcommparam_00h_rec_mappingversion_u8{entries[42], infos[42]}; // 0x1800 sub 2
-inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::record, "PDO_TxMappParam_00h_AU64"sv, {entries.data() + 43, 9}, {infos.data() + 43, 9}};
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_nbr_of_entries{entries[43], infos[43]}; // 0x1A00 sub 0
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_1{entries[44], infos[44]}; // 0x1A00 sub 1
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_2{entries[45], infos[45]}; // 0x1A00 sub 2
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_3{entries[46], infos[46]}; // 0x1A00 sub 3
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_4{entries[47], infos[47]}; // 0x1A00 sub 4
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_5{entries[48], infos[48]}; // 0x1A00 sub 5
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_6{entries[49], infos[49]}; // 0x1A00 sub 6
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_7{entries[50], infos[50]}; // 0x1A00 sub 7
-inline constexpr od::descriptor pdo_txmappparam_00h_au64_objectmapping_8{entries[51], infos[51]}; // 0x1A00 sub 8
+inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::array, "PDO_TxMappParam_00h_AU64"sv, {entries.data() + 43, 9}, {infos.data() + 43, 9}};
 inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC"sv, {entries.data() + 52, 4}, {infos.data() + 52, 4}};
 inline constexpr od::descriptor dll_cnlosssoc_rec_numberofentries{entries[52], infos[52]}; // 0x1C0B sub 0
 inline constexpr od::descriptor dll_cnlosssoc_rec_cumulativecnt_u32{entries[53], infos[53]}; // 0x1C0B sub 1

@@ -129,7 +129,7 @@ inline constexpr std::uint8_t manufacturer = canopen::emcy::reg::manufacturer;
                                              std::array<std::string_view, 8> &out) noexcept {
   std::size_t n = 0;
   for (unsigned bit = 0; bit < 8U; ++bit) {
-    if ((reg >> bit) & 1U) out[n++] = describe_bit(bit);
+    if (((unsigned{reg} >> bit) & 1U) != 0U) out[n++] = describe_bit(bit);
   }
   return n;
 }

@@ -1,4 +1,7 @@
 // fieldcodec — CiA 402 modes of operation (objects 6060h / 6061h, INTEGER8).
+//
+// `mode` is a scoped enum over std::int8_t, the type of 6060h/6061h: od::encode, sdo::download
+// and the PDO mappings take it as it is (jog, -1, is sent as 0xFF, never as 255).
 #pragma once
 
 #include <fieldcodec/core/result.hpp>
@@ -27,23 +30,22 @@ enum class mode : std::int8_t {
 [[nodiscard]] constexpr bool is_standard_mode(std::int8_t v) noexcept {
   return (v >= 0 && v <= 4) || (v >= 6 && v <= 11);
 }
+[[nodiscard]] constexpr bool is_standard_mode(mode m) noexcept {
+  return is_standard_mode(static_cast<std::int8_t>(m));
+}
 /// True for the manufacturer-specific range (-128..-1).
 [[nodiscard]] constexpr bool is_manufacturer_mode(std::int8_t v) noexcept { return v < 0; }
+[[nodiscard]] constexpr bool is_manufacturer_mode(mode m) noexcept {
+  return is_manufacturer_mode(static_cast<std::int8_t>(m));
+}
 
-/// A standard mode from its INTEGER8 value. Errors: out_of_range (5, 12..127: reserved),
-/// unknown_command (negative: manufacturer-specific, decode it with the vendor's module).
+/// The mode a 6060h / 6061h value names. A negative value is a valid manufacturer-specific
+/// mode: it is returned as it is (a `mode` holding the value, is_manufacturer_mode() true,
+/// to_string() "manufacturer-specific") for the vendor's module to interpret, e.g.
+/// xenax::decode_mode(-1) = jog. Errors: out_of_range (5, 12..127: reserved by CiA 402).
 [[nodiscard]] constexpr result<mode> decode_mode(std::int8_t v) noexcept {
-  if (is_standard_mode(v)) return static_cast<mode>(v);
-  if (v < 0) return errc::unknown_command;
+  if (is_standard_mode(v) || is_manufacturer_mode(v)) return static_cast<mode>(v);
   return errc::out_of_range;
-}
-
-/// The byte that carries a mode in an SDO or PDO.
-[[nodiscard]] constexpr std::uint8_t mode_byte(std::int8_t v) noexcept {
-  return static_cast<std::uint8_t>(v);
-}
-[[nodiscard]] constexpr std::uint8_t mode_byte(mode m) noexcept {
-  return static_cast<std::uint8_t>(static_cast<std::int8_t>(m));
 }
 
 [[nodiscard]] constexpr std::string_view to_string(mode m) noexcept {
@@ -61,7 +63,7 @@ enum class mode : std::int8_t {
   case mode::cyclic_sync_torque_commutation:
     return "cyclic synchronous torque with commutation angle";
   }
-  return "?";
+  return is_manufacturer_mode(m) ? "manufacturer-specific" : "reserved";
 }
 
 } // namespace fieldcodec::ds402

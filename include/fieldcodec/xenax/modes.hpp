@@ -12,7 +12,9 @@
 
 namespace fieldcodec::xenax {
 
-/// The modes a XENAX accepts in 6060h (INTEGER8, manual limits -2..10).
+/// The modes a XENAX accepts in 6060h (INTEGER8, manual limits -2..10). A scoped enum over
+/// std::int8_t: od::encode, sdo::download and the PDO mappings take it as it is, so jog (-1)
+/// goes out as 0xFF (5.4.1, "0xFF (-1)"), never as 255.
 enum class mode : std::int8_t {
   vendor_reserved = -2, ///< "XENAX specific, not used"
   jog = -1,             ///< Jenny Science jog mode
@@ -36,9 +38,6 @@ inline constexpr std::uint32_t supported_modes = 0x000100A1U;
   case 8: return mode::cyclic_sync_position;
   default: return errc::out_of_range;
   }
-}
-[[nodiscard]] constexpr std::uint8_t mode_byte(mode m) noexcept {
-  return static_cast<std::uint8_t>(static_cast<std::int8_t>(m));
 }
 /// True when 6502h announces the mode.
 [[nodiscard]] constexpr bool is_supported(std::uint32_t supported, mode m) noexcept {
@@ -126,12 +125,11 @@ struct status {
 
 /// Decode a statusword for the mode shown in 6061h. Errors: bad_state (no PDS state matches).
 [[nodiscard]] constexpr result<status> decode_status(std::uint16_t statusword, mode m) noexcept {
-  auto s = ds402::decode_state(statusword);
-  if (!s) return s.error();
+  FIELDCODEC_TRY(const ds402::state s, ds402::decode_state(statusword));
   const bool b10 = (statusword & sw::bit10) != 0U;
   const bool b12 = (statusword & sw::bit12) != 0U;
   const bool b13 = (statusword & sw::bit13) != 0U;
-  status r{s.value(),
+  status r{s,
            (statusword & ds402::sw::warning) != 0U,
            (statusword & ds402::sw::remote) != 0U,
            (statusword & sw::soft_limit) != 0U,

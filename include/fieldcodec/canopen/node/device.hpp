@@ -1,0 +1,666 @@
+// fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
+// over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
+// life guarding, EMCY producer, SYNC consumer, PDO engine and SDO channels, with frames routed
+// by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
+//
+//   std::array<std::uint8_t, layout.storage_size()> storage{};
+//   sdo::dictionary_store<> store{dict, layout, storage};
+//   (void)store.init_defaults(5);
+//   node::device<sdo::dictionary_store<>, node::capacity_for(dict)> dev(store, 5);
+//   send(dev.start(now).value());                   // boot-up, pre-operational
+//   on every received frame: send(dev.on_frame(frame, now));
+//   at the deadline (or every tick): send(dev.poll(now));
+//   dev.set({0x6041, 0}, bytes);                    // the application's own values
+//   for (const node::event &e : dev.events()) ...   // what the last call did
+//
+// Every call returns canopen::step<nmt::state>: the frames to send (valid until the next call),
+// the NMT state, and when to poll at the latest. What happened is in events().
+//
+// The node keeps the store and its services consistent through the store's writes: SDO
+// downloads and RPDOs reach the store through the device (device::access), which first checks
+// the CiA 301 rules of the communication objects it serves (1003h, 1005h, 1014h, 1016h, 1019h,
+// 1200h–12FFh, 1400h–1BFFh), then lets the store write (its checks and the application's write
+// hook), then follows the new value (1005h, 1007h, 100Ch, 100Dh, 1014h–1017h, 1019h, SDO and
+// PDO parameters) and marks the event-driven TPDOs that map the object. Nothing is rescanned.
+// The application writes its own values with set() (same path, no access check, no hook).
+//
+// The node owns 1001h (error register) and 1003h (pre-defined error field) and writes them
+// whenever its EMCY producer changes, and it raises and clears these EMCY codes itself:
+// 8130h (a heartbeat consumer or life guarding lost its node), 8210h / 8220h (an RPDO too short
+// / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays active
+// while its condition lasts and clears when it is over.
+//
+// NMT: frames are taken per CiA 301 Table 48 (node::allowed): in stopped only NMT and node
+// guarding are answered and the heartbeat is produced; SDO transfers of the servers end
+// silently on stop. Reset communication restores the writable entries of 1000h–1FFFh to their
+// defaults (sdo::dictionary_store::restore_defaults), forgets errors and history, reloads every
+// service and sends the boot-up message; reset node also restores 2000h–FFFFh first. Both are
+// reported as events so that the application re-applies what it keeps elsewhere.
+#pragma once
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/emcy_producer.hpp>
+#include <fieldcodec/canopen/node/heartbeat.hpp>
+#include <fieldcodec/canopen/node/nmt_slave.hpp>
+#include <fieldcodec/canopen/node/pdo_engine.hpp>
+#include <fieldcodec/canopen/node/sdo_channels.hpp>
+#include <fieldcodec/canopen/node/sync_consumer.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace fieldcodec::canopen::node {
+
+/// What a device can hold (compile time: every table is a fixed array).
+struct capacity {
+  std::size_t rpdos = 4;
+  std::size_t tpdos = 4;
+  std::size_t mapped = 8;              ///< mapping entries per PDO (1..64)
+  std::size_t heartbeat_consumers = 4; ///< entries of 1016h
+  std::size_t sdo_servers = 1;         ///< the default server plus 1201h..
+  std::size_t sdo_clients = 0;         ///< 1280h..
+  /// Bytes per SDO server (see sdo::server). The default holds a whole sub-block of 127
+  /// segments, what masters ask for in a block upload (python canopen, the common C stacks);
+  /// a smaller buffer serves block uploads of at most sdo_buffer / 7 segments per sub-block
+  /// and aborts larger ones with 0x05040002. At least 8.
+  std::size_t sdo_buffer = 889;
+  std::size_t active_errors = 8;
+  std::size_t error_history = 8; ///< entries of 1003h
+  std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
+};
+
+/// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
+/// channels; the rest from `base`. consteval-friendly: for a generated dictionary,
+///   node::device<Store, node::capacity_for(gen::dictionary)>.
+[[nodiscard]] constexpr capacity capacity_for(od::dictionary dict, capacity base = {}) noexcept {
+  capacity c = base;
+  c.rpdos = 0;
+  c.tpdos = 0;
+  c.mapped = 1;
+  c.heartbeat_consumers = 0;
+  c.error_history = 0;
+  c.sdo_servers = 1;
+  c.sdo_clients = 0;
+  for (const od::entry &e : dict) {
+    const std::uint16_t i = e.index;
+    if (e.sub == 1U) {
+      if (i >= pdo_index::rpdo_comm && i < pdo_index::rpdo_map) ++c.rpdos;
+      if (i >= pdo_index::tpdo_comm && i < pdo_index::tpdo_map) ++c.tpdos;
+      if (i > sdo_index::server && i < sdo_index::client) ++c.sdo_servers;
+      if (i >= sdo_index::client && i < sdo_index::client + sdo_index::count) ++c.sdo_clients;
+    }
+    const bool mapping = (i >= pdo_index::rpdo_map && i < pdo_index::tpdo_comm) ||
+                         (i >= pdo_index::tpdo_map && i < pdo_index::tpdo_map + pdo_index::count);
+    if (mapping && e.sub > c.mapped) c.mapped = e.sub;
+    if (i == 0x1016U && e.sub > c.heartbeat_consumers) c.heartbeat_consumers = e.sub;
+    if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
+  }
+  if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
+  return c;
+}
+
+/// Choices made at run time.
+struct options {
+  std::uint32_t sdo_timeout_ms = 1000; ///< SDO servers and clients
+  sdo::server_options sdo{};           ///< block transfer, CRC
+  bool self_start = false;             ///< enter operational after boot-up by itself
+  bool report_long_rpdo = true;        ///< EMCY 8220h for an RPDO longer than its mapping
+  bool report_each_reset = false;      ///< EMCY 0000h at every cleared error, not only the last
+};
+
+/// What a call into the device did, besides the frames it returns.
+struct event {
+  enum class kind : std::uint8_t {
+    nmt_state,           ///< the node's NMT state changed (`state`)
+    reset_application,   ///< NMT reset node carried out (application area restored)
+    reset_communication, ///< NMT reset communication carried out
+    heartbeat,           ///< a heartbeat consumer event (`heartbeat`)
+    life_guard_lost,     ///< no guarding request within the life time
+    life_guard_resumed,  ///< guarding requests again after a loss
+    pdo,                 ///< a PDO engine event (`pdo`)
+    sync,                ///< a SYNC was taken (`counter`)
+  };
+  kind what = kind::nmt_state;
+  nmt::state state = nmt::state::boot_up;
+  heartbeat_event heartbeat{};
+  pdo_event pdo{};
+  std::optional<std::uint8_t> counter{};
+  friend constexpr bool operator==(const event &, const event &) = default;
+};
+
+/// The node-managed EMCY codes (see above).
+namespace managed_code {
+inline constexpr std::uint16_t guarding = 0x8130U;    ///< life guard or heartbeat error
+inline constexpr std::uint16_t rpdo_short = 0x8210U;  ///< PDO not processed: length error
+inline constexpr std::uint16_t rpdo_long = 0x8220U;   ///< PDO length exceeded
+inline constexpr std::uint16_t sync_length = 0x8240U; ///< unexpected SYNC data length
+inline constexpr std::uint16_t rpdo_timeout = 0x8250U;
+} // namespace managed_code
+
+template <node_store Store, capacity C = capacity{}>
+class device {
+  static_assert(C.sdo_servers >= 1U, "a node has its default SDO server");
+  static_assert(C.mapped >= 1U && C.mapped <= pdo::max_entries);
+
+public:
+  using step = canopen::step<nmt::state>;
+
+  /// The view of the store that the SDO servers and the PDO engine use: reads go to the store,
+  /// writes through the device's rules (see above). The device's own; not for the
+  /// application.
+  class access {
+  public:
+    constexpr explicit access(device &d) noexcept : d_(&d) {}
+    [[nodiscard]] constexpr abort_code read(od::address a, std::size_t offset,
+                                            std::span<std::uint8_t> out,
+                                            std::size_t &total) const noexcept {
+      return d_->store_->read(a, offset, out, total);
+    }
+    [[nodiscard]] constexpr abort_code begin_write(od::address a,
+                                                   std::optional<std::uint32_t> size) noexcept {
+      return d_->store_->begin_write(a, size);
+    }
+    [[nodiscard]] constexpr abort_code write(od::address a, std::size_t offset,
+                                             std::span<const std::uint8_t> part,
+                                             bool last) noexcept {
+      return d_->write_object(a, offset, part, last);
+    }
+
+  private:
+    device *d_;
+  };
+
+  using pdo_type = pdo_engine<access, C.rpdos, C.tpdos, C.mapped>;
+  using sdo_type = sdo_channels<access, C.sdo_servers, C.sdo_clients, C.sdo_buffer>;
+  using emcy_type = emcy_producer<C.active_errors, C.error_history, C.emcy_queue>;
+  using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
+
+  /// A node `node` (1..127) over `store` (borrowed, already holding its power-on values, e.g.
+  /// from init_defaults). Nothing is sent before start().
+  constexpr device(Store &store, std::uint8_t node, options o = {}) noexcept
+      : store_(&store), options_(o), node_(node), nmt_(node), producer_(node), guard_(node),
+        emcy_(node), access_(*this), pdo_(access_, store.dictionary()),
+        sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
+    pdo_.report_long_rpdo(o.report_long_rpdo);
+    emcy_.report_each_reset(o.report_each_reset);
+  }
+  device(const device &) = delete;
+  device &operator=(const device &) = delete;
+
+  // ----- the step interface ----------------------------------------------------------------
+
+  /// Power-on: read the configuration of every service from the store, send the boot-up
+  /// message and enter pre-operational (operational with options::self_start).
+  /// Errors: invalid_argument (node-ID not 1..127), bad_state (already started). A
+  /// configuration the services cannot serve completely (more PDOs or channels than the
+  /// capacity, an unusable stored mapping) does not stop the start: configuration() says so.
+  [[nodiscard]] constexpr result<step> start(std::uint32_t now) noexcept {
+    if (!is_node_id(node_)) return errc::invalid_argument;
+    if (started_) return errc::bad_state;
+    started_ = true;
+    begin(now);
+    configure(now);
+    boot(now);
+    return finish(now);
+  }
+
+  /// A received frame: routed by COB-ID to the service it belongs to.
+  [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
+    begin(now);
+    if (!started_ || f.id > max_can_id || f.dlc > max_dlc) return finish(now);
+    if (f.id == cob_id::nmt) {
+      nmt_frame(f, now);
+      return finish(now);
+    }
+    const nmt::state s = nmt_.state();
+    if (s == nmt::state::boot_up) return finish(now);
+    if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
+      if (auto r = guard_.respond(f, s)) out_.push(r.value());
+      const auto before = life_.state();
+      (void)life_.on_request(now);
+      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
+      return finish(now);
+    }
+    if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
+      const auto r = sync_.on_frame(f, now);
+      if (r.state.received) {
+        event e{event::kind::sync};
+        e.counter = r.state.counter;
+        push_event(e);
+        take(pdo_.on_sync(r.state.counter, now));
+        pdo_events();
+      }
+      return finish(now);
+    }
+    if (allowed(s, service::sdo)) {
+      if (auto r = sdo_.on_frame(f, now)) {
+        if (r->send.is_burst()) {
+          burst_ = r->send;
+        } else {
+          take(*r);
+        }
+        return finish(now);
+      }
+    }
+    if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
+      (void)consumer_.on_frame(f, now);
+      for (const auto &h : consumer_.events()) {
+        event e{event::kind::heartbeat};
+        e.heartbeat = h;
+        push_event(e);
+      }
+      return finish(now);
+    }
+    if (allowed(s, service::pdo)) {
+      take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
+      pdo_events();
+    }
+    return finish(now);
+  }
+
+  /// Time: heartbeat, consumer and life guarding timeouts, SDO timeouts, PDO timers, EMCY
+  /// inhibit time.
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    begin(now);
+    const nmt::state s = nmt_.state();
+    if (!started_ || s == nmt::state::boot_up) return finish(now);
+    take(producer_.poll(now, s));
+    (void)consumer_.poll(now);
+    for (const auto &h : consumer_.events()) {
+      event e{event::kind::heartbeat};
+      e.heartbeat = h;
+      push_event(e);
+    }
+    const auto before = life_.state();
+    if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
+      push_event({event::kind::life_guard_lost});
+    }
+    const auto sdo = sdo_.poll(now);
+    if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
+    take(pdo_.poll(now));
+    pdo_events();
+    take(emcy_.poll(now));
+    return finish(now);
+  }
+
+  // ----- the application -------------------------------------------------------------------
+
+  /// The application writes `value` to `a`: the store's checks except access, no write hook
+  /// (sdo::dictionary_store::set), plus the node's rules and effects for communication
+  /// objects; event-driven TPDOs mapping `a` become due (poll() sends them). Times the node
+  /// needs (e.g. a new heartbeat period) count from the `now` of the last call.
+  [[nodiscard]] constexpr abort_code set(od::address a,
+                                         std::span<const std::uint8_t> value) noexcept {
+    if (const auto c = check(a, value); c != abort_code::none) return c;
+    const auto c = store_->set(a, value);
+    if (c != abort_code::none) return c;
+    follow(a, value);
+    return abort_code::none;
+  }
+  /// The current value of `a` (see sdo::dictionary_store::value).
+  [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
+  value(od::address a) const noexcept {
+    return store_->value(a);
+  }
+  /// The application's event for TPDO `number` (1..512: 1800h + number − 1).
+  [[nodiscard]] constexpr status request_tpdo(std::uint16_t number) noexcept {
+    return pdo_.request(number);
+  }
+  /// An application error: EMCY, 1001h, 1003h (see emcy_producer::raise).
+  [[nodiscard]] constexpr result<step>
+  raise(std::uint16_t code, std::uint32_t now, std::uint8_t register_bits = 0,
+        std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
+    begin(now);
+    auto r = emcy_.raise(code, now, register_bits, manufacturer);
+    if (!r) return r.error();
+    take(r.value());
+    return finish(now);
+  }
+  /// An application error is gone (see emcy_producer::clear).
+  [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
+    begin(now);
+    auto r = emcy_.clear(code, now);
+    if (!r) return r.error();
+    take(r.value());
+    return finish(now);
+  }
+  /// A local NMT state change (the device's error behaviour, or no NMT master).
+  /// Errors: those of nmt_slave::enter.
+  [[nodiscard]] constexpr result<step> enter(nmt::state s, std::uint32_t now) noexcept {
+    begin(now);
+    const nmt::state before = nmt_.state();
+    auto r = nmt_.enter(s);
+    if (!r) return r.error();
+    if (nmt_.state() != before) state_changed(now);
+    return finish(now);
+  }
+  /// SDO client i (1280h + i): start transfers on it; its responses come in through on_frame
+  /// and its timeouts through poll.
+  [[nodiscard]] constexpr sdo::client &client(std::size_t i) noexcept { return sdo_.client(i); }
+
+  // ----- state -----------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr nmt::state state() const noexcept { return nmt_.state(); }
+  [[nodiscard]] constexpr std::uint8_t node_id() const noexcept { return node_; }
+  [[nodiscard]] constexpr std::span<const event> events() const noexcept { return events_.span(); }
+  /// How the last configuration (start or reset) went: too_long (more PDOs, channels or
+  /// consumers in the dictionary than the capacity), bad_length (a stored PDO configuration
+  /// that cannot be served), or a store error.
+  [[nodiscard]] constexpr status configuration() const noexcept { return config_; }
+  [[nodiscard]] constexpr const nmt_slave &nmt() const noexcept { return nmt_; }
+  [[nodiscard]] constexpr const heartbeat_producer &producer() const noexcept { return producer_; }
+  [[nodiscard]] constexpr const consumer_type &consumer() const noexcept { return consumer_; }
+  [[nodiscard]] constexpr const life_guard &guarding() const noexcept { return life_; }
+  [[nodiscard]] constexpr const emcy_type &emcy() const noexcept { return emcy_; }
+  [[nodiscard]] constexpr const sync_consumer &sync() const noexcept { return sync_; }
+  [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
+  [[nodiscard]] constexpr const sdo_type &sdo() const noexcept { return sdo_; }
+  /// Frames or events that did not fit their lists (a sizing error; always 0).
+  [[nodiscard]] constexpr std::size_t lost() const noexcept { return out_.lost() + events_.lost(); }
+
+  static constexpr capacity capacities() noexcept { return C; }
+
+private:
+  // ----- call frame ------------------------------------------------------------------------
+
+  constexpr void begin(std::uint32_t now) noexcept {
+    now_ = now;
+    if (!carry_) out_.clear();
+    carry_ = false;
+    burst_ = {};
+    events_.clear();
+  }
+  [[nodiscard]] constexpr step finish(std::uint32_t now) noexcept {
+    update_errors(now);
+    mirror_emcy();
+    step s;
+    s.state = nmt_.state();
+    s.deadline = deadline(now);
+    if (!burst_.empty()) {
+      s.send = burst_;
+      carry_ = !out_.empty(); // the node's own frames go out with the next call
+      if (carry_) s.deadline = now;
+    } else {
+      s.send = out_.view();
+    }
+    return s;
+  }
+  template <class Step>
+  constexpr void take(const Step &s) noexcept {
+    for (const can_frame &f : s.send) out_.push(f);
+  }
+  constexpr void push_event(const event &e) noexcept { events_.push(e); }
+  constexpr void pdo_events() noexcept {
+    for (const auto &p : pdo_.events()) {
+      event e{event::kind::pdo};
+      e.pdo = p;
+      push_event(e);
+    }
+  }
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
+    if (!started_ || nmt_.state() == nmt::state::boot_up) return std::nullopt;
+    auto d = producer_.deadline();
+    d = earliest(d, consumer_.deadline(now), now);
+    d = earliest(d, life_.deadline(), now);
+    d = earliest(d, emcy_.deadline(), now);
+    d = earliest(d, pdo_.deadline(now), now);
+    d = earliest(d, sdo_.deadline(now), now);
+    return d;
+  }
+
+  // ----- NMT -------------------------------------------------------------------------------
+
+  constexpr void nmt_frame(const can_frame &f, std::uint32_t now) noexcept {
+    const nmt::state before = nmt_.state();
+    (void)nmt_.on_frame(f, now);
+    if (nmt_.pending_reset() != reset::none) {
+      const reset r = nmt_.pending_reset();
+      push_event({r == reset::application ? event::kind::reset_application
+                                          : event::kind::reset_communication});
+      status st{};
+      if (r == reset::application) {
+        const auto range = restored(reset::application);
+        st = store_->restore_defaults(range.first, range.last);
+      }
+      const auto comm = restored(reset::communication);
+      if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
+      emcy_.reset();
+      own_errors_ = 0;
+      guard_.reset();
+      configure(now);
+      if (!st && config_) config_ = st;
+      boot(now);
+    } else if (nmt_.state() != before) {
+      state_changed(now);
+    }
+  }
+  /// Send the boot-up message and enter pre-operational (or operational).
+  constexpr void boot(std::uint32_t now) noexcept {
+    take(nmt_.boot(options_.self_start));
+    producer_.configure(static_cast<std::uint16_t>(read(0x1017, 0).value_or(0)), now);
+    state_changed(now);
+  }
+  constexpr void state_changed(std::uint32_t now) noexcept {
+    const nmt::state s = nmt_.state();
+    pdo_.set_operational(s == nmt::state::operational, now);
+    emcy_.enable(allowed(s, service::emcy));
+    consumer_.enable(s == nmt::state::pre_operational || s == nmt::state::operational);
+    if (s == nmt::state::stopped) sdo_.stop_servers();
+    event e{event::kind::nmt_state};
+    e.state = s;
+    push_event(e);
+  }
+
+  // ----- configuration ---------------------------------------------------------------------
+
+  [[nodiscard]] constexpr std::optional<std::uint32_t> read(std::uint16_t index,
+                                                            std::uint8_t sub) const noexcept {
+    return read_u32(*store_, {index, sub});
+  }
+  /// Read every service's parameters from the store.
+  constexpr void configure(std::uint32_t now) noexcept {
+    config_ = status{};
+    const od::dictionary dict = store_->dictionary();
+    // single values: follow them as if they had just been written
+    constexpr std::uint16_t singles[] = {0x1005, 0x1007, 0x100C, 0x1015, 0x1019};
+    sync_ = sync_consumer{};
+    for (const std::uint16_t i : singles) {
+      if (auto v = store_->value({i, 0})) follow_comm({i, 0}, v.value());
+    }
+    emcy_.load_cob_id(read(0x1014, 0).value_or(cob_id::emcy(node_).value_or(0)));
+    for (std::size_t i = 0; i < C.heartbeat_consumers; ++i) {
+      (void)consumer_.configure(i, 0, now);
+    }
+    for (const od::entry &e : dict.object(0x1016)) {
+      if (e.sub == 0U) continue;
+      if (e.sub > C.heartbeat_consumers) {
+        config_ = errc::too_long;
+        continue;
+      }
+      const auto v = read(0x1016, e.sub).value_or(0);
+      if (consumer_.configure(e.sub - 1U, v, now) != abort_code::none && config_) {
+        config_ = errc::invalid_argument; // a stored entry the rules refuse (duplicate node)
+      }
+    }
+    consumer_.restart();
+    life_.restart();
+    if (auto s = pdo_.reload(); !s && config_) config_ = s;
+    if (auto s = sdo_.reload(dict); !s && config_) config_ = s;
+    sdo_.stop_servers();
+    emcy_.clear_history(); // and mirror_emcy writes 1001h / 1003h
+  }
+
+  // ----- writes ----------------------------------------------------------------------------
+
+  /// The CiA 301 rules for the communication objects the node serves.
+  [[nodiscard]] constexpr abort_code check(od::address a,
+                                           std::span<const std::uint8_t> value) const noexcept {
+    const auto v = u32_of(value);
+    switch (a.index) {
+    case 0x1003: return a.sub == 0U && v && *v != 0U ? abort_code::invalid_value : abort_code::none;
+    case 0x1005: return v ? sync_consumer::check_cob_id(*v) : abort_code::none;
+    case 0x1014: return v ? emcy_.check_cob_id(*v) : abort_code::none;
+    case 0x1016:
+      if (a.sub == 0U || !v) return abort_code::none;
+      if (a.sub > C.heartbeat_consumers) {
+        return *v == 0U ? abort_code::none : abort_code::device_incompatible;
+      }
+      return consumer_.check(a.sub - 1U, *v);
+    case 0x1019: return v ? sync_consumer::check_overflow(*v) : abort_code::none;
+    default: break;
+    }
+    if (a.index >= sdo_index::server && a.index < sdo_index::client + sdo_index::count) {
+      return sdo_.check_write(a, value);
+    }
+    return pdo_.check_write(a, value);
+  }
+
+  /// A value was stored at `a` (by SDO, RPDO or set()): the services follow it.
+  constexpr void follow(od::address a, std::span<const std::uint8_t> value) noexcept {
+    if (a.index >= 0x1000U && a.index <= 0x1FFFU) follow_comm(a, value);
+    pdo_.mark(a);
+  }
+  constexpr void follow_comm(od::address a, std::span<const std::uint8_t> value) noexcept {
+    const auto v = u32_of(value);
+    if (!v) return;
+    switch (a.index) {
+    case 0x1003:
+      if (a.sub == 0U) emcy_.clear_history();
+      return;
+    case 0x1005: (void)sync_.set_cob_id(*v); return;
+    case 0x1007: sync_.set_window_us(*v); return;
+    case 0x100C:
+    case 0x100D:
+      life_.configure(static_cast<std::uint16_t>(read(0x100C, 0).value_or(0)),
+                      static_cast<std::uint8_t>(read(0x100D, 0).value_or(0)));
+      return;
+    case 0x1014: (void)emcy_.set_cob_id(*v); return;
+    case 0x1015: emcy_.set_inhibit(static_cast<std::uint16_t>(*v)); return;
+    case 0x1016:
+      if (a.sub >= 1U && a.sub <= C.heartbeat_consumers) {
+        (void)consumer_.configure(a.sub - 1U, *v, now_);
+      }
+      return;
+    case 0x1017: producer_.configure(static_cast<std::uint16_t>(*v), now_); return;
+    case 0x1019: (void)sync_.set_overflow(*v); return;
+    default: break;
+    }
+    if (a.index >= sdo_index::server && a.index < sdo_index::client + sdo_index::count) {
+      sdo_.written(a);
+      return;
+    }
+    pdo_.written(a, value, now_);
+  }
+
+  /// The path of every SDO and RPDO write (device::access).
+  [[nodiscard]] constexpr abort_code write_object(od::address a, std::size_t offset,
+                                                  std::span<const std::uint8_t> part,
+                                                  bool last) noexcept {
+    const bool whole = offset == 0U && last;
+    if (whole) {
+      if (const auto c = check(a, part); c != abort_code::none) return c;
+    } else if (a.index >= 0x1000U && a.index <= 0x1FFFU && u32_of(part).has_value() &&
+               check(a, part) != abort_code::none) {
+      // a communication value in parts would pass unchecked: the servers' buffers (≥ 8 bytes)
+      // always hold the ≤ 4 bytes of one, so this is a value of the wrong length anyway
+      return abort_code::length_too_high;
+    }
+    const auto c = store_->write(a, offset, part, last);
+    if (c != abort_code::none || !last) return c;
+    if (whole) {
+      follow(a, part);
+    } else {
+      pdo_.mark(a);
+    }
+    return abort_code::none;
+  }
+
+  // ----- EMCY ------------------------------------------------------------------------------
+
+  /// Raise or clear the node-managed codes as their conditions are now.
+  constexpr void update_errors(std::uint32_t now) noexcept {
+    if (!started_) return;
+    constexpr std::uint16_t codes[] = {managed_code::guarding, managed_code::rpdo_short,
+                                       managed_code::rpdo_long, managed_code::sync_length,
+                                       managed_code::rpdo_timeout};
+    const bool on[] = {consumer_.any_lost() || life_.state() == guard_state::lost,
+                       pdo_.any_too_short(), pdo_.any_too_long(), sync_.length_error(),
+                       pdo_.any_timed_out()};
+    for (std::size_t i = 0; i < std::size(codes); ++i) {
+      const auto mask = static_cast<std::uint8_t>(1U << i);
+      const bool mine = (own_errors_ & mask) != 0U;
+      if (on[i] && !mine) {
+        if (auto r = emcy_.raise(codes[i], now)) {
+          take(r.value());
+          own_errors_ = static_cast<std::uint8_t>(own_errors_ | mask);
+        }
+      } else if (!on[i] && mine) {
+        own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~mask);
+        if (auto r = emcy_.clear(codes[i], now)) take(r.value());
+      }
+    }
+  }
+  /// Write 1001h and 1003h after the EMCY producer changed.
+  constexpr void mirror_emcy() noexcept {
+    if (!emcy_.take_changed()) return;
+    (void)store_->set({0x1001, 0}, encode_le(emcy_.error_register(), 1).span());
+    const auto history = emcy_.history();
+    std::uint8_t top = 0;
+    for (const od::entry &e : store_->dictionary().object(0x1003)) {
+      if (e.sub > top) top = e.sub;
+    }
+    if (top == 0U && !store_->dictionary().contains(0x1003, 0)) return;
+    const std::size_t n = history.size() < top ? history.size() : top;
+    for (std::size_t k = 1; k <= top; ++k) {
+      const std::uint32_t v = k <= n ? history[k - 1U] : 0U;
+      (void)store_->set({0x1003, static_cast<std::uint8_t>(k)}, encode_le(v, 4).span());
+    }
+    (void)store_->set({0x1003, 0}, encode_le(static_cast<std::uint32_t>(n), 1).span());
+  }
+
+  // ----- members ---------------------------------------------------------------------------
+
+  // one call sends at most: boot-up or heartbeat, a guarding response, each TPDO once, one
+  // frame per SDO channel, and the EMCY messages (the queue, or the raises and clears of the
+  // five node-managed codes when no inhibit time holds them back)
+  static constexpr std::size_t out_capacity =
+      2U + C.tpdos + C.sdo_servers + C.sdo_clients + (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
+  static constexpr std::size_t event_capacity =
+      4U + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
+
+  Store *store_;
+  options options_;
+  std::uint8_t node_;
+  nmt_slave nmt_;
+  heartbeat_producer producer_;
+  consumer_type consumer_{};
+  life_guard life_{};
+  nmt::guard_responder guard_;
+  emcy_type emcy_;
+  sync_consumer sync_{};
+  access access_;
+  pdo_type pdo_;
+  sdo_type sdo_;
+  frame_list<out_capacity> out_{};
+  event_list<event, event_capacity> events_{};
+  frames burst_{};
+  status config_{};
+  std::uint32_t now_ = 0;
+  std::uint8_t own_errors_ = 0;
+  bool started_ = false;
+  bool carry_ = false;
+};
+
+} // namespace fieldcodec::canopen::node

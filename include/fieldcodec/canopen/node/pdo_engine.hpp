@@ -1,0 +1,718 @@
+// fieldcodec — the PDO engine (CiA 301 7.2.2, 7.5.2.35–7.5.2.38): TPDOs built from the store
+// by transmission type, RPDOs written into the store, and the communication and mapping
+// parameters (1400h–1BFFh) read from the store once and then kept up to date by the writes
+// themselves (check_write / written, no rescanning).
+//
+//   node::pdo_engine<Store, 4, 4> pdo(store, dictionary);
+//   pdo.reload();                                   // read 1400h–1BFFh (boot, NMT reset)
+//   pdo.set_operational(true, now);                 // PDOs exist only in operational
+//   pdo.on_sync(counter, now);                      // synchronous TPDOs, pending RPDOs
+//   pdo.on_frame(frame, now);                       // RPDOs, RTR for TPDOs
+//   pdo.poll(now);                                  // event timers, inhibit times
+//   pdo.mark({0x6041, 0});                          // a mapped object changed: event-driven
+//                                                   //   TPDOs that map it are due
+//   // around every write of a PDO parameter (node::device does this):
+//   if (auto c = pdo.check_write(a, value); c != abort_code::none) refuse(c);
+//   else if (store.write(...) == none) pdo.written(a, value, now);
+//
+// TPDO transmission types: 0 at the next SYNC after an event (mark / request / entering
+// operational), 1..240 every n-th SYNC (the first at the SYNC whose counter equals the SYNC
+// start value, sub 6, when the SYNC carries a counter), 252 sampled at SYNC and sent on RTR,
+// 253 sampled and sent on RTR, 254/255 on an event, at the latest when the event timer (sub 5,
+// ms) runs out, never within the inhibit time (sub 3, 100 µs, rounded up to ms) of the last
+// transmission. Event-driven TPDOs (0, 254, 255) are sent once on entering operational. An RTR
+// on a TPDO whose COB-ID allows it (bit 30 clear) sends its current data (252: the data of the
+// last SYNC).
+//
+// RPDOs: received only in operational; an RPDO shorter than its mapping is not processed
+// (too_short, EMCY 8210h by the node); a longer one is processed with its first bytes
+// (too_long, EMCY 8220h by the node unless report_long_rpdo(false)); transmission types
+// 0..240 are applied at the next SYNC, and discarded when they arrive outside the synchronous
+// window; 254/255 at once. Every mapped object is written with the store's write, so the
+// application's write hook sees RPDO data as it sees SDO data; an object the store refuses
+// keeps its old value (the others take theirs; `refused` in the event counts them). The event
+// timer of an RPDO (sub 5) is deadline monitoring: after a first RPDO, no RPDO within it is
+// the timeout event (EMCY 8250h by the node).
+//
+// Parameter writes (CiA 301): the COB-ID (sub 1) refuses bits 11..29 and a change of bits 0..30
+// while the PDO is valid, and a valid restricted CAN-ID (0x06090030); transmission types
+// 241..251 (and 252/253 for an RPDO) are refused (0x06090030); inhibit time and SYNC start
+// value of a valid TPDO cannot change (0x06090030), a SYNC start above 240 is refused. The
+// mapping changes only in the CiA 301 sequence: make the PDO invalid (sub 1 bit 31), set
+// mapping sub 0 to 0, write the entries, set sub 0 to their number, make the PDO valid.
+// Writing sub 0 or an entry while the PDO is valid, or an entry while sub 0 is not 0, is refused
+// with 0x06040043; an entry naming no object 0x06020000; one that cannot be mapped in this
+// direction (not mappable, access, bit length) 0x06040041; sub 0 above the entries the
+// dictionary has (or the engine holds) or a mapping longer than 64 bits 0x06040042. Writing
+// the value a parameter already has is always accepted (configuration tools write whole DCFs).
+#pragma once
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/pdo.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace fieldcodec::canopen::node {
+
+/// The SDO abort code for a mapping problem (see the rules above).
+[[nodiscard]] constexpr abort_code mapping_abort(pdo::mapping_problem p) noexcept {
+  switch (p) {
+  case pdo::mapping_problem::none: return abort_code::none;
+  case pdo::mapping_problem::no_object: return abort_code::no_object;
+  case pdo::mapping_problem::zero_length:
+  case pdo::mapping_problem::not_mappable:
+  case pdo::mapping_problem::no_access:
+  case pdo::mapping_problem::length_mismatch: return abort_code::not_mappable;
+  case pdo::mapping_problem::too_long:
+  case pdo::mapping_problem::too_many_entries: return abort_code::pdo_too_long;
+  }
+  return abort_code::general_error;
+}
+
+/// The first index of each PDO parameter range.
+namespace pdo_index {
+inline constexpr std::uint16_t rpdo_comm = 0x1400U;
+inline constexpr std::uint16_t rpdo_map = 0x1600U;
+inline constexpr std::uint16_t tpdo_comm = 0x1800U;
+inline constexpr std::uint16_t tpdo_map = 0x1A00U;
+inline constexpr std::uint16_t count = 0x200U; ///< 512 PDOs per direction
+} // namespace pdo_index
+
+/// Something the engine did or found, for the application and the node's EMCY.
+struct pdo_event {
+  enum class kind : std::uint8_t {
+    received,       ///< RPDO data written to the store (`refused` objects kept their value)
+    too_short,      ///< RPDO shorter than its mapping: not processed
+    too_long,       ///< RPDO longer than its mapping: processed with its first bytes
+    outside_window, ///< synchronous RPDO after the synchronous window: discarded
+    timeout,        ///< RPDO event timer ran out (deadline monitoring)
+    not_sent,       ///< a TPDO could not be built (a mapped object could not be read)
+  };
+  kind what = kind::received;
+  pdo::direction dir = pdo::direction::rpdo;
+  std::uint16_t number = 0; ///< PDO number 1..512 (comm parameter 1400h/1800h + number − 1)
+  std::uint8_t refused = 0; ///< received: objects the store refused
+  friend constexpr bool operator==(const pdo_event &, const pdo_event &) = default;
+};
+
+/// A PDO's parameters as the engine holds them.
+template <std::size_t MaxEntries>
+struct pdo_config {
+  std::uint16_t number = 0;              ///< 1..512
+  std::uint32_t cob = cob_bits::invalid; ///< sub 1 as stored
+  std::uint8_t type = 255;               ///< sub 2
+  std::uint16_t inhibit = 0;             ///< sub 3, 100 µs
+  std::uint16_t event_timer = 0;         ///< sub 5, ms
+  std::uint8_t sync_start = 0;           ///< sub 6
+  std::uint8_t count = 0;                ///< mapping sub 0
+  std::uint8_t map_subs = 0;             ///< highest mapping sub-index the dictionary has
+  std::uint8_t bytes = 0;                ///< length of the mapped data
+  bool usable = true;                    ///< false: the stored configuration is broken
+  std::array<pdo::mapping_entry, MaxEntries> map{};
+
+  [[nodiscard]] constexpr bool valid() const noexcept {
+    return (cob & cob_bits::invalid) == 0U && usable;
+  }
+  [[nodiscard]] constexpr std::uint16_t id() const noexcept {
+    return static_cast<std::uint16_t>(cob & cob_bits::id);
+  }
+  [[nodiscard]] constexpr bool rtr_allowed() const noexcept {
+    return (cob & cob_bits::bit30) == 0U;
+  }
+  [[nodiscard]] constexpr bool event_driven() const noexcept { return type == 0U || type >= 254U; }
+  [[nodiscard]] constexpr bool synchronous() const noexcept { return type <= 240U; }
+  [[nodiscard]] constexpr std::span<const pdo::mapping_entry> entries() const noexcept {
+    return std::span<const pdo::mapping_entry>(map.data(), count);
+  }
+};
+
+template <sdo::object_store Store, std::size_t MaxRpdo, std::size_t MaxTpdo,
+          std::size_t MaxEntries = 8>
+class pdo_engine {
+  static_assert(MaxEntries >= 1U && MaxEntries <= pdo::max_entries);
+
+public:
+  using config = pdo_config<MaxEntries>;
+  /// State in the steps: whether PDOs are exchanged (NMT operational).
+  using step = canopen::step<bool>;
+
+  /// An engine over `store` (borrowed; its reads give the TPDO data, its writes take the RPDO
+  /// data and must reach the store the application reads) and `dict` (the dictionary the
+  /// mappings are checked against).
+  constexpr pdo_engine(Store &store, od::dictionary dict) noexcept : store_(&store), dict_(dict) {}
+
+  /// Read every PDO's parameters from the store (at boot and after an NMT reset). PDOs whose
+  /// stored configuration cannot be served (a mapping the dictionary does not allow, more
+  /// entries than MaxEntries, a reserved transmission type) are marked unusable: never sent or
+  /// received. Errors: too_long (the dictionary has more PDOs than MaxRpdo / MaxTpdo: the first
+  /// ones are served), bad_length (a stored configuration was unusable).
+  [[nodiscard]] constexpr status reload() noexcept {
+    status st{};
+    rpdo_count_ = 0;
+    tpdo_count_ = 0;
+    std::uint16_t last = 0;
+    for (const od::entry &e : dict_) {
+      if (e.sub != 1U || e.index == last) continue;
+      const bool is_rx =
+          e.index >= pdo_index::rpdo_comm && e.index < pdo_index::rpdo_comm + pdo_index::count;
+      const bool is_tx =
+          e.index >= pdo_index::tpdo_comm && e.index < pdo_index::tpdo_comm + pdo_index::count;
+      if (!is_rx && !is_tx) continue;
+      last = e.index;
+      config *cfg = nullptr;
+      if (is_rx) {
+        if (rpdo_count_ == MaxRpdo) {
+          st = errc::too_long;
+          continue;
+        }
+        cfg = &rpdo_[rpdo_count_++].c;
+      } else {
+        if (tpdo_count_ == MaxTpdo) {
+          st = errc::too_long;
+          continue;
+        }
+        cfg = &tpdo_[tpdo_count_++].c;
+      }
+      const std::uint16_t base = is_rx ? pdo_index::rpdo_comm : pdo_index::tpdo_comm;
+      if (!load(*cfg, e.index, static_cast<std::uint16_t>(e.index - base + 1U),
+                is_rx ? pdo::direction::rpdo : pdo::direction::tpdo) &&
+          st) {
+        st = errc::bad_length;
+      }
+    }
+    for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(0, operational_);
+    for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+    return st;
+  }
+
+  /// PDOs on (operational) or off. Entering operational restarts every PDO: event-driven
+  /// TPDOs are due at once, SYNC counting and event timers start from `now`.
+  constexpr void set_operational(bool on, std::uint32_t now) noexcept {
+    operational_ = on;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(now, on);
+    for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+  }
+  [[nodiscard]] constexpr bool operational() const noexcept { return operational_; }
+  /// Process an RPDO longer than its mapping with a too_long event (true, the default) or
+  /// silently.
+  constexpr void report_long_rpdo(bool on) noexcept { report_long_ = on; }
+
+  // ----- parameter writes ------------------------------------------------------------------
+
+  /// Would writing `value` to `a` be accepted (CiA 301 rules above)? abort_code::none for
+  /// objects outside 1400h–1BFFh, for PDOs the engine does not serve, and for values of a
+  /// length the store will refuse itself.
+  [[nodiscard]] constexpr abort_code
+  check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    const place where = locate(a.index);
+    if (!where.found) return abort_code::none;
+    const auto v = u32_of(value);
+    if (!v) return abort_code::none;
+    return where.mapping ? check_mapping(slot(where), where.dir, a, *v)
+                         : check_comm(slot(where), where.dir, a.sub, *v);
+  }
+
+  /// `value` was stored at `a`: follow it.
+  constexpr void written(od::address a, std::span<const std::uint8_t> value,
+                         std::uint32_t now) noexcept {
+    const place where = locate(a.index);
+    if (!where.found) return;
+    const auto v = u32_of(value);
+    if (!v) return;
+    config &c = slot(where);
+    if (where.mapping) {
+      if (a.sub == 0U) {
+        c.count = static_cast<std::uint8_t>(*v);
+        (void)load_mapping(c, where.dir);
+      }
+      return;
+    }
+    const bool was_valid = c.valid();
+    switch (a.sub) {
+    case 1: c.cob = *v; break;
+    case 2: c.type = static_cast<std::uint8_t>(*v); break;
+    case 3: c.inhibit = static_cast<std::uint16_t>(*v); break;
+    case 5: c.event_timer = static_cast<std::uint16_t>(*v); break;
+    case 6: c.sync_start = static_cast<std::uint8_t>(*v); break;
+    default: return;
+    }
+    // a new COB-ID, type or timer: the PDO starts afresh (a TPDO that became valid is due)
+    if (where.dir == pdo::direction::tpdo) {
+      if (a.sub != 1U || !was_valid) tpdo_[where.slot].restart(now, operational_);
+    } else {
+      rpdo_[where.slot].restart();
+    }
+  }
+
+  // ----- traffic ---------------------------------------------------------------------------
+
+  /// A SYNC (with its counter when it carried one): apply the synchronous RPDOs received since
+  /// the last SYNC, then send the synchronous TPDOs that are due.
+  [[nodiscard]] constexpr step on_sync(std::optional<std::uint8_t> counter,
+                                       std::uint32_t now) noexcept {
+    begin();
+    if (!operational_) return make(now);
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
+      r.buffered = false;
+      apply(r.c, std::span<const std::uint8_t>(r.data).first(r.dlc));
+    }
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.valid()) continue;
+      if (t.c.type == 0U) {
+        if (t.pending) send(t, now);
+      } else if (t.c.type <= 240U) {
+        if (t.waiting_start && counter) {
+          if (*counter != t.c.sync_start) continue;
+          t.waiting_start = false;
+          t.sync_count = 0;
+          send(t, now);
+          continue;
+        }
+        t.waiting_start = false;
+        if (++t.sync_count >= t.c.type) {
+          t.sync_count = 0;
+          send(t, now);
+        }
+      } else if (t.c.type == 252U) {
+        t.sampled = build(t);
+      }
+    }
+    return make(now);
+  }
+
+  /// An RPDO, or an RTR for a TPDO. `sync_window_open`: false when a synchronous window is set
+  /// and has passed since the last SYNC (synchronous RPDOs are then discarded).
+  [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now,
+                                        bool sync_window_open = true) noexcept {
+    begin();
+    if (!operational_ || f.id > max_can_id) return make(now);
+    if (f.rtr) {
+      for (std::size_t i = 0; i < tpdo_count_; ++i) {
+        tx_slot &t = tpdo_[i];
+        if (!t.c.valid() || t.c.id() != f.id || !t.c.rtr_allowed()) continue;
+        if (t.c.type == 252U && t.sampled) {
+          emit(t);
+        } else {
+          send(t, now);
+        }
+      }
+      return make(now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || r.c.id() != f.id) continue;
+      if (f.dlc < r.c.bytes) {
+        r.short_error = true;
+        events_.push({pdo_event::kind::too_short, pdo::direction::rpdo, r.c.number, 0});
+        continue;
+      }
+      r.short_error = false;
+      r.long_error = report_long_ && f.dlc > r.c.bytes;
+      if (r.long_error) {
+        events_.push({pdo_event::kind::too_long, pdo::direction::rpdo, r.c.number, 0});
+      }
+      if (r.c.event_timer != 0U) {
+        r.monitored = true;
+        r.timed_out = false;
+        r.due = now + r.c.event_timer;
+      }
+      const auto data = f.payload().first(r.c.bytes);
+      if (r.c.synchronous()) {
+        if (!sync_window_open) {
+          events_.push({pdo_event::kind::outside_window, pdo::direction::rpdo, r.c.number, 0});
+          continue;
+        }
+        r.buffered = true;
+        r.dlc = static_cast<std::uint8_t>(data.size());
+        for (std::size_t k = 0; k < data.size(); ++k) r.data[k] = data[k];
+      } else {
+        apply(r.c, data);
+      }
+    }
+    return make(now);
+  }
+
+  /// Event timers and inhibit times of TPDOs, deadline monitoring of RPDOs.
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    begin();
+    if (!operational_) return make(now);
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.valid() || t.c.type < 254U) continue;
+      if (t.c.event_timer != 0U && reached(t.event_due, now)) {
+        t.pending = true;
+        t.event_due = now + t.c.event_timer;
+      }
+      if (!t.pending) continue;
+      if (t.inhibited && !reached(t.inhibit_until, now)) continue;
+      send(t, now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || !r.monitored || r.timed_out || !reached(r.due, now)) continue;
+      r.timed_out = true;
+      events_.push({pdo_event::kind::timeout, pdo::direction::rpdo, r.c.number, 0});
+    }
+    return make(now);
+  }
+
+  /// The object `a` changed: every event-driven TPDO (types 0, 254, 255) that maps it is due.
+  constexpr void mark(od::address a) noexcept {
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.event_driven()) continue;
+      for (const auto &m : t.c.entries()) {
+        if (m.index == a.index && m.sub == a.sub) {
+          t.pending = true;
+          break;
+        }
+      }
+    }
+  }
+  /// The application's event for TPDO `number` (1..512). Errors: unknown_object (no such TPDO),
+  /// bad_state (its transmission type is not event-driven: 1..240, 252, 253).
+  [[nodiscard]] constexpr status request(std::uint16_t number) noexcept {
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (tpdo_[i].c.number != number) continue;
+      if (!tpdo_[i].c.event_driven()) return errc::bad_state;
+      tpdo_[i].pending = true;
+      return {};
+    }
+    return errc::unknown_object;
+  }
+
+  // ----- state -----------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr std::span<const pdo_event> events() const noexcept {
+    return events_.span();
+  }
+  [[nodiscard]] constexpr std::size_t rpdo_count() const noexcept { return rpdo_count_; }
+  [[nodiscard]] constexpr std::size_t tpdo_count() const noexcept { return tpdo_count_; }
+  [[nodiscard]] constexpr const config &rpdo(std::size_t i) const noexcept { return rpdo_[i].c; }
+  [[nodiscard]] constexpr const config &tpdo(std::size_t i) const noexcept { return tpdo_[i].c; }
+  /// An RPDO's last frame was too short / too long; an RPDO's deadline passed.
+  [[nodiscard]] constexpr bool any_too_short() const noexcept {
+    return any([](const rx_slot &r) { return r.short_error; });
+  }
+  [[nodiscard]] constexpr bool any_too_long() const noexcept {
+    return any([](const rx_slot &r) { return r.long_error; });
+  }
+  [[nodiscard]] constexpr bool any_timed_out() const noexcept {
+    return any([](const rx_slot &r) { return r.timed_out; });
+  }
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
+    if (!operational_) return std::nullopt;
+    std::optional<std::uint32_t> d;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      const tx_slot &t = tpdo_[i];
+      if (!t.c.valid() || t.c.type < 254U) continue;
+      if (t.pending) d = earliest(d, t.inhibited ? t.inhibit_until : now, now);
+      if (t.c.event_timer != 0U) d = earliest(d, t.event_due, now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      const rx_slot &r = rpdo_[i];
+      if (r.c.valid() && r.monitored && !r.timed_out) d = earliest(d, r.due, now);
+    }
+    return d;
+  }
+
+private:
+  struct tx_slot {
+    config c{};
+    std::array<std::uint8_t, 8> data{};
+    std::uint32_t inhibit_until = 0;
+    std::uint32_t event_due = 0;
+    std::uint8_t sync_count = 0;
+    bool pending = false;
+    bool inhibited = false;
+    bool waiting_start = false;
+    bool sampled = false;
+
+    constexpr void restart(std::uint32_t now, bool operational) noexcept {
+      pending = operational && c.event_driven();
+      inhibited = false;
+      sync_count = 0;
+      waiting_start = c.sync_start != 0U;
+      sampled = false;
+      event_due = now + c.event_timer;
+    }
+  };
+  struct rx_slot {
+    config c{};
+    std::array<std::uint8_t, 8> data{};
+    std::uint32_t due = 0;
+    std::uint8_t dlc = 0;
+    bool buffered = false;
+    bool monitored = false;
+    bool timed_out = false;
+    bool short_error = false;
+    bool long_error = false;
+
+    constexpr void restart() noexcept {
+      buffered = false;
+      monitored = false;
+      timed_out = false;
+      short_error = false;
+      long_error = false;
+    }
+  };
+  /// Where a parameter index belongs: which PDO (slot), which direction, comm or mapping.
+  struct place {
+    bool found = false;
+    pdo::direction dir = pdo::direction::rpdo;
+    bool mapping = false;
+    std::size_t slot = 0;
+  };
+
+  // ----- where a parameter lives -----------------------------------------------------------
+
+  [[nodiscard]] constexpr place locate(std::uint16_t index) const noexcept {
+    place l;
+    std::uint16_t base = 0;
+    if (index >= pdo_index::rpdo_comm && index < pdo_index::tpdo_comm) {
+      l.dir = pdo::direction::rpdo;
+      base = pdo_index::rpdo_comm;
+    } else if (index >= pdo_index::tpdo_comm && index < pdo_index::tpdo_map + pdo_index::count) {
+      l.dir = pdo::direction::tpdo;
+      base = pdo_index::tpdo_comm;
+    } else {
+      return l;
+    }
+    auto offset = static_cast<std::uint16_t>(index - base);
+    if (offset >= pdo_index::count) {
+      l.mapping = true;
+      offset = static_cast<std::uint16_t>(offset - pdo_index::count);
+    }
+    const auto number = static_cast<std::uint16_t>(offset + 1U);
+    const bool is_rx = l.dir == pdo::direction::rpdo;
+    const std::size_t n = is_rx ? rpdo_count_ : tpdo_count_;
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((is_rx ? rpdo_[i].c.number : tpdo_[i].c.number) == number) {
+        l.found = true;
+        l.slot = i;
+        return l;
+      }
+    }
+    return l;
+  }
+  [[nodiscard]] constexpr config &slot(place p) noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
+  }
+  [[nodiscard]] constexpr const config &slot(place p) const noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
+  }
+
+  // ----- parameter checks ------------------------------------------------------------------
+
+  [[nodiscard]] static constexpr abort_code check_comm(const config &c, pdo::direction d,
+                                                       std::uint8_t sub, std::uint32_t v) noexcept {
+    const bool tpdo = d == pdo::direction::tpdo;
+    switch (sub) {
+    case 1: return check_cob_id(v, c.cob, true);
+    case 2:
+      if (v >= 241U && v <= 251U) return abort_code::invalid_value;
+      if (!tpdo && (v == 252U || v == 253U)) return abort_code::invalid_value;
+      return abort_code::none;
+    case 3:
+      return tpdo && c.valid() && v != c.inhibit ? abort_code::invalid_value : abort_code::none;
+    case 6:
+      if (v > 240U) return abort_code::invalid_value;
+      return tpdo && c.valid() && v != c.sync_start ? abort_code::invalid_value : abort_code::none;
+    default: return abort_code::none;
+    }
+  }
+
+  [[nodiscard]] constexpr abort_code check_mapping(const config &c, pdo::direction d, od::address a,
+                                                   std::uint32_t v) const noexcept {
+    if (a.sub == 0U) {
+      if (v == c.count) return abort_code::none;
+      if ((c.cob & cob_bits::invalid) == 0U) return abort_code::parameter_incompatible;
+      if (v == 0U) return abort_code::none;
+      if (v > MaxEntries || v > c.map_subs) return abort_code::pdo_too_long;
+      std::array<pdo::mapping_entry, MaxEntries> e{};
+      for (std::size_t k = 0; k < v; ++k) {
+        const auto m = read_u32(*store_, {a.index, static_cast<std::uint8_t>(k + 1U)});
+        if (!m) return abort_code::no_sub_index;
+        e[k] = pdo::mapping_entry::from_u32(*m);
+      }
+      const auto r = pdo::check_mapping(dict_, d, std::span<const pdo::mapping_entry>(e.data(), v),
+                                        pdo::can_max_bits);
+      return mapping_abort(r.problem);
+    }
+    if (const auto cur = read_u32(*store_, a); cur && *cur == v) return abort_code::none;
+    if ((c.cob & cob_bits::invalid) == 0U || c.count != 0U) {
+      return abort_code::parameter_incompatible;
+    }
+    if (v == 0U) return abort_code::none;
+    const auto m = pdo::mapping_entry::from_u32(v);
+    if (const auto p = pdo::check_entry(dict_, d, m); p != pdo::mapping_problem::none) {
+      return mapping_abort(p);
+    }
+    return m.bits > pdo::can_max_bits ? abort_code::pdo_too_long : abort_code::none;
+  }
+
+  // ----- loading ---------------------------------------------------------------------------
+
+  /// Read one PDO's parameters; false when they cannot be served (the PDO is then unusable).
+  [[nodiscard]] constexpr bool load(config &c, std::uint16_t comm, std::uint16_t number,
+                                    pdo::direction d) noexcept {
+    c = config{};
+    c.number = number;
+    c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
+    c.type = static_cast<std::uint8_t>(read_u32(*store_, {comm, 2}).value_or(255U));
+    c.inhibit = static_cast<std::uint16_t>(read_u32(*store_, {comm, 3}).value_or(0U));
+    c.event_timer = static_cast<std::uint16_t>(read_u32(*store_, {comm, 5}).value_or(0U));
+    c.sync_start = static_cast<std::uint8_t>(read_u32(*store_, {comm, 6}).value_or(0U));
+    const auto map = static_cast<std::uint16_t>(comm + pdo_index::count);
+    for (const od::entry &e : dict_.object(map)) {
+      if (e.sub > c.map_subs) c.map_subs = e.sub;
+    }
+    c.count = static_cast<std::uint8_t>(read_u32(*store_, {map, 0}).value_or(0U));
+    c.usable = check_comm(config{}, d, 2, c.type) == abort_code::none &&
+               (c.cob & 0x3FFF'F800U) == 0U && load_mapping(c, d);
+    return c.usable;
+  }
+
+  /// Read mapping entries 1..count from the store and check them; false (and count 0) when
+  /// they cannot be served.
+  constexpr bool load_mapping(config &c, pdo::direction d) noexcept {
+    const std::uint32_t first =
+        d == pdo::direction::rpdo ? pdo_index::rpdo_map : pdo_index::tpdo_map;
+    const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
+    c.bytes = 0;
+    if (c.count > MaxEntries || c.count > c.map_subs) {
+      c.count = 0;
+      return false;
+    }
+    for (std::size_t k = 0; k < c.count; ++k) {
+      const auto v = read_u32(*store_, {map, static_cast<std::uint8_t>(k + 1U)});
+      if (!v) {
+        c.count = 0;
+        return false;
+      }
+      c.map[k] = pdo::mapping_entry::from_u32(*v);
+    }
+    const auto r = pdo::check_mapping(dict_, d, c.entries(), pdo::can_max_bits);
+    if (!r.ok()) {
+      c.count = 0;
+      return false;
+    }
+    c.bytes = static_cast<std::uint8_t>((r.total_bits + 7U) / 8U);
+    return true;
+  }
+
+  // ----- data ------------------------------------------------------------------------------
+
+  /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
+  [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
+    t.data = {};
+    std::size_t offset = 0;
+    for (const auto &m : t.c.entries()) {
+      if (!m.is_dummy()) {
+        std::array<std::uint8_t, 8> v{};
+        std::size_t total = 0;
+        if (store_->read({m.index, m.sub}, 0, v, total) != abort_code::none) return false;
+        const std::size_t n = (m.bits + 7U) / 8U;
+        std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+        if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+        if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
+      }
+      offset += m.bits;
+    }
+    return true;
+  }
+  constexpr void emit(const tx_slot &t) noexcept {
+    can_frame f;
+    f.id = t.c.id();
+    f.dlc = t.c.bytes;
+    for (std::size_t k = 0; k < t.c.bytes; ++k) f.data[k] = t.data[k];
+    out_.push(f);
+  }
+  /// Sample and send a TPDO now; restarts its inhibit time and event timer.
+  constexpr void send(tx_slot &t, std::uint32_t now) noexcept {
+    t.pending = false;
+    if (!build(t)) {
+      events_.push({pdo_event::kind::not_sent, pdo::direction::tpdo, t.c.number, 0});
+      return;
+    }
+    emit(t);
+    if (t.c.type >= 254U) {
+      t.inhibited = t.c.inhibit != 0U;
+      t.inhibit_until = now + ms_from_100us(t.c.inhibit);
+      t.event_due = now + t.c.event_timer;
+    }
+  }
+
+  /// Write an RPDO's data (at least c.bytes long) into the mapped objects.
+  constexpr void apply(const config &c, std::span<const std::uint8_t> data) noexcept {
+    std::size_t offset = 0;
+    std::uint8_t refused = 0;
+    for (const auto &m : c.entries()) {
+      if (!m.is_dummy()) {
+        const od::entry *e = dict_.find(m.index, m.sub);
+        std::array<std::uint8_t, 8> v{};
+        std::size_t n = 0;
+        if (e != nullptr) {
+          n = od::is_byte_string(e->type) ? m.bits / 8U : e->width();
+          const auto raw = pdo::unpack(data, offset, m.bits);
+          if (n > v.size() || !raw ||
+              !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
+                              byte_order::little)) {
+            n = 0;
+          }
+        }
+        if (n == 0U || store_->write({m.index, m.sub}, 0, std::span<const std::uint8_t>(v).first(n),
+                                     true) != abort_code::none) {
+          ++refused;
+        }
+      }
+      offset += m.bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, c.number, refused});
+  }
+
+  template <class F>
+  [[nodiscard]] constexpr bool any(F f) const noexcept {
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rpdo_[i].c.valid() && f(rpdo_[i])) return true;
+    }
+    return false;
+  }
+  constexpr void begin() noexcept {
+    out_.clear();
+    events_.clear();
+  }
+  [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
+    return {out_.view(), operational_, deadline(now)};
+  }
+
+  static constexpr std::size_t out_capacity = MaxTpdo == 0U ? 1U : MaxTpdo;
+  static constexpr std::size_t event_capacity = 2U * MaxRpdo + MaxTpdo + 1U;
+
+  Store *store_;
+  od::dictionary dict_;
+  std::array<rx_slot, (MaxRpdo == 0U ? 1U : MaxRpdo)> rpdo_{};
+  std::array<tx_slot, (MaxTpdo == 0U ? 1U : MaxTpdo)> tpdo_{};
+  std::size_t rpdo_count_ = 0;
+  std::size_t tpdo_count_ = 0;
+  frame_list<out_capacity> out_{};
+  event_list<pdo_event, event_capacity> events_{};
+  bool operational_ = false;
+  bool report_long_ = true;
+};
+
+} // namespace fieldcodec::canopen::node

@@ -1,0 +1,266 @@
+// fieldcodec — the SDO channels of a node (CiA 301 7.5.2.33/34): the default server channel,
+// additional servers from the SDO server parameters 1201h–127Fh and clients from the SDO
+// client parameters 1280h–12FFh, each with its COB-IDs taken from the store and kept up to
+// date by the writes to them.
+//
+//   node::sdo_channels<Store, 2, 1, 64> sdo(store, 5);
+//   sdo.reload(dictionary);                     // 1200h.. and 1280h.. from the store
+//   if (auto s = sdo.on_frame(frame, now)) ...  // taken by a server or client: its step
+//   sdo.poll(now);                              // timeouts of every channel
+//   auto t = sdo.client(0).upload({0x1008, 0}, buffer, now);   // a transfer of client 0
+//
+// Server 0 is the default channel: 1200h when the dictionary has it (its values, usually
+// 0x600 + node / 0x580 + node), the predefined connection of the node otherwise. Servers 1..
+// take 1201h, 1202h, … in the order the dictionary has them, clients 1280h, 1281h, …. A
+// parameter object whose sub 1 or sub 2 has bit 31 set is a channel that does not exist: no
+// frames are routed to it. Writes to sub 1 / sub 2 follow the COB-ID rule of CiA 301 (bits
+// 11..29 refused, no change of a valid COB-ID while it stays valid: 0x06090030); a new value
+// moves the channel at once (a transfer running on it ends silently).
+#pragma once
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <utility>
+
+namespace fieldcodec::canopen::node {
+
+namespace sdo_index {
+inline constexpr std::uint16_t server = 0x1200U; ///< 1200h–127Fh
+inline constexpr std::uint16_t client = 0x1280U; ///< 1280h–12FFh
+inline constexpr std::uint16_t count = 0x80U;
+} // namespace sdo_index
+
+template <sdo::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer>
+class sdo_channels {
+  static_assert(Servers >= 1U, "a node has at least its default SDO server");
+  static_assert(Buffer >= 8U, "an SDO server buffer holds at least one segment and a u32");
+
+public:
+  /// State in the steps: is any transfer running?
+  using step = canopen::step<bool>;
+
+  /// Channels of node `node` over `store` (borrowed). Until reload() only server 0 exists, on
+  /// the predefined connection.
+  constexpr sdo_channels(Store &store, std::uint8_t node, std::uint32_t timeout_ms = 1000,
+                         sdo::server_options o = {}) noexcept
+      : store_(&store), node_(node), servers_(make_servers(store, node, timeout_ms, o, buffers_,
+                                                           std::make_index_sequence<Servers>{})),
+        clients_(make_clients(timeout_ms, std::make_index_sequence<Clients>{})) {
+    server_ok_[0] = sdo::channel::default_for(node).has_value();
+  }
+
+  sdo_channels(const sdo_channels &) = delete;
+  sdo_channels &operator=(const sdo_channels &) = delete;
+
+  /// Read the SDO parameter objects of `dict` from the store. Errors: too_long (the dictionary
+  /// has more servers / clients than Servers / Clients: the first ones are served).
+  [[nodiscard]] constexpr status reload(od::dictionary dict) noexcept {
+    status st{};
+    server_count_ = 1;
+    client_count_ = 0;
+    server_index_[0] = dict.contains(sdo_index::server, 1) ? sdo_index::server : 0U;
+    for (const od::entry &e : dict) {
+      if (e.sub != 1U) continue;
+      if (e.index > sdo_index::server && e.index < sdo_index::client) {
+        if (server_count_ == Servers) {
+          st = errc::too_long;
+          continue;
+        }
+        server_index_[server_count_++] = e.index;
+      } else if (e.index >= sdo_index::client && e.index < sdo_index::client + sdo_index::count) {
+        if (client_count_ == Clients) {
+          st = errc::too_long;
+          continue;
+        }
+        client_index_[client_count_++] = e.index;
+      }
+    }
+    for (std::size_t i = 0; i < Servers; ++i) connect_server(i);
+    for (std::size_t i = 0; i < client_count_; ++i) connect_client(i);
+    return st;
+  }
+
+  // ----- parameter writes ------------------------------------------------------------------
+
+  /// Would `value` be accepted at `a` (sub 1 / sub 2 of a served SDO parameter object)?
+  [[nodiscard]] constexpr abort_code
+  check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    if (a.sub != 1U && a.sub != 2U) return abort_code::none;
+    if (!serves(a.index)) return abort_code::none;
+    const auto v = u32_of(value);
+    if (!v) return abort_code::none;
+    return check_cob_id(*v, read_u32(*store_, a), false);
+  }
+  /// `a` was written: move the channel.
+  constexpr void written(od::address a) noexcept {
+    if (a.sub != 1U && a.sub != 2U) return;
+    for (std::size_t i = 0; i < server_count_; ++i) {
+      if (server_index_[i] == a.index && a.index != 0U) connect_server(i);
+    }
+    for (std::size_t i = 0; i < client_count_; ++i) {
+      if (client_index_[i] == a.index) connect_client(i);
+    }
+  }
+
+  // ----- traffic ---------------------------------------------------------------------------
+
+  /// A frame for a server (its request COB-ID) or a client (its response COB-ID): that
+  /// machine's step; nullopt when no channel takes the frame.
+  [[nodiscard]] constexpr std::optional<sdo::step> on_frame(const can_frame &f,
+                                                            std::uint32_t now) noexcept {
+    for (std::size_t i = 0; i < Servers; ++i) {
+      if (server_ok_[i] && servers_[i].connection().is_request(f)) {
+        return servers_[i].on_frame(f, now);
+      }
+    }
+    for (std::size_t i = 0; i < client_count_; ++i) {
+      if (client_ok_[i] && clients_[i].connection().is_response(f)) {
+        return clients_[i].on_frame(f, now);
+      }
+    }
+    return std::nullopt;
+  }
+
+  /// Timeouts of every channel (each sends at most one abort).
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    out_.clear();
+    for (std::size_t i = 0; i < Servers; ++i) {
+      for (const can_frame &f : servers_[i].poll(now).send) out_.push(f);
+    }
+    for (std::size_t i = 0; i < client_count_; ++i) {
+      for (const can_frame &f : clients_[i].poll(now).send) out_.push(f);
+    }
+    return {out_.view(), busy(), deadline(now)};
+  }
+
+  /// End every server transfer silently (NMT stopped or a reset; a client's transfer belongs to
+  /// the application and runs on until it completes or times out).
+  constexpr void stop_servers() noexcept {
+    for (std::size_t i = 0; i < Servers; ++i) servers_[i].set_connection(servers_[i].connection());
+  }
+
+  // ----- access ----------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr sdo::client &client(std::size_t i) noexcept { return clients_[i]; }
+  [[nodiscard]] constexpr const sdo::client &client(std::size_t i) const noexcept {
+    return clients_[i];
+  }
+  [[nodiscard]] constexpr const sdo::server<Store> &server(std::size_t i) const noexcept {
+    return servers_[i];
+  }
+  /// Does server / client i exist (valid COB-IDs)?
+  [[nodiscard]] constexpr bool server_valid(std::size_t i) const noexcept {
+    return i < Servers && server_ok_[i];
+  }
+  [[nodiscard]] constexpr bool client_valid(std::size_t i) const noexcept {
+    return i < Clients && client_ok_[i];
+  }
+  /// The node-ID of the server client i talks to (1280h + i sub 3; 0 when not given).
+  [[nodiscard]] constexpr std::uint8_t client_server_node(std::size_t i) const noexcept {
+    if (i >= client_count_) return 0;
+    return static_cast<std::uint8_t>(read_u32(*store_, {client_index_[i], 3}).value_or(0U));
+  }
+  [[nodiscard]] constexpr bool busy() const noexcept {
+    for (std::size_t i = 0; i < Servers; ++i) {
+      if (servers_[i].busy()) return true;
+    }
+    for (std::size_t i = 0; i < client_count_; ++i) {
+      if (clients_[i].busy()) return true;
+    }
+    return false;
+  }
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
+    std::optional<std::uint32_t> d;
+    for (std::size_t i = 0; i < Servers; ++i) d = earliest(d, servers_[i].deadline(), now);
+    for (std::size_t i = 0; i < client_count_; ++i) d = earliest(d, clients_[i].deadline(), now);
+    return d;
+  }
+  static constexpr std::size_t server_capacity() noexcept { return Servers; }
+  static constexpr std::size_t client_capacity() noexcept { return Clients; }
+
+private:
+  template <std::size_t... S>
+  [[nodiscard]] static constexpr std::array<sdo::server<Store>, Servers>
+  make_servers(Store &store, std::uint8_t node, std::uint32_t timeout_ms, sdo::server_options o,
+               std::array<std::array<std::uint8_t, Buffer>, Servers> &buffers,
+               std::index_sequence<S...>) noexcept {
+    // server 0 starts on the predefined connection, the others without one (until reload)
+    return {{sdo::server<Store>(S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{})
+                                        : sdo::channel{},
+                                store, std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
+  }
+  template <std::size_t... C>
+  [[nodiscard]] static constexpr std::array<sdo::client, Clients>
+  make_clients([[maybe_unused]] std::uint32_t timeout_ms, std::index_sequence<C...>) noexcept {
+    return {{(static_cast<void>(C), sdo::client(sdo::channel{}, timeout_ms))...}};
+  }
+
+  [[nodiscard]] constexpr bool serves(std::uint16_t index) const noexcept {
+    for (std::size_t i = 0; i < server_count_; ++i) {
+      if (server_index_[i] == index && index != 0U) return true;
+    }
+    for (std::size_t i = 0; i < client_count_; ++i) {
+      if (client_index_[i] == index) return true;
+    }
+    return false;
+  }
+  /// The channel of parameter object `index`, or nullopt when a COB-ID is not valid / missing.
+  [[nodiscard]] constexpr std::optional<sdo::channel>
+  channel_of(std::uint16_t index) const noexcept {
+    const auto rx = read_u32(*store_, {index, 1});
+    const auto tx = read_u32(*store_, {index, 2});
+    if (!rx || !tx) return std::nullopt;
+    auto ch = sdo::channel::from_cob_ids(*rx, *tx);
+    if (!ch) return std::nullopt;
+    return ch.value();
+  }
+  constexpr void connect_server(std::size_t i) noexcept {
+    std::optional<sdo::channel> ch;
+    if (i == 0U && server_index_[0] == 0U) {
+      const auto d = sdo::channel::default_for(node_);
+      if (d) ch = d.value();
+    } else if (i < server_count_) {
+      ch = channel_of(server_index_[i]);
+    }
+    server_ok_[i] = ch.has_value();
+    servers_[i].set_connection(ch.value_or(sdo::channel{}));
+  }
+  constexpr void connect_client(std::size_t i) noexcept {
+    std::optional<sdo::channel> ch;
+    if (i < client_count_) ch = channel_of(client_index_[i]);
+    client_ok_[i] = ch.has_value();
+    if (clients_[i].busy()) (void)clients_[i].cancel(); // the channel it ran on is gone
+    (void)clients_[i].set_connection(ch.value_or(sdo::channel{}));
+  }
+
+  static constexpr std::size_t client_slots = Clients == 0U ? 1U : Clients;
+
+  Store *store_;
+  std::uint8_t node_;
+  std::array<std::array<std::uint8_t, Buffer>, Servers> buffers_{};
+  std::array<sdo::server<Store>, Servers> servers_;
+  std::array<sdo::client, Clients> clients_;
+  std::array<std::uint16_t, Servers> server_index_{};
+  std::array<std::uint16_t, client_slots> client_index_{};
+  std::array<bool, Servers> server_ok_{};
+  std::array<bool, client_slots> client_ok_{};
+  std::size_t server_count_ = 1;
+  std::size_t client_count_ = 0;
+  frame_list<Servers + Clients> out_{};
+};
+
+} // namespace fieldcodec::canopen::node
