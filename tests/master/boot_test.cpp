@@ -182,3 +182,24 @@ TEST_CASE("boot: refusals") {
   REQUIRE(b.start(axis_config::configuration, 0));
   CHECK(b.start(axis_config::configuration, 0).error() == errc::bad_state);
 }
+
+TEST_CASE("boot: the heartbeat entry starts the master's heartbeat consumer") {
+  harness h(5, {.heartbeat_timeout_ms = 500, .consumer_time_ms = 150});
+  h.heartbeats = true;
+  make_identity(h.dev);
+  h.run(h.machine.start(axis_config::configuration, h.now).value());
+  REQUIRE(h.machine.state() == boot_state::done);
+  const auto entry = h.machine.heartbeat_entry();
+  CHECK(entry == fieldcodec::canopen::node::consumer_entry{5, 150});
+  fieldcodec::canopen::node::heartbeat_consumer<2> consumer;
+  CHECK(consumer.configure(0, entry.to_u32(), h.now) == csdo::abort_code::none);
+  (void)consumer.on_frame(co::nmt::encode_heartbeat(5, co::nmt::state::operational).value(), h.now);
+  REQUIRE(consumer.events().size() == 1U);
+  CHECK(consumer.events()[0].what == fieldcodec::canopen::node::heartbeat_event::kind::started);
+  (void)consumer.poll(h.now + 150);
+  REQUIRE(consumer.events().size() == 1U);
+  CHECK(consumer.events()[0].what == fieldcodec::canopen::node::heartbeat_event::kind::lost);
+  // without a consumer time the entry is inactive
+  harness none(5, {});
+  CHECK_FALSE(none.machine.heartbeat_entry().active());
+}

@@ -5,8 +5,9 @@
 //   2. read 1000h and 1018h sub 1..4 and compare them with the expected identity (0 = not
 //      checked); a mismatch names the field, the expected and the actual value;
 //   3. run the configuration list (master::configurator: retries, timeout, verify);
-//   4. optionally wait for the first heartbeat of the device (its producer runs); the caller then
-//      starts its heartbeat consumer for the node;
+//   4. optionally wait for the first heartbeat of the device (its producer runs), then start
+//      the master's heartbeat consumption: `heartbeat_entry()` is the 1016h entry {node,
+//      consumer time} for the caller's `canopen::node::heartbeat_consumer`;
 //   5. NMT start (0x01), report.
 //
 // One machine per device; a master with several devices runs several, each with its own SDO
@@ -15,6 +16,7 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/node/heartbeat.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
@@ -91,8 +93,11 @@ struct boot_options {
   bool wait_boot_up = true;        ///< wait for the boot-up message (after the reset, or alone)
   std::uint32_t boot_timeout_ms = 2000;
   std::uint32_t heartbeat_timeout_ms = 0; ///< 0: do not wait for a heartbeat
-  bool start = true;                      ///< send NMT start at the end
-  config_options config{};                ///< for the configuration list
+  /// The master's heartbeat consumer time for this node (ms; 0: none): heartbeat_entry().
+  /// Usually 1.5 to 2 × the producer time the configuration list writes to 1017h.
+  std::uint16_t consumer_time_ms = 0;
+  bool start = true;       ///< send NMT start at the end
+  config_options config{}; ///< for the configuration list
 };
 
 class boot {
@@ -168,6 +173,12 @@ public:
   /// The identity read from the device (fields not checked stay 0).
   [[nodiscard]] constexpr identity read_identity_values() const noexcept { return read_; }
   [[nodiscard]] constexpr std::uint8_t node() const noexcept { return node_; }
+  /// The entry with which the master consumes this node's heartbeat (1016h format: node,
+  /// consumer_time_ms); inactive when consumer_time_ms is 0. Start consumption when state() is
+  /// done: `consumer.configure(i, boot.heartbeat_entry().to_u32(), now)`.
+  [[nodiscard]] constexpr canopen::node::consumer_entry heartbeat_entry() const noexcept {
+    return {node_, opt_.consumer_time_ms};
+  }
 
 private:
   [[nodiscard]] static constexpr od::address address_of(identity_field f) noexcept {
