@@ -1,5 +1,6 @@
 # fieldcodec_generate_dictionary(<target> INPUT <file>
-#                                [NAME <namespace>] [OUTPUT_DIR <dir>] [STRICT])
+#                                [NAME <namespace>] [OUTPUT_DIR <dir>] [STRICT]
+#                                [OPTIONS <generator option>...])
 #
 # Generates <OUTPUT_DIR>/fieldcodec/dictionaries/<NAME>.hpp from an EDS, DCF or CSV file at
 # build time (re-generated when the file or the generator changes) and makes <target> depend
@@ -10,11 +11,12 @@
 #               than a letter or digit replaced by '_' (runs collapsed), "n_" before a digit
 #   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/fieldcodec_generated
 #   STRICT      warnings about the input are errors
+#   OPTIONS     further fieldcodec-gen options, e.g. --string-capacity 0x2122=1024
 #
 # The generator is the fieldcodec-gen target when it exists (fieldcodec built as a
 # subproject), else the program named by FIELDCODEC_GEN_EXECUTABLE or found on the PATH.
 function(fieldcodec_generate_dictionary target)
-  cmake_parse_arguments(ARG "STRICT" "INPUT;NAME;OUTPUT_DIR" "" ${ARGN})
+  cmake_parse_arguments(ARG "STRICT" "INPUT;NAME;OUTPUT_DIR" "OPTIONS" ${ARGN})
   if(NOT ARG_INPUT)
     message(FATAL_ERROR "fieldcodec_generate_dictionary: INPUT is required")
   endif()
@@ -50,7 +52,7 @@ function(fieldcodec_generate_dictionary target)
   add_custom_command(
     OUTPUT "${out}"
     COMMAND ${CMAKE_COMMAND} -E make_directory "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries"
-    COMMAND ${gen} ${strict} --quiet --name ${ARG_NAME} -o "${out}" "${input}"
+    COMMAND ${gen} ${strict} ${ARG_OPTIONS} --quiet --name ${ARG_NAME} -o "${out}" "${input}"
     DEPENDS "${input}" ${gen_dep}
     COMMENT "fieldcodec-gen: ${ARG_NAME}.hpp from ${ARG_INPUT}"
     VERBATIM)

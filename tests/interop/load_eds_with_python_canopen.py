@@ -12,19 +12,31 @@ Runs with Debian's /usr/bin/python3 (python-can: apt-get install python3-can) an
 ../shared/peers/python-canopen (or $FIELDCODEC_PYTHON_CANOPEN). When either is missing the
 script says so and exits 77, which CTest reports as skipped.
 
-usage: load_eds_with_python_canopen.py [REPO_ROOT]
+With --gen FIELDCODEC_GEN, each EDS/DCF of dictionaries/ also goes through fieldcodec's own EDS
+export (fieldcodec-gen --eds) and the exported file must load the same way and hold, as python
+reads it, the same objects with the same data types, access and defaults as the original.
+
+usage: load_eds_with_python_canopen.py [REPO_ROOT] [--gen FIELDCODEC_GEN]
 """
 import glob
 import os
 import re
+import subprocess
 import sys
+import tempfile
 
 SKIP = 77
 
 
 def main() -> int:
     here = os.path.dirname(os.path.abspath(__file__))
-    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", ".."))
+    args = sys.argv[1:]
+    gen = None
+    if "--gen" in args:
+        i = args.index("--gen")
+        gen = args[i + 1]
+        del args[i:i + 2]
+    root = os.path.abspath(args[0] if args else os.path.join(here, "..", ".."))
     peer = os.environ.get("FIELDCODEC_PYTHON_CANOPEN",
                           os.path.join(root, "..", "shared", "peers", "python-canopen"))
     if not os.path.isdir(os.path.join(peer, "canopen")):
@@ -68,7 +80,62 @@ def main() -> int:
             failures += 1
             print(f"FAILED  {name}: {type(e).__name__}: {e}")
     print(f"{len(files) - failures} of {len(files)} files load in python canopen")
+    if gen:
+        failures += round_trips(canopen, root, gen)
     return 1 if failures else 0
+
+
+def described(od):
+    """What python read: (index, sub) -> (data type, access, default)."""
+    import canopen  # pylint: disable=import-outside-toplevel
+    out = {}
+    for obj in od.values():
+        subs = [obj] if isinstance(obj, canopen.objectdictionary.Variable) else obj.values()
+        for v in subs:
+            out[(v.index, v.subindex)] = (v.data_type, v.access_type, v.default)
+    return out
+
+
+def round_trips(canopen, root, gen):
+    """Each EDS/DCF of dictionaries/ exported by fieldcodec-gen loads alike in python."""
+    failures = 0
+    sources = sorted(glob.glob(os.path.join(root, "dictionaries", "*.eds")) +
+                     glob.glob(os.path.join(root, "dictionaries", "*.dcf")))
+    with tempfile.TemporaryDirectory() as tmp:
+        for path in sources:
+            name = os.path.relpath(path, root)
+            out = os.path.join(tmp, os.path.basename(path))
+            try:
+                r = subprocess.run([gen, "--quiet", "--eds", out, path], capture_output=True,
+                                   text=True, check=False)
+                if r.returncode != 0:
+                    raise RuntimeError(f"fieldcodec-gen --eds failed: {r.stderr.strip()}")
+                original = described(canopen.import_od(path, node_id=1))
+                exported_od = canopen.import_od(out, node_id=1)
+                node = canopen.RemoteNode(1, exported_od)
+                canopen.Network().add_node(node)
+                node.rpdo.read(from_od=True)
+                node.tpdo.read(from_od=True)
+                exported = described(exported_od)
+                missing = sorted(set(original) - set(exported))
+                extra = sorted(set(exported) - set(original))
+                differ = sorted(k for k in set(original) & set(exported)
+                                if original[k] != exported[k])
+                if missing or extra or differ:
+                    def show(keys):
+                        return ", ".join(f"{i:04X}h:{s:02X}" for i, s in keys[:5])
+                    detail = [f"missing {show(missing)}" if missing else "",
+                              f"extra {show(extra)}" if extra else "",
+                              "differ " + "; ".join(f"{i:04X}h:{s:02X} {original[(i, s)]} -> "
+                                                    f"{exported[(i, s)]}"
+                                                    for i, s in differ[:3]) if differ else ""]
+                    raise ValueError(", ".join(d for d in detail if d))
+                print(f"ok      {name} exported by fieldcodec-gen: {len(exported)} entries "
+                      "alike in python")
+            except Exception as e:  # pylint: disable=broad-except
+                failures += 1
+                print(f"FAILED  {name} exported by fieldcodec-gen: {type(e).__name__}: {e}")
+    return failures
 
 
 if __name__ == "__main__":

@@ -385,8 +385,10 @@ public:
     error_ = transfer_error{e, abort_code::none, a};
   }
   constexpr void stop() noexcept { state_ = transfer_state::idle; }
+  /// The deadline make() reports has passed (modulo 2^32 like every deadline: a `now` a little
+  /// older than the last activity is "not yet", not a wrapped-around timeout).
   [[nodiscard]] constexpr bool timed_out(std::uint32_t now) const noexcept {
-    return busy() && now - last_ >= timeout_ms_;
+    return busy() && reached(last_ + timeout_ms_, now);
   }
   [[nodiscard]] constexpr step make(frames f) const noexcept {
     step s;

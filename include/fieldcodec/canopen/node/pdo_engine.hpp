@@ -74,7 +74,7 @@ namespace fieldcodec::canopen::node {
   case pdo::mapping_problem::not_mappable:
   case pdo::mapping_problem::no_access:
   case pdo::mapping_problem::length_mismatch:
-  case pdo::mapping_problem::overlap: return abort_code::not_mappable;
+  case pdo::mapping_problem::overlap: return abort_code::not_mappable; // POWERLINK only
   case pdo::mapping_problem::too_long:
   case pdo::mapping_problem::too_many_entries: return abort_code::pdo_too_long;
   }

@@ -1,0 +1,453 @@
+// The fieldcodec side of the interoperability test (tests/interop/, docs/canopen.md
+// "Interoperability"): the library's CANopen node (canopen/node/device.hpp) and SDO client,
+// speaking candump-style frames on standard input and output so that a python-can virtual bus
+// (python canopen, tests/interop/interop_peer.py) can carry them.
+//
+// usage: interop_node DICTIONARY NODE      DICTIONARY: xenax | corpus
+//
+// Standard input, one line each:
+//   ID#DATA, ID#R, ID#R<dlc>                      a frame from the bus
+//   !upload NODE INDEX SUB MODE                   the SDO client reads an object of NODE
+//   !download NODE INDEX SUB HEX MODE             … and writes one (HEX may be "-": 0 bytes)
+//        MODE: normal | block | block-nocrc | block-switch (protocol switch threshold 255)
+//   !value INDEX SUB                              this node's store: the value of an object
+//   !set INDEX SUB HEX                            … the application writes a value
+//   !start                                        power-on: boot-up, pre-operational
+//   !state                                        the NMT state
+//   !last sync|time|emcy                          what the node decoded last from others
+//   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
+//   !emcy-clear CODE                              the error is gone
+//   !tpdo N                                       the application's event for TPDO N
+//   !pack MAPPINGS VALUES                         pdo::pack_all (mappings hex, values decimal)
+//   !quit
+// Standard output: frames to the bus (ID#DATA) and one answer per command line:
+//   = ok HEX            = error ERRC ABORT(8 hex digits)
+//
+// `node_glue` puts the commands on the node (node::device) and notes what the node does not
+// consume (TIME, other nodes' EMCY) for `!last`.
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/node/device.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/pdo.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/core/result.hpp>
+#include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/frame_record.hpp>
+#ifdef FIELDCODEC_INTEROP_CORPUS
+#include <fieldcodec/dictionaries/interop_corpus.hpp>
+#endif
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace od = fieldcodec::od;
+
+std::uint32_t now_ms() {
+  static const auto start = std::chrono::steady_clock::now();
+  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                        std::chrono::steady_clock::now() - start)
+                                        .count());
+}
+
+void put_line(const std::string &s) {
+  std::fputs(s.c_str(), stdout);
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+}
+
+void transmit(const co::can_frame &f) {
+  put_line(fieldcodec::host::candump::format_frame(fieldcodec::host::to_record(f)));
+}
+
+template <class Frames>
+void transmit_all(const Frames &fs) {
+  for (const co::can_frame f : fs) transmit(f);
+}
+
+std::string hex(std::span<const std::uint8_t> bytes) {
+  static constexpr char digits[] = "0123456789ABCDEF";
+  std::string out;
+  for (const std::uint8_t b : bytes) {
+    out += digits[b >> 4U];
+    out += digits[b & 0xFU];
+  }
+  return out;
+}
+
+std::optional<std::vector<std::uint8_t>> unhex(std::string_view s) {
+  if (s == "-") return std::vector<std::uint8_t>{};
+  if (s.size() % 2U != 0U) return std::nullopt;
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i < s.size(); i += 2U) {
+    unsigned v = 0;
+    for (std::size_t k = 0; k < 2U; ++k) {
+      const char c = s[i + k];
+      v <<= 4U;
+      if (c >= '0' && c <= '9') {
+        v |= static_cast<unsigned>(c - '0');
+      } else if (c >= 'A' && c <= 'F') {
+        v |= static_cast<unsigned>(c - 'A' + 10);
+      } else if (c >= 'a' && c <= 'f') {
+        v |= static_cast<unsigned>(c - 'a' + 10);
+      } else {
+        return std::nullopt;
+      }
+    }
+    out.push_back(static_cast<std::uint8_t>(v));
+  }
+  return out;
+}
+
+std::string abort_hex(sdo::abort_code c) {
+  char buf[9];
+  std::snprintf(buf, sizeof buf, "%08X", static_cast<unsigned>(c));
+  return buf;
+}
+
+void answer_error(fieldcodec::errc e, sdo::abort_code c) {
+  put_line("= error " + std::string(fieldcodec::to_string(e)) + " " + abort_hex(c));
+}
+
+/// The SDO client of the bridge: one transfer at a time, started by a command line, answered
+/// when it ends.
+class client_side {
+public:
+  void start(const std::vector<std::string> &w, std::uint32_t now) {
+    // !upload NODE INDEX SUB MODE  /  !download NODE INDEX SUB HEX MODE
+    const bool upload = w[0] == "!upload";
+    if (w.size() != (upload ? 5U : 6U)) return answer_error(fieldcodec::errc::bad_syntax, {});
+    const auto node = static_cast<std::uint8_t>(std::stoul(w[1], nullptr, 10));
+    const od::address a{static_cast<std::uint16_t>(std::stoul(w[2], nullptr, 16)),
+                        static_cast<std::uint8_t>(std::stoul(w[3], nullptr, 16))};
+    const std::string &mode = w.back();
+    sdo::block_options opt;
+    opt.crc = mode != "block-nocrc";
+    if (mode == "block-switch") opt.switch_threshold = 255; // the server may answer normally
+    const bool block = mode != "normal";
+    client_.emplace(node, 2000);
+    upload_ = upload;
+    fieldcodec::result<sdo::step> s = fieldcodec::errc::bad_state;
+    if (upload) {
+      buffer_.assign(4096, 0);
+      s = block ? client_->block_upload(a, buffer_, now, opt) : client_->upload(a, buffer_, now);
+    } else {
+      auto data = unhex(w[4]);
+      if (!data) return answer_error(fieldcodec::errc::bad_digit, {});
+      buffer_ = *data;
+      s = block ? client_->block_download(a, buffer_, now, opt)
+                : client_->download(a, buffer_, now);
+    }
+    if (!s) {
+      client_.reset();
+      return answer_error(s.error(), {});
+    }
+    transmit_all(s.value().send);
+    check_end();
+  }
+  void on_frame(const co::can_frame &f, std::uint32_t now) {
+    if (!client_) return;
+    transmit_all(client_->on_frame(f, now).send);
+    check_end();
+  }
+  void poll(std::uint32_t now) {
+    if (!client_) return;
+    transmit_all(client_->poll(now).send);
+    check_end();
+  }
+
+private:
+  void check_end() {
+    if (!client_) return;
+    const auto st = client_->state();
+    if (st == sdo::transfer_state::done) {
+      put_line("= ok " + (upload_ ? hex(client_->received()) : std::string()));
+      client_.reset();
+    } else if (st == sdo::transfer_state::failed) {
+      const auto e = client_->error().value_or(sdo::transfer_error{});
+      answer_error(e.error, e.abort);
+      client_.reset();
+    }
+  }
+  std::optional<sdo::client> client_;
+  std::vector<std::uint8_t> buffer_;
+  bool upload_ = false;
+};
+
+/// What the node received from others (python's SYNC, TIME and EMCY producers), for `!last`.
+struct received_log {
+  std::size_t syncs = 0;
+  std::optional<std::uint8_t> sync_counter;
+  std::optional<fieldcodec::od::time_value> time;
+  std::optional<co::emcy::received> emcy;
+};
+
+/// The library's node (canopen/node/device.hpp) behind the bridge's commands. What the node
+/// does not consume (TIME, other nodes' EMCY) is decoded here for `!last`.
+template <class Store, co::node::capacity C>
+class node_glue {
+public:
+  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node) {}
+
+  void start(std::uint32_t now) {
+    if (auto s = dev_.start(now)) transmit_all(s.value().send);
+  }
+  void on_frame(const co::can_frame &f, std::uint32_t now) {
+    note(f);
+    transmit_all(dev_.on_frame(f, now).send);
+  }
+  void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
+
+  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
+    return dev_.set(a, v);
+  }
+  [[nodiscard]] bool raise(std::uint16_t code, std::uint8_t bits,
+                           const std::array<std::uint8_t, 5> &manufacturer, std::uint32_t now) {
+    auto s = dev_.raise(code, now, bits, manufacturer);
+    if (s) transmit_all(s.value().send);
+    return s.has_value();
+  }
+  [[nodiscard]] bool clear(std::uint16_t code, std::uint32_t now) {
+    auto s = dev_.clear(code, now);
+    if (s) transmit_all(s.value().send);
+    return s.has_value();
+  }
+  /// The application's event for TPDO n: the node sends it at its next poll.
+  [[nodiscard]] bool send_tpdo(std::uint16_t n, std::uint32_t now) {
+    if (!dev_.request_tpdo(n)) return false;
+    poll(now);
+    return true;
+  }
+  [[nodiscard]] co::nmt::state state() const { return dev_.state(); }
+  [[nodiscard]] const received_log &log() const { return log_; }
+
+private:
+  void note(const co::can_frame &f) {
+    if (f.id == co::cob_id::sync && !f.rtr) {
+      if (auto c = co::sync::decode(f)) {
+        ++log_.syncs;
+        log_.sync_counter = c.value();
+      }
+    } else if (f.id == co::cob_id::time && !f.rtr) {
+      if (auto t = co::time_stamp::decode(f)) log_.time = t.value();
+    } else if (f.id > co::cob_id::emcy_base && f.id <= co::cob_id::emcy_base + 127U &&
+               f.id != co::cob_id::emcy_base + node_) {
+      if (auto e = co::emcy::decode(f)) log_.emcy = e.value();
+    }
+  }
+  std::uint8_t node_;
+  co::node::device<Store, C> dev_;
+  received_log log_;
+};
+
+/// `!last sync|time|emcy`: what the node decoded last from python's producers.
+void last(const received_log &log, const std::string &what) {
+  char buf[96];
+  if (what == "sync") {
+    if (log.sync_counter) {
+      std::snprintf(buf, sizeof buf, "= ok %zu %u", log.syncs, unsigned{*log.sync_counter});
+    } else {
+      std::snprintf(buf, sizeof buf, "= ok %zu -", log.syncs);
+    }
+  } else if (what == "time" && log.time) {
+    std::snprintf(buf, sizeof buf, "= ok %u %u", static_cast<unsigned>(log.time->ms),
+                  unsigned{log.time->days});
+  } else if (what == "emcy" && log.emcy) {
+    const auto &m = log.emcy->m;
+    std::snprintf(buf, sizeof buf, "= ok %u %04X %02X %s", unsigned{log.emcy->node},
+                  unsigned{m.error_code}, unsigned{m.error_register}, hex(m.manufacturer).c_str());
+  } else {
+    std::snprintf(buf, sizeof buf, "= error unknown_object 00000000");
+  }
+  put_line(buf);
+}
+
+std::vector<std::string> split(const std::string &s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (const char c : s) {
+    if (c == sep) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+/// `!pack MAPPINGS VALUES`: the PDO bytes of a mapping (comma-separated 32-bit mapping values in
+/// hex) holding the values (comma-separated, decimal, signed).
+void pack_command(const std::string &mappings, const std::string &values) {
+  std::vector<co::pdo::mapping_entry> map;
+  for (const auto &m : split(mappings, ',')) {
+    map.push_back(
+        co::pdo::mapping_entry::from_u32(static_cast<std::uint32_t>(std::stoul(m, nullptr, 16))));
+  }
+  std::vector<std::int64_t> raws;
+  for (const auto &v : split(values, ',')) raws.push_back(std::stoll(v, nullptr, 10));
+  std::array<std::uint8_t, 8> data{};
+  auto n = co::pdo::pack_all(map, raws, data);
+  if (!n) return answer_error(n.error(), {});
+  put_line("= ok " + hex(std::span<const std::uint8_t>(data).first(n.value())));
+}
+
+std::vector<std::string> words(const std::string &line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  for (std::string s; in >> s;) w.push_back(s);
+  return w;
+}
+
+template <class Glue, class Store>
+int run(Store &store, std::uint8_t node) {
+  static Glue glue(node, store);
+  client_side client;
+  std::string pending;
+  for (;;) {
+    pollfd p{STDIN_FILENO, POLLIN, 0};
+    const int ready = ::poll(&p, 1, 5);
+    const std::uint32_t now = now_ms();
+    if (ready > 0) {
+      char buf[4096];
+      const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+      if (n <= 0) return 0;
+      pending.append(buf, static_cast<std::size_t>(n));
+      std::size_t nl;
+      while ((nl = pending.find('\n')) != std::string::npos) {
+        const std::string line = pending.substr(0, nl);
+        pending.erase(0, nl + 1U);
+        if (line.empty()) continue;
+        if (line[0] != '!') {
+          auto r = fieldcodec::host::candump::parse_frame(line);
+          if (!r) {
+            std::fprintf(stderr, "interop_node: bad frame line '%s'\n", line.c_str());
+            return 2;
+          }
+          auto f = fieldcodec::host::to_canopen(r.value());
+          if (!f) continue;
+          glue.on_frame(f.value(), now);
+          client.on_frame(f.value(), now);
+          continue;
+        }
+        const auto w = words(line);
+        if (w[0] == "!quit") return 0;
+        if (w[0] == "!start") {
+          glue.start(now);
+          put_line("= ok ");
+        } else if (w[0] == "!state") {
+          put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
+        } else if (w[0] == "!last" && w.size() == 2U) {
+          last(glue.log(), w[1]);
+        } else if (w[0] == "!emcy" && w.size() >= 3U) {
+          // !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]: an application error appears
+          std::array<std::uint8_t, 5> manufacturer{};
+          if (w.size() > 3U) {
+            const auto bytes = unhex(w[3]).value_or(std::vector<std::uint8_t>{});
+            for (std::size_t i = 0; i < bytes.size() && i < 5U; ++i) manufacturer[i] = bytes[i];
+          }
+          const bool done = glue.raise(static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
+                                       static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16)),
+                                       manufacturer, now);
+          put_line(done ? "= ok " : "= error bad_state 00000000");
+        } else if (w[0] == "!emcy-clear" && w.size() == 2U) {
+          // !emcy-clear CODE: the error is gone
+          const bool done =
+              glue.clear(static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)), now);
+          put_line(done ? "= ok " : "= error bad_state 00000000");
+        } else if (w[0] == "!tpdo" && w.size() == 2U) {
+          if (glue.send_tpdo(static_cast<std::uint16_t>(std::stoul(w[1])), now)) {
+            put_line("= ok ");
+          } else {
+            answer_error(fieldcodec::errc::bad_state, {});
+          }
+        } else if (w[0] == "!pack" && w.size() == 3U) {
+          pack_command(w[1], w[2]);
+        } else if (w[0] == "!upload" || w[0] == "!download") {
+          client.start(w, now); // one `now` per round: machines need time that never goes back
+        } else if ((w[0] == "!value" || w[0] == "!set") && w.size() >= 3U) {
+          const od::address a{static_cast<std::uint16_t>(std::stoul(w[1], nullptr, 16)),
+                              static_cast<std::uint8_t>(std::stoul(w[2], nullptr, 16))};
+          if (w[0] == "!value") {
+            auto v = store.value(a);
+            if (v) {
+              put_line("= ok " + hex(v.value()));
+            } else {
+              answer_error(v.error(), {});
+            }
+          } else {
+            auto data = unhex(w.size() > 3U ? w[3] : "-");
+            const auto c = data ? glue.set(a, *data) : sdo::abort_code::general_error;
+            if (c == sdo::abort_code::none) {
+              put_line("= ok ");
+            } else {
+              answer_error(fieldcodec::errc::aborted, c);
+            }
+          }
+        } else {
+          answer_error(fieldcodec::errc::bad_syntax, {});
+        }
+      }
+    } else if (ready < 0) {
+      return 2;
+    }
+    glue.poll(now);
+    client.poll(now);
+  }
+}
+
+template <const od::dictionary &Dict, std::size_t N>
+int serve(std::uint8_t node) {
+  static constexpr auto layout = sdo::make_layout<N>(Dict);
+  static std::vector<std::uint8_t> storage(layout.storage_size());
+  static std::vector<std::uint8_t> staging(65536);
+  static sdo::dictionary_store<> store{Dict, layout, storage, staging};
+  if (auto s = store.init_defaults(node); !s) {
+    std::fprintf(stderr, "interop_node: init_defaults: %s\n",
+                 std::string(fieldcodec::to_string(s.error())).c_str());
+    return 2;
+  }
+  return run<node_glue<decltype(store), co::node::capacity_for(Dict)>>(store, node);
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: interop_node xenax|corpus NODE\n");
+    return 2;
+  }
+  const std::string dict = argv[1];
+  const auto node = static_cast<std::uint8_t>(std::atoi(argv[2]));
+  namespace d = fieldcodec::dictionaries;
+  if (dict == "xenax")
+    return serve<d::xenax_canopen::dictionary, d::xenax_canopen::dictionary.size()>(node);
+#ifdef FIELDCODEC_INTEROP_CORPUS
+  if (dict == "corpus")
+    return serve<d::interop_corpus::dictionary, d::interop_corpus::dictionary.size()>(node);
+#endif
+  std::fprintf(stderr, "interop_node: unknown dictionary '%s'\n", dict.c_str());
+  return 2;
+}
