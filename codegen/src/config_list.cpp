@@ -175,18 +175,26 @@ private:
     const char *kind = comm < 0x1800U ? "RPDO" : "TPDO";
     const int number = (comm & 0x1FFU) + 1;
     const entry *cob = find(comm, 1);
-    std::optional<chosen> cob_value;
-    if (cob != nullptr && od::writable(cob->access)) cob_value = final_value(*cob);
-    if (!cob_value || cob_value->bytes.size() != 4U) {
+    // a plain value and a flag, not an optional: GCC 12 -O2 warns (maybe-uninitialized) about
+    // copying the vector out of an optional here
+    chosen cob_value;
+    bool has_cob = false;
+    if (cob != nullptr && od::writable(cob->access)) {
+      if (auto v = final_value(*cob); v && v->bytes.size() == 4U) {
+        cob_value.bytes = v->bytes;
+        cob_value.node_relative = v->node_relative;
+        has_cob = true;
+      }
+    }
+    if (!has_cob) {
       diag_.warning(file_, cob != nullptr ? cob->line : 0, 1,
                     std::string(kind) + " " + std::to_string(number) +
                         ": no writable COB-ID value (sub 1): its parameters are written without "
                         "disabling the PDO first");
-      cob_value.reset();
     }
     // 1. disable: the COB-ID with bit 31 (valid) set
-    if (cob_value) {
-      chosen off = *cob_value;
+    if (has_cob) {
+      chosen off = cob_value;
       off.bytes[3] = static_cast<std::uint8_t>(off.bytes[3] | 0x80U);
       add(l, *cob, off);
     }
@@ -226,7 +234,7 @@ private:
       }
     }
     // 4. enable (when the final COB-ID has bit 31 clear; otherwise step 1 left it disabled)
-    if (cob_value && (cob_value->bytes[3] & 0x80U) == 0U) add(l, *cob, *cob_value);
+    if (has_cob && (cob_value.bytes[3] & 0x80U) == 0U) add(l, *cob, cob_value);
   }
 
   const dictionary &d_;
