@@ -59,6 +59,7 @@ bench::inputs<fieldcodec::decimal> g_eu_plimit; // 0.000 .. 100.000
 bench::inputs<fieldcodec::decimal> g_eu_temp;   // -50.000 .. 150.000
 bench::inputs<double> g_eu_double;              // 0.000 .. 100.000 as doubles
 bench::inputs<std::int64_t> g_raw_u16;          // 0 .. 32767
+bench::inputs<float> g_eu_float;                // 0.000 .. 100.000 as floats (a PLC REAL)
 
 void fill_inputs() {
   bench::rng r(42);
@@ -93,6 +94,7 @@ void fill_inputs() {
   for (auto &d : g_eu_temp) d = {r.between(-50'000, 150'000), 3};
   for (auto &v : g_eu_double) v = static_cast<double>(r.between(0, 100'000)) / 1000.0;
   for (auto &v : g_raw_u16) v = r.between(0, 32'767);
+  for (auto &v : g_eu_float) v = static_cast<float>(r.between(0, 100'000)) / 1000.0F;
 }
 
 // ---- byte order --------------------------------------------------------------------------
@@ -501,6 +503,20 @@ void add_scaling(bench::registry &r) {
         if (!(eu >= 0.0 && eu <= 100.0)) return bad;
         const double x = eu * 327.67;
         const auto raw = static_cast<std::int64_t>(x + 0.5);
+        return raw > 0xFFFF ? bad : raw;
+      });
+  bench::add<g_eu_float>(
+      r, "scaling/to_raw float x327.67 u16",
+      [](float eu) {
+        return fieldcodec::scaling::to_raw(eu, plimit, u16, plimit_range).value_or(bad);
+      },
+      [](float eu) {
+        // A careful hand-written version knows its input has 3 places: it recovers them from
+        // the float (widening it and scaling in binary would give 29730 for 90.73f, not 29729),
+        // then scales exactly.
+        if (!(eu >= 0.0F && eu <= 100.0F)) return bad;
+        const auto units = static_cast<std::int64_t>(static_cast<double>(eu) * 1000.0 + 0.5);
+        const std::int64_t raw = hand_round_div(units * 32767, 100'000);
         return raw > 0xFFFF ? bad : raw;
       });
   bench::add<g_raw_u16>(

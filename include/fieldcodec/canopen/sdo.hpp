@@ -307,13 +307,41 @@ inline constexpr command commands[] = {
   while (i < std::size(commands) && commands[i].type != t) ++i;
   return i;
 }
-[[nodiscard]] constexpr std::size_t command_for(direction d, std::uint8_t byte0) noexcept {
-  std::size_t i = 0;
-  while (i < std::size(commands) &&
-         !(commands[i].dir == d && (byte0 & commands[i].mask) == commands[i].bits)) {
-    ++i;
+// The masks look at bits 7..5 (the command specifier) and 1..0 only, so a command is found in
+// one step from those five bits: index (byte0 >> 5) << 2 | (byte0 & 3), per direction.
+static_assert([] {
+  for (const auto &c : commands) {
+    if ((c.mask & ~0xE3U) != 0U) return false;
   }
-  return i;
+  return std::size(commands) < 0xFFU;
+}());
+inline constexpr std::uint8_t no_command = 0xFF;
+/// [direction][key] → position in `commands` of the first command matching (no_command: none).
+inline constexpr std::array<std::array<std::uint8_t, 32>, 2> command_index = [] {
+  std::array<std::array<std::uint8_t, 32>, 2> t{};
+  for (std::size_t d = 0; d < 2U; ++d) {
+    for (unsigned key = 0; key < 32U; ++key) {
+      const auto byte0 = static_cast<std::uint8_t>(((key >> 2U) << 5U) | (key & 3U));
+      t[d][key] = no_command;
+      for (std::size_t i = 0; i < std::size(commands); ++i) {
+        const command &c = commands[i];
+        if (static_cast<std::size_t>(c.dir) == d && (byte0 & c.mask) == c.bits) {
+          t[d][key] = static_cast<std::uint8_t>(i);
+          break;
+        }
+      }
+    }
+  }
+  return t;
+}();
+/// The position of the command `byte0` stands for in direction `d`, std::size(commands) when
+/// there is none; one table load (issue 18) instead of a scan of the table.
+[[nodiscard]] constexpr std::size_t command_for(direction d, std::uint8_t byte0) noexcept {
+  const auto dir = static_cast<std::size_t>(d);
+  if (dir > 1U) return std::size(commands);
+  const unsigned b = byte0;
+  const std::uint8_t i = command_index[dir][((b >> 5U) << 2U) | (b & 3U)];
+  return i == no_command ? std::size(commands) : i;
 }
 
 constexpr void put_address(payload &p, od::address a) noexcept {
@@ -423,9 +451,9 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   const std::size_t ci = detail::command_for(d, p[0]);
   if (ci == std::size(detail::commands)) return errc::unknown_command;
   const detail::command *c = &detail::commands[ci];
+  const unsigned b0 = p[0];
   message m;
   m.type = c->type;
-  const unsigned b0 = p[0];
   switch (c->lay) {
   case detail::layout::segment:
     m.toggle = (b0 & detail::toggle_bit) != 0U;
@@ -442,7 +470,10 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
       const unsigned n = m.size_indicated ? (b0 >> 2U) & 3U : 0U;
       m.data_size = static_cast<std::uint8_t>(4U - n);
       m.size = m.data_size;
-      for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = p[4U + i];
+      // the 4 - n data bytes as one word (the unused ones zero), not a loop of run-time length
+      const auto v = to_bytes<std::uint32_t>(detail::get_u32(p) & (0xFFFF'FFFFU >> (8U * n)),
+                                             byte_order::little);
+      for (std::size_t i = 0; i < 4U; ++i) m.data[i] = v[i];
     } else if (m.size_indicated) {
       m.size = detail::get_u32(p);
     }
@@ -501,16 +532,27 @@ namespace detail {
   for (std::size_t i = 0; i < bytes.size() && i < max; ++i) m.data[i] = bytes[i];
   return m;
 }
+static_assert(commands[command_for(message_type::initiate_download_request)].bits == 0x20U &&
+              commands[command_for(message_type::initiate_download_request)].lay ==
+                  layout::initiate &&
+              commands[command_for(message_type::initiate_upload_response)].bits == 0x40U &&
+              commands[command_for(message_type::initiate_upload_response)].lay ==
+                  layout::initiate);
+/// The payload encode() makes of an expedited initiate message (written directly: the bytes
+/// and errors are encode's, in its order). `t` is initiate_download_request or
+/// initiate_upload_response.
 [[nodiscard]] constexpr result<payload> expedited(message_type t, od::address a,
                                                   std::span<const std::uint8_t> bytes,
                                                   bool size_indicated) noexcept {
   if (bytes.size() > 4U) return errc::too_long;
-  message m;
-  m.type = t;
-  m.address = a;
-  m.expedited = true;
-  m.size_indicated = size_indicated;
-  return encode(with_bytes(m, bytes, 4));
+  if (bytes.empty() || (!size_indicated && bytes.size() != 4U)) return errc::bad_length;
+  const unsigned bits = t == message_type::initiate_download_request ? 0x20U : 0x40U;
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(bits |
+                                   (size_indicated ? ((4U - bytes.size()) << 2U) | 0x03U : 0x02U));
+  put_address(p, a);
+  for (std::size_t i = 0; i < bytes.size(); ++i) p[4U + i] = bytes[i];
+  return p;
 }
 [[nodiscard]] constexpr result<payload> initiate(message_type t, od::address a, std::uint32_t size,
                                                  bool size_indicated) noexcept {
@@ -747,11 +789,11 @@ struct channel {
   }
   [[nodiscard]] constexpr result<can_frame> request(const result<payload> &p) const noexcept {
     if (!p) return p.error();
-    return frame(request_id, p.value());
+    return can_frame{request_id, false, 8, p.value()}; // built in place: no copy of a frame
   }
   [[nodiscard]] constexpr result<can_frame> response(const result<payload> &p) const noexcept {
     if (!p) return p.error();
-    return frame(response_id, p.value());
+    return can_frame{response_id, false, 8, p.value()}; // built in place: no copy of a frame
   }
   /// Is `f` a data frame on this connection's request / response identifier (any DLC)? A
   /// channel without identifiers (0: the NMT COB-ID, never an SDO) matches nothing.
@@ -787,6 +829,33 @@ private:
   auto p = payload_of(f);
   if (!p) return p.error();
   return decode(p.value(), d);
+}
+
+/// What an expedited download request carries (client → server, 0x22 / 0x23 / 0x27 / 0x2B /
+/// 0x2F): the object, 1..4 data bytes and their value (little-endian, unused bytes not read).
+struct expedited_write {
+  od::address address{};
+  std::uint8_t size = 0; ///< data bytes, 1..4 (4 without size indication)
+  bool size_indicated = false;
+  std::uint32_t value = 0;
+
+  friend constexpr bool operator==(const expedited_write &,
+                                   const expedited_write &) noexcept = default;
+};
+
+/// A server's hot path: read an expedited download request straight from the frame, without
+/// building a `message` (`decode` gives the same object, size and bytes for such a frame).
+/// Errors: those of payload_of; unexpected_frame (a valid SDO request of another kind, or a
+/// byte 0 that is no request; `decode` tells them apart).
+[[nodiscard]] constexpr result<expedited_write>
+decode_expedited_write(const can_frame &f) noexcept {
+  FIELDCODEC_TRY_STATUS(expect_data(f, 8));
+  const unsigned b0 = f.data[0];
+  if ((b0 & 0xE2U) != 0x22U) return errc::unexpected_frame;
+  const bool indicated = (b0 & 0x01U) != 0U;
+  const unsigned n = indicated ? (b0 >> 2U) & 3U : 0U;
+  return expedited_write{detail::get_address(f.data), static_cast<std::uint8_t>(4U - n), indicated,
+                         detail::get_u32(f.data) & (0xFFFF'FFFFU >> (8U * n))};
 }
 
 /// A decoded frame of the predefined connection set with its node and direction.

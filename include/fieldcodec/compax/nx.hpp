@@ -411,11 +411,39 @@ inline constexpr std::uint8_t code_assign_p = 0x50;
 inline constexpr std::uint8_t code_assign_v = 0x56;
 inline constexpr std::uint8_t digit_zero = 0x30; ///< ASCII "0"
 
+inline constexpr std::uint8_t no_family = 0xFF;
+inline constexpr std::size_t op_count = static_cast<std::size_t>(op::assign_v) + 1U;
+static_assert(families.size() < 64U, "code_index packs a family position into 6 bits");
+
+/// op → position in `families` of the first family of that op (no_family: none), built at
+/// compile time from the table, so that find_family is one load (issue 18).
+inline constexpr std::array<std::uint8_t, op_count> family_index = [] {
+  std::array<std::uint8_t, op_count> t{};
+  for (std::size_t o = 0; o < op_count; ++o) {
+    t[o] = no_family;
+    for (std::size_t i = 0; i < families.size(); ++i) {
+      if (static_cast<std::size_t>(families[i].o) == o) {
+        t[o] = static_cast<std::uint8_t>(i);
+        break;
+      }
+    }
+  }
+  return t;
+}();
+
+// Built for size (-Os, firmware), the two lookups scan `families` as before instead: the tables
+// cost 280 bytes of flash, the scan finds the same entry (tests/compax/nx_lookup_test.cpp).
 [[nodiscard]] constexpr const family *find_family(op o) noexcept {
+#ifdef __OPTIMIZE_SIZE__
   for (const auto &f : families) {
     if (f.o == o) return &f;
   }
   return nullptr;
+#endif
+  const auto k = static_cast<std::size_t>(o);
+  if (k >= op_count) return nullptr;
+  const std::uint8_t i = family_index[k];
+  return i == no_family ? nullptr : &families[i];
 }
 
 struct decoded_code {
@@ -423,16 +451,49 @@ struct decoded_code {
   arg_kind kind;
 };
 
-/// Command code → family and argument form (for the single-argument families).
+/// Command code → (family position) | (argument form << 6), no_family for an unknown code: the
+/// first match of the table scan below, for every code byte, computed at compile time.
+inline constexpr std::array<std::uint8_t, 256> code_index = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (unsigned code = 0; code < 256U; ++code) {
+    t[code] = no_family;
+    for (std::size_t i = 0; i < families.size(); ++i) {
+      const family &f = families[i];
+      unsigned form = 4; // none
+      if (code == f.code) {
+        form = 0;
+      } else if (f.has_forms && code == (f.code | parameter_flag)) {
+        form = 1;
+      } else if (f.has_forms && code == (f.code | variable_flag)) {
+        form = 2;
+      }
+      if (form != 4U) {
+        t[code] = static_cast<std::uint8_t>(i | (form << 6U));
+        break;
+      }
+    }
+  }
+  return t;
+}();
+
+/// Command code → family and argument form (for the single-argument families), in one load.
 [[nodiscard]] constexpr result<decoded_code> find_code(std::uint8_t code) noexcept {
+#ifdef __OPTIMIZE_SIZE__
   for (const auto &f : families) {
     if (code == f.code) return decoded_code{&f, arg_kind::value};
-    if (f.has_forms && code == (f.code | parameter_flag))
+    if (f.has_forms && code == (f.code | parameter_flag)) {
       return decoded_code{&f, arg_kind::parameter};
-    if (f.has_forms && code == (f.code | variable_flag))
+    }
+    if (f.has_forms && code == (f.code | variable_flag)) {
       return decoded_code{&f, arg_kind::variable};
+    }
   }
   return errc::unknown_command;
+#endif
+  const std::uint8_t e = code_index[code];
+  if (e == no_family) return errc::unknown_command;
+  constexpr arg_kind forms[3] = {arg_kind::value, arg_kind::parameter, arg_kind::variable};
+  return decoded_code{&families[e & 0x3FU], forms[e >> 6U]};
 }
 
 /// May c.second_operation follow c.operation in a combined record (and c.third_operation

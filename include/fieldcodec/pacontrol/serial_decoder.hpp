@@ -77,6 +77,7 @@ public:
   ///  * bad_checksum     – CHECK does not match the body under the direction's rule;
   ///  * unexpected_frame – a frame or poll the options do not accept.
   constexpr result<frame_kind> push(std::uint8_t b) noexcept {
+    if (state_ == state::body) return on_body(b); // most bytes: one test, not a jump table
     switch (state_) {
     case state::idle: return on_idle(b);
     case state::hunting: return on_hunting(b);
@@ -125,7 +126,8 @@ private:
     state_ = state::after_soh;
     len_ = 0;
     fields_ = 1;
-    field_len_ = 0;
+    field_start_ = 0;
+    xor_ = 0;
     check_len_ = 0;
     check_value_ = 0;
   }
@@ -167,6 +169,13 @@ private:
   }
 
   constexpr result<frame_kind> on_body(std::uint8_t b) noexcept {
+    // The usual byte first: printable and not a separator (control bytes are all below 0x20).
+    if (b >= 0x20U && b < 0x7FU && b != static_cast<std::uint8_t>(separator)) {
+      if (len_ - field_start_ >= max_field_chars) return drop(errc::too_long, state::hunting);
+      xor_ = static_cast<std::uint8_t>(xor_ ^ b);
+      body_[len_++] = static_cast<char>(b); // len_ < max_body_chars: fields and lengths bounded
+      return frame_kind::none;
+    }
     if (b == soh || b == eot) return cut(b);
     if (b == etx) {
       state_ = state::check;
@@ -174,14 +183,13 @@ private:
     }
     if (b == stx) return drop(errc::bad_syntax, state::hunting);
     if (b < 0x20U || b >= 0x7FU) return drop(errc::bad_character, state::hunting);
-    if (b == static_cast<std::uint8_t>(separator)) {
-      if (fields_ == acknowledgement_fields) return drop(errc::bad_length, state::hunting);
-      ++fields_;
-      field_len_ = 0;
-    } else if (++field_len_ > max_field_chars) {
-      return drop(errc::too_long, state::hunting);
-    }
-    body_[len_++] = static_cast<char>(b); // len_ < max_body_chars: fields and lengths bounded
+    // a separator: the body is split while it arrives
+    if (fields_ == acknowledgement_fields) return drop(errc::bad_length, state::hunting);
+    field_end_[fields_ - 1U] = static_cast<std::uint8_t>(len_);
+    ++fields_;
+    field_start_ = len_ + 1U;
+    xor_ = static_cast<std::uint8_t>(xor_ ^ b);
+    body_[len_++] = static_cast<char>(b);
     return frame_kind::none;
   }
 
@@ -210,17 +218,28 @@ private:
     const bool either = is_request ? options_.check.request_either_rule
                                    : options_.check.acknowledgement_either_rule;
     const bool unchecked = check_value_ == 0U && options_.check.zero_means_unchecked;
-    if (!unchecked && compute_check(body, rule) != check_value_ &&
-        !(either && compute_check(body, other_rule(rule)) == check_value_)) {
+    // compute_check(body, rule), accumulated while the body arrived
+    const auto check_of = [this](check_rule r) {
+      return static_cast<std::uint8_t>(xor_ ^ (r == check_rule::body_and_etx ? etx : 0U));
+    };
+    if (!unchecked && check_of(rule) != check_value_ &&
+        !(either && check_of(other_rule(rule)) == check_value_)) {
       return errc::bad_checksum;
     }
+    // the fields between the separators recorded in on_body (what split() would find)
+    const auto field = [this, body](std::size_t i) {
+      const std::size_t start = i == 0U ? 0U : field_end_[i - 1U] + 1U;
+      const std::size_t end = i + 1U == fields_ ? body.size() : field_end_[i];
+      return body.substr(start, end - start);
+    };
     if (is_request) {
-      auto r = parse_request_body(body);
+      auto r = parse_request_fields({field(0), field(1), field(2), field(3)});
       if (!r) return r.error();
       request_ = r.value();
       return frame_kind::request;
     }
-    auto a = parse_acknowledgement_body(body);
+    auto a =
+        parse_acknowledgement_fields({field(0), field(1), field(2), field(3), field(4), field(5)});
     if (!a) return a.error();
     acknowledgement_ = a.value();
     return frame_kind::acknowledgement;
@@ -229,9 +248,12 @@ private:
   decoder_options options_{};
   state state_ = state::idle;
   std::uint8_t fields_ = 0;
-  std::uint8_t field_len_ = 0;
+  std::size_t field_start_ = 0; ///< where the field in progress starts in body_
   std::uint8_t check_len_ = 0;
   std::uint16_t check_value_ = 0;
+  std::uint8_t xor_ = 0;                                              ///< XOR of the body so far
+  std::array<std::uint8_t, acknowledgement_fields - 1U> field_end_{}; ///< where each ';' is
+  static_assert(max_body_chars <= 0xFFU, "field_end_ holds body positions");
   std::size_t len_ = 0;
   std::array<char, max_body_chars> body_{};
   serial::request request_{};

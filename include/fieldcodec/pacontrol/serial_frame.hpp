@@ -118,16 +118,36 @@ struct text_writer {
     out[n++] = b;
     return {};
   }
-  /// Appends characters.
+  /// Appends characters. When they do not all fit, those that do are written, then
+  /// buffer_too_small (as one put() per character would).
   constexpr status put_text(std::span<const char> text) noexcept {
+    if (out.size() - n >= text.size()) { // one check for the whole text
+      for (const char c : text) out[n++] = static_cast<std::uint8_t>(c);
+      return {};
+    }
     for (const char c : text) FIELDCODEC_TRY_STATUS(put(c));
     return {};
   }
+  /// Appends `v` in decimal (as ascii::format_unsigned writes it).
   constexpr status put_unsigned(std::uint64_t v) noexcept {
-    char tmp[20]{};
-    auto len = ascii::format_unsigned(v, tmp);
-    if (!len) return len.error();
-    return put_text(std::span<const char>(tmp, len.value()));
+    char tmp[20]{}; // the digits, least significant first
+    std::size_t len = 0;
+    do {
+      tmp[len++] = static_cast<char>('0' + static_cast<int>(v % 10U));
+      v /= 10U;
+    } while (v != 0U);
+    if (out.size() - n < len) { // the digits that fit, then the error
+      for (std::size_t i = len; i-- > 0;) FIELDCODEC_TRY_STATUS(put(tmp[i]));
+    }
+    for (std::size_t i = len; i-- > 0;) out[n++] = static_cast<std::uint8_t>(tmp[i]);
+    return {};
+  }
+  /// Appends `v` as four upper-case hex digits (as ascii::format_hex(v, 4, …, true)).
+  constexpr status put_hex4(std::uint16_t v) noexcept {
+    constexpr char digits[] = "0123456789ABCDEF";
+    const std::array<char, 4> text{digits[(v >> 12U) & 0xFU], digits[(v >> 8U) & 0xFU],
+                                   digits[(v >> 4U) & 0xFU], digits[v & 0xFU]};
+    return put_text(text);
   }
   constexpr status put_value(const value &v) noexcept {
     char tmp[48]{};
@@ -166,10 +186,7 @@ encode_request(const request &r, std::span<std::uint8_t> out, check_rule rule = 
                check_mode mode = check_mode::computed) noexcept {
   FIELDCODEC_TRY_STATUS(validate(r.date));
   return detail::write_frame(out, rule, mode, [&](detail::text_writer &w) -> status {
-    char cmd[4]{};
-    auto n = ascii::format_hex(r.code, 4, cmd, true);
-    if (!n) return n.error();
-    FIELDCODEC_TRY_STATUS(w.put_text(cmd));
+    FIELDCODEC_TRY_STATUS(w.put_hex4(r.code));
     FIELDCODEC_TRY_STATUS(w.put(separator));
     FIELDCODEC_TRY_STATUS(w.put_unsigned(r.parameter));
     FIELDCODEC_TRY_STATUS(w.put(separator));
@@ -232,6 +249,22 @@ constexpr status split(std::string_view body, std::array<std::string_view, N> &f
 /// An unsigned decimal field of at most `max`. Errors: bad_syntax (empty), bad_sign
 /// (leading '-'), bad_digit, overflow (> max).
 constexpr result<std::uint64_t> parse_count(std::string_view f, std::uint64_t max) noexcept {
+  if (!f.empty() && f.size() <= 4U) { // 1..4 digits cannot overflow: no check per digit
+    std::uint64_t v = 0;
+    bool digits = true;
+    for (const char c : f) {
+      const unsigned d = static_cast<unsigned char>(c) - unsigned{'0'};
+      if (d > 9U) {
+        digits = false;
+        break;
+      }
+      v = v * 10U + d;
+    }
+    if (digits) {
+      if (v > max) return errc::overflow;
+      return v;
+    }
+  }
   if (!f.empty() && f.front() == '-') return errc::bad_sign;
   auto v = ascii::parse_unsigned(f);
   if (!v) return v.error();
@@ -250,6 +283,29 @@ constexpr result<bool> parse_flag(std::string_view f) noexcept {
 /// The date, real when `real` (TYP 1). Errors: bad_syntax, bad_digit, overflow (integer
 /// outside int32), type_mismatch (a fraction in an integer date).
 constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
+  if (!real) {
+    // The usual integer date: an optional '-' and 1..10 digits with a value inside int32, which
+    // parse_decimal reads as that integer with no places. Anything else (more digits, a point,
+    // a bad character, a value beyond int32) takes the general path and its errors.
+    const std::size_t sign = !f.empty() && f.front() == '-' ? 1U : 0U;
+    if (f.size() > sign && f.size() - sign <= 10U) {
+      std::int64_t v = 0;
+      bool digits = true;
+      for (std::size_t i = sign; i < f.size(); ++i) {
+        const unsigned d = static_cast<unsigned char>(f[i]) - unsigned{'0'};
+        if (d > 9U) {
+          digits = false;
+          break;
+        }
+        v = v * 10 + static_cast<std::int64_t>(d);
+      }
+      if (sign != 0U) v = -v;
+      if (digits && v >= std::numeric_limits<std::int32_t>::min() &&
+          v <= std::numeric_limits<std::int32_t>::max()) {
+        return value{od::command_value::integer, decimal{v, 0}};
+      }
+    }
+  }
   auto d = parse_decimal(f);
   if (!d) return d.error();
   if (real) return value{od::command_value::real, d.value()};
@@ -263,9 +319,19 @@ constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
 /// Errors: bad_length (not 4 fields, CMD not 4 characters), bad_syntax (empty field),
 /// bad_digit (lower-case or non-hex CMD, letters in decimal fields), bad_sign, overflow,
 /// out_of_range (TYP not 0/1), type_mismatch (a fraction with TYP 0).
+[[nodiscard]] constexpr result<request>
+parse_request_fields(const std::array<std::string_view, request_fields> &f) noexcept;
+
 [[nodiscard]] constexpr result<request> parse_request_body(std::string_view body) noexcept {
   std::array<std::string_view, request_fields> f{};
   FIELDCODEC_TRY_STATUS(detail::split(body, f));
+  return parse_request_fields(f);
+}
+
+/// The same from the four fields of a body already split at ';' (the decoder splits while the
+/// bytes arrive).
+[[nodiscard]] constexpr result<request>
+parse_request_fields(const std::array<std::string_view, request_fields> &f) noexcept {
   if (f[0].size() != 4U) return f[0].empty() ? errc::bad_syntax : errc::bad_length;
   auto cmd = ascii::parse_hex(f[0], ascii::hex_case::upper);
   if (!cmd) return cmd.error();
@@ -281,10 +347,19 @@ constexpr result<value> parse_value(bool real, std::string_view f) noexcept {
 
 /// Parses the body of an acknowledgement ("0;0;31;0;1;1516.950").
 /// Errors: as parse_request_body (bad_length for not 6 fields; out_of_range for BE not 0/1).
+[[nodiscard]] constexpr result<acknowledgement> parse_acknowledgement_fields(
+    const std::array<std::string_view, acknowledgement_fields> &f) noexcept;
+
 [[nodiscard]] constexpr result<acknowledgement>
 parse_acknowledgement_body(std::string_view body) noexcept {
   std::array<std::string_view, acknowledgement_fields> f{};
   FIELDCODEC_TRY_STATUS(detail::split(body, f));
+  return parse_acknowledgement_fields(f);
+}
+
+/// The same from the six fields of a body already split at ';'.
+[[nodiscard]] constexpr result<acknowledgement> parse_acknowledgement_fields(
+    const std::array<std::string_view, acknowledgement_fields> &f) noexcept {
   constexpr auto max16 = std::numeric_limits<std::uint16_t>::max();
   auto quit = detail::parse_count(f[0], max16);
   if (!quit) return quit.error();
