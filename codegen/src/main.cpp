@@ -1,5 +1,6 @@
 // fieldcodec-gen — turns EDS/DCF files and CSV tables into constexpr C++ headers, and writes
 // EDS. Exit status: 0 success, 1 input errors (or --check found a difference), 2 usage errors.
+#include "config_list.hpp"
 #include "options.hpp"
 #include "readers.hpp"
 #include "text.hpp"
@@ -36,6 +37,15 @@ options:
       --compact-arrays
                       keep runs of alike ARRAY sub-objects (CompactSubObj) as one
                       entry each instead of one entry per sub-index
+      --config-list FILE
+                      write the configuration list of a DCF to FILE: the SDO
+                      downloads from the EDS defaults to the DCF's values, in
+                      order (PDOs disabled, written, enabled), the identity to
+                      check and the concise DCF (docs/master.md)
+      --config-values parameter|default
+                      the values the list writes: ParameterValue where it differs
+                      from DefaultValue (parameter, the default), or DefaultValue
+                      of every writable entry (default)
       --strict        treat warnings as errors
   -q, --quiet         do not print warnings
   -h, --help          show this text
@@ -92,6 +102,8 @@ struct command_line {
   std::string input;
   std::string header_out;
   std::string eds_out;
+  std::string config_out;
+  fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
   std::string name;
   bool check = false;
   bool strict = false;
@@ -121,6 +133,18 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.header_out)) return usage_error("option " + a + " needs a file name");
     } else if (a == "--eds") {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
+    } else if (a == "--config-list") {
+      if (!value(cl.config_out)) return usage_error("option --config-list needs a file name");
+    } else if (a == "--config-values") {
+      std::string v;
+      if (!value(v)) return usage_error("option --config-values needs parameter or default");
+      if (v == "parameter") {
+        cl.config_values = fieldcodec::gen::config_values::parameter;
+      } else if (v == "default") {
+        cl.config_values = fieldcodec::gen::config_values::default_;
+      } else {
+        return usage_error("--config-values '" + v + "': expected parameter or default");
+      }
     } else if (a == "--name") {
       if (!value(cl.name)) return usage_error("option --name needs a name");
       if (!fieldcodec::gen::is_identifier(cl.name) || cl.name == "od" || cl.name == "std" ||
@@ -164,6 +188,18 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
 // Writes the header and the EDS the command line asks for. Returns the exit status.
 int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
   int rc = 0;
+  if (!cl.config_out.empty()) {
+    if (dict.is_command_table) {
+      std::cerr << cl.input << ": error: a command table has no configuration list\n";
+      return 1;
+    }
+    fieldcodec::gen::diagnostics diag;
+    diag.strict = cl.strict;
+    auto list = fieldcodec::gen::build_config_list(dict, cl.config_values, cl.input, diag);
+    diag.print(std::cerr, !cl.quiet);
+    if (diag.has_errors()) return 1;
+    rc |= output(cl.config_out, fieldcodec::gen::emit_config_list(dict, list), cl.check);
+  }
   if (!cl.header_out.empty()) {
     // The emitter writes one od::entry per sub-index: the runs of --compact-arrays are expanded
     // for it until od::entry can describe a run (docs/generator.md, "--compact-arrays").

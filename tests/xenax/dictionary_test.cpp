@@ -35,7 +35,9 @@ TEST_CASE("5011h, 5012h, 5020h, 5021h carry their printed lengths (3.4.9-3.4.12,
   const std::pair<std::uint16_t, std::uint32_t> printed[] = {
       {0x5011, 30}, {0x5012, 30}, {0x5020, 100}, {0x5021, 32}};
   for (const od::dictionary *d : all) {
-    for (const auto &[index, size] : printed) {
+    for (const auto &row : printed) {
+      const auto index = row.first; // a named variable: clang 14 cannot capture a binding
+      const auto size = row.second;
       CAPTURE(index);
       const od::entry *e = d->find(index, 0);
       REQUIRE(e != nullptr);

@@ -1,0 +1,326 @@
+// The master side of the interoperability test `interop_master` (tests/interop/,
+// docs/canopen.md "Interoperability", docs/master.md): fieldcodec's configurator and CiA 402
+// drive helper against python canopen's LocalNode built from dictionaries/xenax_canopen.eds
+// (tests/interop/interop_master.py plays the drive).
+//
+// usage: interop_master xenax NODE
+//
+// Standard input: candump-style frames (ID#DATA) from the bus, and "!run" to start. Standard
+// output: frames to the bus, then one line "= ok" or "= FAILED <step>: <why>". Progress lines
+// ("ok  <step>: ...") go to standard error.
+//
+// What runs, after "!run":
+//   1. configure   a configurator (verify on) writes 6081h = 50000, 6083h = 200000 and the
+//                  event timer of TPDO 1 (1800h sub 5) = 100 ms by SDO, reading each one back;
+//   2. statusword  the first statusword is read by SDO (6041h);
+//   3. mode        drive.switch_mode(profile position): 6060h = 1 by SDO, 6061h read back;
+//   4. enable      drive.enable(): controlwords in RPDO 1 (200h + node, the XENAX default
+//                  mapping 6040h), statuswords from TPDO 1 (180h + node, 6041h);
+//   5. move        drive.move_to(12345) with target_over_sdo: 607Ah by SDO, then the set-point
+//                  handshake in the words, until target reached.
+// The cyclic task runs every 10 ms; every step has a deadline (at most ~17 s in all when every
+// step runs into its own).
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/cob_id.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/ds402/state_machine.hpp>
+#include <fieldcodec/ds402/statusword.hpp>
+#include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/frame_record.hpp>
+#include <fieldcodec/master/config.hpp>
+#include <fieldcodec/master/configurator.hpp>
+#include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/modes.hpp>
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace {
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace ds402 = fieldcodec::ds402;
+namespace master = fieldcodec::master;
+
+constexpr std::uint32_t cycle_ms = 10;
+constexpr std::int32_t move_target = 12345;
+
+// The configuration list (what fieldcodec-gen --config-list writes from a DCF, written out):
+// bytes on the bus, little-endian.
+constexpr std::uint8_t v_speed[] = {0x50, 0xC3, 0x00, 0x00};        // 6081h = 50000
+constexpr std::uint8_t v_acceleration[] = {0x40, 0x0D, 0x03, 0x00}; // 6083h = 200000
+constexpr std::uint8_t v_event_timer[] = {0x64, 0x00};              // 1800h sub 5 = 100 ms
+constexpr master::config_item items[] = {
+    {{0x6081, 0}, v_speed, 0, "Speed"},
+    {{0x6083, 0}, v_acceleration, 0, "Acceleration"},
+    {{0x1800, 5}, v_event_timer, 0, "Transmit PDO Comm Param 1: Event Timer"},
+};
+
+std::uint32_t now_ms() {
+  static const auto start = std::chrono::steady_clock::now();
+  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                        std::chrono::steady_clock::now() - start)
+                                        .count());
+}
+
+void put_line(const std::string &s) {
+  std::fputs(s.c_str(), stdout);
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+}
+
+void progress(const std::string &s) {
+  std::fputs(("ok  master " + s + "\n").c_str(), stderr);
+  std::fflush(stderr);
+}
+
+void transmit(const co::can_frame &f) {
+  put_line(fieldcodec::host::candump::format_frame(fieldcodec::host::to_record(f)));
+}
+
+template <class Frames>
+void transmit_all(const Frames &fs) {
+  for (const co::can_frame f : fs) transmit(f);
+}
+
+/// Reads standard input for at most `wait_ms`: frames go to `on_frame`; "!run" sets `run`.
+/// Returns false when standard input is closed or unreadable.
+bool read_input(int wait_ms, const std::function<void(const co::can_frame &)> &on_frame, bool &run,
+                std::string &pending) {
+  pollfd p{STDIN_FILENO, POLLIN, 0};
+  const int ready = ::poll(&p, 1, wait_ms);
+  if (ready < 0) return false;
+  if (ready == 0) return true;
+  char buf[4096];
+  const auto n = ::read(STDIN_FILENO, buf, sizeof buf);
+  if (n <= 0) return false;
+  pending.append(buf, static_cast<std::size_t>(n));
+  std::size_t eol = 0;
+  while ((eol = pending.find('\n')) != std::string::npos) {
+    const std::string line = pending.substr(0, eol);
+    pending.erase(0, eol + 1U);
+    if (line == "!run") {
+      run = true;
+    } else if (line == "!quit") {
+      return false;
+    } else if (!line.empty() && line[0] != '!') {
+      auto r = fieldcodec::host::candump::parse_frame(line);
+      if (!r) continue;
+      auto f = fieldcodec::host::to_canopen(r.value());
+      if (f) on_frame(f.value());
+    }
+  }
+  return true;
+}
+
+class session {
+public:
+  session(std::uint8_t node, std::string &pending)
+      : node_(node), client_(node, 1000), pending_(pending) {}
+
+  /// The whole run; the failing step and why, or nothing.
+  std::optional<std::string> run() {
+    if (auto e = configure()) return e;
+    if (auto e = read_statusword()) return e;
+    master::drive axis({.vendor = master::drive_vendor::xenax,
+                        .enable_timeout_ms = 2000,
+                        .mode_timeout_ms = 2000,
+                        .set_point_timeout_ms = 2000,
+                        .move_timeout_ms = 3000,
+                        .target_over_sdo = true});
+    axis_ = &axis;
+    if (!axis.switch_mode(fieldcodec::xenax::mode::profile_position, now_ms())) {
+      return "mode: switch_mode refused";
+    }
+    if (auto e = cycle_until_idle("mode")) return e;
+    progress("mode: 6060h = 1 written, 6061h shows profile position");
+    if (!axis.enable(now_ms())) return "enable: enable refused";
+    if (auto e = cycle_until_idle("enable")) return e;
+    if (axis.state() != master::drive_state::enabled ||
+        axis.drive_status() != ds402::state::operation_enabled) {
+      return "enable: the drive is " + std::string(ds402::to_string(axis.drive_status())) +
+             ", the helper " + std::string(master::to_string(axis.state()));
+    }
+    progress("enable: operation enabled (statusword " + hex16(statusword_) + ")");
+    if (!axis.move_to(move_target, now_ms())) return "move: move_to refused";
+    const auto start = now_ms();
+    if (auto e = cycle_until_idle("move")) return e;
+    if (axis.state() != master::drive_state::enabled ||
+        (statusword_ & 0x0400U) == 0U) { // target reached (bit 10)
+      return "move: the helper is " + std::string(master::to_string(axis.state())) +
+             ", statusword " + hex16(statusword_);
+    }
+    progress("move: 607Ah = " + std::to_string(move_target) +
+             ", set-point acknowledged, target reached after " + std::to_string(now_ms() - start) +
+             " ms (statusword " + hex16(statusword_) + ")");
+    return std::nullopt;
+  }
+
+  bool stopped() const { return stopped_; }
+
+private:
+  static std::string hex16(std::uint16_t v) {
+    char b[8];
+    std::snprintf(b, sizeof b, "%04Xh", static_cast<unsigned>(v));
+    return b;
+  }
+
+  /// Waits for input up to `wait_ms`; false when the peer has gone.
+  bool wait(int wait_ms, const std::function<void(const co::can_frame &)> &on_frame) {
+    bool ignored = false;
+    if (!read_input(wait_ms, on_frame, ignored, pending_)) {
+      stopped_ = true;
+      return false;
+    }
+    return true;
+  }
+
+  std::optional<std::string> configure() {
+    master::configurator cfg(client_, {.retries = 1, .timeout_ms = 1000, .verify = true});
+    const master::configuration c{items, {}, node_};
+    auto s = cfg.start(c, now_ms());
+    if (!s) return "configure: start refused: " + std::string(fieldcodec::to_string(s.error()));
+    transmit_all(s.value().send);
+    const auto deadline = now_ms() + 3000U;
+    while (cfg.busy()) {
+      if (now_ms() - deadline < 0x80000000U) return "configure: no end within 3 s";
+      if (!wait(5, [&](const co::can_frame &f) { transmit_all(cfg.on_frame(f, now_ms()).send); }))
+        return "configure: the peer has gone";
+      transmit_all(cfg.poll(now_ms()).send);
+    }
+    if (cfg.state() != master::config_state::done) {
+      const auto e = cfg.error().value_or(master::config_error{});
+      char abort[12];
+      std::snprintf(abort, sizeof abort, "%08X", static_cast<unsigned>(e.abort));
+      return "configure: item " + std::to_string(e.item) + " (" + std::string(e.name) + ") " +
+             std::string(fieldcodec::to_string(e.code)) + ", abort " + abort;
+    }
+    progress("configure: 3 items written and read back (6081h, 6083h, 1800h sub 5)");
+    return std::nullopt;
+  }
+
+  /// One SDO upload of 6041h: the statusword before the first cycle.
+  std::optional<std::string> read_statusword() {
+    std::array<std::uint8_t, 4> buf{};
+    auto s = client_.upload({0x6041, 0}, buf, now_ms());
+    if (!s) return "statusword: upload refused";
+    transmit_all(s.value().send);
+    const auto deadline = now_ms() + 2000U;
+    while (client_.busy()) {
+      if (now_ms() - deadline < 0x80000000U) return "statusword: no answer within 2 s";
+      if (!wait(5,
+                [&](const co::can_frame &f) { transmit_all(client_.on_frame(f, now_ms()).send); }))
+        return "statusword: the peer has gone";
+      transmit_all(client_.poll(now_ms()).send);
+    }
+    if (client_.state() != sdo::transfer_state::done || client_.received().size() != 2U) {
+      return "statusword: the upload of 6041h failed";
+    }
+    const auto r = client_.received();
+    statusword_ = static_cast<std::uint16_t>(r[0] | (r[1] << 8U));
+    progress("statusword: 6041h = " + hex16(statusword_) + " by SDO");
+    return std::nullopt;
+  }
+
+  void on_cyclic_frame(const co::can_frame &f) {
+    if (f.id == co::cob_id::tpdo(1, node_).value() && f.dlc >= 2U) {
+      statusword_ = static_cast<std::uint16_t>(f.data[0] | (f.data[1] << 8U));
+      return;
+    }
+    const auto now = now_ms();
+    transmit_all(client_.on_frame(f, now).send);
+    finish_sdo(now);
+  }
+
+  void finish_sdo(std::uint32_t now) {
+    if (!axis_->sdo_pending()) return;
+    if (client_.state() == sdo::transfer_state::done) {
+      axis_->sdo_done(client_.received(), now);
+    } else if (client_.state() == sdo::transfer_state::failed) {
+      axis_->sdo_failed(*client_.error(), now);
+    }
+  }
+
+  /// The cyclic task until the helper's command has ended (every command has its timeout).
+  std::optional<std::string> cycle_until_idle(const std::string &step) {
+    const auto start = now_ms();
+    auto next = start;
+    do {
+      const auto now = now_ms();
+      if (now - start > 4000U) return step + ": the helper still busy after 4 s";
+      if (now - next < 0x80000000U) { // the cycle is due
+        next += cycle_ms;
+        const auto out = axis_->cycle(statusword_, now);
+        if (out.sdo) {
+          auto s = out.sdo->what == master::sdo_request::kind::download
+                       ? client_.download(out.sdo->address, out.sdo->bytes(), now)
+                       : client_.upload(out.sdo->address, sdo_buffer_, now);
+          if (!s) return step + ": the SDO client is busy";
+          transmit_all(s.value().send);
+        }
+        transmit(co::make_frame(co::cob_id::rpdo(1, node_).value(),
+                                {static_cast<std::uint8_t>(out.controlword),
+                                 static_cast<std::uint8_t>(out.controlword >> 8U)})
+                     .value());
+      }
+      const auto left = next - now_ms();
+      const int wait_ms = left < 0x80000000U ? static_cast<int>(left) : 0;
+      if (!wait(wait_ms, [this](const co::can_frame &f) { on_cyclic_frame(f); })) {
+        return step + ": the peer has gone";
+      }
+      transmit_all(client_.poll(now_ms()).send);
+      finish_sdo(now_ms());
+    } while (axis_->busy());
+    if (const auto e = axis_->error()) {
+      return step + ": " + std::string(master::to_string(e->failure)) + " (helper " +
+             std::string(master::to_string(axis_->state())) + ", statusword " +
+             hex16(e->statusword) + ")";
+    }
+    return std::nullopt;
+  }
+
+  std::uint8_t node_;
+  sdo::client client_;
+  std::string &pending_; ///< what main() read after "!run"
+  master::drive *axis_ = nullptr;
+  std::uint16_t statusword_ = 0;
+  std::array<std::uint8_t, 4> sdo_buffer_{};
+  bool stopped_ = false;
+};
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc != 3 || std::string(argv[1]) != "xenax") {
+    std::fprintf(stderr, "usage: interop_master xenax NODE\n");
+    return 2;
+  }
+  const auto node = static_cast<std::uint8_t>(std::atoi(argv[2]));
+  now_ms();
+  // Wait for "!run" (frames before it are not ours).
+  std::string pending;
+  bool run = false;
+  while (!run) {
+    if (!read_input(
+            100, [](const co::can_frame &) {}, run, pending))
+      return 2;
+  }
+  session s(node, pending);
+  const auto failure = s.run();
+  put_line(failure ? "= FAILED " + *failure : "= ok");
+  // Stay on the bus until the peer says !quit (it may still read the drive's data).
+  bool ignored = false;
+  while (!s.stopped() && read_input(
+                             100, [](const co::can_frame &) {}, ignored, pending)) {
+  }
+  return failure ? 1 : 0;
+}
