@@ -91,20 +91,50 @@ constexpr std::pair<std::string_view, key> key_names[] = {
     {"OBJECTLINKS", key::object_links},
 };
 
-// Runs for every line of a file, on the key as written (any case): candidates are told apart by
-// length, first and last letter before their text is compared.
+constexpr char upper_ascii(char c) noexcept {
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
+}
+
+// The known keys by length: key_names positions of each length (the longest known key has 21
+// characters), built at compile time from key_names.
+constexpr std::size_t longest_key = 21;
+constexpr std::size_t keys_per_length = 6;
+struct key_buckets {
+  std::uint8_t count[longest_key + 1] = {};
+  std::uint8_t at[longest_key + 1][keys_per_length] = {};
+};
+constexpr key_buckets make_key_buckets() {
+  key_buckets b;
+  for (std::size_t i = 0; i < std::size(key_names); ++i) {
+    const std::size_t n = key_names[i].first.size();
+    b.at[n][b.count[n]++] = static_cast<std::uint8_t>(i);
+  }
+  return b;
+}
+constexpr key_buckets key_by_length = make_key_buckets();
+static_assert([] {
+  std::size_t longest = 0;
+  for (const auto &k : key_names) longest = std::max(longest, k.first.size());
+  for (std::size_t n = 0; n <= longest_key; ++n) {
+    if (key_by_length.count[n] > keys_per_length) return false;
+  }
+  return longest == longest_key;
+}());
+
+// Runs for every line of a file, on the key as written (any case): only the known keys of the
+// same length are candidates, told apart by their first and last letter before their text is
+// compared.
 key key_of(std::string_view name) noexcept {
-  if (name.empty()) return key::other;
-  const auto up = [](char c) {
-    return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-  };
-  const char first = up(name.front());
-  const char last = up(name.back());
-  for (const auto &[known, id] : key_names) {
-    if (known.size() != name.size() || known.front() != first || known.back() != last) continue;
+  if (name.empty() || name.size() > longest_key) return key::other;
+  const char first = upper_ascii(name.front());
+  const char last = upper_ascii(name.back());
+  const std::size_t n = name.size();
+  for (std::size_t c = 0; c < key_by_length.count[n]; ++c) {
+    const auto &[known, id] = key_names[key_by_length.at[n][c]];
+    if (known.front() != first || known.back() != last) continue;
     std::size_t i = 1;
-    while (i < known.size() && known[i] == up(name[i])) ++i;
-    if (i == known.size()) return id;
+    while (i < n && known[i] == upper_ascii(name[i])) ++i;
+    if (i == n) return id;
   }
   return key::other;
 }
@@ -120,12 +150,16 @@ bool known_other_key(key k) noexcept {
 
 struct ini_key {
   std::string_view name;  // as written (trimmed), points into the reader's text
-  std::string upper;      // upper case, only for key::other (a known key is told by its id)
-  key id = key::other;    // the key when the reader knows it
   std::string_view value; // trimmed
   int line = 0;
   int value_col = 0;
+  key id = key::other; // the key when the reader knows it
 };
+
+constexpr std::uint32_t key_bit(key id) noexcept {
+  return std::uint32_t{1} << static_cast<unsigned>(id);
+}
+static_assert(static_cast<unsigned>(key::object_links) < 32U, "key_bit needs a wider mask");
 
 struct ini_section {
   std::string name;
@@ -136,36 +170,47 @@ struct ini_section {
 
   /// The last occurrence of a known key.
   [[nodiscard]] const ini_key *find(key id) const {
+    if ((known_ & key_bit(id)) == 0U) return nullptr;
     for (auto it = keys.rbegin(); it != keys.rend(); ++it) {
       if (it->id == id) return &*it;
     }
     return nullptr;
   }
-  /// The first occurrence of the key `id` / `upper_name` (known or not). Object lists and
-  /// comments have hundreds of keys: past a few, the names of unknown keys are looked up in a
-  /// set instead of compared one by one.
-  [[nodiscard]] const ini_key *find(key id, const std::string &upper_name) {
-    if (id == key::other && keys.size() >= 16U) {
-      if (others.empty()) {
+  /// The first occurrence of the key `id` / `name` (known or not; an unknown key's name is
+  /// compared without regard to case). Object lists and comments have hundreds of keys: past a
+  /// few, the names of unknown keys are looked up in a map instead of compared one by one.
+  [[nodiscard]] const ini_key *find_first(key id, std::string_view key_name) {
+    if (id != key::other) {
+      if ((known_ & key_bit(id)) == 0U) return nullptr;
+      for (const auto &x : keys) {
+        if (x.id == id) return &x;
+      }
+      return nullptr;
+    }
+    if (keys.size() >= 16U) {
+      if (others_.empty()) {
         for (std::size_t i = 0; i < keys.size(); ++i) {
-          if (keys[i].id == key::other) others.emplace(keys[i].upper, i);
+          if (keys[i].id == key::other) others_.emplace(to_upper(keys[i].name), i);
         }
       }
-      auto it = others.find(upper_name);
-      return it == others.end() ? nullptr : &keys[it->second];
+      auto it = others_.find(to_upper(key_name));
+      return it == others_.end() ? nullptr : &keys[it->second];
     }
     for (const auto &x : keys) {
-      if (x.id == id && (id != key::other || x.upper == upper_name)) return &x;
+      if (x.id == key::other && iequals(x.name, key_name)) return &x;
     }
     return nullptr;
   }
-  /// Appends a key (keeps the set of unknown names, once there is one, up to date).
-  void add(ini_key k) {
-    if (!others.empty() && k.id == key::other) others.emplace(k.upper, keys.size());
-    keys.push_back(std::move(k));
+  /// Appends a key (keeps the map of unknown names, once there is one, up to date).
+  void add(const ini_key &k) {
+    if (!others_.empty() && k.id == key::other) others_.emplace(to_upper(k.name), keys.size());
+    known_ |= key_bit(k.id);
+    keys.push_back(k);
   }
 
-  std::unordered_map<std::string, std::size_t> others; // upper-case name -> first position
+private:
+  std::unordered_map<std::string, std::size_t> others_; // upper-case name -> first position
+  std::uint32_t known_ = 0;                               // key_bit of every key present
 };
 
 struct classified {
@@ -405,9 +450,12 @@ private:
       diag_.error(file_, line_no, static_cast<int>(lead) + 2, "expected a section name");
       return nullptr;
     }
-    sections_.push_back({name, to_upper(name), line_no, section_kind::other, {}, {}});
-    sections_.back().keys.reserve(8);
-    return &sections_.back();
+    ini_section &section = sections_.emplace_back();
+    section.name = name;
+    section.upper = to_upper(name);
+    section.line = line_no;
+    section.keys.reserve(8);
+    return &section;
   }
 
   void key_line(std::string_view line, std::string_view t, std::size_t lead, int line_no,
@@ -433,14 +481,12 @@ private:
       return;
     }
     const key id = key_of(name);
-    std::string upper = id == key::other ? to_upper(name) : std::string();
-    if (const ini_key *first = current->find(id, upper)) {
+    if (const ini_key *first = current->find_first(id, name)) {
       diag_.warning(file_, line_no, static_cast<int>(lead) + 1,
                     "key '" + name + "' appears again in [" + current->name + "] (first at line " +
                         std::to_string(first->line) + "); the last value is used");
     }
-    current->add({name, std::move(upper), id, trim(line.substr(eq + 1U)), line_no,
-                  static_cast<int>(vstart) + 1});
+    current->add({name, trim(line.substr(eq + 1U)), line_no, static_cast<int>(vstart) + 1, id});
   }
 
   void index_sections() {
@@ -516,7 +562,9 @@ private:
     copy_keys(other("DUMMYUSAGE"), dict_.dummy_usage);
     if (const ini_section *c = other("COMMENTS")) {
       for (const auto &k : c->keys) {
-        if (k.upper.starts_with("LINE") && k.upper != "LINES") dict_.comments.emplace_back(k.value);
+        if (k.name.size() >= 4U && iequals(k.name.substr(0, 4), "LINE") && !iequals(k.name, "LINES")) {
+          dict_.comments.emplace_back(k.value);
+        }
       }
     }
     commissioning();
@@ -1013,13 +1061,16 @@ private:
 
   // A VAR (or an object read as one entry at sub-index 0).
   bool var_object(std::uint16_t index, const ini_section &s, object_info &info) {
-    entry e;
+    // built in place: moving an entry costs its strings
+    entry &e = dict_.entries.emplace_back();
     e.index = index;
     e.object = info.code;
     e.line = s.line;
-    if (!var_keys(s, e)) return false;
-    dict_.objects[index] = info;
-    dict_.entries.push_back(std::move(e));
+    if (!var_keys(s, e)) {
+      dict_.entries.pop_back();
+      return false;
+    }
+    dict_.objects[index] = std::move(info);
     return true;
   }
 
@@ -1040,16 +1091,16 @@ private:
                             " (SubNumber counts sub-objects); all " +
                             std::to_string(sub_it->second.size()) + " are kept");
         }
-        entry e;
+        entry &e = dict_.entries.emplace_back(); // built in place
         e.index = index;
         e.sub = sub;
         e.object = info.code;
         e.line = ss->line;
         if (!var_keys(*ss, e)) {
+          dict_.entries.pop_back();
           ok = false;
           continue;
         }
-        dict_.entries.push_back(std::move(e));
       }
     }
     if (!has_sub_number) {
@@ -1063,7 +1114,7 @@ private:
                         std::to_string(count) + " sub-object section" + (count == 1U ? "" : "s"));
     }
     info.sub_number = static_cast<std::uint8_t>(count);
-    dict_.objects[index] = info;
+    dict_.objects[index] = std::move(info);
     return ok;
   }
 
@@ -1160,7 +1211,7 @@ private:
       if (auto d = denotations.find(i); d != denotations.end()) e.denotation = d->second->value;
       dict_.entries.push_back(std::move(e));
     }
-    dict_.objects[index] = info;
+    dict_.objects[index] = std::move(info);
     return ok;
   }
 

@@ -8,8 +8,8 @@
 #include <charconv>
 #include <limits>
 #include <map>
-#include <set>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace fieldcodec::gen {
@@ -96,6 +96,7 @@ public:
       used_.insert(r);
     }
   }
+  // (a hash set: one look-up per generated name, the order of names plays no part)
   /// `wanted` if free, else wanted_<suffix>, else wanted_<suffix>_2, _3, ...
   std::string take(std::string wanted, const std::string &suffix) {
     if (wanted.empty()) wanted = "object_" + suffix;
@@ -108,7 +109,7 @@ public:
   }
 
 private:
-  std::set<std::string> used_;
+  std::unordered_set<std::string> used_;
 };
 
 /// A std::string_view literal, `"text"sv`: its length is known without the compiler counting

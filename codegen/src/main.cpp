@@ -7,7 +7,6 @@
 
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -64,12 +63,7 @@ int usage_error(const std::string &msg) {
 }
 
 bool read_all(const std::string &path, std::string &out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
+  return fieldcodec::gen::read_bytes(path, out) == nullptr;
 }
 
 // 0 ok, 1 failure (reported)

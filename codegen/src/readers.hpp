@@ -37,6 +37,11 @@ void add_mandatory_objects(dictionary &d);
 /// The namespace name for a file stem ("XENAX-CANopen" → "xenax_canopen").
 [[nodiscard]] std::string stem_identifier(std::string_view stem);
 
+/// The whole file at `path` into `out`, read in blocks into one buffer. Returns nullptr on
+/// success, else what failed: "cannot open file" or "cannot read file" (a directory, an I/O
+/// error).
+[[nodiscard]] const char *read_bytes(const std::string &path, std::string &out);
+
 /// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv). Reports unreadable files.
 [[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
 

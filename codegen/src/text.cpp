@@ -458,7 +458,14 @@ bool is_cpp_keyword(std::string_view s) noexcept {
       "xor",           "xor_eq",      "final",
       "override",      "import",      "module",
       "assert"};
-  return std::find(kw.begin(), kw.end(), s) != kw.end();
+  // sorted at compile time: a binary search of 97 words (every generated name is tested)
+  static constexpr std::array<std::string_view, kw.size()> sorted = [] {
+    auto a = kw;
+    std::sort(a.begin(), a.end());
+    return a;
+  }();
+  if (s.size() < 2U || s.size() > 16U) return false; // "do" .. "reinterpret_cast"
+  return std::binary_search(sorted.begin(), sorted.end(), s);
 }
 
 bool is_identifier(std::string_view s) noexcept {
@@ -472,10 +479,6 @@ bool is_identifier(std::string_view s) noexcept {
   if (s.find("__") != std::string_view::npos) return false;
   if (s.front() == '_') return false;
   return !is_cpp_keyword(s);
-}
-
-namespace {
-constexpr char lower_table[] = "abcdefghijklmnopqrstuvwxyz";
 }
 
 namespace {
@@ -494,20 +497,24 @@ bool sign_minus(std::string_view name, std::size_t i) {
 } // namespace
 
 std::string make_identifier(std::string_view name) {
-  std::string out;
-  out.reserve(name.size() + 4U);
+  // Written through a pointer into a buffer of the largest possible size (every input byte
+  // gives at most "_minus" or "_plus"; the first two bytes are room for a "n_" prefix), one
+  // allocation and no capacity test per character.
+  std::string out(2U + name.size() * 6U + 1U, '\0');
+  char *const start = out.data() + 2;
+  char *o = start;
   bool pending_sep = false;
-  auto put = [&](std::string_view t) {
-    if (pending_sep && !out.empty()) out += '_';
+  const auto put = [&](std::string_view t) {
+    if (pending_sep && o != start) *o++ = '_';
     pending_sep = false;
-    out += t;
+    for (const char c : t) *o++ = c;
   };
   for (std::size_t i = 0; i < name.size(); ++i) {
     const auto c = static_cast<unsigned char>(name[i]);
-    if (c >= 'A' && c <= 'Z') {
-      put(std::string_view(&lower_table[c - 'A'], 1));
-    } else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) {
-      put(std::string_view(&name[i], 1));
+    if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || (c >= 'A' && c <= 'Z')) {
+      if (pending_sep && o != start) *o++ = '_';
+      pending_sep = false;
+      *o++ = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
     } else if (c == 0xC3U && i + 1U < name.size()) { // UTF-8 Latin-1 supplement
       const auto d = static_cast<unsigned char>(name[i + 1U]);
       ++i;
@@ -532,7 +539,7 @@ std::string make_identifier(std::string_view name) {
       pending_sep = true;
       put("plus");
       pending_sep = true;
-    } else if (c == '-' && !out.empty() && sign_minus(name, i)) {
+    } else if (c == '-' && o != start && sign_minus(name, i)) {
       pending_sep = true;
       put("minus");
       pending_sep = true;
@@ -540,8 +547,14 @@ std::string make_identifier(std::string_view name) {
       pending_sep = true;
     }
   }
-  if (out.empty()) return out;
-  if (out.front() >= '0' && out.front() <= '9') out = "n_" + out;
+  if (o == start) return {};
+  const bool digit = *start >= '0' && *start <= '9';
+  if (digit) {
+    out[0] = 'n';
+    out[1] = '_';
+  }
+  out.resize(static_cast<std::size_t>(o - out.data()));
+  if (!digit) out.erase(0, 2);
   if (is_cpp_keyword(out)) out += '_';
   return out;
 }
@@ -555,23 +568,31 @@ std::string cpp_string(std::string_view s) {
 void append_cpp_string(std::string &out, std::string_view s) {
   out.reserve(out.size() + s.size() + 2U);
   out += '"';
+  // Runs of characters written as they are go in one append.
+  std::size_t run = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x20U && c != 0x7FU && c != '"' && c != '\\' && c != '?') continue;
+    out.append(s.data() + run, i - run);
+    run = i + 1U;
     if (c == '"' || c == '\\') {
       out += '\\';
       out += static_cast<char>(c);
-    } else if (c == '?' && i + 1U < s.size() && s[i + 1U] == '?') {
-      out += "?\\"; // never a trigraph
-    } else if (c < 0x20U || c == 0x7FU) {
+    } else if (c == '?') {
+      if (i + 1U < s.size() && s[i + 1U] == '?') {
+        out += "?\\"; // never a trigraph
+      } else {
+        out += '?';
+      }
+    } else {
       constexpr char digits[] = "01234567";
       out += '\\';
       out += digits[(c >> 6U) & 7U];
       out += digits[(c >> 3U) & 7U];
       out += digits[c & 7U];
-    } else {
-      out += static_cast<char>(c);
     }
   }
+  out.append(s.data() + run, s.size() - run);
   out += '"';
 }
 
