@@ -339,7 +339,7 @@ public:
 
   std::optional<dictionary> read(std::string_view bytes) {
     bool converted = false;
-    text_ = to_utf8(bytes, converted);
+    text_ = as_utf8(bytes, converted_, converted); // `bytes` outlive the reader
     if (!split(text_)) return std::nullopt;
     if (sections_.empty()) {
       diag_.error(file_, 1, 1, "expected a section such as '[FileInfo]', got an empty file");
@@ -368,7 +368,7 @@ private:
   // ---- lexing ----------------------------------------------------------------------------
   // Splits the text into sections of keys. Returns false when reading stops (a NUL byte, too
   // many errors).
-  bool split(const std::string &text) {
+  bool split(std::string_view text) {
     int line_no = 0;
     std::size_t pos = 0;
     ini_section *current = nullptr;
@@ -1285,7 +1285,8 @@ private:
 
   const std::string &file_;
   diagnostics &diag_;
-  std::string text_;                 // the file as UTF-8; keys and values are views into it
+  std::string_view text_; // the file as UTF-8; keys and values are views into it
+  std::string converted_; // the text when the file was not UTF-8
   std::deque<ini_section> sections_; // deque: pointers stay valid
   std::map<std::uint16_t, const ini_section *> objects_;
   std::map<std::uint16_t, std::map<std::uint8_t, const ini_section *>> subs_;

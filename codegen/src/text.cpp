@@ -9,12 +9,6 @@
 
 namespace fieldcodec::gen {
 
-std::string_view trim(std::string_view s) noexcept {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 std::string to_upper(std::string_view s) {
   std::string r(s);
   for (char &c : r) {
@@ -129,6 +123,14 @@ std::string to_utf8(std::string_view bytes, bool &converted) {
     }
   }
   return out;
+}
+
+std::string_view as_utf8(std::string_view bytes, std::string &storage, bool &converted) {
+  converted = false;
+  if (bytes.size() >= 3 && bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  if (valid_utf8(bytes)) return bytes;
+  storage = to_utf8(bytes, converted);
+  return storage;
 }
 
 int_parse parse_int(std::string_view s) {

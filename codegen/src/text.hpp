@@ -11,7 +11,14 @@
 
 namespace fieldcodec::gen {
 
-[[nodiscard]] std::string_view trim(std::string_view s) noexcept;
+/// `s` without leading and trailing blanks (space, TAB). Inline: it runs several times per line.
+[[nodiscard]] inline std::string_view trim(std::string_view s) noexcept {
+  std::size_t b = 0;
+  std::size_t e = s.size();
+  while (b < e && (s[b] == ' ' || s[b] == '\t')) ++b;
+  while (e > b && (s[e - 1U] == ' ' || s[e - 1U] == '\t')) --e;
+  return s.substr(b, e - b);
+}
 [[nodiscard]] std::string to_upper(std::string_view s);
 [[nodiscard]] std::string to_lower(std::string_view s);
 [[nodiscard]] bool iequals(std::string_view a, std::string_view b) noexcept;
@@ -19,6 +26,10 @@ namespace fieldcodec::gen {
 /// Text as UTF-8: a UTF-8 byte-order mark is dropped, valid UTF-8 is kept, anything else is
 /// taken as Windows-1252 / Latin-1 and converted (`converted` tells).
 [[nodiscard]] std::string to_utf8(std::string_view bytes, bool &converted);
+/// The same without a copy when `bytes` are UTF-8 already: a view of `bytes` (without a
+/// byte-order mark), or of `storage`, which receives the converted text.
+[[nodiscard]] std::string_view as_utf8(std::string_view bytes, std::string &storage,
+                                       bool &converted);
 
 /// An integer as EDS files write them: optional sign, `0x` hex, leading-0 octal, decimal.
 /// C suffixes (U, L, LL, UL) are accepted and reported in `suffix`.
