@@ -62,8 +62,16 @@ int usage_error(const std::string &msg) {
   return 2;
 }
 
-bool read_all(const std::string &path, std::string &out) {
-  return fieldcodec::gen::read_bytes(path, out) == nullptr;
+// Whether the file at `path` exists (can be read) and whether it holds `content`. The old file
+// is released before the caller writes it.
+struct existing {
+  bool exists = false;
+  bool same = false;
+};
+existing compare_file(const std::string &path, const std::string &content) {
+  fieldcodec::gen::file_bytes old;
+  if (old.load(path) != nullptr) return {};
+  return {true, old.view() == content};
 }
 
 // 0 ok, 1 failure (reported)
@@ -72,17 +80,16 @@ int output(const std::string &path, const std::string &content, bool check) {
     if (!check) std::cout << content;
     return 0;
   }
-  std::string old;
-  const bool exists = read_all(path, old);
+  const auto [exists, same] = compare_file(path, content);
   if (check) {
-    if (!exists || old != content) {
+    if (!exists || !same) {
       std::cerr << path << ": error: " << (exists ? "differs from" : "missing, expected")
                 << " the generated output\n";
       return 1;
     }
     return 0;
   }
-  if (exists && old == content) return 0; // unchanged: keep the time stamp
+  if (exists && same) return 0; // unchanged: keep the time stamp
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out || !(out << content) || !out.flush()) {
     std::cerr << path << ": error: cannot write file\n";

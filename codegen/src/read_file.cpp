@@ -5,6 +5,15 @@
 #include <cstdio>
 #include <memory>
 
+#if __has_include(<sys/mman.h>) && __has_include(<sys/stat.h>) && __has_include(<fcntl.h>) && \
+    __has_include(<unistd.h>)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#define FIELDCODEC_GEN_MMAP 1
+#endif
+
 namespace fieldcodec::gen {
 
 const char *read_bytes(const std::string &path, std::string &out) {
@@ -33,12 +42,44 @@ const char *read_bytes(const std::string &path, std::string &out) {
   return nullptr;
 }
 
+file_bytes::~file_bytes() {
+#ifdef FIELDCODEC_GEN_MMAP
+  if (map_ != nullptr) ::munmap(map_, map_size_);
+#endif
+}
+
+const char *file_bytes::load(const std::string &path) {
+#ifdef FIELDCODEC_GEN_MMAP
+  // Mapped, a file costs a few page faults (the kernel maps cached pages around each one)
+  // instead of a buffer's worth of fresh pages and a copy: a measurable part of a generator run.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return "cannot open file";
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    const auto size = static_cast<std::size_t>(st.st_size);
+    void *const m = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    if (m != MAP_FAILED) {
+      ::close(fd);
+      map_ = m;
+      map_size_ = size;
+      view_ = {static_cast<const char *>(m), size};
+      return nullptr;
+    }
+  }
+  ::close(fd);
+#endif
+  if (const char *failed = read_bytes(path, buffer_)) return failed;
+  view_ = buffer_;
+  return nullptr;
+}
+
 std::optional<dictionary> read_file(const std::string &path, diagnostics &diag) {
-  std::string bytes;
-  if (const char *failed = read_bytes(path, bytes)) {
+  file_bytes file;
+  if (const char *failed = file.load(path)) {
     diag.error(path, 0, 0, failed);
     return std::nullopt;
   }
+  const std::string_view bytes = file.view();
   const auto slash = path.find_last_of("/\\");
   const std::string base = slash == std::string::npos ? path : path.substr(slash + 1U);
   const auto dot = base.find_last_of('.');

@@ -42,6 +42,25 @@ void add_mandatory_objects(dictionary &d);
 /// error).
 [[nodiscard]] const char *read_bytes(const std::string &path, std::string &out);
 
+/// The bytes of a file: a regular file is mapped into memory where the system has mmap (no copy;
+/// the kernel maps the pages it has cached), anything else is read with read_bytes().
+class file_bytes {
+public:
+  file_bytes() = default;
+  file_bytes(const file_bytes &) = delete;
+  file_bytes &operator=(const file_bytes &) = delete;
+  ~file_bytes();
+  /// Returns nullptr on success, else what failed (as read_bytes()).
+  [[nodiscard]] const char *load(const std::string &path);
+  [[nodiscard]] std::string_view view() const noexcept { return view_; }
+
+private:
+  std::string buffer_;
+  void *map_ = nullptr;
+  std::size_t map_size_ = 0;
+  std::string_view view_;
+};
+
 /// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv). Reports unreadable files.
 [[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
 
