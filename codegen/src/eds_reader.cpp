@@ -210,7 +210,7 @@ struct ini_section {
 
 private:
   std::unordered_map<std::string, std::size_t> others_; // upper-case name -> first position
-  std::uint32_t known_ = 0;                               // key_bit of every key present
+  std::uint32_t known_ = 0;                             // key_bit of every key present
 };
 
 struct classified {
@@ -562,7 +562,8 @@ private:
     copy_keys(other("DUMMYUSAGE"), dict_.dummy_usage);
     if (const ini_section *c = other("COMMENTS")) {
       for (const auto &k : c->keys) {
-        if (k.name.size() >= 4U && iequals(k.name.substr(0, 4), "LINE") && !iequals(k.name, "LINES")) {
+        if (k.name.size() >= 4U && iequals(k.name.substr(0, 4), "LINE") &&
+            !iequals(k.name, "LINES")) {
           dict_.comments.emplace_back(k.value);
         }
       }
@@ -1285,8 +1286,8 @@ private:
 
   const std::string &file_;
   diagnostics &diag_;
-  std::string_view text_; // the file as UTF-8; keys and values are views into it
-  std::string converted_; // the text when the file was not UTF-8
+  std::string_view text_;            // the file as UTF-8; keys and values are views into it
+  std::string converted_;            // the text when the file was not UTF-8
   std::deque<ini_section> sections_; // deque: pointers stay valid
   std::map<std::uint16_t, const ini_section *> objects_;
   std::map<std::uint16_t, std::map<std::uint8_t, const ini_section *>> subs_;

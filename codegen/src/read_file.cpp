@@ -2,8 +2,11 @@
 #include "text.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <system_error>
 
 #if __has_include(<sys/mman.h>) && __has_include(<sys/stat.h>) && __has_include(<fcntl.h>) && \
     __has_include(<unistd.h>)
@@ -20,14 +23,17 @@ const char *read_bytes(const std::string &path, std::string &out) {
   // One buffer filled block by block: a stream copied through a stringstream cost two more
   // copies of the file.
   const std::unique_ptr<std::FILE, int (*)(std::FILE *)> in(std::fopen(path.c_str(), "rb"),
-                                                             &std::fclose);
+                                                            &std::fclose);
   if (!in) return "cannot open file";
   // The first block holds a regular file whole (its size + 1, to see the end at once).
+  // (Only a regular file's size is a size: ftell of a directory is LONG_MAX on Linux.)
   std::size_t first = std::size_t{1} << 16U;
-  if (std::fseek(in.get(), 0, SEEK_END) == 0) {
-    const long size = std::ftell(in.get());
-    if (size > 0) first = std::max(first, static_cast<std::size_t>(size) + 1U);
-    std::rewind(in.get());
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size < (std::uintmax_t{1} << 32U)) {
+      first = std::max(first, static_cast<std::size_t>(size) + 1U);
+    }
   }
   out.clear();
   std::size_t used = 0;
