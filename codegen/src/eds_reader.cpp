@@ -6,6 +6,7 @@
 #include <fieldcodec/od/value.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <deque>
 #include <limits>
@@ -91,10 +92,6 @@ constexpr std::pair<std::string_view, key> key_names[] = {
     {"OBJECTLINKS", key::object_links},
 };
 
-constexpr char upper_ascii(char c) noexcept {
-  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
-}
-
 // The known keys by length: key_names positions of each length (the longest known key has 21
 // characters), built at compile time from key_names.
 constexpr std::size_t longest_key = 21;
@@ -121,20 +118,51 @@ static_assert([] {
   return longest == longest_key;
 }());
 
+// The known keys in lower case, NUL-padded to 24 bytes: compared eight bytes at a time. Every
+// known key is letters only, so `c | 0x20` of a byte of the key as written equals the lower-case
+// letter exactly when the byte is that letter in either case.
+struct lower_key {
+  char text[24] = {};
+};
+constexpr std::array<lower_key, std::size(key_names)> lower_keys = [] {
+  std::array<lower_key, std::size(key_names)> out{};
+  for (std::size_t i = 0; i < std::size(key_names); ++i) {
+    const std::string_view k = key_names[i].first;
+    for (std::size_t j = 0; j < k.size(); ++j) out[i].text[j] = static_cast<char>(k[j] | 0x20);
+  }
+  return out;
+}();
+static_assert([] {
+  for (const auto &[k, id] : key_names) {
+    for (const char c : k) {
+      if (c < 'A' || c > 'Z') return false;
+    }
+  }
+  return true;
+}());
+
+std::uint64_t load8(const char *p) noexcept {
+  std::uint64_t w = 0;
+  std::memcpy(&w, p, 8);
+  return w;
+}
+
 // Runs for every line of a file, on the key as written (any case): only the known keys of the
-// same length are candidates, told apart by their first and last letter before their text is
-// compared.
+// same length are candidates, compared eight letters at a time.
 key key_of(std::string_view name) noexcept {
-  if (name.empty() || name.size() > longest_key) return key::other;
-  const char first = upper_ascii(name.front());
-  const char last = upper_ascii(name.back());
   const std::size_t n = name.size();
+  if (n == 0U || n > longest_key) return key::other;
+  constexpr std::uint64_t fold = 0x2020202020202020U;
   for (std::size_t c = 0; c < key_by_length.count[n]; ++c) {
-    const auto &[known, id] = key_names[key_by_length.at[n][c]];
-    if (known.front() != first || known.back() != last) continue;
-    std::size_t i = 1;
-    while (i < n && known[i] == upper_ascii(name[i])) ++i;
-    if (i == n) return id;
+    const std::size_t k = key_by_length.at[n][c];
+    const char *const known = lower_keys[k].text;
+    std::size_t i = 0;
+    for (; i + 8U <= n; i += 8U) {
+      if ((load8(name.data() + i) | fold) != load8(known + i)) break;
+    }
+    if (i + 8U <= n) continue;
+    while (i < n && static_cast<char>(name[i] | 0x20) == known[i]) ++i;
+    if (i == n) return key_names[k].second;
   }
   return key::other;
 }
@@ -346,7 +374,7 @@ public:
       return std::nullopt;
     }
     index_sections();
-    dict_.entries.reserve(sections_.size());
+    dict_.entries.reserve(expected_entries());
     header_sections();
     objects();
     if (diag_.too_many()) return std::nullopt;
@@ -529,6 +557,21 @@ private:
       }
       }
     }
+  }
+
+  // At most one entry per section, and the sub-objects of CompactSubObj objects (they have no
+  // sections): reserved at once, entries are never moved (moving one costs its strings).
+  std::size_t expected_entries() const {
+    std::size_t n = sections_.size();
+    for (const auto &[index, s] : objects_) {
+      for (const auto &k : s->keys) {
+        if (k.id != key::compact_sub_obj) continue;
+        const int_parse p = parse_int(trim(k.value.substr(0, k.value.find(';'))));
+        auto c = p.value.to_uint64();
+        if (p.ok && c && c.value() <= 0xFEU) n += static_cast<std::size_t>(c.value()) + 1U;
+      }
+    }
+    return n;
   }
 
   // [xxxxName], [xxxxValue], [xxxxDenotation], [xxxxObjectLinks]: one per object.
@@ -1200,7 +1243,7 @@ private:
     if (!values.empty() || !denotations.empty()) dict_.is_dcf = true;
     bool ok = true;
     for (std::uint32_t i = 1; i <= compact; ++i) {
-      entry e = proto;
+      entry &e = dict_.entries.emplace_back(proto); // built in place
       e.sub = static_cast<std::uint8_t>(i);
       auto n = names.find(i);
       e.name = n != names.end() ? std::string(n->second->value) : proto.name + std::to_string(i);
@@ -1210,7 +1253,6 @@ private:
         ok = capacity(vs, e, v->second) && ok;
       }
       if (auto d = denotations.find(i); d != denotations.end()) e.denotation = d->second->value;
-      dict_.entries.push_back(std::move(e));
     }
     dict_.objects[index] = std::move(info);
     return ok;
