@@ -5,6 +5,7 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -255,5 +256,11 @@ int main(int argc, char **argv) {
   }
   if (!dict || diag.has_errors()) return 1;
   if (!cl.name.empty()) dict->stem = cl.name;
-  return write_outputs(cl, *dict);
+  const int rc = write_outputs(cl, *dict);
+  // Done: the process ends without freeing the dictionary's thousands of strings one by one
+  // (a measurable part of a run on a big file). Every file is closed by now; the standard
+  // streams are flushed here.
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(rc);
 }
