@@ -189,6 +189,22 @@ constexpr std::uint32_t key_bit(key id) noexcept {
 }
 static_assert(static_cast<unsigned>(key::object_links) < 32U, "key_bit needs a wider mask");
 
+// Key names compared without regard to ASCII case (as iequals), hashed alike: the names are
+// views into the reader's text, so a map of them copies no text.
+struct ci_hash {
+  std::size_t operator()(std::string_view s) const noexcept {
+    std::uint64_t h = 0xcbf29ce484222325U; // FNV-1a of the upper-case name
+    for (char c : s) {
+      if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+      h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3U;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+struct ci_equal {
+  bool operator()(std::string_view a, std::string_view b) const noexcept { return iequals(a, b); }
+};
+
 struct ini_section {
   std::string name;
   std::string upper;
@@ -218,10 +234,10 @@ struct ini_section {
     if (keys.size() >= 16U) {
       if (others_.empty()) {
         for (std::size_t i = 0; i < keys.size(); ++i) {
-          if (keys[i].id == key::other) others_.emplace(to_upper(keys[i].name), i);
+          if (keys[i].id == key::other) others_.emplace(keys[i].name, i);
         }
       }
-      auto it = others_.find(to_upper(key_name));
+      auto it = others_.find(key_name);
       return it == others_.end() ? nullptr : &keys[it->second];
     }
     for (const auto &x : keys) {
@@ -231,14 +247,15 @@ struct ini_section {
   }
   /// Appends a key (keeps the map of unknown names, once there is one, up to date).
   void add(const ini_key &k) {
-    if (!others_.empty() && k.id == key::other) others_.emplace(to_upper(k.name), keys.size());
+    if (!others_.empty() && k.id == key::other) others_.emplace(k.name, keys.size());
     known_ |= key_bit(k.id);
     keys.push_back(k);
   }
 
 private:
-  std::unordered_map<std::string, std::size_t> others_; // upper-case name -> first position
-  std::uint32_t known_ = 0;                             // key_bit of every key present
+  // name (any case) -> first position
+  std::unordered_map<std::string_view, std::size_t, ci_hash, ci_equal> others_;
+  std::uint32_t known_ = 0; // key_bit of every key present
 };
 
 struct classified {
