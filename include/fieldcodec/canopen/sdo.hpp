@@ -521,17 +521,12 @@ namespace detail {
 /// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
 /// reported as they are. Errors: unknown_command (no such command in that direction).
 [[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
-  const unsigned b0 = p[0];
   // The commonest message first (issue 18): an expedited initiate, 001x nn1s to the server
   // (download request), 010x nn1s to the client (upload response), built by straight code so
-  // that a caller's tests of type and `expedited` fold after inlining. The table below gives
-  // the same message for these bytes (layout::initiate, expedited). A value of `d` that is no
-  // direction matches nothing (0x100) and the table refuses it. Built with -Os (firmware), the
-  // table alone: the second copy of the expedited code cost 148 bytes of Cortex-M flash in the
-  // cia402_master probe.
-#if defined(__OPTIMIZE_SIZE__)
-  (void)b0;
-#else
+  // that a caller's tests of type and `expedited` fold after inlining. The table gives the
+  // same message for these bytes (layout::initiate, expedited). A value of `d` that is no
+  // direction matches nothing (0x100) and the table refuses it.
+  const unsigned b0 = p[0];
   const unsigned expedited_bits = d == direction::to_server   ? 0x22U
                                   : d == direction::to_client ? 0x42U
                                                               : 0x100U;
@@ -545,8 +540,12 @@ namespace detail {
     detail::read_expedited_data(p, m);
     return m;
   }
-#endif
-  return detail::decode_by_table(p, d);
+  auto r = detail::decode_by_table(p, d);
+  // What the table gives here is never expedited (those bytes were taken above). Written down
+  // as a store the compiler sees, unlike the table's answer: a caller's code for expedited
+  // data then runs only after the straight path (70 -> 64 instructions in the benchmark).
+  if (r.has_value()) r.value().expedited = false;
+  return r;
 }
 
 /// A segment of a sub-block: byte 0 = last << 7 | sequence, then 7 data bytes (all 7 are sent;
