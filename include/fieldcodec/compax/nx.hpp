@@ -451,6 +451,7 @@ inline constexpr std::uint8_t digit_zero = 0x30; ///< ASCII "0"
 inline constexpr std::uint8_t no_family = 0xFF;
 inline constexpr std::size_t op_count = static_cast<std::size_t>(op::assign_v) + 1U;
 static_assert(families.size() < 64U, "code_index packs a family position into 6 bits");
+static_assert(static_cast<unsigned>(arg_kind::variable) < 4U, "and an argument kind into 2");
 
 /// op → position in `families` of the first family of that op (no_family: none), built at
 /// compile time from the table, so that find_family is one load (issue 18).
@@ -496,24 +497,25 @@ struct decoded_code {
   arg_kind kind;
 };
 
-/// Command code → (family position) | (argument form << 6), no_family for an unknown code: the
-/// first match of the table scan below, for every code byte, computed at compile time.
+/// Command code → (family position) | (argument kind << 6: value 0, parameter 2, variable 3),
+/// no_family for an unknown code: the first match of the table scan below, for every code byte,
+/// computed at compile time.
 inline constexpr std::array<std::uint8_t, 256> code_index = [] {
   std::array<std::uint8_t, 256> t{};
   for (unsigned code = 0; code < 256U; ++code) {
     t[code] = no_family;
     for (std::size_t i = 0; i < families.size(); ++i) {
       const family &f = families[i];
-      unsigned form = 4; // none
+      arg_kind kind = arg_kind::special; // none
       if (code == f.code) {
-        form = 0;
+        kind = arg_kind::value;
       } else if (f.has_forms && code == (f.code | parameter_flag)) {
-        form = 1;
+        kind = arg_kind::parameter;
       } else if (f.has_forms && code == (f.code | variable_flag)) {
-        form = 2;
+        kind = arg_kind::variable;
       }
-      if (form != 4U) {
-        t[code] = static_cast<std::uint8_t>(i | (form << 6U));
+      if (kind != arg_kind::special) {
+        t[code] = static_cast<std::uint8_t>(i | (static_cast<unsigned>(kind) << 6U));
         break;
       }
     }
@@ -537,8 +539,7 @@ inline constexpr std::array<std::uint8_t, 256> code_index = [] {
 #endif
   const std::uint8_t e = code_index[code];
   if (e == no_family) return errc::unknown_command;
-  constexpr arg_kind forms[3] = {arg_kind::value, arg_kind::parameter, arg_kind::variable};
-  return decoded_code{families[e & 0x3FU], forms[e >> 6U]};
+  return decoded_code{families[e & 0x3FU], static_cast<arg_kind>(e >> 6U)};
 }
 
 /// May c.second_operation follow c.operation in a combined record (and c.third_operation
@@ -658,7 +659,7 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::size_t>
 write_simple(record &r, std::size_t at, op o, arg a) noexcept {
   const std::uint8_t i = family_position(o);
   if (i == no_family) return errc::unknown_command;
-  const family f = families[i];
+  const family &f = families[i];
   std::uint8_t code = f.code;
   const bool numbered = a.kind == arg_kind::parameter || a.kind == arg_kind::variable;
   if (numbered) {
@@ -824,6 +825,13 @@ constexpr std::size_t write_pattern(record &r, std::size_t at, const pattern &p)
   }
 }
 
+/// p == pattern{}, spelled field by field: the defaulted comparison compares the digits as
+/// memory, and a command whose address is taken that way cannot be kept in registers.
+[[nodiscard]] constexpr bool unset(const pattern &p) noexcept {
+  const auto &d = p.digits;
+  return (p.count | d[0] | d[1] | d[2] | d[3] | d[4] | d[5] | d[6] | d[7]) == 0U;
+}
+
 /// The content of `c` into r[1…]; returns its length (the length byte is left to the caller).
 /// One to three single-argument commands (POSR … SPEED … ACCEL …) are written here, small
 /// enough to be inlined, so that a compiler that knows the operations folds the table look-ups;
@@ -850,7 +858,7 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::size_t> write_content(c
     FIELDCODEC_TRY(at, write_output(r, at, c));
     return at - 1U;
   }
-  if (c.number != 0 || c.io_pattern != pattern{}) return errc::invalid_argument;
+  if (c.number != 0 || !unset(c.io_pattern)) return errc::invalid_argument;
   if (c.second_operation != op::none) {
     FIELDCODEC_TRY(at, write_simple(r, at, c.second_operation, c.second_argument));
   }
@@ -885,11 +893,14 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::size_t> write_content(c
 /// encode_content (no valid command is longer than a record).
 FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<record>
 encode_record(const command &c) noexcept {
-  record r{};
-  auto n = detail::write_content(c, r);
-  if (!n) return n.error();
-  r[0] = static_cast<std::uint8_t>(n.value());
-  return r;
+  result<record> out{record{}}; // written in place: one return object, no copy of the record
+  auto n = detail::write_content(c, out.value());
+  if (n) {
+    out.value()[0] = static_cast<std::uint8_t>(n.value());
+  } else {
+    out = n.error();
+  }
+  return out;
 }
 
 // ------------------------------------------------------------------ decoder
@@ -911,10 +922,16 @@ struct content_reader {
     at += 2U;
     return v;
   }
-  /// Six bytes NL … VH, sign-extended from 48 bits.
+  /// Six bytes NL … VH, sign-extended from 48 bits. Written as a 4-byte and a 2-byte
+  /// little-endian word, which compilers read with one load each.
   constexpr std::int64_t dsp() noexcept {
-    std::uint64_t u = 0;
-    for (std::size_t i = dsp_format::size; i-- > 0;) u = (u << 8U) | in[at + i];
+    const std::uint32_t lo = static_cast<std::uint32_t>(in[at]) |
+                             (static_cast<std::uint32_t>(in[at + 1U]) << 8U) |
+                             (static_cast<std::uint32_t>(in[at + 2U]) << 16U) |
+                             (static_cast<std::uint32_t>(in[at + 3U]) << 24U);
+    const std::uint32_t hi =
+        static_cast<std::uint32_t>(in[at + 4U]) | (static_cast<std::uint32_t>(in[at + 5U]) << 8U);
+    const std::uint64_t u = lo | (std::uint64_t{hi} << 32U);
     at += dsp_format::size;
     constexpr std::uint64_t sign = std::uint64_t{1} << 47U;
     return static_cast<std::int64_t>((u ^ sign) - sign);
@@ -923,7 +940,8 @@ struct content_reader {
 
 /// The number of a P/S/V form: 2 bytes MSB first, then four 0x00 (6 bytes, checked by the
 /// caller). Errors: out_of_range (non-zero padding).
-[[nodiscard]] constexpr result<std::uint16_t> read_number_form(content_reader &rd) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::uint16_t>
+read_number_form(content_reader &rd) noexcept {
   const std::uint16_t n = rd.u16();
   const bool padded = (rd.u8() | rd.u8() | rd.u8() | rd.u8()) == 0U;
   if (!padded) return errc::out_of_range;
@@ -1009,17 +1027,28 @@ read_simple_arg(content_reader &rd, const family &f, arg_kind kind) noexcept {
   return {};
 }
 
-/// x and y… of OUTPUT Ax=y… after its code.
-[[nodiscard]] constexpr status read_output(content_reader &rd, command &c) noexcept {
+struct output_part {
+  std::uint16_t number = 0;
+  pattern io_pattern{};
+};
+
+/// x and y… of OUTPUT Ax=y… after its code; they end the content. (Reader and command are
+/// passed by value and returned: an object whose address goes to a function that is not
+/// inlined must stay in memory, and every byte read would load and store the position.)
+[[nodiscard]] constexpr result<output_part> read_output(content_reader rd) noexcept {
   if (!rd.need(2)) return errc::truncated;
-  c.number = rd.u16();
-  FIELDCODEC_TRY_STATUS(read_pattern(rd, c.io_pattern, true));
-  return check_pattern(c.io_pattern, c.number, true);
+  output_part o;
+  o.number = rd.u16();
+  FIELDCODEC_TRY_STATUS(read_pattern(rd, o.io_pattern, true));
+  FIELDCODEC_TRY_STATUS(check_pattern(o.io_pattern, o.number, true));
+  return o;
 }
 
-/// The commands after `code` that are not one to three single-argument commands → `c`.
-[[nodiscard]] constexpr status read_compound(content_reader &rd, std::uint8_t code,
-                                             command &c) noexcept {
+/// The commands after `code` that are not one to three single-argument commands; every byte
+/// must be used.
+[[nodiscard]] constexpr result<command> read_compound(content_reader rd,
+                                                      std::uint8_t code) noexcept {
+  command c{};
   switch (code) {
   case code_if_input: {
     c.operation = op::if_input;
@@ -1047,10 +1076,14 @@ read_simple_arg(content_reader &rd, const family &f, arg_kind kind) noexcept {
     FIELDCODEC_TRY_STATUS(read_jump(rd, c));
     break;
   }
-  case code_output:
+  case code_output: {
     c.operation = op::output;
-    FIELDCODEC_TRY_STATUS(read_output(rd, c));
+    FIELDCODEC_TRY(const output_part o, read_output(rd));
+    c.number = o.number;
+    c.io_pattern = o.io_pattern;
+    rd.at = rd.in.size(); // the pattern runs to the end
     break;
+  }
   case code_assign_p:
   case code_assign_v: {
     c.operation = code == code_assign_p ? op::assign_p : op::assign_v;
@@ -1079,7 +1112,8 @@ read_simple_arg(content_reader &rd, const family &f, arg_kind kind) noexcept {
   }
   default: return errc::unknown_command;
   }
-  return {};
+  if (!rd.empty()) return errc::bad_length;
+  return c;
 }
 
 /// Content → `c` (which starts as command{}); every byte must be used.
@@ -1093,7 +1127,12 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr status read_content(content_reader 
   case code_output:
   case code_assign_p:
   case code_assign_v:
-  case code_valid: FIELDCODEC_TRY_STATUS(read_compound(rd, code, c)); break;
+  case code_valid: {
+    auto k = read_compound(rd, code);
+    if (!k) return k.error();
+    c = k.value();
+    return {};
+  }
   default: {
     auto d = find_code(code);
     if (!d) return d.error();
@@ -1105,7 +1144,11 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr status read_content(content_reader 
       const std::uint8_t next = rd.u8();
       if (next == code_output && part == 0) {
         c.second_operation = op::output;
-        FIELDCODEC_TRY_STATUS(read_output(rd, c));
+        auto o = read_output(rd);
+        if (!o) return o.error();
+        c.number = o.value().number;
+        c.io_pattern = o.value().io_pattern;
+        rd.at = rd.in.size(); // the pattern runs to the end
         break;
       }
       auto nd = find_code(next);
