@@ -132,16 +132,6 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept
   return arg{arg_kind::value, places, v};
 }
 
-inline constexpr std::array<std::int64_t, 19> powers_of_ten = [] {
-  std::array<std::int64_t, 19> t{};
-  std::int64_t p = 1;
-  for (auto &x : t) {
-    x = p;
-    p = p < INT64_MAX / 10 ? p * 10 : p;
-  }
-  return t;
-}();
-
 /// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
 /// beyond `target` places), overflow (outside int64).
 FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::int64_t>
@@ -153,11 +143,13 @@ scaled_to(std::int64_t number, std::uint8_t places, std::uint8_t target) noexcep
   if (places == target) return number;
   // one multiplication: it overflows exactly when one of the steps by 10 would
   const unsigned k = static_cast<unsigned>(target - places);
-  if (k >= powers_of_ten.size()) {
+  if (k > decimal_max_places) { // 10^k is beyond int64: only 0 scales
     if (number != 0) return errc::overflow;
     return number;
   }
-  if (__builtin_mul_overflow(number, powers_of_ten[k], &number)) return errc::overflow;
+  if (__builtin_mul_overflow(number, fieldcodec::detail::pow10_i64(k), &number)) {
+    return errc::overflow;
+  }
   return number;
 }
 } // namespace detail
