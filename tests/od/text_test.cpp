@@ -40,7 +40,7 @@ TEST_CASE("od text: reads like a string_view") {
   CHECK(std::string(named.name) == s);
   CHECK(std::string(named.name.begin(), named.name.end()) == s);
   CHECK(named.name.data() == named.name.view().data());
-  od::text t = s; // from a std::string (through std::string_view): views s
+  const od::text t(s); // from a std::string (through std::string_view): views s
   CHECK(t.data() == s.data());
   CHECK(t.size() == s.size());
   const std::string_view v = t;
