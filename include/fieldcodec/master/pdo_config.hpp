@@ -74,7 +74,7 @@ private:
     for (std::size_t i = 0; i < 4U; ++i) bytes[i] = static_cast<std::uint8_t>(v >> (8U * i));
     const od::entry *e = d.find(a);
     items_[count_] = {a, std::span<const std::uint8_t>(bytes.data(), size), 0,
-                      e != nullptr ? d.info(*e).name : std::string_view{}};
+                      e != nullptr ? d.info(*e).name.view() : std::string_view{}};
     ++count_;
   }
 
