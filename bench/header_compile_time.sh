@@ -7,6 +7,9 @@
 #   (od includes)   only the od/ headers a generated header includes: the floor of every row
 #
 #   bench/header_compile_time.sh [BUILD_DIR]      (default build-bench; RUNS=5, CXXS="g++ clang++")
+#   INSTRUCTIONS=1 bench/header_compile_time.sh   instructions (millions) of one run under
+#                                                 valgrind --tool=callgrind --trace-children=yes
+#                                                 instead of seconds: the load does not change them
 #
 # BUILD_DIR must have (or gets) the targets fieldcodec-gen and fieldcodec_gen_bench; configure it
 # with -DCMAKE_BUILD_TYPE=Release.
@@ -28,8 +31,15 @@ mkdir -p "$work/h/fieldcodec/dictionaries"
 # The od/ includes of a generated header, nothing else.
 grep '^#include <fieldcodec/' "$work/h/fieldcodec/dictionaries/bench700.hpp" > "$work/od_includes.cpp"
 
-best() { # best CXX FILE -> minimum user seconds over $runs runs
+best() { # best CXX FILE -> minimum user seconds over $runs runs (or instructions, see above)
   local cxx=$1 src=$2 b=
+  if [ "${INSTRUCTIONS:-0}" = 1 ]; then
+    rm -f "$work"/cg.*
+    valgrind --tool=callgrind --trace-children=yes --callgrind-out-file="$work/cg.%p" \
+      "$cxx" -std=c++20 -I"$work/h" -Iinclude -fsyntax-only "$src" 2>/dev/null
+    awk '/^summary:/ {n += $2} END {printf "%.0fM\n", n / 1e6}' "$work"/cg.*
+    return
+  fi
   for _ in $(seq "$runs"); do
     /usr/bin/time -o "$work/t" -f '%U' "$cxx" -std=c++20 -I"$work/h" -Iinclude -fsyntax-only "$src"
     b=$(awk -v b="$b" '{print (b == "" || $1 < b) ? $1 : b}' "$work/t")
@@ -38,7 +48,8 @@ best() { # best CXX FILE -> minimum user seconds over $runs runs
 }
 
 printf '| header | size | entries |'
-for c in $cxxs; do printf ' %s user s |' "$c"; done
+unit='user s'; [ "${INSTRUCTIONS:-0}" = 1 ] && unit=instructions
+for c in $cxxs; do printf ' %s %s |' "$c" "$unit"; done
 printf '\n|---|---:|---:|'
 for c in $cxxs; do printf -- '---:|'; done
 printf '\n'

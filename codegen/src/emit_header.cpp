@@ -120,14 +120,27 @@ void append_view(std::string &o, const std::string &v) {
   o += "sv";
 }
 
-/// The value of a byte-string entry: a visible string as `"text"sv`, other bytes (OCTET_STRING,
-/// UNICODE_STRING, DOMAIN) with every byte escaped and the length written out.
-void append_value_view(std::string &o, od::data_type type, const std::string &bytes) {
+/// An od::text column, `{"text", N}`: od::text's (pointer, length) constructor, the length
+/// written out (no counting in constant evaluation). A VISIBLE_STRING (and every descriptive
+/// column) as its text, other bytes (OCTET_STRING, UNICODE_STRING, DOMAIN) with every byte
+/// escaped. Embedded NULs are kept.
+void append_text(std::string &o, od::data_type type, const std::string &bytes) {
   if (type == od::data_type::visible_string) {
-    append_view(o, bytes);
-  } else {
-    append_cpp_value_text(o, type, bytes);
+    o += '{';
+    append_cpp_string(o, bytes);
+    o += ", ";
+    append_int(o, bytes.size());
+    o += '}';
+    return;
   }
+  // append_cpp_value_text writes `std::string_view{"…", n}`: keep the braces
+  const std::size_t at = o.size();
+  append_cpp_value_text(o, type, bytes);
+  constexpr std::string_view prefix = "std::string_view";
+  if (o.compare(at, prefix.size(), prefix) == 0) o.erase(at, prefix.size());
+}
+void append_text(std::string &o, const std::string &v) {
+  append_text(o, od::data_type::visible_string, v);
 }
 
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
@@ -196,7 +209,7 @@ void emit_core(std::string &o, const entry &e) {
   }
   if (!e.default_text.empty()) {
     o += ", .default_text = ";
-    append_value_view(o, e.type, e.default_text);
+    append_text(o, e.type, e.default_text);
   }
   o += '}';
 }
@@ -214,7 +227,7 @@ void emit_info(std::string &o, const entry &e) {
   auto text = [&](const char *name, const std::string &v) {
     if (v.empty()) return;
     field(name);
-    append_view(o, v);
+    append_text(o, v);
   };
   text("name", e.name);
   text("unit", e.unit);
@@ -243,7 +256,7 @@ void emit_info(std::string &o, const entry &e) {
   }
   if (!e.parameter_text.empty()) {
     field("parameter_text");
-    append_value_view(o, e.type, e.parameter_text);
+    append_text(o, e.type, e.parameter_text);
   }
   o += "}";
 }
@@ -372,7 +385,8 @@ std::string emit_header(const dictionary &d) {
     o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-         "#include <fieldcodec/od/object.hpp>\n\n#include <array>\n#include <cstdint>\n"
+         "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
+         "<array>\n#include <cstdint>\n"
          "#include <string_view>\n\n";
   }
   o += "namespace fieldcodec::dictionaries::" + d.stem + " {\n\n";

@@ -1,6 +1,7 @@
 // The C++ emitter's shape (issue 14): the lean entry table, the parallel info and scale tables,
 // standalone descriptors for named sub-objects, object views, node-ID-relative limits as flags,
-// strings as "…"sv literals.
+// text columns as {"…", n} (od::text: pointer and length, nothing counted by the compiler),
+// view names as "…"sv literals.
 #include "readers.hpp"
 
 #include <doctest/doctest.h>
@@ -43,7 +44,7 @@ TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
   CHECK(has(h, "inline constexpr std::array<od::entry_info, 3> infos{{"));
   CHECK_FALSE(has(h, "scales")); // no scaled entry: no scale table
   CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos};"));
-  CHECK(has(h, "{.name = \"Device type\"sv}"));
+  CHECK(has(h, "{.name = {\"Device type\", 11}}"));
   // a VAR object and a named RECORD sub-object: standalone descriptors (copies of table rows)
   CHECK(has(h, "inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000"));
   CHECK(has(h, "inline constexpr od::object server_sdo_parameter{0x1200, "
@@ -69,7 +70,18 @@ TEST_CASE("emit_header: scaled CSV rows get a scale table and the scaled flag") 
   CHECK(has(h, "inline constexpr std::array<scaling::linear, 2> scales{{"));
   CHECK(has(h, "    {{32767, 2}, {0, 0}},\n    {},\n"));
   CHECK(has(h, ".flags = od::flag::scaled"));
-  CHECK(has(h, "{.name = \"Inj. P Limit 1\"sv, .unit = \"bar\"sv}"));
+  CHECK(has(h, "{.name = {\"Inj. P Limit 1\", 14}, .unit = {\"bar\", 3}}"));
   CHECK(has(h, "inline constexpr od::descriptor inj_p_limit_1{entries[0], infos[0], scales[0]};"));
   CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos, scales};"));
+}
+
+TEST_CASE("emit_header: a text's length is its bytes, not its escaped spelling") {
+  // 4 bytes `Ab"c` are written with an escape (5 characters between the quotes)
+  const std::string h =
+      emit_eds("[FileInfo]\nFileName=t.eds\n[DeviceInfo]\nVendorName=v\n"
+               "[MandatoryObjects]\nSupportedObjects=1\n1=0x1008\n"
+               "[1008]\nParameterName=Say \"hi\"\nObjectType=0x7\nDataType=0x0009\n"
+               "AccessType=const\nDefaultValue=Ab\"c\nPDOMapping=0\n");
+  CHECK(has(h, ".default_text = {\"Ab\\\"c\", 4}"));
+  CHECK(has(h, "{.name = {\"Say \\\"hi\\\"\", 8}}"));
 }

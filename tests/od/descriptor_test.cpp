@@ -202,11 +202,11 @@ TEST_CASE("od descriptor: generated headers") {
   static_assert(std::is_same_v<decltype(xc::identity_object_vendor_id), const od::descriptor>);
   CHECK(xc::identity_object_vendor_id.sub == 1);
   CHECK(xc::identity_object_vendor_id.info.name == xc::identity_object[1].info.name);
-  // every generated string has exactly its length (the "…"sv literals keep embedded NULs and
+  // every generated string has exactly its length (the {"…", n} literals keep embedded NULs and
   // never count the terminator)
   for (const od::entry &e : xc::dictionary) {
     const auto &i = xc::dictionary.info(e);
-    CHECK(i.name.find('\0') == std::string_view::npos);
+    CHECK(i.name.view().find('\0') == std::string_view::npos);
     CHECK(!i.name.empty());
   }
 }

@@ -26,6 +26,7 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -38,6 +39,42 @@ struct server_options {
   bool block = true; ///< answer block transfer requests (else abort 0x05040001)
   bool crc = true;   ///< support the CRC of block transfers
 };
+
+namespace detail {
+
+/// Append `bytes` to `buf`, whose first `used` bytes are taken: when `buf` is full and bytes
+/// remain, `flush()` (abort_code() noexcept) passes the full buffer on and `used` starts again
+/// from 0. Returns none, out_of_memory (an empty buffer) or what flush() returned; on an error
+/// the bytes before it stay appended. Copies runs of bytes, not one byte and one check at a
+/// time (a block segment is 7 bytes; see docs/performance.md, "Services").
+template <class Flush>
+[[nodiscard]] constexpr abort_code append_parts(std::span<std::uint8_t> buf, std::size_t &used,
+                                                std::span<const std::uint8_t> bytes,
+                                                Flush flush) noexcept {
+  std::size_t at = 0;
+  while (at < bytes.size()) {
+    if (used == buf.size()) {
+      if (buf.empty()) return abort_code::out_of_memory;
+      if (const abort_code c = flush(); c != abort_code::none) return c;
+      used = 0;
+    }
+    const std::size_t room = buf.size() - used;
+    const std::size_t left = bytes.size() - at;
+    const std::size_t n = room < left ? room : left;
+    const auto from = bytes.begin() + static_cast<std::ptrdiff_t>(at);
+    const auto to = buf.begin() + static_cast<std::ptrdiff_t>(used);
+    if (n == 7U) { // a whole segment: a copy of constant length, inlined as a few moves
+      std::copy_n(from, 7U, to);
+    } else {
+      std::copy_n(from, n, to);
+    }
+    used += n;
+    at += n;
+  }
+  return abort_code::none;
+}
+
+} // namespace detail
 
 template <object_store Store>
 class server {
@@ -188,17 +225,11 @@ private:
 
   /// Append received bytes; a full buffer goes to the store as a part.
   [[nodiscard]] constexpr abort_code append(std::span<const std::uint8_t> bytes) noexcept {
-    for (const std::uint8_t b : bytes) {
-      if (used_ == buf_.size()) {
-        if (buf_.empty()) return abort_code::out_of_memory;
-        const auto c = store_->write(core_.address(), flushed_, buf_, false);
-        if (c != abort_code::none) return c;
-        flushed_ += used_;
-        used_ = 0;
-      }
-      buf_[used_++] = b;
-    }
-    return abort_code::none;
+    return detail::append_parts(buf_, used_, bytes, [this]() noexcept {
+      const auto c = store_->write(core_.address(), flushed_, buf_, false);
+      if (c == abort_code::none) flushed_ += used_;
+      return c;
+    });
   }
   /// The last part: the value becomes visible (or is refused).
   [[nodiscard]] constexpr abort_code complete_download() noexcept {

@@ -15,12 +15,15 @@ namespace fieldcodec::crc {
 /// CRC-16/XMODEM (CCITT polynomial 0x1021, initial 0) of `data`, continuing from `crc`.
 [[nodiscard]] constexpr std::uint16_t ccitt16(std::span<const std::uint8_t> data,
                                               std::uint16_t crc = 0) noexcept {
-  // Bitwise on purpose: 8 shifts per byte cost less flash than a 512-byte table, and block
-  // transfer moves at most a few hundred bytes per millisecond.
+  // A byte at a time without a table: the eight shift-and-xor steps of the division by 0x1021
+  // collapse into three shifts of the byte's quotient x (0x1021 = 2^12 + 2^5 + 1, and the top
+  // nibble of x folds into its bottom one). About a quarter of the instructions of the bitwise
+  // loop, and no 512-byte table in flash.
   for (const std::uint8_t b : data) {
-    unsigned r = static_cast<unsigned>(crc) ^ (static_cast<unsigned>(b) << 8U);
-    for (int i = 0; i < 8; ++i) r = (r & 0x8000U) != 0U ? (r << 1U) ^ 0x1021U : r << 1U;
-    crc = static_cast<std::uint16_t>(r & 0xFFFFU);
+    unsigned x = ((static_cast<unsigned>(crc) >> 8U) ^ b) & 0xFFU;
+    x ^= x >> 4U;
+    crc = static_cast<std::uint16_t>(
+        ((static_cast<unsigned>(crc) << 8U) ^ (x << 12U) ^ (x << 5U) ^ x) & 0xFFFFU);
   }
   return crc;
 }

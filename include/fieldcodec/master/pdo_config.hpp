@@ -72,9 +72,11 @@ private:
                      std::uint8_t size) noexcept {
     auto &bytes = values_[count_];
     for (std::size_t i = 0; i < 4U; ++i) bytes[i] = static_cast<std::uint8_t>(v >> (8U * i));
-    const od::entry *e = d.find(a);
+    // by position, not find() != nullptr (constant evaluation under g++ -fsanitize=undefined,
+    // docs/od.md)
+    const std::size_t i = d.position(a);
     items_[count_] = {a, std::span<const std::uint8_t>(bytes.data(), size), 0,
-                      e != nullptr ? d.info(*e).name : std::string_view{}};
+                      i < d.size() ? d.info(d.entries()[i]).name.view() : std::string_view{}};
     ++count_;
   }
 
@@ -118,8 +120,8 @@ plan_pdo(const od::dictionary &device, const pdo_request &r, pdo_sequence &out) 
   if (auto s = pdo::check(cp, r.dir); !s) return pdo_error{s.error(), {}, 0, {comm, 2}};
   // the parameter objects
   const auto writable = [&device](od::address a) {
-    const od::entry *e = device.find(a);
-    return e != nullptr && od::writable(e->access_type);
+    const std::size_t i = device.position(a);
+    return i < device.size() && od::writable(device.entries()[i].access_type);
   };
   for (const od::address a : {od::address{comm, 1}, od::address{map, 0}}) {
     if (!device.contains(a)) return pdo_error{errc::unknown_object, {}, 0, a};

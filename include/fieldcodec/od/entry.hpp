@@ -16,10 +16,10 @@
 #include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/number.hpp>
+#include <fieldcodec/od/text.hpp>
 
 #include <cstdint>
 #include <limits>
-#include <string_view>
 
 namespace fieldcodec::od {
 
@@ -79,7 +79,7 @@ struct entry {
   number low{};           ///< lowest allowed value: engineering units when scaled, raw otherwise
   number high{};          ///< highest allowed value, same units as `low`
   number default_value{}; ///< raw default; add the node-ID when flag::default_nodeid
-  std::string_view default_text{}; ///< default of a string / domain entry, as its bytes
+  text default_text{};    ///< default of a string / domain entry, as its bytes
 
   [[nodiscard]] constexpr bool has(std::uint16_t f) const noexcept { return (flags & f) == f; }
 
@@ -127,20 +127,21 @@ namespace detail {
 } // namespace detail
 
 /// The descriptive columns of one entry (joined to it by position, see od::dictionary::info).
+/// Text columns are od::text (od/text.hpp), which read like std::string_view.
 struct entry_info {
-  std::string_view name{}; ///< name as the source prints it
-  std::string_view unit{};
-  std::string_view alt_name{};
-  std::string_view section{}; ///< manual section
-  std::string_view remark{};
-  std::string_view acceptance{};     ///< DPQ: when the card accepts a write
-  std::string_view denotation{};     ///< DCF Denotation
+  text name{}; ///< name as the source prints it
+  text unit{};
+  text alt_name{};
+  text section{}; ///< manual section
+  text remark{};
+  text acceptance{};                 ///< DPQ: when the card accepts a write
+  text denotation{};                 ///< DCF Denotation
   std::uint8_t pointer = no_pointer; ///< COMPAX index pointer
   bus_manager bus = bus_manager::unspecified;
-  std::uint32_t obj_flags = 0;       ///< EDS ObjFlags
-  number parameter_value{};          ///< DCF ParameterValue (configured value), raw; see
-                                     ///< flag::parameter_nodeid and descriptor::parameter_for
-  std::string_view parameter_text{}; ///< DCF ParameterValue of a string entry
+  std::uint32_t obj_flags = 0; ///< EDS ObjFlags
+  number parameter_value{};    ///< DCF ParameterValue (configured value), raw; see
+                               ///< flag::parameter_nodeid and descriptor::parameter_for
+  text parameter_text{};       ///< DCF ParameterValue of a string entry
 };
 
 /// What info() answers for an entry that has none.

@@ -1,0 +1,690 @@
+// Benchmarks of the CANopen services (issue 18) against hand-written equivalents: SDO block
+// transfer (server upload, client download; per byte = Ir per transfer / 889) and the PDO engine
+// (two synchronous TPDOs per SYNC, one RPDO per frame), each over a dictionary_store.
+//
+// Every operation is one complete exchange, so that every call does the same work: a block
+// transfer of 889 bytes (one sub-block of 127 segments) from the initiate request to the end
+// response, with every frame the machine sends copied into the result (the transmit queue); a
+// SYNC to an engine whose two TPDOs are sent on every SYNC; an RPDO written into the store. The
+// machines and stores live in globals (the lambdas are captureless); the inputs select which of
+// several objects / nodes a call works on.
+#include "codec_harness.hpp"
+
+#include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/node/pdo_engine.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/core/crc.hpp>
+#include <fieldcodec/od/dictionary.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace {
+
+namespace co = fieldcodec::canopen;
+namespace sdo = fieldcodec::canopen::sdo;
+namespace node = fieldcodec::canopen::node;
+namespace od = fieldcodec::od;
+using sdo::abort_code;
+
+// ---------------------------------------------------------------------------------------------
+// The hand-written block CRC: CRC-16/XMODEM by a 256-entry table, as CANopenNode's
+// crc16-ccitt.c computes it.
+
+constexpr std::array<std::uint16_t, 256> crc_table = [] {
+  std::array<std::uint16_t, 256> t{};
+  for (unsigned i = 0; i < 256U; ++i) {
+    unsigned r = i << 8U;
+    for (int k = 0; k < 8; ++k) r = (r & 0x8000U) != 0U ? (r << 1U) ^ 0x1021U : r << 1U;
+    t[i] = static_cast<std::uint16_t>(r & 0xFFFFU);
+  }
+  return t;
+}();
+
+inline std::uint16_t hand_crc(const std::uint8_t *p, std::size_t n, std::uint16_t crc) {
+  for (std::size_t i = 0; i < n; ++i) {
+    crc = static_cast<std::uint16_t>((crc << 8U) ^ crc_table[((crc >> 8U) ^ p[i]) & 0xFFU]);
+  }
+  return crc;
+}
+
+// ---------------------------------------------------------------------------------------------
+// SDO block transfer: 889 bytes = one sub-block of 127 segments
+
+constexpr std::uint8_t sdo_node = 5;
+constexpr std::size_t block_bytes = 127U * 7U; // 889
+constexpr std::size_t value_count = 16; // uploads from 3000h..300Fh, downloads to 3010h..301Fh
+
+/// Every frame one transfer sent, in order (the transmit queue), and how it ended.
+struct transfer_out {
+  std::array<co::can_frame, 130> tx{};
+  std::size_t n = 0;
+  bool done = false;
+  bool operator==(const transfer_out &) const = default;
+  void push(const co::can_frame &f) {
+    if (n < tx.size()) tx[n++] = f;
+  }
+};
+
+struct transfer_in {
+  std::uint8_t object = 0; ///< 0..value_count-1: object 3000h + object
+  bool operator==(const transfer_in &) const = default;
+};
+
+bench::inputs<transfer_in> g_transfers;
+
+constexpr std::array<od::entry, 2 * value_count> make_block_entries() {
+  std::array<od::entry, 2 * value_count> e{};
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    e[i] = od::entry{.index = static_cast<std::uint16_t>(0x3000U + i),
+                     .type = od::data_type::domain,
+                     .access_type = od::access::rw,
+                     .size = block_bytes};
+  }
+  return e;
+}
+constexpr auto block_entries = make_block_entries();
+constexpr od::dictionary block_dict{block_entries};
+constexpr auto block_layout = sdo::make_layout<2 * value_count>(block_dict);
+
+using store_type = sdo::dictionary_store<>;
+
+/// The values of the objects (the hand-written side reads them where the store keeps them).
+std::vector<std::uint8_t> g_block_storage(block_layout.storage_size());
+store_type g_block_store{block_dict, block_layout, g_block_storage};
+std::array<std::uint8_t, block_bytes> g_server_buffer{};
+/// A download's buffer: the server asks for sub-blocks of what fits the room left in it, so
+/// with 2 × 889 bytes it takes 127 segments and asks for 127 more after them, as the
+/// hand-written server does.
+std::array<std::uint8_t, 2 * block_bytes> g_download_buffer{};
+/// The data of a download (the client side), one per object.
+std::array<std::array<std::uint8_t, block_bytes>, value_count> g_download_data{};
+
+const std::uint8_t *stored_value(std::uint8_t object) {
+  return g_block_storage.data() + block_layout.offsets[object] + sdo::length_prefix;
+}
+
+constexpr od::address object_address(std::uint8_t object) {
+  return {static_cast<std::uint16_t>(0x3000U + object), 0};
+}
+/// The object a download of data `o` goes to.
+constexpr od::address download_address(std::uint8_t o) {
+  return {static_cast<std::uint16_t>(0x3000U + value_count + o), 0};
+}
+
+co::can_frame request(const sdo::payload &p) {
+  return co::can_frame{static_cast<std::uint16_t>(0x600U + sdo_node), false, 8, p};
+}
+co::can_frame response(const sdo::payload &p) {
+  return co::can_frame{static_cast<std::uint16_t>(0x580U + sdo_node), false, 8, p};
+}
+
+/// The requests of a client that reads object `o` with block upload (CRC as given, sub-blocks
+/// of 127 segments), and the answers of a server to a block download.
+struct upload_requests {
+  co::can_frame initiate, start, ack, end_response;
+};
+std::array<upload_requests, value_count> g_upload_crc{};
+std::array<upload_requests, value_count> g_upload_plain{};
+
+struct download_responses {
+  co::can_frame initiate, ack, end_response;
+};
+std::array<download_responses, value_count> g_download_crc{};
+std::array<download_responses, value_count> g_download_plain{};
+
+/// The frames of a client that writes g_download_data[o] to object `o` with block download:
+/// initiate (size indicated), 127 segments, end (unused bytes, CRC).
+struct download_requests {
+  co::can_frame initiate;
+  std::array<co::can_frame, 127> segments;
+  co::can_frame end;
+};
+std::array<download_requests, value_count> g_server_download_crc{};
+std::array<download_requests, value_count> g_server_download_plain{};
+/// The values the hand-written server stores (the fieldcodec server writes g_block_store).
+std::array<std::array<std::uint8_t, block_bytes>, value_count> g_hand_values{};
+
+void fill_sdo_inputs() {
+  bench::rng r(18);
+  for (std::size_t i = 0; i < value_count; ++i) {
+    std::array<std::uint8_t, block_bytes> v{};
+    for (auto &b : v) b = static_cast<std::uint8_t>(r.next());
+    const auto o = static_cast<std::uint8_t>(i);
+    if (g_block_store.set(object_address(o), v) != abort_code::none) std::abort();
+    for (auto &b : g_download_data[i]) b = static_cast<std::uint8_t>(r.next());
+    for (const bool crc : {true, false}) {
+      auto &u = (crc ? g_upload_crc : g_upload_plain)[i];
+      u.initiate = request(sdo::block_upload_initiate(object_address(o), 127, 0, crc).value());
+      u.start = request(sdo::block_upload_start());
+      u.ack = request(sdo::block_ack(127, 127).value());
+      u.end_response = request(sdo::block_end_response());
+      auto &d = (crc ? g_download_crc : g_download_plain)[i];
+      d.initiate =
+          response(sdo::block_download_initiate_response(object_address(o), 127, crc).value());
+      d.ack = response(sdo::block_ack(127, 127).value());
+      d.end_response = response(sdo::block_end_response());
+      auto &w = (crc ? g_server_download_crc : g_server_download_plain)[i];
+      w.initiate =
+          request(sdo::block_download_initiate(download_address(o), block_bytes, true, crc));
+      const auto &data = g_download_data[i];
+      for (std::size_t k = 0; k < 127U; ++k) {
+        w.segments[k] =
+            request(sdo::encode_block_segment(
+                        static_cast<std::uint8_t>(k + 1U),
+                        std::span<const std::uint8_t>(data).subspan(7U * k, 7U), k == 126U)
+                        .value());
+      }
+      w.end = request(
+          sdo::block_end(0, crc ? fieldcodec::crc::ccitt16(data) : std::uint16_t{0}).value());
+    }
+  }
+  for (std::size_t i = 0; i < bench::input_count; ++i) {
+    g_transfers[i].object = static_cast<std::uint8_t>(r.below(value_count));
+  }
+}
+
+template <class Frames>
+void push_all(transfer_out &out, const Frames &fs) {
+  for (const co::can_frame f : fs) out.push(f);
+}
+
+/// fieldcodec: sdo::server answering a block upload of 889 bytes from the store.
+template <bool Crc>
+transfer_out server_block_upload(const transfer_in &in) {
+  transfer_out out;
+  const upload_requests &q = (Crc ? g_upload_crc : g_upload_plain)[in.object];
+  sdo::server<store_type> s(sdo_node, g_block_store, g_server_buffer);
+  push_all(out, s.on_frame(q.initiate, 0).send);
+  push_all(out, s.on_frame(q.start, 0).send);
+  push_all(out, s.on_frame(q.ack, 0).send);
+  push_all(out, s.on_frame(q.end_response, 0).send);
+  out.done = s.state() == sdo::transfer_state::done;
+  return out;
+}
+
+/// Hand-written: a server that knows where the object's bytes are. It checks each request's
+/// command byte (and the address and block size of the initiate), cuts the value into 127
+/// segments (sequence number, | 0x80 on the last; 7 bytes, zero-padded) and computes the CRC
+/// by table.
+template <bool Crc>
+transfer_out hand_block_upload(const transfer_in &in) {
+  transfer_out out;
+  const upload_requests &q = (Crc ? g_upload_crc : g_upload_plain)[in.object];
+  const std::uint8_t *v = stored_value(in.object);
+  const auto size = static_cast<std::uint32_t>(block_bytes);
+  const auto rid = static_cast<std::uint16_t>(0x580U + sdo_node);
+  const od::address a = object_address(in.object);
+  // initiate: 0xA0 | crc << 2, index, sub, block size 1..127
+  const auto &d0 = q.initiate.data;
+  if (q.initiate.dlc != 8U || (d0[0] & 0xE3U) != 0xA0U || (d0[1] | (d0[2] << 8U)) != a.index ||
+      d0[3] != a.sub || d0[4] < 1U || d0[4] > 127U) {
+    return out;
+  }
+  const bool crc = Crc && (d0[0] & 0x04U) != 0U;
+  const std::uint8_t blksize = d0[4];
+  out.push({rid,
+            false,
+            8,
+            {static_cast<std::uint8_t>(0xC2U | (crc ? 0x04U : 0U)), d0[1], d0[2], d0[3],
+             static_cast<std::uint8_t>(size), static_cast<std::uint8_t>(size >> 8U),
+             static_cast<std::uint8_t>(size >> 16U), static_cast<std::uint8_t>(size >> 24U)}});
+  // start: 0xA3, then the sub-block
+  if (q.start.dlc != 8U || q.start.data[0] != 0xA3U) return out;
+  const std::uint32_t segments = (size + 6U) / 7U;
+  const std::uint32_t count = segments < blksize ? segments : blksize;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    co::can_frame f{rid, false, 8, {}};
+    const std::uint32_t at = 7U * k;
+    const std::uint32_t n = size - at < 7U ? size - at : 7U;
+    f.data[0] = static_cast<std::uint8_t>((k + 1U) | (k + 1U == segments ? 0x80U : 0U));
+    std::memcpy(&f.data[1], v + at, n);
+    out.push(f);
+  }
+  // acknowledgement: 0xA2, all 127 received: the end with the CRC
+  if (q.ack.dlc != 8U || q.ack.data[0] != 0xA2U || q.ack.data[1] != count) return out;
+  const std::uint16_t c = crc ? hand_crc(v, size, 0) : std::uint16_t{0};
+  const auto unused = static_cast<std::uint8_t>(7U * segments - size);
+  out.push({rid,
+            false,
+            8,
+            {static_cast<std::uint8_t>(0xC1U | (unused << 2U)), static_cast<std::uint8_t>(c),
+             static_cast<std::uint8_t>(c >> 8U), 0, 0, 0, 0, 0}});
+  // end response: 0xA1
+  out.done = q.end_response.dlc == 8U && q.end_response.data[0] == 0xA1U;
+  return out;
+}
+
+/// fieldcodec: sdo::client downloading 889 bytes with block transfer.
+template <bool Crc>
+transfer_out client_block_download(const transfer_in &in) {
+  transfer_out out;
+  const download_responses &q = (Crc ? g_download_crc : g_download_plain)[in.object];
+  sdo::client c(sdo_node);
+  sdo::block_options o;
+  o.crc = Crc;
+  auto s = c.block_download(object_address(in.object), g_download_data[in.object], 0, o);
+  if (!s) return out;
+  push_all(out, s.value().send);
+  push_all(out, c.on_frame(q.initiate, 0).send);
+  push_all(out, c.on_frame(q.ack, 0).send);
+  push_all(out, c.on_frame(q.end_response, 0).send);
+  out.done = c.state() == sdo::transfer_state::done;
+  return out;
+}
+
+/// Hand-written: the client side of the same download.
+template <bool Crc>
+transfer_out hand_block_download(const transfer_in &in) {
+  transfer_out out;
+  const download_responses &q = (Crc ? g_download_crc : g_download_plain)[in.object];
+  const std::uint8_t *v = g_download_data[in.object].data();
+  const auto size = static_cast<std::uint32_t>(block_bytes);
+  const auto rid = static_cast<std::uint16_t>(0x600U + sdo_node);
+  const od::address a = object_address(in.object);
+  // initiate: 0xC2 | crc << 2 (size indicated), index, sub, size
+  out.push({rid,
+            false,
+            8,
+            {static_cast<std::uint8_t>(0xC2U | (Crc ? 0x04U : 0U)),
+             static_cast<std::uint8_t>(a.index), static_cast<std::uint8_t>(a.index >> 8U), a.sub,
+             static_cast<std::uint8_t>(size), static_cast<std::uint8_t>(size >> 8U),
+             static_cast<std::uint8_t>(size >> 16U), static_cast<std::uint8_t>(size >> 24U)}});
+  // initiate response: 0xA0 | crc << 2, the same address, block size 1..127
+  const auto &d0 = q.initiate.data;
+  if (q.initiate.dlc != 8U || (d0[0] & 0xFBU) != 0xA0U || (d0[1] | (d0[2] << 8U)) != a.index ||
+      d0[3] != a.sub || d0[4] < 1U || d0[4] > 127U) {
+    return out;
+  }
+  const bool crc = Crc && (d0[0] & 0x04U) != 0U;
+  const std::uint32_t segments = (size + 6U) / 7U;
+  const std::uint32_t count = segments < d0[4] ? segments : d0[4];
+  for (std::uint32_t k = 0; k < count; ++k) {
+    co::can_frame f{rid, false, 8, {}};
+    const std::uint32_t at = 7U * k;
+    const std::uint32_t n = size - at < 7U ? size - at : 7U;
+    f.data[0] = static_cast<std::uint8_t>((k + 1U) | (k + 1U == segments ? 0x80U : 0U));
+    std::memcpy(&f.data[1], v + at, n);
+    out.push(f);
+  }
+  // acknowledgement of all 127: the end with the CRC
+  if (q.ack.dlc != 8U || q.ack.data[0] != 0xA2U || q.ack.data[1] != count) return out;
+  const std::uint16_t c = crc ? hand_crc(v, size, 0) : std::uint16_t{0};
+  const auto unused = static_cast<std::uint8_t>(7U * segments - size);
+  out.push({rid,
+            false,
+            8,
+            {static_cast<std::uint8_t>(0xC1U | (unused << 2U)), static_cast<std::uint8_t>(c),
+             static_cast<std::uint8_t>(c >> 8U), 0, 0, 0, 0, 0}});
+  out.done = q.end_response.dlc == 8U && q.end_response.data[0] == 0xA1U;
+  return out;
+}
+
+/// What a block download left behind: the frames the server sent and the stored value.
+struct download_out {
+  transfer_out frames;
+  std::array<std::uint8_t, block_bytes> value{};
+  bool operator==(const download_out &) const = default;
+};
+
+/// fieldcodec: sdo::server taking a block download of 889 bytes into the store.
+template <bool Crc>
+download_out server_block_download(const transfer_in &in) {
+  download_out out;
+  const download_requests &q = (Crc ? g_server_download_crc : g_server_download_plain)[in.object];
+  sdo::server<store_type> s(sdo_node, g_block_store, g_download_buffer);
+  push_all(out.frames, s.on_frame(q.initiate, 0).send);
+  for (const co::can_frame &f : q.segments) push_all(out.frames, s.on_frame(f, 0).send);
+  push_all(out.frames, s.on_frame(q.end, 0).send);
+  out.frames.done = s.state() == sdo::transfer_state::done;
+  std::memcpy(out.value.data(), stored_value(static_cast<std::uint8_t>(value_count + in.object)),
+              block_bytes);
+  return out;
+}
+
+/// Hand-written: the server side of the same download into a value it knows (CRC by table).
+template <bool Crc>
+download_out hand_server_block_download(const transfer_in &in) {
+  download_out out;
+  const download_requests &q = (Crc ? g_server_download_crc : g_server_download_plain)[in.object];
+  std::uint8_t *v = g_hand_values[in.object].data();
+  const auto rid = static_cast<std::uint16_t>(0x580U + sdo_node);
+  const od::address a = download_address(in.object);
+  // initiate: 0xC2 | crc << 2 (size indicated), the address, the size
+  const auto &d0 = q.initiate.data;
+  if (q.initiate.dlc != 8U || (d0[0] & 0xFBU) != 0xC2U || (d0[1] | (d0[2] << 8U)) != a.index ||
+      d0[3] != a.sub) {
+    return out;
+  }
+  const std::uint32_t size =
+      static_cast<std::uint32_t>(d0[4]) | (static_cast<std::uint32_t>(d0[5]) << 8U) |
+      (static_cast<std::uint32_t>(d0[6]) << 16U) | (static_cast<std::uint32_t>(d0[7]) << 24U);
+  if (size != block_bytes) return out;
+  const bool crc = Crc && (d0[0] & 0x04U) != 0U;
+  out.frames.push(
+      {rid,
+       false,
+       8,
+       {static_cast<std::uint8_t>(0xA0U | (crc ? 0x04U : 0U)), d0[1], d0[2], d0[3], 127, 0, 0, 0}});
+  // 127 segments in sequence, the last one flagged
+  std::array<std::uint8_t, block_bytes> staged{};
+  std::uint8_t seq = 0;
+  for (const co::can_frame &f : q.segments) {
+    if (f.dlc != 8U || (f.data[0] & 0x7FU) != seq + 1U) return out;
+    seq = static_cast<std::uint8_t>(seq + 1U);
+    std::memcpy(staged.data() + 7U * (seq - 1U), &f.data[1], 7);
+  }
+  out.frames.push({rid, false, 8, {0xA2, seq, 127, 0, 0, 0, 0, 0}});
+  // end: 0xC1 | unused << 2, CRC
+  const auto &e = q.end.data;
+  if (q.end.dlc != 8U || (e[0] & 0xE3U) != 0xC1U || ((e[0] >> 2U) & 7U) != 0U) return out;
+  if (crc && hand_crc(staged.data(), size, 0) != (e[1] | (e[2] << 8U))) return out;
+  std::memcpy(v, staged.data(), size);
+  out.frames.push({rid, false, 8, {0xA1, 0, 0, 0, 0, 0, 0, 0}});
+  out.frames.done = true;
+  std::memcpy(out.value.data(), v, block_bytes);
+  return out;
+}
+
+void add_sdo(bench::registry &reg) {
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, server, CRC",
+      [](const transfer_in &in) { return server_block_upload<true>(in); },
+      [](const transfer_in &in) { return hand_block_upload<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, server, no CRC",
+      [](const transfer_in &in) { return server_block_upload<false>(in); },
+      [](const transfer_in &in) { return hand_block_upload<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, client, CRC",
+      [](const transfer_in &in) { return client_block_download<true>(in); },
+      [](const transfer_in &in) { return hand_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, client, no CRC",
+      [](const transfer_in &in) { return client_block_download<false>(in); },
+      [](const transfer_in &in) { return hand_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC",
+      [](const transfer_in &in) { return server_block_download<true>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, no CRC",
+      [](const transfer_in &in) { return server_block_download<false>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+}
+
+// ---------------------------------------------------------------------------------------------
+// PDO engine: node 5 with two synchronous TPDOs (type 1: every SYNC) of four objects and 8 bytes
+// each, and one event-driven RPDO (type 255) of four objects and 8 bytes.
+
+constexpr std::uint8_t pdo_node = 5;
+constexpr std::size_t node_count = 16; // independent nodes (stores + engines); inputs pick one
+
+constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
+constexpr od::entry var(std::uint16_t index, std::uint8_t sub, od::data_type t, std::uint64_t def,
+                        od::pdo_mapping p = od::pdo_mapping::no) {
+  return {.index = index,
+          .sub = sub,
+          .type = t,
+          .access_type = od::access::rw,
+          .pdo = p,
+          .default_value = U(def)};
+}
+
+constexpr auto u8 = od::data_type::unsigned8;
+constexpr auto u16 = od::data_type::unsigned16;
+constexpr auto u32 = od::data_type::unsigned32;
+constexpr auto yes = od::pdo_mapping::yes;
+
+constexpr std::array<od::entry, 54> pdo_entries{
+    {// RPDO 1: controlword, target position, modes of operation, digital outputs
+     var(0x1400, 0, u8, 5), var(0x1400, 1, u32, 0x200U + pdo_node), var(0x1400, 2, u8, 255),
+     var(0x1400, 3, u16, 0), var(0x1400, 4, u8, 0), var(0x1400, 5, u16, 0), var(0x1600, 0, u8, 4),
+     var(0x1600, 1, u32, 0x6040'0010U), var(0x1600, 2, u32, 0x607A'0020U),
+     var(0x1600, 3, u32, 0x6060'0008U), var(0x1600, 4, u32, 0x2003'0008U),
+     // TPDO 1 and 2: synchronous, every SYNC
+     var(0x1800, 0, u8, 6), var(0x1800, 1, u32, 0x180U + pdo_node), var(0x1800, 2, u8, 1),
+     var(0x1800, 3, u16, 0), var(0x1800, 4, u8, 0), var(0x1800, 5, u16, 0), var(0x1800, 6, u8, 0),
+     var(0x1801, 0, u8, 6), var(0x1801, 1, u32, 0x280U + pdo_node), var(0x1801, 2, u8, 1),
+     var(0x1801, 3, u16, 0), var(0x1801, 4, u8, 0), var(0x1801, 5, u16, 0), var(0x1801, 6, u8, 0),
+     // statusword, position actual, modes display, digital inputs
+     var(0x1A00, 0, u8, 4), var(0x1A00, 1, u32, 0x6041'0010U), var(0x1A00, 2, u32, 0x6064'0020U),
+     var(0x1A00, 3, u32, 0x6061'0008U), var(0x1A00, 4, u32, 0x2000'0008U),
+     // velocity actual, torque actual, two status bytes
+     var(0x1A01, 0, u8, 4), var(0x1A01, 1, u32, 0x606C'0020U), var(0x1A01, 2, u32, 0x6077'0010U),
+     var(0x1A01, 3, u32, 0x2001'0008U), var(0x1A01, 4, u32, 0x2002'0008U),
+     // application objects
+     var(0x2000, 0, u8, 0, yes), var(0x2001, 0, u8, 0, yes), var(0x2002, 0, u8, 0, yes),
+     var(0x2003, 0, u8, 0, yes), var(0x6040, 0, u16, 0, yes), var(0x6041, 0, u16, 0, yes),
+     var(0x6060, 0, od::data_type::integer8, 0, yes),
+     var(0x6061, 0, od::data_type::integer8, 0, yes),
+     var(0x6064, 0, od::data_type::integer32, 0, yes),
+     var(0x606C, 0, od::data_type::integer32, 0, yes),
+     var(0x6077, 0, od::data_type::integer16, 0, yes),
+     var(0x607A, 0, od::data_type::integer32, 0, yes),
+     // padding objects the PDOs do not map (a dictionary has more than its PDO objects)
+     var(0x1000, 0, u32, 0x0002'0192U), var(0x1001, 0, u8, 0), var(0x1017, 0, u16, 100),
+     var(0x1018, 0, u8, 1), var(0x1018, 1, u32, 0x0F1CU), var(0x2004, 0, u32, 0),
+     var(0x6502, 0, u32, 0x65U)}};
+
+constexpr std::array<od::entry, 54> sorted_pdo_entries = [] {
+  auto e = pdo_entries;
+  for (std::size_t i = 1; i < e.size(); ++i) { // insertion sort by (index, sub)
+    for (std::size_t k = i; k > 0 && (e[k].index < e[k - 1].index ||
+                                      (e[k].index == e[k - 1].index && e[k].sub < e[k - 1].sub));
+         --k) {
+      const od::entry t = e[k];
+      e[k] = e[k - 1];
+      e[k - 1] = t;
+    }
+  }
+  return e;
+}();
+constexpr od::dictionary pdo_dict{sorted_pdo_entries};
+static_assert(pdo_dict.is_valid());
+constexpr auto pdo_layout = sdo::make_layout<sorted_pdo_entries.size()>(pdo_dict);
+
+/// Where the value of `index` (sub 0) starts in a node's storage.
+constexpr std::size_t slot(std::uint16_t index) {
+  for (std::size_t i = 0; i < sorted_pdo_entries.size(); ++i) {
+    if (sorted_pdo_entries[i].index == index && sorted_pdo_entries[i].sub == 0U) {
+      return pdo_layout.offsets[i];
+    }
+  }
+  return ~std::size_t{0};
+}
+
+using engine_type = node::pdo_engine<store_type, 1, 2, 4>;
+
+struct pdo_node_state {
+  std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(pdo_layout.storage_size());
+  store_type store{pdo_dict, pdo_layout, storage};
+  engine_type engine{store, pdo_dict};
+};
+/// The nodes fieldcodec's engines run on, and the storage the hand-written RPDO writes into.
+std::deque<pdo_node_state> g_nodes;
+std::array<std::vector<std::uint8_t>, node_count> g_hand_storage;
+
+struct sync_in {
+  std::uint8_t node = 0;
+  bool operator==(const sync_in &) const = default;
+};
+struct rpdo_in {
+  std::uint8_t node = 0;
+  co::can_frame frame{};
+  bool operator==(const rpdo_in &) const = default;
+};
+bench::inputs<sync_in> g_syncs;
+bench::inputs<rpdo_in> g_rpdos;
+
+struct sync_out {
+  std::array<co::can_frame, 2> f{};
+  std::size_t n = 0;
+  bool operator==(const sync_out &) const = default;
+};
+/// The stored values of the RPDO's four objects after the frame.
+struct rpdo_out {
+  std::array<std::uint8_t, 8> v{};
+  bool operator==(const rpdo_out &) const = default;
+};
+
+bool fill_pdo_inputs() {
+  bench::rng r(402);
+  for (std::size_t i = 0; i < node_count; ++i) {
+    pdo_node_state &n = g_nodes.emplace_back();
+    if (!n.store.init_defaults(pdo_node) || !n.engine.reload()) return false;
+    n.engine.set_operational(true, 0);
+    constexpr std::array<std::uint16_t, 8> tpdo_objects{0x2000, 0x2001, 0x2002, 0x6041,
+                                                        0x6061, 0x6064, 0x606C, 0x6077};
+    for (const std::uint16_t index : tpdo_objects) {
+      const auto *e = pdo_dict.find(index, 0);
+      if (e == nullptr) return false;
+      for (std::size_t k = 0; k < e->width(); ++k) {
+        n.storage[slot(index) + k] = static_cast<std::uint8_t>(r.next());
+      }
+    }
+    g_hand_storage[i] = n.storage;
+  }
+  for (std::size_t i = 0; i < bench::input_count; ++i) {
+    g_syncs[i].node = static_cast<std::uint8_t>(r.below(node_count));
+    g_rpdos[i].node = static_cast<std::uint8_t>(r.below(node_count));
+    g_rpdos[i].frame = co::can_frame{static_cast<std::uint16_t>(0x200U + pdo_node), false, 8, {}};
+    for (auto &b : g_rpdos[i].frame.data) b = static_cast<std::uint8_t>(r.next());
+  }
+  return true;
+}
+
+template <class T>
+T load_le(const std::vector<std::uint8_t> &s, std::size_t at) {
+  T v{};
+  std::memcpy(&v, s.data() + at, sizeof(T)); // little-endian host (x86-64, Cortex-M)
+  return v;
+}
+
+/// Hand-written: read the eight variables and pack the two TPDOs.
+sync_out hand_sync(const sync_in &in) {
+  sync_out o;
+  const auto &s = g_nodes[in.node].storage;
+  const auto sw = load_le<std::uint16_t>(s, slot(0x6041));
+  const auto pos = load_le<std::uint32_t>(s, slot(0x6064));
+  const auto mode = load_le<std::uint8_t>(s, slot(0x6061));
+  const auto in0 = load_le<std::uint8_t>(s, slot(0x2000));
+  const auto vel = load_le<std::uint32_t>(s, slot(0x606C));
+  const auto torque = load_le<std::uint16_t>(s, slot(0x6077));
+  const auto st1 = load_le<std::uint8_t>(s, slot(0x2001));
+  const auto st2 = load_le<std::uint8_t>(s, slot(0x2002));
+  o.f[0] = {0x180U + pdo_node,
+            false,
+            8,
+            {static_cast<std::uint8_t>(sw), static_cast<std::uint8_t>(sw >> 8U),
+             static_cast<std::uint8_t>(pos), static_cast<std::uint8_t>(pos >> 8U),
+             static_cast<std::uint8_t>(pos >> 16U), static_cast<std::uint8_t>(pos >> 24U), mode,
+             in0}};
+  o.f[1] = {0x280U + pdo_node,
+            false,
+            8,
+            {static_cast<std::uint8_t>(vel), static_cast<std::uint8_t>(vel >> 8U),
+             static_cast<std::uint8_t>(vel >> 16U), static_cast<std::uint8_t>(vel >> 24U),
+             static_cast<std::uint8_t>(torque), static_cast<std::uint8_t>(torque >> 8U), st1, st2}};
+  o.n = 2;
+  return o;
+}
+
+rpdo_out stored_rpdo(const std::vector<std::uint8_t> &s) {
+  rpdo_out o;
+  std::memcpy(o.v.data(), s.data() + slot(0x6040), 2);
+  std::memcpy(o.v.data() + 2, s.data() + slot(0x607A), 4);
+  o.v[6] = s[slot(0x6060)];
+  o.v[7] = s[slot(0x2003)];
+  return o;
+}
+
+/// Hand-written: take the RPDO if it is ours and long enough, store the four variables.
+rpdo_out hand_rpdo(const rpdo_in &in) {
+  auto &s = g_hand_storage[in.node];
+  const co::can_frame &f = in.frame;
+  if (f.id == 0x200U + pdo_node && !f.rtr && f.dlc >= 8U) {
+    const std::uint16_t cw = static_cast<std::uint16_t>(f.data[0] | (f.data[1] << 8U));
+    const std::uint32_t target = static_cast<std::uint32_t>(f.data[2]) |
+                                 (static_cast<std::uint32_t>(f.data[3]) << 8U) |
+                                 (static_cast<std::uint32_t>(f.data[4]) << 16U) |
+                                 (static_cast<std::uint32_t>(f.data[5]) << 24U);
+    std::memcpy(s.data() + slot(0x6040), &cw, 2);
+    std::memcpy(s.data() + slot(0x607A), &target, 4);
+    s[slot(0x6060)] = f.data[6];
+    s[slot(0x2003)] = f.data[7];
+  }
+  return stored_rpdo(s);
+}
+
+void add_pdo(bench::registry &reg) {
+  bench::add<g_syncs>(
+      reg, "pdo engine/on_sync, 2 TPDOs of 4 objects",
+      [](const sync_in &in) {
+        sync_out o;
+        const auto s = g_nodes[in.node].engine.on_sync(std::nullopt, 0);
+        for (const co::can_frame f : s.send) {
+          if (o.n < o.f.size()) o.f[o.n++] = f;
+        }
+        return o;
+      },
+      [](const sync_in &in) { return hand_sync(in); });
+  bench::add<g_rpdos>(
+      reg, "pdo engine/on_frame, RPDO of 4 objects",
+      [](const rpdo_in &in) {
+        pdo_node_state &n = g_nodes[in.node];
+        (void)n.engine.on_frame(in.frame, 0);
+        return stored_rpdo(n.storage);
+      },
+      [](const rpdo_in &in) { return hand_rpdo(in); });
+}
+
+/// --check compares fieldcodec with the baseline; this makes sure what they agree on is a
+/// whole transfer (initiate answer, 127 segments, end) and not two identical failures.
+bool complete_transfers() {
+  const transfer_in in{};
+  const transfer_out outs[] = {server_block_upload<true>(in), server_block_upload<false>(in),
+                               client_block_download<true>(in), client_block_download<false>(in)};
+  for (const auto &o : outs) {
+    if (!o.done || o.n != 129U) {
+      std::fprintf(stderr, "codec_services: a block transfer did not complete (%zu frames)\n", o.n);
+      return false;
+    }
+  }
+  // the server download: initiate response, one acknowledgement, end response, and the value
+  for (const auto &d : {server_block_download<true>(in), server_block_download<false>(in)}) {
+    if (!d.frames.done || d.frames.n != 3U || d.value != g_download_data[in.object]) {
+      std::fprintf(stderr, "codec_services: a block download did not complete\n");
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (!g_block_store.init_defaults(sdo_node)) return 2;
+  fill_sdo_inputs();
+  bench::registry reg;
+  bench::add_harness<g_transfers>(reg);
+  add_sdo(reg);
+  if (!complete_transfers()) return 1;
+  if (!fill_pdo_inputs()) {
+    std::fprintf(stderr, "codec_services: the PDO nodes could not be set up\n");
+    return 1;
+  }
+  add_pdo(reg);
+  return bench::main(argc, argv, reg);
+}
