@@ -90,6 +90,10 @@ static_assert(dict.lookup(od::address{0x2023, 0}).value() == &entries[4]);
 static_assert(dict.lookup(0x2023, 1).error() == errc::unknown_object);
 static_assert(dict.contains(od::address{0x1400, 1}) && !dict.contains(0x1400, 0));
 static_assert(dict.position(entries[3]) == 3);
+// By position: what a constant expression tests under g++ -fsanitize=undefined (docs/od.md).
+static_assert(dict.position(od::address{0x1018, 4}) == 2);
+static_assert(dict.position(od::address{0x1018, 2}) == dict.size());
+static_assert(dict.position(od::address{0xFFFF, 0xFF}) == dict.size());
 
 // info / scale / describe by position.
 static_assert(dict.info(entries[1]).name == "Vendor-ID");
@@ -124,6 +128,8 @@ static_assert(identity[4].info.name == "Serial number"); // sub 4 (position 2)
 static_assert(identity.at(4).value().index == 0x1018);
 static_assert(identity.at(2).error() == errc::unknown_object);
 static_assert(identity.find(2) == nullptr);
+static_assert(identity.contains(4) && !identity.contains(2) && !identity.contains(0xFF));
+static_assert(identity.position(4) == 2 && identity.position(2) == identity.size());
 static_assert(identity.lookup(1).value() == &entries[1]);
 static_assert(identity.info(entries[1]).name == "Vendor-ID");
 static_assert(identity.info(entries[4]).name.empty()); // not one of its entries

@@ -99,9 +99,9 @@ struct payload {
 [[nodiscard]] constexpr result<payload> raw_to_bytes(const od::descriptor &d,
                                                      std::int64_t raw) noexcept {
   payload p;
-  auto n = od::detail::encode_integer(d, &d.scale, od::detail::from_int64(raw),
-                                      std::span<std::uint8_t>(p.bytes), byte_order::little,
-                                      od::any_node);
+  auto n = od::detail::encode_integer(d, od::detail::maybe_scale{&d.scale, true},
+                                      od::detail::from_int64(raw), std::span<std::uint8_t>(p.bytes),
+                                      byte_order::little, od::any_node);
   if (!n) return n.error();
   p.size = static_cast<std::uint8_t>(n.value());
   return p;

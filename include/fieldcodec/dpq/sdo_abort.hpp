@@ -76,8 +76,12 @@ inline constexpr std::array<sdo_abort_row, 16> sdo_abort_table{{
 
 /// The DPQ's text for an abort code; empty for a code the DPQ does not list.
 [[nodiscard]] constexpr std::string_view describe_sdo_abort(abort_code code) noexcept {
-  const sdo_abort_row *row = find_sdo_abort(code);
-  return row != nullptr ? row->dpq_text : std::string_view{};
+  // by the rows, not by find_sdo_abort's pointer: see od/detail/search.hpp on g++
+  // -fsanitize=undefined and constant evaluation
+  for (const auto &row : sdo_abort_table) {
+    if (row.code == code) return row.dpq_text;
+  }
+  return std::string_view{};
 }
 
 /// The fieldcodec error for an abort code (the shared table's; errc::aborted when unknown).

@@ -199,16 +199,17 @@ public:
   [[nodiscard]] constexpr const_iterator end() const noexcept { return commands_.end(); }
 
   [[nodiscard]] constexpr const command *find(std::uint16_t code) const noexcept {
-    return detail::find(commands_, code, [](const command &c) { return c.code; });
+    return detail::find(commands_, code, key);
   }
   /// Errors: unknown_command.
   [[nodiscard]] constexpr result<const command *> lookup(std::uint16_t code) const noexcept {
-    const command *c = find(code);
-    if (c == nullptr) return errc::unknown_command;
-    return c;
+    const std::size_t i = detail::position(commands_, code, key);
+    if (i == commands_.size()) return errc::unknown_command;
+    return commands_.data() + i;
   }
 
 private:
+  static constexpr std::uint16_t key(const command &c) noexcept { return c.code; }
   std::span<const command> commands_{};
 };
 

@@ -64,9 +64,14 @@ public:
     return scales_;
   }
 
+  /// Position of the entry at `a` in entries(), or size() when there is none. O(log n).
+  [[nodiscard]] constexpr std::size_t position(address a) const noexcept {
+    return detail::position(entries_, key_of(a), key_of_entry);
+  }
   /// The entry at `a`, or nullptr. O(log n).
   [[nodiscard]] constexpr const entry *find(address a) const noexcept {
-    return detail::find(entries_, key_of(a), key_of_entry);
+    const std::size_t i = position(a);
+    return i < entries_.size() ? entries_.data() + i : nullptr;
   }
   [[nodiscard]] constexpr const entry *find(std::uint16_t index, std::uint8_t sub) const noexcept {
     return find(address{index, sub});
@@ -74,25 +79,27 @@ public:
 
   /// The entry at `a`. Errors: unknown_object.
   [[nodiscard]] constexpr result<const entry *> lookup(address a) const noexcept {
-    const entry *e = find(a);
-    if (e == nullptr) return errc::unknown_object;
-    return e;
+    const std::size_t i = position(a);
+    if (i == entries_.size()) return errc::unknown_object;
+    return entries_.data() + i;
   }
   [[nodiscard]] constexpr result<const entry *> lookup(std::uint16_t index,
                                                        std::uint8_t sub) const noexcept {
     return lookup(address{index, sub});
   }
 
-  [[nodiscard]] constexpr bool contains(address a) const noexcept { return find(a) != nullptr; }
+  [[nodiscard]] constexpr bool contains(address a) const noexcept {
+    return position(a) < entries_.size();
+  }
   [[nodiscard]] constexpr bool contains(std::uint16_t index, std::uint8_t sub) const noexcept {
-    return find(address{index, sub}) != nullptr;
+    return contains(address{index, sub});
   }
 
   /// The descriptor (entry, info, scale) at `a`. Errors: unknown_object.
   [[nodiscard]] constexpr result<descriptor> at(address a) const noexcept {
-    const entry *e = find(a);
-    if (e == nullptr) return errc::unknown_object;
-    return detail::describe_at(entries_, infos_, scales_, position(*e));
+    const std::size_t i = position(a);
+    if (i == entries_.size()) return errc::unknown_object;
+    return detail::describe_at(entries_, infos_, scales_, i);
   }
   [[nodiscard]] constexpr result<descriptor> at(std::uint16_t index,
                                                 std::uint8_t sub) const noexcept {

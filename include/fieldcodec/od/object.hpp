@@ -76,31 +76,38 @@ struct object {
   [[nodiscard]] constexpr auto begin() const noexcept { return entries.begin(); }
   [[nodiscard]] constexpr auto end() const noexcept { return entries.end(); }
 
+  /// Position of sub-entry `sub` in entries(), or size() when there is none.
+  [[nodiscard]] constexpr std::size_t position(std::uint8_t sub) const noexcept {
+    return detail::position(entries, sub, [](const entry &e) { return e.sub; });
+  }
   /// The sub-entry `sub`, or nullptr.
   [[nodiscard]] constexpr const entry *find(std::uint8_t sub) const noexcept {
-    return detail::find(entries, sub, [](const entry &e) { return e.sub; });
+    const std::size_t i = position(sub);
+    return i < entries.size() ? entries.data() + i : nullptr;
+  }
+  /// Whether sub-entry `sub` exists.
+  [[nodiscard]] constexpr bool contains(std::uint8_t sub) const noexcept {
+    return position(sub) < entries.size();
   }
   /// The sub-entry `sub`. Errors: unknown_object.
   [[nodiscard]] constexpr result<const entry *> lookup(std::uint8_t sub) const noexcept {
-    const entry *e = find(sub);
-    if (e == nullptr) return errc::unknown_object;
-    return e;
+    const std::size_t i = position(sub);
+    if (i == entries.size()) return errc::unknown_object;
+    return entries.data() + i;
   }
 
   /// The descriptor of sub-object `sub`. Errors: unknown_object.
   [[nodiscard]] constexpr result<descriptor> at(std::uint8_t sub) const noexcept {
-    const entry *e = find(sub);
-    if (e == nullptr) return errc::unknown_object;
-    return detail::describe_at(entries, infos, scales,
-                               static_cast<std::size_t>(e - entries.data()));
+    const std::size_t i = position(sub);
+    if (i == entries.size()) return errc::unknown_object;
+    return detail::describe_at(entries, infos, scales, i);
   }
   /// The descriptor of sub-object `sub`, which must exist: a missing sub-index ends the program
   /// (and is a compile error in a constant expression). Use at() or find() when it may not.
   [[nodiscard]] constexpr descriptor operator[](std::uint8_t sub) const noexcept {
-    const entry *e = find(sub);
-    if (e == nullptr) detail::missing_sub_index();
-    return detail::describe_at(entries, infos, scales,
-                               static_cast<std::size_t>(e - entries.data()));
+    const std::size_t i = position(sub);
+    if (i == entries.size()) detail::missing_sub_index();
+    return detail::describe_at(entries, infos, scales, i);
   }
 
   /// The descriptive columns of `e` (by position); od::no_info when `e` is not one of this

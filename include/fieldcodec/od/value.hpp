@@ -67,6 +67,15 @@ inline constexpr std::uint32_t time_ms_max = (std::uint32_t{1} << 28U) - 1U;
 
 namespace detail {
 
+/// The scale of the entry being converted, when it is known (a descriptor) or not (a plain
+/// od::entry). A flag says which, not a null pointer: g++ 12 with -fsanitize=undefined cannot
+/// constant-evaluate the comparison of the address of a constexpr descriptor's member with
+/// nullptr, and these functions run in constant expressions.
+struct maybe_scale {
+  const scaling::linear *p = nullptr; ///< read only when `known`
+  bool known = false;
+};
+
 /// A signed 65-bit integer as sign + magnitude, for comparisons across int64 and uint64.
 struct wide_int {
   bool negative = false;
@@ -86,14 +95,14 @@ struct wide_int {
 /// A raw integer limit. For a scaled entry the limit is in engineering units:
 /// raw = round((limit − offset) × scale). Errors: anything; the caller then does not check that
 /// end (a limit that is not given, or that no raw integer can stand for).
-[[nodiscard]] constexpr result<wide_int> raw_limit(const entry &e, const scaling::linear *scale,
+[[nodiscard]] constexpr result<wide_int> raw_limit(const entry &e, maybe_scale scale,
                                                    result<number> limit) noexcept {
   if (!limit) return limit.error();
   const number lim = limit.value();
-  if (e.has(flag::scaled) && scale != nullptr) {
+  if (e.has(flag::scaled) && scale.known) {
     auto d = lim.to_decimal();
     if (!d) return d.error();
-    auto r = scaling::scale_to_raw(d.value(), *scale);
+    auto r = scaling::scale_to_raw(d.value(), *scale.p);
     if (!r) return r.error();
     return from_int64(r.value());
   }
@@ -109,12 +118,12 @@ struct wide_int {
 /// Errors: out_of_range when v lies outside the entry's limits for `node`; invalid_argument when
 /// the entry is scaled and has a limit but its scale is not known (a plain od::entry: pass the
 /// od::descriptor).
-[[nodiscard]] constexpr status check_int_limits(const entry &e, const scaling::linear *scale,
-                                                wide_int v, std::uint8_t node) noexcept {
-  if (e.has(flag::scaled) && scale == nullptr && (e.low || e.high)) return errc::invalid_argument;
+[[nodiscard]] constexpr status check_int_limits(const entry &e, maybe_scale scale, wide_int v,
+                                                std::uint8_t node) noexcept {
+  if (e.has(flag::scaled) && !scale.known && (e.low || e.high)) return errc::invalid_argument;
   auto lo = raw_limit(e, scale, checked_limit(e, false, node));
   auto hi = raw_limit(e, scale, checked_limit(e, true, node));
-  if (e.has(flag::scaled) && scale != nullptr && scale->scale.mantissa < 0) {
+  if (e.has(flag::scaled) && scale.known && scale.p->scale.mantissa < 0) {
     // a negative scale turns the engineering low into the raw high and vice versa
     if (lo && compare(v, lo.value()) > 0) return errc::out_of_range;
     if (hi && compare(v, hi.value()) < 0) return errc::out_of_range;
@@ -179,9 +188,10 @@ struct wide_int {
 
 /// The integer part of encode: limits, field, bytes. `e` must have an integer type (the DPQ's
 /// raw values take this path directly, without the REAL and TIME code of encode).
-[[nodiscard]] constexpr result<std::size_t>
-encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
-               std::span<std::uint8_t> out, byte_order order, std::uint8_t node) noexcept {
+[[nodiscard]] constexpr result<std::size_t> encode_integer(const entry &e, maybe_scale scale,
+                                                           wide_int x, std::span<std::uint8_t> out,
+                                                           byte_order order,
+                                                           std::uint8_t node) noexcept {
   const std::size_t w = fixed_size(e.type);
   if (!is_integer(e.type)) return errc::type_mismatch;
   if (out.size() < w) return errc::buffer_too_small;
@@ -200,10 +210,10 @@ encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
   return w;
 }
 
-/// encode for an entry whose scale is `scale` (nullptr: not known).
-[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, const scaling::linear *scale,
-                                                   number v, std::span<std::uint8_t> out,
-                                                   byte_order order, std::uint8_t node) noexcept {
+/// encode for an entry whose scale is `scale` (maybe_scale{}: not known).
+[[nodiscard]] constexpr result<std::size_t> encode(const entry &e, maybe_scale scale, number v,
+                                                   std::span<std::uint8_t> out, byte_order order,
+                                                   std::uint8_t node) noexcept {
   const std::size_t w = fixed_size(e.type);
   if (w == 0U || !v) return errc::type_mismatch;
   if (out.size() < w) return errc::buffer_too_small;
@@ -240,8 +250,8 @@ encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
   return encode_integer(e, scale, x, out, order, node);
 }
 
-/// decode for an entry whose scale is `scale` (nullptr: not known).
-[[nodiscard]] constexpr result<number> decode(const entry &e, const scaling::linear *scale,
+/// decode for an entry whose scale is `scale` (maybe_scale{}: not known).
+[[nodiscard]] constexpr result<number> decode(const entry &e, maybe_scale scale,
                                               std::span<const std::uint8_t> in, byte_order order,
                                               limits lim, std::uint8_t node) noexcept {
   const std::size_t w = fixed_size(e.type);
@@ -293,7 +303,7 @@ encode_integer(const entry &e, const scaling::linear *scale, wide_int x,
 
 /// Errors: out_of_range, invalid_argument (scaled entry without its scale), type_mismatch,
 /// not_representable.
-[[nodiscard]] constexpr status check_limits(const entry &e, const scaling::linear *scale, number v,
+[[nodiscard]] constexpr status check_limits(const entry &e, maybe_scale scale, number v,
                                             std::uint8_t node) noexcept {
   if (!v || fixed_size(e.type) == 0U) return errc::type_mismatch;
   if (is_real(e.type)) {
@@ -325,11 +335,11 @@ inline constexpr bool always_false = false;
 /// without its scale), type_mismatch (byte-string type or no value), not_representable.
 [[nodiscard]] constexpr status check_limits(const entry &e, number v,
                                             std::uint8_t node = any_node) noexcept {
-  return detail::check_limits(e, nullptr, v, node);
+  return detail::check_limits(e, detail::maybe_scale{}, v, node);
 }
 [[nodiscard]] constexpr status check_limits(const descriptor &d, number v,
                                             std::uint8_t node = any_node) noexcept {
-  return detail::check_limits(d, &d.scale, v, node);
+  return detail::check_limits(d, detail::maybe_scale{&d.scale, true}, v, node);
 }
 
 /// Write the value `v` of entry `e` to the front of `out`; returns the number of bytes.
@@ -342,13 +352,13 @@ inline constexpr bool always_false = false;
                                                    std::span<std::uint8_t> out,
                                                    byte_order order = byte_order::little,
                                                    std::uint8_t node = any_node) noexcept {
-  return detail::encode(e, nullptr, v, out, order, node);
+  return detail::encode(e, detail::maybe_scale{}, v, out, order, node);
 }
 [[nodiscard]] constexpr result<std::size_t> encode(const descriptor &d, number v,
                                                    std::span<std::uint8_t> out,
                                                    byte_order order = byte_order::little,
                                                    std::uint8_t node = any_node) noexcept {
-  return detail::encode(d, &d.scale, v, out, order, node);
+  return detail::encode(d, detail::maybe_scale{&d.scale, true}, v, out, order, node);
 }
 
 /// Read the value of entry `e` from `in`, which must hold exactly width() bytes.
@@ -360,13 +370,13 @@ inline constexpr bool always_false = false;
                                               byte_order order = byte_order::little,
                                               limits lim = limits::check,
                                               std::uint8_t node = any_node) noexcept {
-  return detail::decode(e, nullptr, in, order, lim, node);
+  return detail::decode(e, detail::maybe_scale{}, in, order, lim, node);
 }
 [[nodiscard]] constexpr result<number> decode(const descriptor &d, std::span<const std::uint8_t> in,
                                               byte_order order = byte_order::little,
                                               limits lim = limits::check,
                                               std::uint8_t node = any_node) noexcept {
-  return detail::decode(d, &d.scale, in, order, lim, node);
+  return detail::decode(d, detail::maybe_scale{&d.scale, true}, in, order, lim, node);
 }
 
 // --- typed form --------------------------------------------------------------------------------
@@ -411,7 +421,7 @@ template <value_type T>
                                                    std::uint8_t node = any_node) noexcept {
   auto n = to_number(e, v);
   if (!n) return n.error();
-  return detail::encode(e, nullptr, n.value(), out, order, node);
+  return detail::encode(e, detail::maybe_scale{}, n.value(), out, order, node);
 }
 template <value_type T>
 [[nodiscard]] constexpr result<std::size_t>
@@ -419,7 +429,7 @@ encode(const descriptor &d, T v, std::span<std::uint8_t> out, byte_order order =
        std::uint8_t node = any_node) noexcept {
   auto n = to_number(d, v);
   if (!n) return n.error();
-  return detail::encode(d, &d.scale, n.value(), out, order, node);
+  return detail::encode(d, detail::maybe_scale{&d.scale, true}, n.value(), out, order, node);
 }
 
 namespace detail {
@@ -463,7 +473,7 @@ template <value_type T>
 [[nodiscard]] constexpr result<T>
 decode(const entry &e, std::span<const std::uint8_t> in, byte_order order = byte_order::little,
        limits lim = limits::check, std::uint8_t node = any_node) noexcept {
-  auto n = detail::decode(e, nullptr, in, order, lim, node);
+  auto n = detail::decode(e, detail::maybe_scale{}, in, order, lim, node);
   if (!n) return n.error();
   return detail::number_as<T>(n.value());
 }
@@ -471,7 +481,7 @@ template <value_type T>
 [[nodiscard]] constexpr result<T>
 decode(const descriptor &d, std::span<const std::uint8_t> in, byte_order order = byte_order::little,
        limits lim = limits::check, std::uint8_t node = any_node) noexcept {
-  auto n = detail::decode(d, &d.scale, in, order, lim, node);
+  auto n = detail::decode(d, detail::maybe_scale{&d.scale, true}, in, order, lim, node);
   if (!n) return n.error();
   return detail::number_as<T>(n.value());
 }

@@ -156,26 +156,31 @@ inline constexpr std::array<code_text, 4> controller_errors{{
 }};
 
 namespace detail {
+/// Position of `code` in `table`, or N when the table does not name it (a position, not a
+/// pointer: see od/detail/search.hpp on g++ -fsanitize=undefined and constant evaluation).
 template <std::size_t N, integer_argument T>
-constexpr const code_text *find_code(const std::array<code_text, N> &table, T code) noexcept {
-  for (const auto &e : table) {
-    if (in_closed_range(code, e.code, e.code)) return &e;
+constexpr std::size_t find_code(const std::array<code_text, N> &table, T code) noexcept {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (in_closed_range(code, table[i].code, table[i].code)) return i;
   }
-  return nullptr;
+  return N;
 }
 } // namespace detail
 
 /// Text of a command error number. Errors: unknown_object (not defined in the manual).
 template <integer_argument T>
 [[nodiscard]] constexpr result<std::string_view> describe_command_error(T code) noexcept {
-  if (const auto *e = detail::find_code(command_errors, code)) return e->text;
+  if (const auto i = detail::find_code(command_errors, code); i < command_errors.size())
+    return command_errors[i].text;
   return errc::unknown_object;
 }
 
 /// Text of an operating status code. Errors: unknown_object.
 template <integer_argument T>
 [[nodiscard]] constexpr result<std::string_view> describe_operating_status(T code) noexcept {
-  if (const auto *e = detail::find_code(operating_status_codes, code)) return e->text;
+  if (const auto i = detail::find_code(operating_status_codes, code);
+      i < operating_status_codes.size())
+    return operating_status_codes[i].text;
   return errc::unknown_object;
 }
 
@@ -183,7 +188,8 @@ template <integer_argument T>
 /// otherwise the text of its class. Errors: unknown_object (negative or above 999).
 template <integer_argument T>
 [[nodiscard]] constexpr result<std::string_view> describe_controller_error(T code) noexcept {
-  if (const auto *e = detail::find_code(controller_errors, code)) return e->text;
+  if (const auto i = detail::find_code(controller_errors, code); i < controller_errors.size())
+    return controller_errors[i].text;
   switch (classify_controller_error(code)) {
   case controller_error_class::none: return std::string_view("no error");
   case controller_error_class::cpu: return std::string_view("CPU fault (power cycle to clear)");

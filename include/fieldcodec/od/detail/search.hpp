@@ -26,12 +26,22 @@ template <class T, class Key, class KeyOf>
   return lo;
 }
 
+/// Index of the element whose key equals `key`, or `s.size()` when there is none (`s` sorted,
+/// keys unique). Lookups that answer "not found" test this index, never a pointer: g++ 12 with
+/// -fsanitize=undefined cannot constant-evaluate the comparison of a pointer into a constexpr
+/// table with nullptr, and the lookups run in static_asserts.
+template <class T, class Key, class KeyOf>
+[[nodiscard]] constexpr std::size_t position(std::span<const T> s, const Key &key,
+                                             KeyOf key_of) noexcept {
+  const std::size_t i = lower_bound(s, key, key_of);
+  return i < s.size() && key_of(s[i]) == key ? i : s.size();
+}
+
 /// The element whose key equals `key`, or nullptr (`s` sorted, keys unique).
 template <class T, class Key, class KeyOf>
 [[nodiscard]] constexpr const T *find(std::span<const T> s, const Key &key, KeyOf key_of) noexcept {
-  const std::size_t i = lower_bound(s, key, key_of);
-  if (i < s.size() && key_of(s[i]) == key) return &s[i];
-  return nullptr;
+  const std::size_t i = position(s, key, key_of);
+  return i < s.size() ? s.data() + i : nullptr;
 }
 
 } // namespace fieldcodec::od::detail
