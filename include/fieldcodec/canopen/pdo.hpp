@@ -166,12 +166,21 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
   return v;
 }
 
+namespace detail {
+/// The low `length` bits (1..64) of `raw` as a two's complement number: shifted up to bit 63
+/// and arithmetically back, without a test of the sign bit (issue 18: for a length known after
+/// inlining this is one sign-extending move). Bits of `raw` above `length` do not matter.
+[[nodiscard]] constexpr std::int64_t sign_extend(std::uint64_t raw, std::size_t length) noexcept {
+  const std::size_t up = 64U - length;
+  return static_cast<std::int64_t>(raw << up) >> up;
+}
+} // namespace detail
+
 /// Read `length` bits as a two's complement number, sign-extended.
 [[nodiscard]] constexpr result<std::int64_t>
 unpack_signed(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length) noexcept {
-  FIELDCODEC_TRY(std::uint64_t v, unpack(pdo, offset, length));
-  if (length < 64U && ((v >> (length - 1U)) & 1U) != 0U) v |= ~std::uint64_t{0} << length;
-  return static_cast<std::int64_t>(v);
+  FIELDCODEC_TRY(const std::uint64_t v, unpack(pdo, offset, length));
+  return detail::sign_extend(v, length);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -234,16 +243,15 @@ template <integer T>
 template <integer T>
 [[nodiscard]] constexpr result<T> field_value(std::uint64_t raw, std::size_t length,
                                               signedness s) noexcept {
-  if (s == signedness::signed_ && length < 64U && ((raw >> (length - 1U)) & 1U) != 0U) {
-    raw |= ~std::uint64_t{0} << length; // sign-extend
-  }
-  if (s == signedness::signed_ && (raw >> 63U) != 0U) { // negative
-    const auto x = static_cast<std::int64_t>(raw);
-    if constexpr (std::is_signed_v<T>) {
-      if (x < static_cast<std::int64_t>(std::numeric_limits<T>::min())) return errc::overflow;
-      return static_cast<T>(x);
-    } else {
-      return errc::overflow;
+  if (s == signedness::signed_) {
+    const std::int64_t x = sign_extend(raw, length);
+    if (x < 0) {
+      if constexpr (std::is_signed_v<T>) {
+        if (x < static_cast<std::int64_t>(std::numeric_limits<T>::min())) return errc::overflow;
+        return static_cast<T>(x);
+      } else {
+        return errc::overflow;
+      }
     }
   }
   if (raw > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return errc::overflow;
@@ -451,11 +459,56 @@ validate(const od::dictionary &dict, direction d, std::span<const powerlink_mapp
 // Whole mappings without a dictionary (raw bits)
 
 namespace detail {
+/// pack_all's fast path (issue 18) for a mapping of at most 64 bits, the length of every CAN
+/// PDO: every value checked (as field_bits with unknown signedness) and placed in one 64-bit
+/// word, then the word merged into the buffer's bytes (bits past the mapping keep their value,
+/// as pack leaves them). False — nothing written — when an entry has length 0, the mapping is
+/// longer than 64 bits or the buffer shorter than it, or a value does not fit: the general
+/// loop then gives the error, and writes what it wrote before.
+template <integer T>
+[[nodiscard]] constexpr bool pack_word(std::span<const mapping_entry> entries,
+                                       std::span<const T> values, std::span<std::uint8_t> pdo,
+                                       std::size_t &bits) noexcept {
+  std::uint64_t word = 0;
+  std::size_t offset = 0;
+  bool fits = true;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const std::size_t b = entries[i].bits;
+    if (b == 0U || offset + b > 64U) return false;
+    if constexpr (std::is_signed_v<T>) {
+      // fits as unsigned or as two's complement: v >> (b - 1) is -1, 0 or 1
+      const std::int64_t top = static_cast<std::int64_t>(values[i]) >> (b - 1U);
+      fits &= static_cast<std::uint64_t>(top) + 1U <= 2U;
+    } else {
+      fits &= ((static_cast<std::uint64_t>(values[i]) >> (b - 1U)) >> 1U) == 0U;
+    }
+    word |= (static_cast<std::uint64_t>(values[i]) & (~std::uint64_t{0} >> (64U - b))) << offset;
+    offset += b;
+  }
+  if (!fits) return false;
+  const std::uint64_t keep = offset == 64U ? 0U : ~std::uint64_t{0} << offset;
+  if (pdo.size() >= 8U) { // one load and one store of 8 bytes
+    const std::uint64_t old = load_unsigned(pdo, 8, byte_order::little).value_or(0);
+    (void)store_unsigned(pdo, 8, (old & keep) | word, byte_order::little); // cannot fail
+  } else {
+    const std::size_t n = (offset + 7U) / 8U;
+    if (n > pdo.size()) return false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto mask = static_cast<std::uint8_t>(keep >> (8U * k));
+      pdo[k] =
+          static_cast<std::uint8_t>((pdo[k] & mask) | static_cast<std::uint8_t>(word >> (8U * k)));
+    }
+  }
+  bits = offset;
+  return true;
+}
+
 template <integer T>
 [[nodiscard]] constexpr result<std::size_t> pack_raw(std::span<const mapping_entry> entries,
                                                      std::span<const T> values,
                                                      std::span<std::uint8_t> pdo) noexcept {
   if (values.size() != entries.size()) return errc::bad_length;
+  if (std::size_t bits = 0; pack_word(entries, values, pdo, bits)) return (bits + 7U) / 8U;
   std::size_t offset = 0;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     FIELDCODEC_TRY_STATUS(pack_value(pdo, offset, entries[i].bits, signedness::unknown, values[i]));

@@ -363,6 +363,19 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
 [[nodiscard]] constexpr bool valid_block_size(std::uint8_t n) noexcept {
   return n >= 1U && n <= max_block_size;
 }
+
+/// The data of an expedited initiate (byte 0 xxxx nn1s) into `m`: 1..4 data bytes (4 without
+/// size indication) as one masked word (the unused bytes zero), size = data_size.
+constexpr void read_expedited_data(const payload &p, message &m) noexcept {
+  const unsigned b0 = p[0];
+  const unsigned n = (b0 & 0x01U) != 0U ? (b0 >> 2U) & 3U : 0U;
+  m.data_size = static_cast<std::uint8_t>(4U - n);
+  m.size = m.data_size;
+  // the 4 - n data bytes as one word (the unused ones zero), not a loop of run-time length
+  const auto v =
+      to_bytes<std::uint32_t>(get_u32(p) & (0xFFFF'FFFFU >> (8U * n)), byte_order::little);
+  for (std::size_t i = 0; i < 4U; ++i) m.data[i] = v[i];
+}
 } // namespace detail
 
 /// The 8 bytes of `m`. Unused bytes are zero.
@@ -444,14 +457,14 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   return p;
 }
 
-/// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
-/// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
-/// reported as they are. Errors: unknown_command (no such command in that direction).
-[[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
+namespace detail {
+/// decode through the command table: every command (decode takes expedited initiates first, by
+/// straight code that gives the same message).
+[[nodiscard]] constexpr result<message> decode_by_table(const payload &p, direction d) noexcept {
+  const unsigned b0 = p[0];
   const std::size_t ci = detail::command_for(d, p[0]);
   if (ci == std::size(detail::commands)) return errc::unknown_command;
   const detail::command *c = &detail::commands[ci];
-  const unsigned b0 = p[0];
   message m;
   m.type = c->type;
   switch (c->lay) {
@@ -467,13 +480,7 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
     m.expedited = (b0 & 0x02U) != 0U;
     m.size_indicated = (b0 & 0x01U) != 0U;
     if (m.expedited) {
-      const unsigned n = m.size_indicated ? (b0 >> 2U) & 3U : 0U;
-      m.data_size = static_cast<std::uint8_t>(4U - n);
-      m.size = m.data_size;
-      // the 4 - n data bytes as one word (the unused ones zero), not a loop of run-time length
-      const auto v = to_bytes<std::uint32_t>(detail::get_u32(p) & (0xFFFF'FFFFU >> (8U * n)),
-                                             byte_order::little);
-      for (std::size_t i = 0; i < 4U; ++i) m.data[i] = v[i];
+      read_expedited_data(p, m);
     } else if (m.size_indicated) {
       m.size = detail::get_u32(p);
     }
@@ -507,6 +514,38 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   case detail::layout::command_only: break;
   }
   return m;
+}
+} // namespace detail
+
+/// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
+/// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
+/// reported as they are. Errors: unknown_command (no such command in that direction).
+[[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
+  // The commonest message first (issue 18): an expedited initiate, 001x nn1s to the server
+  // (download request), 010x nn1s to the client (upload response), built by straight code so
+  // that a caller's tests of type and `expedited` fold after inlining. The table gives the
+  // same message for these bytes (layout::initiate, expedited). A value of `d` that is no
+  // direction matches nothing (0x100) and the table refuses it.
+  const unsigned b0 = p[0];
+  const unsigned expedited_bits = d == direction::to_server   ? 0x22U
+                                  : d == direction::to_client ? 0x42U
+                                                              : 0x100U;
+  if ((b0 & 0xE2U) == expedited_bits) {
+    message m;
+    m.type = d == direction::to_server ? message_type::initiate_download_request
+                                       : message_type::initiate_upload_response;
+    m.address = detail::get_address(p);
+    m.expedited = true;
+    m.size_indicated = (b0 & 0x01U) != 0U;
+    detail::read_expedited_data(p, m);
+    return m;
+  }
+  auto r = detail::decode_by_table(p, d);
+  // What the table gives here is never expedited (those bytes were taken above). Written down
+  // as a store the compiler sees, unlike the table's answer: a caller's code for expedited
+  // data then runs only after the straight path (70 -> 64 instructions in the benchmark).
+  if (r.has_value()) r.value().expedited = false;
+  return r;
 }
 
 /// A segment of a sub-block: byte 0 = last << 7 | sequence, then 7 data bytes (all 7 are sent;
@@ -826,9 +865,8 @@ private:
 /// Decode an SDO frame sent in direction `d` (the COB-ID is not checked).
 /// Errors: those of payload_of and decode.
 [[nodiscard]] constexpr result<message> decode(const can_frame &f, direction d) noexcept {
-  auto p = payload_of(f);
-  if (!p) return p.error();
-  return decode(p.value(), d);
+  FIELDCODEC_TRY_STATUS(expect_data(f, 8)); // payload_of's check, without copying the bytes
+  return decode(f.data, d);
 }
 
 /// What an expedited download request carries (client → server, 0x22 / 0x23 / 0x27 / 0x2B /
