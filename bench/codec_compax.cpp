@@ -154,10 +154,13 @@ bench::registry make_registry() {
   bench::add<g_posr>(
       r, "nx/encode_record POSR+SPEED+ACCEL",
       [](const posr_record &p) {
-        const auto c = nx::then(nx::then(nx::make(nx::op::posr, nx::dsp_raw(p.posr)), nx::op::speed,
-                                         nx::dsp_raw(p.speed)),
-                                nx::op::accel, nx::integer(p.accel));
-        return nx::encode_record(c).value_or(nx::record{});
+        // The command is built in the call. (Held in a `const` local, GCC 12 keeps its 136 bytes
+        // in memory: scalar replacement refuses a read-only declaration that is stored to, and
+        // the row costs 145 Ir instead of 93; a plain `auto` local is as fast as the temporary.)
+        return nx::encode_record(nx::then(nx::then(nx::make(nx::op::posr, nx::dsp_raw(p.posr)),
+                                                   nx::op::speed, nx::dsp_raw(p.speed)),
+                                          nx::op::accel, nx::integer(p.accel)))
+            .value_or(nx::record{});
       },
       [](const posr_record &p) { return hand_encode_posr(p); });
   bench::add<g_posr_records>(

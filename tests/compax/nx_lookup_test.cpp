@@ -5,26 +5,28 @@
 
 #include <doctest/doctest.h>
 
+#include <cstddef>
 #include <cstdint>
 
 namespace nx = fieldcodec::compax::nx;
 namespace d = fieldcodec::compax::nx::detail;
 
 namespace {
-const d::family *reference_find_family(nx::op o) {
-  for (const auto &f : d::families) {
-    if (f.o == o) return &f;
+// The scans, answering with positions in d::families (d::no_family: none).
+std::uint8_t reference_family_position(nx::op o) {
+  for (std::size_t i = 0; i < d::families.size(); ++i) {
+    if (d::families[i].o == o) return static_cast<std::uint8_t>(i);
   }
-  return nullptr;
+  return d::no_family;
 }
 
 fieldcodec::result<d::decoded_code> reference_find_code(std::uint8_t code) {
   for (const auto &f : d::families) {
-    if (code == f.code) return d::decoded_code{&f, nx::arg_kind::value};
+    if (code == f.code) return d::decoded_code{f, nx::arg_kind::value};
     if (f.has_forms && code == (f.code | d::parameter_flag))
-      return d::decoded_code{&f, nx::arg_kind::parameter};
+      return d::decoded_code{f, nx::arg_kind::parameter};
     if (f.has_forms && code == (f.code | d::variable_flag))
-      return d::decoded_code{&f, nx::arg_kind::variable};
+      return d::decoded_code{f, nx::arg_kind::variable};
   }
   return fieldcodec::errc::unknown_command;
 }
@@ -34,10 +36,19 @@ TEST_CASE("nx: find_family finds what the table scan found, for every op value")
   for (unsigned v = 0; v < 256U; ++v) {
     const auto o = static_cast<nx::op>(v);
     INFO("op ", v);
-    CHECK(d::find_family(o) == reference_find_family(o));
+    const std::uint8_t want = reference_family_position(o);
+    CHECK(d::family_position(o) == want);
+    const auto f = d::find_family(o);
+    REQUIRE(f.has_value() == (want != d::no_family));
+    if (f) {
+      CHECK(f.value() == d::families[want]);
+    } else {
+      CHECK(f.error() == fieldcodec::errc::unknown_command);
+    }
   }
-  static_assert(d::find_family(nx::op::posr)->code == 0x52);
-  static_assert(d::find_family(nx::op::none) == nullptr);
+  static_assert(d::find_family(nx::op::posr).value().code == 0x52);
+  static_assert(d::family_position(nx::op::none) == d::no_family);
+  static_assert(!d::find_family(nx::op::none));
 }
 
 TEST_CASE("nx: find_code finds what the table scan found, for every code byte") {
@@ -58,7 +69,7 @@ TEST_CASE("nx: find_code finds what the table scan found, for every code byte") 
   }
   CHECK(known > 16); // value, parameter and variable forms
   // COMPAX manual (002), Nx program records: 0x72 is POSR with a parameter, 0xD2 with a variable.
-  static_assert(d::find_code(0x72).value().f->o == nx::op::posr);
+  static_assert(d::find_code(0x72).value().f.o == nx::op::posr);
   static_assert(d::find_code(0x72).value().kind == nx::arg_kind::parameter);
   static_assert(d::find_code(0xD2).value().kind == nx::arg_kind::variable);
 }

@@ -38,6 +38,17 @@
 #include <cstdint>
 #include <span>
 
+// The path of one to three single-argument commands (POSR … SPEED … ACCEL …) is inlined where
+// it is called (issue 18): an encoder's caller knows the operations, and the table look-ups, the
+// combination check and the shape dispatch fold away; a decoder's caller reads the fields it
+// wants without a copy of the whole command. Built for size (-Os, firmware) the compiler
+// decides and keeps one copy.
+#if defined(__OPTIMIZE_SIZE__) || !defined(__GNUC__)
+#define FIELDCODEC_NX_INLINE
+#else
+#define FIELDCODEC_NX_INLINE [[gnu::always_inline]]
+#endif
+
 namespace fieldcodec::compax::nx {
 
 inline constexpr std::size_t record_size = 20;
@@ -96,9 +107,19 @@ struct arg {
 };
 
 namespace detail {
+/// Can `raw` lie on the 0.001 grid? A raw value on it is r = ±round(t·2^24 / 1000) for a whole t,
+/// so |1000·r − (±t·2^24)| <= 500 and 1000·raw + 500 lies in [0, 1000] modulo 2^24 (both
+/// signs). Almost every other raw value fails this in four instructions, so the exact test
+/// (two divisions) runs only for the few that pass (issue 18; tests/compax/nx_speed_test.cpp).
+[[nodiscard]] constexpr bool may_be_on_grid(std::int64_t raw) noexcept {
+  constexpr std::uint64_t mask = static_cast<std::uint64_t>(dsp_format::one) - 1U;
+  return ((static_cast<std::uint64_t>(raw) * 1000U + 500U) & mask) <= 1000U;
+}
+
 /// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
 /// (kind value), otherwise the raw integer (kind dsp_raw).
-[[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
+  if (!may_be_on_grid(n.raw)) return arg{arg_kind::dsp_raw, 0, n.raw};
   auto t = n.exact_thousandths();
   if (!t) return arg{arg_kind::dsp_raw, 0, n.raw};
   // the normalized decimal of t / 1000 (at most 3 trailing zeros to drop)
@@ -113,14 +134,21 @@ namespace detail {
 
 /// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
 /// beyond `target` places), overflow (outside int64).
-[[nodiscard]] constexpr result<std::int64_t> scaled_to(std::int64_t number, std::uint8_t places,
-                                                       std::uint8_t target) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::int64_t>
+scaled_to(std::int64_t number, std::uint8_t places, std::uint8_t target) noexcept {
   for (; places > target; --places) {
     if (number % 10 != 0) return errc::not_representable;
     number /= 10;
   }
-  for (; places < target; ++places) {
-    if (__builtin_mul_overflow(number, 10, &number)) return errc::overflow;
+  if (places == target) return number;
+  // one multiplication: it overflows exactly when one of the steps by 10 would
+  const unsigned k = static_cast<unsigned>(target - places);
+  if (k > decimal_max_places) { // 10^k is beyond int64: only 0 scales
+    if (number != 0) return errc::overflow;
+    return number;
+  }
+  if (__builtin_mul_overflow(number, fieldcodec::detail::pow10_i64(k), &number)) {
+    return errc::overflow;
   }
   return number;
 }
@@ -379,6 +407,7 @@ struct family {
   shape s;
   bool has_special; ///< HOME / CAM / SYNC / START / EXT
   bool has_forms;   ///< parameter (| 0x20) and variable (| 0x80) forms exist
+  friend constexpr bool operator==(const family &, const family &) = default;
 };
 
 inline constexpr std::array<family, 16> families{{
@@ -414,6 +443,7 @@ inline constexpr std::uint8_t digit_zero = 0x30; ///< ASCII "0"
 inline constexpr std::uint8_t no_family = 0xFF;
 inline constexpr std::size_t op_count = static_cast<std::size_t>(op::assign_v) + 1U;
 static_assert(families.size() < 64U, "code_index packs a family position into 6 bits");
+static_assert(static_cast<unsigned>(arg_kind::variable) < 4U, "and an argument kind into 2");
 
 /// op → position in `families` of the first family of that op (no_family: none), built at
 /// compile time from the table, so that find_family is one load (issue 18).
@@ -431,44 +461,53 @@ inline constexpr std::array<std::uint8_t, op_count> family_index = [] {
   return t;
 }();
 
-// Built for size (-Os, firmware), the two lookups scan `families` as before instead: the tables
+/// Position in `families` of the family of `o`, no_family when it has none. The lookups answer
+/// with positions, not pointers into the table: g++ cannot constant-evaluate a comparison of
+/// such a pointer with nullptr under -fsanitize=undefined (issue 12).
+// Built for size (-Os, firmware), the lookups scan `families` as before instead: the tables
 // cost 280 bytes of flash, the scan finds the same entry (tests/compax/nx_lookup_test.cpp).
-[[nodiscard]] constexpr const family *find_family(op o) noexcept {
+[[nodiscard]] constexpr std::uint8_t family_position(op o) noexcept {
 #ifdef __OPTIMIZE_SIZE__
-  for (const auto &f : families) {
-    if (f.o == o) return &f;
+  for (std::size_t i = 0; i < families.size(); ++i) {
+    if (families[i].o == o) return static_cast<std::uint8_t>(i);
   }
-  return nullptr;
+  return no_family;
 #endif
   const auto k = static_cast<std::size_t>(o);
-  if (k >= op_count) return nullptr;
-  const std::uint8_t i = family_index[k];
-  return i == no_family ? nullptr : &families[i];
+  return k < op_count ? family_index[k] : no_family;
+}
+
+/// The family of `o`. Errors: unknown_command (no single-argument command).
+[[nodiscard]] constexpr result<family> find_family(op o) noexcept {
+  const std::uint8_t i = family_position(o);
+  if (i == no_family) return errc::unknown_command;
+  return families[i];
 }
 
 struct decoded_code {
-  const family *f;
+  family f;
   arg_kind kind;
 };
 
-/// Command code → (family position) | (argument form << 6), no_family for an unknown code: the
-/// first match of the table scan below, for every code byte, computed at compile time.
+/// Command code → (family position) | (argument kind << 6: value 0, parameter 2, variable 3),
+/// no_family for an unknown code: the first match of the table scan below, for every code byte,
+/// computed at compile time.
 inline constexpr std::array<std::uint8_t, 256> code_index = [] {
   std::array<std::uint8_t, 256> t{};
   for (unsigned code = 0; code < 256U; ++code) {
     t[code] = no_family;
     for (std::size_t i = 0; i < families.size(); ++i) {
       const family &f = families[i];
-      unsigned form = 4; // none
+      arg_kind kind = arg_kind::special; // none
       if (code == f.code) {
-        form = 0;
+        kind = arg_kind::value;
       } else if (f.has_forms && code == (f.code | parameter_flag)) {
-        form = 1;
+        kind = arg_kind::parameter;
       } else if (f.has_forms && code == (f.code | variable_flag)) {
-        form = 2;
+        kind = arg_kind::variable;
       }
-      if (form != 4U) {
-        t[code] = static_cast<std::uint8_t>(i | (form << 6U));
+      if (kind != arg_kind::special) {
+        t[code] = static_cast<std::uint8_t>(i | (static_cast<unsigned>(kind) << 6U));
         break;
       }
     }
@@ -480,20 +519,19 @@ inline constexpr std::array<std::uint8_t, 256> code_index = [] {
 [[nodiscard]] constexpr result<decoded_code> find_code(std::uint8_t code) noexcept {
 #ifdef __OPTIMIZE_SIZE__
   for (const auto &f : families) {
-    if (code == f.code) return decoded_code{&f, arg_kind::value};
+    if (code == f.code) return decoded_code{f, arg_kind::value};
     if (f.has_forms && code == (f.code | parameter_flag)) {
-      return decoded_code{&f, arg_kind::parameter};
+      return decoded_code{f, arg_kind::parameter};
     }
     if (f.has_forms && code == (f.code | variable_flag)) {
-      return decoded_code{&f, arg_kind::variable};
+      return decoded_code{f, arg_kind::variable};
     }
   }
   return errc::unknown_command;
 #endif
   const std::uint8_t e = code_index[code];
   if (e == no_family) return errc::unknown_command;
-  constexpr arg_kind forms[3] = {arg_kind::value, arg_kind::parameter, arg_kind::variable};
-  return decoded_code{&families[e & 0x3FU], forms[e >> 6U]};
+  return decoded_code{families[e & 0x3FU], static_cast<arg_kind>(e >> 6U)};
 }
 
 /// May c.second_operation follow c.operation in a combined record (and c.third_operation
@@ -546,26 +584,19 @@ inline constexpr std::array<std::uint8_t, 256> code_index = [] {
 /// A number of a 2-byte field (numbers of P, S, V, E, A, records; 2-byte values).
 /// Errors: out_of_range (not 0..65535).
 [[nodiscard]] constexpr result<std::uint16_t> field16(std::int64_t v) noexcept {
-  auto u = checked_narrow<std::uint16_t>(v);
-  if (!u) return errc::out_of_range;
-  return u;
-}
-
-/// A number of a 2-byte field, MSB first. Errors: out_of_range (not 0..65535).
-[[nodiscard]] constexpr status write_word(byte_writer &w, std::int64_t v) noexcept {
-  auto u = field16(v);
-  if (!u) return u.error();
-  return w.write(u.value(), byte_order::big);
+  if (v < 0 || v > 0xFFFF) return errc::out_of_range;
+  return static_cast<std::uint16_t>(v);
 }
 
 /// A whole number from a value argument. Errors: not_representable (decimal places).
-[[nodiscard]] constexpr result<std::int64_t> whole(decimal d) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::int64_t> whole(decimal d) noexcept {
   return scaled_to(d.mantissa, d.places, 0);
 }
 
 /// A value or raw DSP number → its DSP number.
 /// Errors: not_representable (more than 3 places), overflow (outside the DSP range).
-[[nodiscard]] constexpr result<dsp_number> to_dsp(decimal v, bool raw) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<dsp_number> to_dsp(decimal v,
+                                                                       bool raw) noexcept {
   if (raw) {
     const dsp_number n{v.mantissa};
     if (n.raw < dsp_format::raw_min || n.raw > dsp_format::raw_max) return errc::overflow;
@@ -586,74 +617,117 @@ inline constexpr std::array<std::uint8_t, 256> code_index = [] {
   return detail::to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
 }
 
+// ------------------------------------------------------------------ encoder
+
 namespace detail {
 
-/// Code and operands of one single-argument command.
-[[nodiscard]] constexpr status write_simple(byte_writer &w, op o, const arg &a) noexcept {
-  const family *f = find_family(o);
-  if (f == nullptr) return errc::unknown_command;
-  std::uint8_t code = f->code;
-  if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
-    if (!f->has_forms) return errc::type_mismatch;
+/// The content of a record under construction is written at known offsets: a writer takes the
+/// position of its first byte and returns the position after its last. The longest command of
+/// the table has 19 content bytes (IF <operand><cmp><operand> GOTO n: 1 + 7 + 1 + 7 + 3), every
+/// write below comes after the checks that select one of those shapes, and a record has room
+/// for 19 after its length byte, so no write needs a bounds check (issue 18: the checked
+/// byte_writer paid one per byte). tests/compax/nx_speed_test.cpp encodes the longest form of
+/// every shape. Positions are passed by value, not kept in a writer object: a byte store may
+/// alias any object in memory, which made the compiler reload a writer's position after each.
+constexpr std::size_t put_u16(record &r, std::size_t at, std::uint16_t v) noexcept {
+  r[at] = static_cast<std::uint8_t>(v >> 8U); // MSB first
+  r[at + 1U] = static_cast<std::uint8_t>(v);
+  return at + 2U;
+}
+constexpr std::size_t put_dsp(record &r, std::size_t at, std::int64_t raw) noexcept {
+  const auto u = static_cast<std::uint64_t>(raw); // NL NM NH VL VM VH: least significant first
+  for (std::size_t i = 0; i < dsp_format::size; ++i) {
+    r[at + i] = static_cast<std::uint8_t>(u >> (8U * i));
+  }
+  return at + dsp_format::size;
+}
+/// A number form of a 6-byte field: 2 bytes MSB first, then four 0x00.
+constexpr std::size_t put_number_form(record &r, std::size_t at, std::uint16_t v) noexcept {
+  return put_dsp(r, at, static_cast<std::int64_t>((v >> 8U) | ((v & 0xFFU) << 8U)));
+}
+
+/// Code and operands of one single-argument command at r[at…]; returns the next position.
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::size_t>
+write_simple(record &r, std::size_t at, op o, arg a) noexcept {
+  const std::uint8_t i = family_position(o);
+  if (i == no_family) return errc::unknown_command;
+  const family &f = families[i];
+  std::uint8_t code = f.code;
+  const bool numbered = a.kind == arg_kind::parameter || a.kind == arg_kind::variable;
+  if (numbered) {
+    if (!f.has_forms) return errc::type_mismatch;
     code = static_cast<std::uint8_t>(
         code | (a.kind == arg_kind::parameter ? parameter_flag : variable_flag));
   }
-  if (a.kind == arg_kind::special && !f->has_special) return errc::type_mismatch;
-  if (a.kind == arg_kind::dsp_raw && f->s != shape::dsp) return errc::type_mismatch;
-  if ((f->s == shape::none || f->s == shape::zero) && a != arg{}) return errc::invalid_argument;
-  if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
-    // check the number before anything is written
-    if (auto n = detail::field16(a.number); !n) return n.error();
-  }
-  FIELDCODEC_TRY_STATUS(w.write_u8(code));
-  switch (f->s) {
-  case shape::none: return {};
-  case shape::zero: return w.write_u8(0);
+  if (a.kind == arg_kind::special && !f.has_special) return errc::type_mismatch;
+  if (a.kind == arg_kind::dsp_raw && f.s != shape::dsp) return errc::type_mismatch;
+  if ((f.s == shape::none || f.s == shape::zero) && a != arg{}) return errc::invalid_argument;
+  // numbers are checked before anything is written
+  if (numbered && (a.number < 0 || a.number > 0xFFFF)) return errc::out_of_range;
+  switch (f.s) {
+  case shape::none: r[at] = code; return at + 1U;
+  case shape::zero:
+    r[at] = code;
+    r[at + 1U] = 0;
+    return at + 2U;
   case shape::dsp: {
-    if (a.kind == arg_kind::special) return w.pad(6, 0xFF);
-    if (a.kind == arg_kind::parameter || a.kind == arg_kind::variable) {
-      FIELDCODEC_TRY_STATUS(write_word(w, a.number));
-      return w.pad(4, 0);
+    r[at] = code;
+    if (numbered) return put_number_form(r, at + 1U, static_cast<std::uint16_t>(a.number));
+    std::int64_t raw = -1; // special: FF FF FF FF FF FF
+    if (a.kind == arg_kind::dsp_raw) {
+      raw = a.number;
+      if (raw < dsp_format::raw_min || raw > dsp_format::raw_max) return errc::overflow;
+      if (raw == -1) return errc::out_of_range; // it would read as the special form
+    } else if (a.kind != arg_kind::special) {
+      auto n = to_dsp(a.value(), false);
+      if (!n) return n.error();
+      raw = n.value().raw;
+      if (raw == -1) return errc::out_of_range;
     }
-    auto n = to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
-    if (!n) return n.error();
-    if (n.value().raw == -1) return errc::out_of_range; // FF FF FF FF FF FF is the special form
-    std::array<std::uint8_t, 6> b{};
-    FIELDCODEC_TRY_STATUS(encode_dsp(n.value(), b));
-    return w.write_bytes(b);
+    return put_dsp(r, at + 1U, raw);
   }
   case shape::word:
   case shape::word_only: {
-    if (a.kind == arg_kind::special) return w.write(std::uint16_t{0}, byte_order::big);
-    if (a.kind != arg_kind::value) return write_word(w, a.number);
-    auto v = whole(a.value());
-    if (!v) return v.error();
-    // value 0 of WAIT / GOTO / GOSUB would read back as START / EXT
-    if (v.value() == 0 && f->has_special) return errc::out_of_range;
-    return write_word(w, v.value());
+    std::int64_t v = 0; // special: 0x0000
+    if (numbered) {
+      v = a.number;
+    } else if (a.kind != arg_kind::special) {
+      if (a.kind == arg_kind::value) {
+        auto n = whole(a.value());
+        if (!n) return n.error();
+        v = n.value();
+        // value 0 of WAIT / GOTO / GOSUB would read back as START / EXT
+        if (v == 0 && f.has_special) return errc::out_of_range;
+      } else {
+        v = a.number;
+      }
+      if (v < 0 || v > 0xFFFF) return errc::out_of_range;
+    }
+    r[at] = code;
+    return put_u16(r, at + 1U, static_cast<std::uint16_t>(v));
   }
   }
-  return {};
+  return at;
 }
 
-[[nodiscard]] constexpr status write_operand(byte_writer &w, const operand &o) noexcept {
+[[nodiscard]] constexpr result<std::size_t> write_operand(record &r, std::size_t at,
+                                                          operand o) noexcept {
   switch (o.type) {
   case operand_type::constant: {
     auto n = to_dsp(o.value(), o.raw);
     if (!n) return n.error();
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(o.type)));
-    std::array<std::uint8_t, 6> b{};
-    FIELDCODEC_TRY_STATUS(encode_dsp(n.value(), b));
-    return w.write_bytes(b);
+    r[at] = static_cast<std::uint8_t>(o.type);
+    return put_dsp(r, at + 1U, n.value().raw);
   }
   case operand_type::parameter:
   case operand_type::status:
-  case operand_type::variable:
+  case operand_type::variable: {
     if (o.raw || o.places != 0U) return errc::invalid_argument;
-    if (auto n = detail::field16(o.number); !n) return n.error();
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(o.type)));
-    FIELDCODEC_TRY_STATUS(write_word(w, o.number));
-    return w.pad(4, 0);
+    auto n = field16(o.number);
+    if (!n) return n.error();
+    r[at] = static_cast<std::uint8_t>(o.type);
+    return put_number_form(r, at + 1U, n.value());
+  }
   }
   return errc::invalid_argument;
 }
@@ -667,211 +741,271 @@ namespace detail {
          a == arithmetic::div || a == arithmetic::int_div || a == arithmetic::mod;
 }
 
-[[nodiscard]] constexpr status write_jump(byte_writer &w, jump j, std::int64_t target) noexcept {
+[[nodiscard]] constexpr result<std::size_t> write_jump(record &r, std::size_t at, jump j,
+                                                       std::int64_t target) noexcept {
   if (j != jump::goto_ && j != jump::gosub) return errc::invalid_argument;
-  auto t = detail::field16(target);
+  auto t = field16(target);
   if (!t) return t.error();
-  FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(j)));
-  return w.write(t.value(), byte_order::big);
+  r[at] = static_cast<std::uint8_t>(j);
+  return put_u16(r, at + 1U, t.value());
 }
 
-[[nodiscard]] constexpr status write_pattern(byte_writer &w, const pattern &p) noexcept {
+constexpr std::size_t write_pattern(record &r, std::size_t at, const pattern &p) noexcept {
   for (std::size_t i = 0; i < p.count; ++i) {
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(digit_zero + p.digits[i])));
+    r[at + i] = static_cast<std::uint8_t>(digit_zero + p.digits[i]);
   }
-  return {};
+  return at + p.count;
 }
 
 /// OUTPUT A<number>=<io_pattern> (the code and its operands).
-[[nodiscard]] constexpr status write_output(byte_writer &w, const command &c) noexcept {
+[[nodiscard]] constexpr result<std::size_t> write_output(record &r, std::size_t at,
+                                                         const command &c) noexcept {
   FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, true));
-  auto x = detail::field16(c.number);
+  auto x = field16(c.number);
   if (!x) return x.error();
-  FIELDCODEC_TRY_STATUS(w.write_u8(code_output));
-  FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
-  return write_pattern(w, c.io_pattern);
+  r[at] = code_output;
+  return write_pattern(r, put_u16(r, at + 1U, x.value()), c.io_pattern);
 }
 
-} // namespace detail
-
-/// The content bytes of `c` (without the length byte) into `out`; returns their number.
-/// Errors: unknown_command, type_mismatch (a form the command does not have), invalid_argument
-/// (combination not in the table, members set that the command does not use), out_of_range
-/// (a number beyond its field: P/S/V/E/A/record numbers and 2-byte values 0..65535;
-/// WAIT/GOTO/GOSUB 0; a DSP value that reads as the special form), not_representable (a DSP
-/// value with more than 3 decimal places, a 2-byte value with any), overflow (DSP range),
-/// bad_digit / bad_length (pattern), buffer_too_small.
-[[nodiscard]] constexpr result<std::size_t> encode_content(const command &c,
-                                                           std::span<std::uint8_t> out) noexcept {
-  byte_writer w{out};
+/// The commands that are not one to three single-argument commands, into r[1…]; returns the
+/// position after the content.
+[[nodiscard]] constexpr result<std::size_t> write_compound(const command &c, record &r) noexcept {
+  std::size_t at = 1;
   switch (c.operation) {
   case op::if_input: {
     const bool special = c.number == input_error || c.number == input_stop;
     if (special && c.io_pattern != pattern{1, {1}}) return errc::invalid_argument;
-    FIELDCODEC_TRY_STATUS(detail::check_pattern(c.io_pattern, c.number, false));
-    auto x = detail::field16(c.number);
+    FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, false));
+    auto x = field16(c.number);
     if (!x) return x.error();
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_if_input));
-    FIELDCODEC_TRY_STATUS(w.write(x.value(), byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_pattern(w, c.io_pattern));
-    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jump_kind, c.target));
-    return w.size();
+    r[at] = code_if_input;
+    at = write_pattern(r, put_u16(r, at + 1U, x.value()), c.io_pattern);
+    return write_jump(r, at, c.jump_kind, c.target);
   }
-  case op::if_compare:
-    if (!detail::known(c.comparison_op)) return errc::invalid_argument;
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_if_compare));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.left));
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.comparison_op)));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.right));
-    FIELDCODEC_TRY_STATUS(detail::write_jump(w, c.jump_kind, c.target));
-    return w.size();
-  case op::output: FIELDCODEC_TRY_STATUS(detail::write_output(w, c)); return w.size();
+  case op::if_compare: {
+    if (!known(c.comparison_op)) return errc::invalid_argument;
+    r[at] = code_if_compare;
+    FIELDCODEC_TRY(at, write_operand(r, at + 1U, c.left));
+    r[at] = static_cast<std::uint8_t>(c.comparison_op);
+    FIELDCODEC_TRY(at, write_operand(r, at + 1U, c.right));
+    return write_jump(r, at, c.jump_kind, c.target);
+  }
+  case op::output: return write_output(r, at, c);
   case op::assign_p:
   case op::assign_v: {
-    auto n = detail::field16(c.number);
+    auto n = field16(c.number);
     if (!n) return n.error();
-    FIELDCODEC_TRY_STATUS(
-        w.write_u8(c.operation == op::assign_p ? detail::code_assign_p : detail::code_assign_v));
-    FIELDCODEC_TRY_STATUS(w.write(n.value(), byte_order::big));
-    FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.left));
+    r[at] = c.operation == op::assign_p ? code_assign_p : code_assign_v;
+    FIELDCODEC_TRY(at, write_operand(r, put_u16(r, at + 1U, n.value()), c.left));
     if (c.arithmetic_op != arithmetic::none) {
-      if (!detail::known(c.arithmetic_op)) return errc::invalid_argument;
-      FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.arithmetic_op)));
-      FIELDCODEC_TRY_STATUS(detail::write_operand(w, c.right));
-    } else if (c.right != operand{}) {
-      return errc::invalid_argument;
+      if (!known(c.arithmetic_op)) return errc::invalid_argument;
+      r[at] = static_cast<std::uint8_t>(c.arithmetic_op);
+      return write_operand(r, at + 1U, c.right);
     }
-    return w.size();
+    if (c.right != operand{}) return errc::invalid_argument;
+    return at;
   }
   case op::valid:
     if (c.valid_letter != 'P' && c.valid_letter != 'C' && c.valid_letter != 'F') {
       return errc::invalid_argument;
     }
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::code_valid));
-    FIELDCODEC_TRY_STATUS(w.write_u8(detail::valid_marker));
-    FIELDCODEC_TRY_STATUS(w.write_u8(static_cast<std::uint8_t>(c.valid_letter)));
-    return w.size();
-  case op::none: return errc::unknown_command;
+    r[1] = code_valid;
+    r[2] = valid_marker;
+    r[3] = static_cast<std::uint8_t>(c.valid_letter);
+    return std::size_t{4};
+  default: return errc::unknown_command;
+  }
+}
+
+/// p == pattern{}, spelled field by field: the defaulted comparison compares the digits as
+/// memory, and a command whose address is taken that way cannot be kept in registers.
+[[nodiscard]] constexpr bool unset(const pattern &p) noexcept {
+  const auto &d = p.digits;
+  return (p.count | d[0] | d[1] | d[2] | d[3] | d[4] | d[5] | d[6] | d[7]) == 0U;
+}
+
+/// The content of `c` into r[1…]; returns its length (the length byte is left to the caller).
+/// One to three single-argument commands (POSR … SPEED … ACCEL …) are written here, small
+/// enough to be inlined, so that a compiler that knows the operations folds the table look-ups;
+/// the rest is write_compound.
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::size_t> write_content(const command &c,
+                                                                               record &r) noexcept {
+  switch (c.operation) {
+  case op::if_input:
+  case op::if_compare:
+  case op::output:
+  case op::assign_p:
+  case op::assign_v:
+  case op::valid:
+  case op::none: {
+    auto end = write_compound(c, r);
+    if (!end) return end.error();
+    return end.value() - 1U;
+  }
   default: break;
   }
-  if (!detail::combination_allowed(c)) return errc::invalid_argument;
-  FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.operation, c.argument));
+  if (!combination_allowed(c)) return errc::invalid_argument;
+  FIELDCODEC_TRY(std::size_t at, write_simple(r, 1, c.operation, c.argument));
   if (c.second_operation == op::output) {
-    FIELDCODEC_TRY_STATUS(detail::write_output(w, c));
-    return w.size();
+    FIELDCODEC_TRY(at, write_output(r, at, c));
+    return at - 1U;
   }
-  if (c.number != 0 || c.io_pattern != pattern{}) return errc::invalid_argument;
+  if (c.number != 0 || !unset(c.io_pattern)) return errc::invalid_argument;
   if (c.second_operation != op::none) {
-    FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.second_operation, c.second_argument));
+    FIELDCODEC_TRY(at, write_simple(r, at, c.second_operation, c.second_argument));
   }
   if (c.third_operation != op::none) {
-    FIELDCODEC_TRY_STATUS(detail::write_simple(w, c.third_operation, c.third_argument));
+    FIELDCODEC_TRY(at, write_simple(r, at, c.third_operation, c.third_argument));
   }
-  return w.size();
+  return at - 1U;
+}
+
+} // namespace detail
+
+/// The content bytes of `c` (without the length byte) into `out`; returns their number. The
+/// command is checked completely before its size is compared with `out`, and `out` is written
+/// only when the whole content fits.
+/// Errors: unknown_command, type_mismatch (a form the command does not have), invalid_argument
+/// (combination not in the table, members set that the command does not use), out_of_range
+/// (a number beyond its field: P/S/V/E/A/record numbers and 2-byte values 0..65535;
+/// WAIT/GOTO/GOSUB 0; a DSP value that reads as the special form), not_representable (a DSP
+/// value with more than 3 decimal places, a 2-byte value with any), overflow (DSP range),
+/// bad_digit / bad_length (pattern), buffer_too_small (a valid command longer than `out`).
+[[nodiscard]] constexpr result<std::size_t> encode_content(const command &c,
+                                                           std::span<std::uint8_t> out) noexcept {
+  record r{};
+  auto n = detail::write_content(c, r);
+  if (!n) return n.error();
+  if (n.value() > out.size()) return errc::buffer_too_small;
+  for (std::size_t i = 0; i < n.value(); ++i) out[i] = r[1U + i];
+  return n;
 }
 
 /// A full 20-byte record: length byte, content, zero padding. Errors: those of
-/// encode_content (a content above 19 bytes is buffer_too_small, which the table never needs).
-[[nodiscard]] constexpr result<record> encode_record(const command &c) noexcept {
-  record r{};
-  auto n = encode_content(c, std::span<std::uint8_t>{r}.subspan(1));
-  if (!n) return n.error();
-  r[0] = static_cast<std::uint8_t>(n.value());
-  return r;
+/// encode_content (no valid command is longer than a record).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<record>
+encode_record(const command &c) noexcept {
+  result<record> out{record{}}; // written in place: one return object, no copy of the record
+  auto n = detail::write_content(c, out.value());
+  if (n) {
+    out.value()[0] = static_cast<std::uint8_t>(n.value());
+  } else {
+    out = n.error();
+  }
+  return out;
 }
+
+// ------------------------------------------------------------------ decoder
 
 namespace detail {
 
-/// The number in a P/S/V form: 2 bytes MSB first, then four 0x00.
-/// Errors: out_of_range (non-zero padding).
-[[nodiscard]] constexpr result<std::uint16_t>
-read_number_form(std::span<const std::uint8_t> d) noexcept {
-  if (d[2] != 0U || d[3] != 0U || d[4] != 0U || d[5] != 0U) return errc::out_of_range;
-  return load<std::uint16_t>(d, byte_order::big);
+/// The content of a record being read: `need(k)` checks once that k more bytes are there, the
+/// reads after it are unchecked (issue 18: byte_reader checked and wrapped every byte).
+struct content_reader {
+  std::span<const std::uint8_t> in;
+  std::size_t at = 0;
+
+  [[nodiscard]] constexpr bool need(std::size_t k) const noexcept { return in.size() - at >= k; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return at == in.size(); }
+  [[nodiscard]] constexpr std::uint8_t peek() const noexcept { return in[at]; }
+  constexpr std::uint8_t u8() noexcept { return in[at++]; }
+  constexpr std::uint16_t u16() noexcept { // MSB first
+    const auto v = static_cast<std::uint16_t>((in[at] << 8U) | in[at + 1U]);
+    at += 2U;
+    return v;
+  }
+  /// Six bytes NL … VH, sign-extended from 48 bits. Written as a 4-byte and a 2-byte
+  /// little-endian word, which compilers read with one load each.
+  constexpr std::int64_t dsp() noexcept {
+    const std::uint32_t lo = static_cast<std::uint32_t>(in[at]) |
+                             (static_cast<std::uint32_t>(in[at + 1U]) << 8U) |
+                             (static_cast<std::uint32_t>(in[at + 2U]) << 16U) |
+                             (static_cast<std::uint32_t>(in[at + 3U]) << 24U);
+    const std::uint32_t hi =
+        static_cast<std::uint32_t>(in[at + 4U]) | (static_cast<std::uint32_t>(in[at + 5U]) << 8U);
+    const std::uint64_t u = lo | (std::uint64_t{hi} << 32U);
+    at += dsp_format::size;
+    constexpr std::uint64_t sign = std::uint64_t{1} << 47U;
+    return static_cast<std::int64_t>((u ^ sign) - sign);
+  }
+};
+
+/// The number of a P/S/V form: 2 bytes MSB first, then four 0x00 (6 bytes, checked by the
+/// caller). Errors: out_of_range (non-zero padding).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<std::uint16_t>
+read_number_form(content_reader &rd) noexcept {
+  const std::uint16_t n = rd.u16();
+  const bool padded = (rd.u8() | rd.u8() | rd.u8() | rd.u8()) == 0U;
+  if (!padded) return errc::out_of_range;
+  return n;
 }
 
-[[nodiscard]] constexpr result<arg> read_simple_arg(byte_reader &rd, const family &f,
-                                                    arg_kind kind) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<arg>
+read_simple_arg(content_reader &rd, const family &f, arg_kind kind) noexcept {
   switch (f.s) {
   case shape::none: return arg{};
-  case shape::zero: {
-    auto z = rd.read_u8();
-    if (!z) return z.error();
-    if (z.value() != 0U) return errc::out_of_range;
+  case shape::zero:
+    if (!rd.need(1)) return errc::truncated;
+    if (rd.u8() != 0U) return errc::out_of_range;
     return arg{};
-  }
   case shape::dsp: {
-    auto b = rd.read_bytes(6);
-    if (!b) return b.error();
-    const auto d = b.value();
-    if (kind == arg_kind::value) {
-      bool all_ff = true;
-      for (const auto x : d) all_ff = all_ff && x == 0xFFU;
-      if (all_ff) {
-        if (!f.has_special) return errc::out_of_range;
-        return special();
-      }
-      auto n = decode_dsp(d);
+    if (!rd.need(dsp_format::size)) return errc::truncated;
+    if (kind != arg_kind::value) {
+      auto n = read_number_form(rd);
       if (!n) return n.error();
-      return from_dsp(n.value());
+      return arg{kind, 0, n.value()};
     }
-    auto n = read_number_form(d);
-    if (!n) return n.error();
-    return arg{kind, 0, n.value()};
+    const std::int64_t raw = rd.dsp();
+    if (raw == -1) { // all six bytes 0xFF
+      if (!f.has_special) return errc::out_of_range;
+      return special();
+    }
+    return from_dsp(dsp_number{raw});
   }
   case shape::word:
   case shape::word_only: {
-    auto v = rd.read<std::uint16_t>(byte_order::big);
-    if (!v) return v.error();
-    if (kind == arg_kind::value && v.value() == 0U && f.has_special) return special();
-    return arg{kind, 0, v.value()};
+    if (!rd.need(2)) return errc::truncated;
+    const std::uint16_t v = rd.u16();
+    if (kind == arg_kind::value && v == 0U && f.has_special) return special();
+    return arg{kind, 0, v};
   }
   }
   return errc::unknown_command;
 }
 
-[[nodiscard]] constexpr result<operand> read_operand(byte_reader &rd) noexcept {
-  auto t = rd.read_u8();
-  if (!t) return t.error();
-  auto b = rd.read_bytes(6);
-  if (!b) return b.error();
-  const auto d = b.value();
-  switch (t.value()) {
-  case static_cast<std::uint8_t>(operand_type::constant): {
-    auto n = decode_dsp(d);
-    if (!n) return n.error();
-    return constant_raw(n.value());
-  }
+[[nodiscard]] constexpr result<operand> read_operand(content_reader &rd) noexcept {
+  if (!rd.need(1 + dsp_format::size)) return errc::truncated;
+  const std::uint8_t t = rd.u8();
+  switch (t) {
+  case static_cast<std::uint8_t>(operand_type::constant): return constant_raw(dsp_number{rd.dsp()});
   case static_cast<std::uint8_t>(operand_type::parameter):
   case static_cast<std::uint8_t>(operand_type::status):
   case static_cast<std::uint8_t>(operand_type::variable): {
-    auto n = read_number_form(d);
+    auto n = read_number_form(rd);
     if (!n) return n.error();
-    return operand_of(static_cast<operand_type>(t.value()), n.value());
+    return operand_of(static_cast<operand_type>(t), n.value());
   }
   default: return errc::unknown_command;
   }
 }
 
-[[nodiscard]] constexpr status read_jump(byte_reader &rd, command &c) noexcept {
-  auto j = rd.read_u8();
-  if (!j) return j.error();
-  if (j.value() != static_cast<std::uint8_t>(jump::goto_) &&
-      j.value() != static_cast<std::uint8_t>(jump::gosub)) {
+[[nodiscard]] constexpr status read_jump(content_reader &rd, command &c) noexcept {
+  if (!rd.need(1)) return errc::truncated;
+  const std::uint8_t j = rd.u8();
+  if (j != static_cast<std::uint8_t>(jump::goto_) && j != static_cast<std::uint8_t>(jump::gosub)) {
     return errc::unknown_command;
   }
-  auto t = rd.read<std::uint16_t>(byte_order::big);
-  if (!t) return t.error();
-  c.jump_kind = static_cast<jump>(j.value());
-  c.target = t.value();
+  if (!rd.need(2)) return errc::truncated;
+  c.jump_kind = static_cast<jump>(j);
+  c.target = rd.u16();
   return {};
 }
 
-/// Digits until the end of the content (OUTPUT) or until a non-digit byte (IF).
-[[nodiscard]] constexpr status read_pattern(byte_reader &rd, pattern &p, bool to_end) noexcept {
+/// Digits until the end of the content (OUTPUT) or until a GOTO/GOSUB code (IF).
+[[nodiscard]] constexpr status read_pattern(content_reader &rd, pattern &p, bool to_end) noexcept {
   p = pattern{};
   while (!rd.empty()) {
-    const std::uint8_t b = rd.rest()[0];
+    const std::uint8_t b = rd.peek();
     if (!to_end && (b == static_cast<std::uint8_t>(jump::goto_) ||
                     b == static_cast<std::uint8_t>(jump::gosub))) {
       break;
@@ -879,115 +1013,154 @@ read_number_form(std::span<const std::uint8_t> d) noexcept {
     if (b < digit_zero || b > digit_zero + 9U) return errc::bad_digit;
     if (p.count == 8U) return errc::bad_length;
     p.digits[p.count++] = static_cast<std::uint8_t>(b - digit_zero);
-    (void)rd.skip(1);
+    ++rd.at;
   }
   if (p.count == 0U) return errc::truncated;
   return {};
 }
 
-/// x and y… of OUTPUT Ax=y… after its code.
-[[nodiscard]] constexpr status read_output(byte_reader &rd, command &c) noexcept {
-  auto x = rd.read<std::uint16_t>(byte_order::big);
-  if (!x) return x.error();
-  c.number = x.value();
-  FIELDCODEC_TRY_STATUS(read_pattern(rd, c.io_pattern, true));
-  return check_pattern(c.io_pattern, c.number, true);
+struct output_part {
+  std::uint16_t number = 0;
+  pattern io_pattern{};
+};
+
+/// x and y… of OUTPUT Ax=y… after its code; they end the content. (Reader and command are
+/// passed by value and returned: an object whose address goes to a function that is not
+/// inlined must stay in memory, and every byte read would load and store the position.)
+[[nodiscard]] constexpr result<output_part> read_output(content_reader rd) noexcept {
+  if (!rd.need(2)) return errc::truncated;
+  output_part o;
+  o.number = rd.u16();
+  FIELDCODEC_TRY_STATUS(read_pattern(rd, o.io_pattern, true));
+  FIELDCODEC_TRY_STATUS(check_pattern(o.io_pattern, o.number, true));
+  return o;
 }
 
-[[nodiscard]] constexpr result<command> read_content(byte_reader &rd) noexcept {
-  auto code = rd.read_u8();
-  if (!code) return code.error();
+/// The commands after `code` that are not one to three single-argument commands; every byte
+/// must be used.
+[[nodiscard]] constexpr result<command> read_compound(content_reader rd,
+                                                      std::uint8_t code) noexcept {
   command c{};
-  switch (code.value()) {
+  switch (code) {
   case code_if_input: {
     c.operation = op::if_input;
-    auto x = rd.read<std::uint16_t>(byte_order::big);
-    if (!x) return x.error();
-    c.number = x.value();
+    if (!rd.need(2)) return errc::truncated;
+    c.number = rd.u16();
     FIELDCODEC_TRY_STATUS(read_pattern(rd, c.io_pattern, false));
     FIELDCODEC_TRY_STATUS(check_pattern(c.io_pattern, c.number, false));
     if ((c.number == input_error || c.number == input_stop) && c.io_pattern != pattern{1, {1}}) {
       return errc::out_of_range;
     }
     FIELDCODEC_TRY_STATUS(read_jump(rd, c));
-    return c;
+    break;
   }
   case code_if_compare: {
     c.operation = op::if_compare;
     auto a = read_operand(rd);
     if (!a) return a.error();
-    auto cmp = rd.read_u8();
-    if (!cmp) return cmp.error();
-    c.comparison_op = static_cast<comparison>(cmp.value());
+    if (!rd.need(1)) return errc::truncated;
+    c.comparison_op = static_cast<comparison>(rd.u8());
     if (!known(c.comparison_op)) return errc::unknown_command;
     auto b = read_operand(rd);
     if (!b) return b.error();
     c.left = a.value();
     c.right = b.value();
     FIELDCODEC_TRY_STATUS(read_jump(rd, c));
-    return c;
+    break;
   }
-  case code_output:
+  case code_output: {
     c.operation = op::output;
-    FIELDCODEC_TRY_STATUS(read_output(rd, c));
-    return c;
+    FIELDCODEC_TRY(const output_part o, read_output(rd));
+    c.number = o.number;
+    c.io_pattern = o.io_pattern;
+    rd.at = rd.in.size(); // the pattern runs to the end
+    break;
+  }
   case code_assign_p:
   case code_assign_v: {
-    c.operation = code.value() == code_assign_p ? op::assign_p : op::assign_v;
-    auto n = rd.read<std::uint16_t>(byte_order::big);
-    if (!n) return n.error();
-    c.number = n.value();
+    c.operation = code == code_assign_p ? op::assign_p : op::assign_v;
+    if (!rd.need(2)) return errc::truncated;
+    c.number = rd.u16();
     auto a = read_operand(rd);
     if (!a) return a.error();
     c.left = a.value();
-    if (rd.empty()) return c;
-    auto ari = rd.read_u8();
-    c.arithmetic_op = static_cast<arithmetic>(ari.value());
+    if (rd.empty()) break;
+    c.arithmetic_op = static_cast<arithmetic>(rd.u8());
     if (!known(c.arithmetic_op)) return errc::unknown_command;
     auto b = read_operand(rd);
     if (!b) return b.error();
     c.right = b.value();
-    return c;
+    break;
   }
   case code_valid: {
     c.operation = op::valid;
-    auto v = rd.read_u8();
-    auto l = rd.read_u8();
-    if (!v || !l) return errc::truncated;
-    if (v.value() != valid_marker) return errc::unknown_command;
-    if (l.value() != 'P' && l.value() != 'C' && l.value() != 'F') return errc::unknown_command;
-    c.valid_letter = static_cast<char>(l.value());
-    return c;
+    if (!rd.need(2)) return errc::truncated;
+    const std::uint8_t v = rd.u8();
+    const std::uint8_t l = rd.u8();
+    if (v != valid_marker) return errc::unknown_command;
+    if (l != 'P' && l != 'C' && l != 'F') return errc::unknown_command;
+    c.valid_letter = static_cast<char>(l);
+    break;
   }
-  default: break;
+  default: return errc::unknown_command;
   }
-  auto d = find_code(code.value());
-  if (!d) return d.error();
-  c.operation = d.value().f->o;
-  auto a = read_simple_arg(rd, *d.value().f, d.value().kind);
-  if (!a) return a.error();
-  c.argument = a.value();
-  for (int part = 0; part < 2 && !rd.empty() && can_continue(c, part + 1); ++part) {
-    auto next = rd.read_u8();
-    if (next.value() == code_output && part == 0) {
-      c.second_operation = op::output;
-      FIELDCODEC_TRY_STATUS(read_output(rd, c));
-      break;
-    }
-    auto nd = find_code(next.value());
-    if (!nd) return nd.error();
-    auto na = read_simple_arg(rd, *nd.value().f, nd.value().kind);
-    if (!na) return na.error();
-    if (part == 0) {
-      c.second_operation = nd.value().f->o;
-      c.second_argument = na.value();
-    } else {
-      c.third_operation = nd.value().f->o;
-      c.third_argument = na.value();
-    }
-  }
-  if (!combination_allowed(c)) return errc::unknown_command;
+  if (!rd.empty()) return errc::bad_length;
   return c;
+}
+
+/// Content → `c` (which starts as command{}); every byte must be used.
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr status read_content(content_reader &rd,
+                                                                 command &c) noexcept {
+  if (!rd.need(1)) return errc::truncated;
+  const std::uint8_t code = rd.u8();
+  switch (code) {
+  case code_if_input:
+  case code_if_compare:
+  case code_output:
+  case code_assign_p:
+  case code_assign_v:
+  case code_valid: {
+    auto k = read_compound(rd, code);
+    if (!k) return k.error();
+    c = k.value();
+    return {};
+  }
+  default: {
+    auto d = find_code(code);
+    if (!d) return d.error();
+    c.operation = d.value().f.o;
+    auto a = read_simple_arg(rd, d.value().f, d.value().kind);
+    if (!a) return a.error();
+    c.argument = a.value();
+    for (int part = 0; part < 2 && !rd.empty() && can_continue(c, part + 1); ++part) {
+      const std::uint8_t next = rd.u8();
+      if (next == code_output && part == 0) {
+        c.second_operation = op::output;
+        auto o = read_output(rd);
+        if (!o) return o.error();
+        c.number = o.value().number;
+        c.io_pattern = o.value().io_pattern;
+        rd.at = rd.in.size(); // the pattern runs to the end
+        break;
+      }
+      auto nd = find_code(next);
+      if (!nd) return nd.error();
+      auto na = read_simple_arg(rd, nd.value().f, nd.value().kind);
+      if (!na) return na.error();
+      if (part == 0) {
+        c.second_operation = nd.value().f.o;
+        c.second_argument = na.value();
+      } else {
+        c.third_operation = nd.value().f.o;
+        c.third_argument = na.value();
+      }
+    }
+    if (!combination_allowed(c)) return errc::unknown_command;
+    break;
+  }
+  }
+  if (!rd.empty()) return errc::bad_length;
+  return {};
 }
 
 } // namespace detail
@@ -999,10 +1172,9 @@ read_number_form(std::span<const std::uint8_t> d) noexcept {
 /// combination the table does not have), bad_digit (y not 0x30/0x31), out_of_range (non-zero
 /// padding inside an operand).
 [[nodiscard]] constexpr result<command> decode_content(std::span<const std::uint8_t> in) noexcept {
-  byte_reader rd{in};
-  auto c = detail::read_content(rd);
-  if (!c) return c.error();
-  if (!rd.empty()) return errc::bad_length;
+  command c{};
+  detail::content_reader rd{in};
+  if (auto s = detail::read_content(rd, c); !s) return s.error();
   return c;
 }
 
@@ -1010,14 +1182,19 @@ read_number_form(std::span<const std::uint8_t> d) noexcept {
 /// Errors: truncated (fewer bytes than the length byte says, or empty), too_long (more than 20
 /// bytes), bad_length (length 0 or above 19, or a length that disagrees with the content),
 /// and those of decode_content.
-[[nodiscard]] constexpr result<command> decode_record(std::span<const std::uint8_t> in) noexcept {
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<command>
+decode_record(std::span<const std::uint8_t> in) noexcept {
   if (in.empty()) return errc::truncated;
   if (in.size() > record_size) return errc::too_long;
   const std::size_t n = in[0];
   if (n == 0U || n > content_max) return errc::bad_length;
   if (in.size() < 1U + n) return errc::truncated;
-  auto c = decode_content(in.subspan(1, n));
-  if (!c && c.error() == errc::truncated) return errc::bad_length; // length too short for it
+  command c{};
+  detail::content_reader rd{in.subspan(1, n)};
+  if (auto s = detail::read_content(rd, c); !s) {
+    if (s.error() == errc::truncated) return errc::bad_length; // length too short for it
+    return s.error();
+  }
   return c;
 }
 

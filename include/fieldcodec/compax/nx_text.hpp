@@ -94,17 +94,21 @@ inline constexpr std::array<names, 14> op_names{{
     {op::end, "END", ""},
 }};
 
-[[nodiscard]] constexpr const names *find_names(op o) noexcept {
+// The lookups answer with a copy, op::none when nothing matches, not with a pointer into the
+// table: g++ cannot constant-evaluate a comparison of such a pointer with nullptr under
+// -fsanitize=undefined (issue 12).
+inline constexpr names no_names{op::none, "", ""};
+[[nodiscard]] constexpr names find_names(op o) noexcept {
   for (const auto &n : op_names) {
-    if (n.o == o) return &n;
+    if (n.o == o) return n;
   }
-  return nullptr;
+  return no_names;
 }
-[[nodiscard]] constexpr const names *find_names(std::string_view w) noexcept {
+[[nodiscard]] constexpr names find_names(std::string_view w) noexcept {
   for (const auto &n : op_names) {
-    if (n.word == w) return &n;
+    if (n.word == w) return n;
   }
-  return nullptr;
+  return no_names;
 }
 
 [[nodiscard]] constexpr bool is_dsp_op(op o) noexcept {
@@ -114,9 +118,8 @@ inline constexpr std::array<names, 14> op_names{{
 /// The argument as text (the command was validated by encode_content first, so numbers are in
 /// range and values have the places their field allows).
 constexpr void put_arg(text_writer &w, op o, const arg &a) noexcept {
-  const names *n = find_names(o);
   switch (a.kind) {
-  case arg_kind::special: w.put(n->special); return;
+  case arg_kind::special: w.put(find_names(o).special); return;
   case arg_kind::parameter:
     w.put('P');
     w.put_decimal(a.value());
@@ -131,10 +134,9 @@ constexpr void put_arg(text_writer &w, op o, const arg &a) noexcept {
 }
 
 constexpr void put_simple(text_writer &w, op o, const arg &a) noexcept {
-  const names *n = find_names(o);
-  w.put(n->word);
-  const family *f = find_family(o);
-  if (f->s == shape::none || f->s == shape::zero) return;
+  w.put(find_names(o).word);
+  const shape s = families[family_position(o)].s;
+  if (s == shape::none || s == shape::zero) return;
   w.put(' ');
   put_arg(w, o, a);
 }
@@ -300,8 +302,8 @@ struct tokens {
 
 [[nodiscard]] constexpr result<arg> parse_arg(op o, std::string_view s) noexcept {
   if (s.empty()) return errc::bad_syntax;
-  const names *n = find_names(o);
-  if (!n->special.empty() && s == n->special) return special();
+  const names n = find_names(o);
+  if (!n.special.empty() && s == n.special) return special();
   if (s.front() == 'P' || s.front() == 'V') {
     auto num = parse_u16(s.substr(1));
     if (!num) return num.error();
@@ -466,11 +468,11 @@ struct tokens {
   if ((w.front() == 'P' || w.front() == 'V') && w.find('=') != std::string_view::npos) {
     return parse_assign(w);
   }
-  const names *n = find_names(w);
-  if (n == nullptr) return errc::unknown_command;
-  command c = make(n->o);
-  const family *f = find_family(n->o);
-  if (n->o == op::wait) {
+  const names n = find_names(w);
+  if (n.o == op::none) return errc::unknown_command;
+  command c = make(n.o);
+  const shape s = families[family_position(n.o)].s;
+  if (n.o == op::wait) {
     // WAIT POSA x / WAIT POSR x
     const auto save = t;
     const auto nw = t.next();
@@ -484,8 +486,8 @@ struct tokens {
     }
     t = save;
   }
-  if (f->s != shape::none && f->s != shape::zero) {
-    auto a = parse_arg(n->o, t.next());
+  if (s != shape::none && s != shape::zero) {
+    auto a = parse_arg(n.o, t.next());
     if (!a) return a.error();
     c.argument = a.value();
   }
@@ -496,11 +498,11 @@ struct tokens {
       FIELDCODEC_TRY_STATUS(parse_io(t.next(), 'A', c));
       break;
     }
-    const names *nn = find_names(nw);
-    if (nn == nullptr) return errc::unknown_command;
-    auto a = parse_arg(nn->o, t.next());
+    const names nn = find_names(nw);
+    if (nn.o == op::none) return errc::unknown_command;
+    auto a = parse_arg(nn.o, t.next());
     if (!a) return a.error();
-    c = then(c, nn->o, a.value());
+    c = then(c, nn.o, a.value());
   }
   return c;
 }
