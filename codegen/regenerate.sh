@@ -29,6 +29,11 @@ fi
 out=include/fieldcodec/dictionaries
 # CSV tables of CANopen devices that are also exported as EDS to dictionaries/export/
 eds_exports="dpq_parameters"
+# The DPQ maps its PDOs in BODAC's Bus Manager and documents no mapping parameters (1A00h..):
+# its Tx-PDO communication parameters (1800h..1803h, the event timers) stay out of the EDS,
+# because CiA 301 tools refuse a communication parameter without its mapping parameter
+# (docs/dpq.md "EDS export").
+export_only_dpq_parameters="0x0000-0x17FF,0x1A00-0xFFFF"
 mkdir -p "$out"
 status=0
 expected=
@@ -54,7 +59,8 @@ for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
   case " $eds_exports " in
     *" $stem "*)
       mkdir -p dictionaries/export
-      if ! "$gen" $check --quiet --name "$stem" --eds "dictionaries/export/$stem.eds" "$src"; then
+      only=$(eval "echo \${export_only_$stem:-}")
+      if ! "$gen" $check --quiet --name "$stem" ${only:+--only "$only"} --eds "dictionaries/export/$stem.eds" "$src"; then
         status=1
       fi ;;
   esac

@@ -86,9 +86,10 @@ struct other_section {
   key_list keys;
 };
 
-/// The list an object not listed anywhere belongs in: manufacturer-specific 2000h..5FFFh, optional
-/// otherwise.
+/// The list an object not listed anywhere belongs in: the CiA 306 mandatory objects 1000h, 1001h
+/// and 1018h, manufacturer-specific 2000h..5FFFh, optional otherwise.
 [[nodiscard]] constexpr object_list default_list(std::uint16_t index) noexcept {
+  if (index == 0x1000U || index == 0x1001U || index == 0x1018U) return object_list::mandatory;
   return index >= 0x2000U && index < 0x6000U ? object_list::manufacturer : object_list::optional;
 }
 

@@ -125,6 +125,25 @@ TEST_CASE("object lists: read into the enum, written back in the same lists") {
   CHECK(w.find("[ManufacturerObjects]\nSupportedObjects=1\n1=0x2000\n") != std::string::npos);
 }
 
+// A CSV table has no object lists: 1000h, 1001h and 1018h go to MandatoryObjects (CiA 306), the
+// rest by range. The DPQ table has 1001h and no 1000h/1018h (write_eds adds those two).
+TEST_CASE("object lists of a CSV table: 1001h is mandatory") {
+  auto r = read_csv_text("index,subindex,object_code,name,data_type,access\n"
+                         "0x1001,0,VAR,Error Register,UNSIGNED8,ro\n"
+                         "0x1017,0,VAR,Producer Heartbeat,UNSIGNED16,rw\n"
+                         "0x2000,0,VAR,x,UNSIGNED8,rw\n");
+  REQUIRE(r.dict);
+  CHECK(r.dict->objects.at(0x1001).list == gen::object_list::mandatory);
+  CHECK(r.dict->objects.at(0x1017).list == gen::object_list::optional);
+  CHECK(r.dict->objects.at(0x2000).list == gen::object_list::manufacturer);
+  gen::add_mandatory_objects(*r.dict); // as fieldcodec-gen --eds does for a CSV table
+  CHECK(r.dict->objects.at(0x1001).name == "Error Register"); // the table's, not doubled
+  const std::string w = gen::write_eds(*r.dict);
+  CHECK(w.find("[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n") !=
+        std::string::npos);
+  CHECK(w.find("[OptionalObjects]\nSupportedObjects=1\n1=0x1017\n") != std::string::npos);
+}
+
 TEST_CASE("a missing DataType is one error, not followed by errors about the values") {
   const std::string text =
       eds_file("[2000]\nParameterName=x\nObjectType=0x7\nAccessType=ro\nDefaultValue=7\nSize=3\n");

@@ -152,41 +152,27 @@ std::string emcy_text(const co::can_frame &f) {
 
 namespace cb_dpq_6 { // "Read the error history (1003h)"
 namespace co = fieldcodec::canopen;
+namespace p = fieldcodec::dictionaries::dpq_parameters;
 namespace dpq = fieldcodec::dpq;
-namespace od = fieldcodec::od;
-
-constexpr od::entry error_count{.index = 0x1003,
-                                .sub = 0,
-                                .object = od::object_code::array,
-                                .type = od::data_type::unsigned8,
-                                .access_type = od::access::rw};
-constexpr od::entry newest_error{.index = 0x1003,
-                                 .sub = 1,
-                                 .object = od::object_code::array,
-                                 .type = od::data_type::unsigned32,
-                                 .access_type = od::access::ro};
+using fieldcodec::errc;
 
 // 605: 40 03 10 00 → 585: 4F 03 10 00 02 …: two errors recorded
-static_assert(co::sdo::upload(5, error_count).value().data[1] == 0x03);
-static_assert(co::sdo::upload_value(error_count, co::can_frame{0x585, false, 8,
-                                                               {0x4F, 0x03, 0x10, 0x00, 0x02}})
-                  .value()
-                  .to_uint64()
-                  .value() == 2);
+constexpr auto count_request = dpq::read_request(5, p::error_history_sub0).value();
+static_assert(count_request.data[0] == 0x40 && count_request.data[1] == 0x03);
+constexpr co::can_frame count_answer{0x585, false, 8, {0x4F, 0x03, 0x10, 0x00, 0x02}};
+static_assert(dpq::read_raw_response(5, p::error_history_sub0, count_answer).value() == 2);
 
-// 605: 40 03 10 01 → 585: 43 03 10 01 00 34 00 00: code 3400h, "current input: cable break"
-constexpr auto newest = co::sdo::upload_value(newest_error,
-                                              co::can_frame{0x585, false, 8,
-                                                            {0x43, 0x03, 0x10, 0x01, 0x00, 0x34}})
-                            .value()
-                            .to_uint64()
-                            .value();
-constexpr auto code = static_cast<std::uint16_t>(newest & 0xFFFFU);
-static_assert(code == 0x3400 && (newest >> 16U) == 0); // no manufacturer-specific part
-static_assert(dpq::describe_emcy(code) == "current input: cable break");
+// 605: 40 03 10 01 → 585: 43 03 10 01 00 34 00 00: the newest error, code 3400h
+constexpr co::can_frame newest_answer{0x585, false, 8, {0x43, 0x03, 0x10, 0x01, 0x00, 0x34}};
+constexpr auto newest = dpq::decode_error_field(
+    static_cast<std::uint32_t>(dpq::read_raw_response(5, p::error_code_1, newest_answer).value()));
+static_assert(newest.code == 0x3400 && newest.info == 0); // no manufacturer-specific part
+static_assert(newest.text() == "current input: cable break");
 
 // writing 0 to sub 0 clears the history: 605: 2F 03 10 00 00 00 00 00
-static_assert(co::sdo::download(5, error_count, 0).value().data[0] == 0x2F);
+static_assert(dpq::write_request(5, p::error_history_sub0, 0).value().data[0] == 0x2F);
+static_assert(dpq::write_request(5, p::error_history_sub0, 5).is(errc::out_of_range));
+static_assert(dpq::write_request(5, p::error_code_1, 0).is(errc::access_denied));
 } // namespace cb_dpq_6
 
 namespace cb_dpq_7 { // "Understand an SDO abort from the card"
@@ -209,19 +195,18 @@ static_assert(dpq::describe_sdo_abort(why.abort) == "value too large"); // the D
 
 namespace cb_dpq_8 { // "Configure the TPDO1 event timer and start the card"
 namespace co = fieldcodec::canopen;
-namespace od = fieldcodec::od;
+namespace p = fieldcodec::dictionaries::dpq_parameters;
+namespace dpq = fieldcodec::dpq;
 using fieldcodec::errc;
 
-constexpr od::entry tpdo1_event_timer{.index = 0x1800,
-                                      .sub = 5,
-                                      .object = od::object_code::record,
-                                      .type = od::data_type::unsigned16};
-
 // 605: 2B 00 18 05 64 00 00 00, confirmed by 585: 60 00 18 05 …
-constexpr auto timer = co::sdo::download(5, tpdo1_event_timer, 100);
+constexpr auto timer = dpq::write_request(5, p::tx_pdo1_event_timer, 100);
 static_assert(timer.value() ==
               co::can_frame{0x605, false, 8, {0x2B, 0x00, 0x18, 0x05, 0x64, 0, 0, 0}});
-static_assert(co::sdo::download(5, tpdo1_event_timer, 70000).is(errc::overflow));
+constexpr co::can_frame confirmed{0x585, false, 8, {0x60, 0x00, 0x18, 0x05}};
+static_assert(dpq::write_response(5, p::tx_pdo1_event_timer, confirmed).has_value());
+// 0…65535 ms: 70 000 ms is refused before a frame exists
+static_assert(dpq::write_request(5, p::tx_pdo1_event_timer, 70000).is(errc::out_of_range));
 
 // then start node 5: 000: 01 05
 static_assert(co::nmt::encode(co::nmt::command::start, 5).value() ==
@@ -880,11 +865,16 @@ TEST_CASE("cookbook, DPQ: the frames the recipes state, at run time") {
   CHECK(cb_dpq_8::timer.value() ==
         ch.request(co::sdo::expedited_download({0x1800, 5}, std::array<std::uint8_t, 2>{0x64, 0}))
             .value());
-  // the error history request of sub 1 is 40 03 10 01
-  CHECK(co::sdo::upload(5, cb_dpq_6::newest_error).value() ==
+  // the error history requests: sub 0 is 40 03 10 00, sub 1 is 40 03 10 01; clearing 2F … 00
+  namespace dpq = fieldcodec::dpq;
+  namespace p = fieldcodec::dictionaries::dpq_parameters;
+  CHECK(cb_dpq_6::count_request ==
+        co::can_frame{0x605, false, 8, {0x40, 0x03, 0x10, 0x00, 0, 0, 0, 0}});
+  CHECK(dpq::read_request(5, p::error_code_1).value() ==
         co::can_frame{0x605, false, 8, {0x40, 0x03, 0x10, 0x01, 0, 0, 0, 0}});
-  CHECK(co::sdo::download(5, cb_dpq_6::error_count, 0).value() ==
+  CHECK(dpq::write_request(5, p::error_history_sub0, 0).value() ==
         co::can_frame{0x605, false, 8, {0x2F, 0x03, 0x10, 0x00, 0, 0, 0, 0}});
+  CHECK(cb_dpq_6::newest.text() == "current input: cable break");
   // the read-back request of the bar recipe
   CHECK(fieldcodec::dpq::read_request(5, fieldcodec::dictionaries::dpq_parameters::inj_p_limit_1)
             .value() == co::can_frame{0x605, false, 8, {0x40, 0x23, 0x20, 0x00, 0, 0, 0, 0}});

@@ -138,7 +138,7 @@ void check_value(const dpq_test::row &r, decimal eu, std::size_t &converted, std
 } // namespace
 
 TEST_CASE("dpq all parameters: table shape") {
-  const auto rows = dpq_test::load();
+  const auto rows = dpq_test::load_parameters();
   REQUIRE(rows.size() == 221);
   std::set<std::string> indices;
   std::map<std::string, int> types;
@@ -182,7 +182,7 @@ TEST_CASE("dpq all parameters: table shape") {
 }
 
 TEST_CASE("dpq all parameters: range_exceeds_field is set exactly where the range does not fit") {
-  const auto rows = dpq_test::load();
+  const auto rows = dpq_test::load_parameters();
   REQUIRE(rows.size() == 221);
   for (const auto &r : rows) {
     const i128 lo = reference_raw(r.low, r.offset, r.scale);
@@ -195,7 +195,7 @@ TEST_CASE("dpq all parameters: range_exceeds_field is set exactly where the rang
 }
 
 TEST_CASE("dpq all parameters: min, max and mid convert exactly and round-trip") {
-  const auto rows = dpq_test::load();
+  const auto rows = dpq_test::load_parameters();
   REQUIRE(rows.size() == 221);
   std::size_t converted = 0, refused = 0;
   for (const auto &r : rows) {
@@ -214,7 +214,7 @@ TEST_CASE("dpq all parameters: min, max and mid convert exactly and round-trip")
 }
 
 TEST_CASE("dpq all parameters: exact halves round away from zero, both signs") {
-  const auto rows = dpq_test::load();
+  const auto rows = dpq_test::load_parameters();
   REQUIRE(rows.size() == 221);
   std::size_t positive = 0, negative = 0, none = 0;
   for (const auto &r : rows) {
@@ -255,7 +255,7 @@ TEST_CASE("dpq all parameters: exact halves round away from zero, both signs") {
 }
 
 TEST_CASE("dpq all parameters: every field boundary refuses one count beyond") {
-  const auto rows = dpq_test::load();
+  const auto rows = dpq_test::load_parameters();
   REQUIRE(rows.size() == 221);
   for (const auto &r : rows) {
     fieldcodec::od::descriptor c = r.descriptor();

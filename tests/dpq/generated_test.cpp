@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -60,14 +61,25 @@ TEST_CASE("dpq generated: the issue's example by name") {
   CHECK(dpq::to_bytes(limit_minus.value(), 99.99).has_value());
 }
 
+// An empty CSV number is absent in the generated entry; a given one is the same raw value.
+static bool same_number(const od::number &n, const std::string &text) {
+  if (text.empty()) return !n.has_value();
+  bool ok = true;
+  const decimal d = dpq_test::parse(text, ok);
+  return ok && n.has_value() && fc::equal(n.to_decimal().value(), d);
+}
+
 TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same way") {
   const auto rows = dpq_test::load();
-  REQUIRE(rows.size() == 221);
-  REQUIRE(p::entries.size() == 221);
-  REQUIRE(p::dictionary.size() == 221);
+  // 221 bus parameters (chapter 4) + 19 communication objects (chapter 3)
+  REQUIRE(rows.size() == 240);
+  REQUIRE(p::entries.size() == 240);
+  REQUIRE(p::dictionary.size() == 240);
+  std::size_t parameters = 0;
   for (const auto &r : rows) {
     const auto index = static_cast<std::uint16_t>(std::stoul(r.index, nullptr, 16));
-    const auto found = p::dictionary.at(index, 0);
+    const auto sub = static_cast<std::uint8_t>(std::stoul(r.subindex));
+    const auto found = p::dictionary.at(index, sub);
     REQUIRE_MESSAGE(found.has_value(), r.section);
     const od::descriptor *e = &found.value();
     CHECK_MESSAGE(e->info.name == r.name, r.section);
@@ -76,6 +88,19 @@ TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same 
     CHECK_MESSAGE(od::name(e->access_type) == r.access, r.section);
     CHECK_MESSAGE(e->info.unit == r.unit, r.section);
     CHECK_MESSAGE(e->info.section == r.section, r.section);
+    CHECK_MESSAGE(od::name(e->object) == (r.object_code.empty() ? "VAR" : r.object_code),
+                  r.section);
+    CHECK_MESSAGE(same_number(e->default_value, r.default_text), r.section);
+    if (!r.is_parameter()) {
+      // a communication object: raw values, no scale, no DPQ flags
+      CHECK_MESSAGE(!e->has(od::flag::scaled), r.section);
+      CHECK_MESSAGE(e->flags == 0, r.section);
+      CHECK_MESSAGE(r.scale_text.empty(), r.section);
+      CHECK_MESSAGE(same_number(e->low, r.low_text), r.section);
+      CHECK_MESSAGE(same_number(e->high, r.high_text), r.section);
+      continue;
+    }
+    ++parameters;
     CHECK_MESSAGE(e->has(od::flag::scaled), r.section);
     CHECK_MESSAGE(fc::equal(e->scale.scale, r.scale), r.section);
     CHECK_MESSAGE(fc::equal(e->scale.offset, r.offset), r.section);
@@ -103,6 +128,7 @@ TEST_CASE("dpq generated: every entry agrees with the CSV and converts the same 
       }
     }
   }
+  CHECK(parameters == 221);
 }
 
 #endif

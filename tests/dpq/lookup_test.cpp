@@ -2,6 +2,7 @@
 // each parameter's name, section number and "Value acceptance"), dpq/lookup.hpp.
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dpq/lookup.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <doctest/doctest.h>
 
@@ -53,15 +54,23 @@ TEST_CASE("dpq lookup: normalised name") {
   CHECK(dpq::find_by_name(p::dictionary, "backp:decomp rate 2", n) == errc::unknown_object);
 }
 
-TEST_CASE("dpq lookup: every parameter by name (both rules) and section, all unique") {
-  REQUIRE(p::infos.size() == 221);
+// The table's bus parameters of chapter 4 ("4.n"); the other rows are chapter 3's
+// communication objects.
+static bool is_parameter(const fc::od::entry_info &info) {
+  return info.section.substr(0, 2) == "4.";
+}
+
+TEST_CASE("dpq lookup: every entry by name (both rules), every parameter by section, all unique") {
+  // 221 bus parameters + 19 communication objects
+  REQUIRE(p::infos.size() == 240);
+  std::size_t parameters = 0;
   for (std::size_t i = 0; i < p::infos.size(); ++i) {
     const auto &info = p::infos[i];
-    const auto idx = p::entries[i].index;
+    const auto at = fc::od::address{p::entries[i].index, p::entries[i].sub};
     auto exact = dpq::find_by_name(p::dictionary, info.name);
     REQUIRE_MESSAGE(exact.has_value(), info.name);
-    CHECK_MESSAGE(exact.value().index == idx, info.name);
-    // upper-cased and padded: still exactly this parameter (no two names collide)
+    CHECK_MESSAGE((fc::od::address{exact.value().index, exact.value().sub} == at), info.name);
+    // upper-cased and padded: still exactly this entry (no two names collide)
     std::string shouted(info.name);
     for (char &c : shouted) {
       if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
@@ -69,11 +78,19 @@ TEST_CASE("dpq lookup: every parameter by name (both rules) and section, all uni
     shouted = " " + shouted + "\t";
     auto norm = dpq::find_by_name(p::dictionary, shouted, dpq::name_match::normalised);
     REQUIRE_MESSAGE(norm.has_value(), info.name);
-    CHECK_MESSAGE(norm.value().index == idx, info.name);
-    auto sec = dpq::find_by_section(p::dictionary, "4." + std::to_string(i + 1));
-    REQUIRE_MESSAGE(sec.has_value(), info.section);
-    CHECK_MESSAGE(sec.value().info.section == "4." + std::to_string(i + 1), info.section);
+    CHECK_MESSAGE((fc::od::address{norm.value().index, norm.value().sub} == at), info.name);
+    if (is_parameter(info)) ++parameters;
   }
+  CHECK(parameters == 221);
+  for (std::size_t n = 1; n <= 221; ++n) {
+    const std::string section = "4." + std::to_string(n);
+    auto sec = dpq::find_by_section(p::dictionary, section);
+    REQUIRE_MESSAGE(sec.has_value(), section);
+    CHECK_MESSAGE(sec.value().info.section == section, section);
+  }
+  // a section of chapter 3 describes several objects: ambiguous
+  CHECK(dpq::find_by_section(p::dictionary, "3.4") == errc::invalid_argument);
+  CHECK(dpq::find_by_section(p::dictionary, "3.5") == errc::invalid_argument);
 }
 
 TEST_CASE("dpq lookup: bad sections") {
@@ -117,6 +134,15 @@ TEST_CASE("dpq acceptance: every parameter has a known acceptance (221 = 163 + 5
     auto d = p::dictionary.describe(p::entries[i]);
     REQUIRE(d.has_value());
     const auto a = dpq::acceptance_of(d.value());
+    if (!is_parameter(p::infos[i])) {
+      // chapter 3 prints no value acceptance for the communication objects
+      CHECK_MESSAGE(a == dpq::acceptance::unknown, p::infos[i].name);
+      // read-only ones are refused first; a writable one has no acceptance to check
+      CHECK(
+          dpq::check_acceptance(d.value(), dpq::enabling::inactive) ==
+          (fc::od::writable(d.value().access_type) ? errc::invalid_argument : errc::access_denied));
+      continue;
+    }
     CHECK_MESSAGE(a != dpq::acceptance::unknown, p::infos[i].name);
     if (a == dpq::acceptance::also_when_enabled) ++also;
     if (a == dpq::acceptance::only_when_disabled) {

@@ -104,6 +104,140 @@ struct range {
   return detail::round_div_pow10(diff, p + s.scale.places);
 }
 
+namespace decimal_detail {
+// The one implementation of to_raw(decimal …); `ranged` says whether r applies.
+[[gnu::always_inline]] constexpr result<std::int64_t>
+to_raw_decimal(decimal eu, linear s, field f, bool ranged, range r) noexcept {
+  if (ranged) FIELDCODEC_TRY_STATUS(check_range(eu, r));
+  FIELDCODEC_TRY(const std::int64_t raw, scale_to_raw(eu, s));
+  FIELDCODEC_TRY_STATUS(check_field(raw, f));
+  return raw;
+}
+// The same, never inlined: where the fast path below gives up (an int64 overflow, a limit of
+// more than 18 places), so that its copies stay small.
+[[gnu::noinline, gnu::cold]] constexpr result<std::int64_t>
+to_raw_decimal_slow(decimal eu, linear s, field f, bool ranged, range r) noexcept {
+  return to_raw_decimal(eu, s, f, ranged, r);
+}
+
+// compare()'s int64 path: false where compare() would need its wide path.
+[[gnu::always_inline]] constexpr bool compare_i64(decimal a, decimal b, int &out) noexcept {
+  if (a.places > decimal_max_places || b.places > decimal_max_places) return false;
+  std::int64_t x = a.mantissa;
+  std::int64_t y = b.mantissa;
+  if (!(a.places >= b.places
+            ? fieldcodec::detail::mul_i64(y, fieldcodec::detail::pow10_i64(a.places - b.places), y)
+            : fieldcodec::detail::mul_i64(x, fieldcodec::detail::pow10_i64(b.places - a.places),
+                                          x))) {
+    return false;
+  }
+  out = x < y ? -1 : (x > y ? 1 : 0);
+  return true;
+}
+
+// to_raw_decimal in int64 only, for a decimal whose places are a compile-time constant (a
+// template parameter, so that the copies stay distinct functions; see below): the checks in the
+// same order with the same errors, the same arithmetic as scale_to_raw's int64 path; false (nothing
+// decided) where that would need 128 bits.
+template <std::uint8_t Places>
+[[gnu::always_inline]] constexpr bool to_raw_decimal_i64(std::int64_t mantissa, linear s, field f,
+                                                         bool ranged, range r,
+                                                         result<std::int64_t> &out) noexcept {
+  const decimal eu{mantissa, Places};
+  if (ranged) {
+    int lo = 0;
+    int hi = 0;
+    if (!compare_i64(eu, r.low, lo) || !compare_i64(eu, r.high, hi)) return false;
+    if (lo < 0 || hi > 0) {
+      out = errc::out_of_range;
+      return true;
+    }
+  }
+  if (s.scale.mantissa == 0 || eu.places > decimal_max_places ||
+      s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
+    out = errc::invalid_argument;
+    return true;
+  }
+  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
+  if (p + s.scale.places > decimal_max_places) return false;
+  namespace d = fieldcodec::detail;
+  std::int64_t a = 0;
+  std::int64_t b = 0;
+  std::int64_t diff = 0;
+  std::int64_t prod = 0;
+  if (!(d::mul_i64(eu.mantissa, d::pow10_i64(p - eu.places), a) &&
+        d::mul_i64(s.offset.mantissa, d::pow10_i64(p - s.offset.places), b) &&
+        d::sub_i64(a, b, diff) && d::mul_i64(diff, s.scale.mantissa, prod))) {
+    return false;
+  }
+  // round_div_i64(prod, 10^k) on the magnitude: half away from zero is ⌊(|prod| + 10^k / 2) /
+  // 10^k⌋ with prod's sign (10^k is even for k ≥ 1; |prod| + 10^k / 2 < 2^64). A division of an
+  // unsigned value by a constant is a multiplication; the signed quotient and remainder of
+  // round_div_i64 are not.
+  const unsigned k = p + s.scale.places;
+  std::int64_t raw = prod;
+  if (k != 0U) {
+    const auto den = static_cast<std::uint64_t>(d::pow10_i64(k));
+    const std::uint64_t mag =
+        prod < 0 ? 0U - static_cast<std::uint64_t>(prod) : static_cast<std::uint64_t>(prod);
+    const auto q = static_cast<std::int64_t>((mag + den / 2U) / den);
+    raw = prod < 0 ? -q : q;
+  }
+  if (const status st = check_field(raw, f); !st) {
+    out = st.error();
+  } else {
+    out = raw;
+  }
+  return true;
+}
+
+// A decimal's places are usually known only at run time (text parsed by parse_decimal, a value
+// from the network), so its powers of ten and the division by 10^(places + scale places) stay
+// run-time operations even where scale, offset and range are constants (a named descriptor).
+// For the precisions 0..6 (what a PLC, a text field or a parser hands over) the call then takes
+// a copy of the int64 path in which the places are a constant (issue 18): the powers of ten
+// fold, the range check compares mantissas and the division becomes a multiplication, as in
+// code written for one precision. Same checks, same arithmetic, same result for every input
+// (tests/core/scaling_decimal_fast_test.cpp keeps the previous code as its reference). Only
+// where the scale and offset are compile-time constants after inlining (__builtin_constant_p),
+// since otherwise the copies would not fold and only cost code; not in builds for size (-Os,
+// __OPTIMIZE_SIZE__: on a Cortex-M a 64-bit division is a library call anyway).
+[[gnu::always_inline]] constexpr bool constant_scale(const linear &s) noexcept {
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+  return __builtin_constant_p(s.scale.mantissa) && __builtin_constant_p(s.scale.places) &&
+         __builtin_constant_p(s.offset.mantissa) && __builtin_constant_p(s.offset.places);
+#else
+  (void)s;
+  return false;
+#endif
+}
+
+[[gnu::always_inline]] constexpr result<std::int64_t>
+to_raw_decimal_dispatch(decimal eu, linear s, field f, bool ranged, range r) noexcept {
+  if (constant_scale(s)) {
+    result<std::int64_t> out{errc::invalid_argument};
+    bool done = false;
+    const std::int64_t m = eu.mantissa;
+    switch (eu.places) {
+    case 0: done = to_raw_decimal_i64<0>(m, s, f, ranged, r, out); break;
+    case 1: done = to_raw_decimal_i64<1>(m, s, f, ranged, r, out); break;
+    case 2: done = to_raw_decimal_i64<2>(m, s, f, ranged, r, out); break;
+    case 3: done = to_raw_decimal_i64<3>(m, s, f, ranged, r, out); break;
+    case 4: done = to_raw_decimal_i64<4>(m, s, f, ranged, r, out); break;
+    case 5: done = to_raw_decimal_i64<5>(m, s, f, ranged, r, out); break;
+    case 6: done = to_raw_decimal_i64<6>(m, s, f, ranged, r, out); break;
+    default: break;
+    }
+    if (done) return out;
+    return to_raw_decimal_slow(eu, s, f, ranged, r);
+  }
+  return to_raw_decimal(eu, s, f, ranged, r);
+}
+} // namespace decimal_detail
+
+#if defined(__OPTIMIZE_SIZE__)
+// Builds for size keep one copy of the conversion (see to_raw_decimal_dispatch).
+
 /// PLC → device: range check, conversion, field check.
 /// Errors: out_of_range, overflow, invalid_argument.
 [[nodiscard]] constexpr result<std::int64_t> to_raw(decimal eu, linear s, field f,
@@ -120,6 +254,20 @@ struct range {
   FIELDCODEC_TRY_STATUS(check_field(raw, f));
   return raw;
 }
+#else
+/// PLC → device: range check, conversion, field check.
+/// Errors: out_of_range, overflow, invalid_argument.
+[[nodiscard, gnu::always_inline]] constexpr result<std::int64_t> to_raw(decimal eu, linear s,
+                                                                        field f, range r) noexcept {
+  return decimal_detail::to_raw_decimal_dispatch(eu, s, f, true, r);
+}
+
+/// PLC → device without an engineering range (only the field limits apply).
+[[nodiscard, gnu::always_inline]] constexpr result<std::int64_t> to_raw(decimal eu, linear s,
+                                                                        field f) noexcept {
+  return decimal_detail::to_raw_decimal_dispatch(eu, s, f, false, {});
+}
+#endif
 
 // Implementation of to_raw from a double or a float (not public API: a separate name, because
 // `detail::` inside `scaling` must keep meaning fieldcodec::detail).
