@@ -57,7 +57,7 @@ TEST_CASE("dpq lookup: normalised name") {
 // The table's bus parameters of chapter 4 ("4.n"); the other rows are chapter 3's
 // communication objects.
 static bool is_parameter(const fc::od::entry_info &info) {
-  return info.section.substr(0, 2) == "4.";
+  return info.section.view().substr(0, 2) == "4.";
 }
 
 TEST_CASE("dpq lookup: every entry by name (both rules), every parameter by section, all unique") {
