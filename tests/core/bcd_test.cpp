@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace bcd = fieldcodec::bcd;
 using fieldcodec::errc;
@@ -73,5 +75,55 @@ TEST_CASE("signed BCD: signs, zero, limits, bad input") {
   for (std::int64_t v : {std::int64_t{1}, std::int64_t{-1}, std::int64_t{4'000'000'000},
                          std::int64_t{-4'000'000'000}, std::int64_t{123'456'789}}) {
     CHECK(bcd::decode_signed(bcd::encode_signed<6>(v).value()).value() == v);
+  }
+}
+
+// The fixed-size encode_signed<N> checks with N known (issue 18); it must answer exactly as the
+// span form does: same bytes, same error, for every N and values around every digit limit.
+template <std::size_t N>
+void check_fixed_against_span(std::int64_t v) {
+  std::array<std::uint8_t, N> via_span{};
+  const auto s = bcd::encode_signed(v, std::span<std::uint8_t>(via_span));
+  const auto f = bcd::encode_signed<N>(v);
+  REQUIRE(f.has_value() == s.has_value());
+  if (f) {
+    CHECK(f.value() == via_span);
+  } else {
+    CHECK(f.error() == s.error());
+  }
+}
+
+TEST_CASE("bcd: encode_signed<N> answers as the span form") {
+  std::uint64_t x = 0x9E3779B97F4A7C15ULL;
+  auto next = [&x] {
+    x ^= x >> 12U;
+    x ^= x << 25U;
+    x ^= x >> 27U;
+    return x * 0x2545F4914F6CDD1DULL;
+  };
+  std::vector<std::int64_t> values{0, 1, -1, INT64_MIN, INT64_MAX};
+  std::int64_t p = 1;
+  for (int d = 0; d <= 18; ++d) {
+    for (std::int64_t k : {p - 1, p, p + 1}) {
+      values.push_back(k);
+      values.push_back(-k);
+    }
+    p *= 10;
+  }
+  for (int i = 0; i < 20000; ++i) {
+    const auto r = static_cast<std::int64_t>(next());
+    values.push_back(r);
+    values.push_back(r >> (next() % 63U));
+  }
+  for (const std::int64_t v : values) {
+    check_fixed_against_span<2>(v);
+    check_fixed_against_span<3>(v);
+    check_fixed_against_span<4>(v);
+    check_fixed_against_span<5>(v);
+    check_fixed_against_span<6>(v);
+    check_fixed_against_span<7>(v);
+    check_fixed_against_span<8>(v);
+    check_fixed_against_span<9>(v);
+    check_fixed_against_span<10>(v);
   }
 }

@@ -51,11 +51,10 @@ inline constexpr std::uint8_t sign_negative = 0xFF;
   return v;
 }
 
-/// Encode `value` into all bytes of `out` (2·size digits, leading zeros).
-/// Errors: bad_length (empty or more than max_bytes), overflow (more digits than fit).
-[[nodiscard]] constexpr status encode(std::uint64_t value, std::span<std::uint8_t> out) noexcept {
-  if (out.empty() || out.size() > max_bytes) return errc::bad_length;
-  if (value >= pow10(2U * out.size())) return errc::overflow;
+namespace detail {
+/// The digits of `value` into all bytes of `out`, leading zeros; `value` must fit (checked by
+/// the callers). One loop for the span and the fixed-size forms.
+constexpr void write_digits(std::uint64_t value, std::span<std::uint8_t> out) noexcept {
   for (std::size_t i = out.size(); i-- > 0;) {
     const auto lo = static_cast<unsigned>(value % 10U);
     value /= 10U;
@@ -63,6 +62,15 @@ inline constexpr std::uint8_t sign_negative = 0xFF;
     value /= 10U;
     out[i] = static_cast<std::uint8_t>((hi << 4U) | lo);
   }
+}
+} // namespace detail
+
+/// Encode `value` into all bytes of `out` (2·size digits, leading zeros).
+/// Errors: bad_length (empty or more than max_bytes), overflow (more digits than fit).
+[[nodiscard]] constexpr status encode(std::uint64_t value, std::span<std::uint8_t> out) noexcept {
+  if (out.empty() || out.size() > max_bytes) return errc::bad_length;
+  if (value >= pow10(2U * out.size())) return errc::overflow;
+  detail::write_digits(value, out);
   return {};
 }
 
@@ -106,8 +114,13 @@ template <std::size_t N>
 [[nodiscard]] constexpr result<std::array<std::uint8_t, N>>
 encode_signed(std::int64_t value) noexcept {
   static_assert(N >= 2 && N <= 1 + max_bytes);
+  // the span form's checks with N known: no length test, the limit a constant (issue 18)
+  const std::uint64_t mag = value < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(value)
+                                      : static_cast<std::uint64_t>(value);
+  if (mag >= pow10(2U * (N - 1U))) return errc::overflow;
   std::array<std::uint8_t, N> out{};
-  FIELDCODEC_TRY_STATUS(encode_signed(value, out));
+  out[0] = value < 0 ? sign_negative : sign_positive;
+  detail::write_digits(mag, std::span<std::uint8_t>(out).subspan(1));
   return out;
 }
 
