@@ -3,8 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <string_view>
+#include <vector>
 
 namespace fc = fieldcodec;
 using fc::decimal;
@@ -135,4 +137,51 @@ TEST_CASE("leading zeros parse and format canonically (fuzz regression)") {
   std::array<char, 48> b{};
   CHECK(fmt(b, d.value()) == "-5");
   CHECK(fmt(b, fc::parse_decimal("007.50").value()) == "7.50");
+}
+
+// detail::round_div_i64 rounds on the magnitude (issue 18); it must answer as the signed
+// quotient-and-remainder form it replaced, kept here, for every den > 0 and every num.
+namespace {
+constexpr std::int64_t reference_round_div_i64(std::int64_t num, std::int64_t den) {
+  std::int64_t q = num / den;
+  const std::int64_t rem = num % den;
+  const std::int64_t arem = rem < 0 ? -rem : rem;
+  if (arem >= den - arem) q += num < 0 ? -1 : 1;
+  return q;
+}
+} // namespace
+
+static_assert(fieldcodec::detail::round_div_i64(INT64_MIN, 1) == INT64_MIN);
+static_assert(fieldcodec::detail::round_div_i64(-15, 10) == -2);
+static_assert(fieldcodec::detail::round_div_i64(-14, 10) == -1);
+static_assert(fieldcodec::detail::round_div_i64(7, 3) == 2 &&
+              fieldcodec::detail::round_div_i64(-8, 3) == -3);
+
+TEST_CASE("decimal: round_div_i64 answers as the signed form it replaced") {
+  std::uint64_t x = 0x243F6A8885A308D3ULL;
+  auto next = [&x] {
+    x ^= x >> 12U;
+    x ^= x << 25U;
+    x ^= x >> 27U;
+    return x * 0x2545F4914F6CDD1DULL;
+  };
+  std::vector<std::int64_t> dens{1, 2, 3, 5, 7, INT64_MAX};
+  std::int64_t p = 1;
+  for (int d = 0; d <= 18; ++d) {
+    dens.push_back(p);
+    if (d < 18) p *= 10;
+  }
+  for (int i = 0; i < 200; ++i)
+    dens.push_back(static_cast<std::int64_t>(next() >> (1U + next() % 63U)) + 1);
+  for (const std::int64_t den : dens) {
+    for (const std::int64_t num :
+         {INT64_MIN, INT64_MIN + 1, std::int64_t{-1}, std::int64_t{0}, std::int64_t{1}, INT64_MAX,
+          den / 2, -(den / 2), den / 2 + 1, -(den / 2 + 1)}) {
+      REQUIRE(fieldcodec::detail::round_div_i64(num, den) == reference_round_div_i64(num, den));
+    }
+    for (int i = 0; i < 500; ++i) {
+      const auto num = static_cast<std::int64_t>(next()) >> (next() % 64U);
+      REQUIRE(fieldcodec::detail::round_div_i64(num, den) == reference_round_div_i64(num, den));
+    }
+  }
 }

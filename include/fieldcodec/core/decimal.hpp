@@ -59,11 +59,15 @@ constexpr bool sub_i64(std::int64_t a, std::int64_t b, std::int64_t &out) noexce
 
 /// round(num / den), half away from zero, den > 0. Cannot overflow.
 [[nodiscard]] constexpr std::int64_t round_div_i64(std::int64_t num, std::int64_t den) noexcept {
-  std::int64_t q = num / den;
-  const std::int64_t rem = num % den;
-  const std::int64_t arem = rem < 0 ? -rem : rem;
-  if (arem >= den - arem) q += num < 0 ? -1 : 1; // remainder at least half
-  return q;
+  // On the magnitude: ⌊(|num| + ⌊den/2⌋) / den⌋ rounds half away from zero for every den > 0
+  // (2·rem ≥ den ⟺ rem + ⌊den/2⌋ ≥ den), and an unsigned division by a constant compiles to a
+  // multiplication where a signed quotient and remainder do not (issue 18). |num| + den/2 <
+  // 2^64; the quotient is at most 2^63 (INT64_MIN / 1), negated without overflow in uint64.
+  const auto d = static_cast<std::uint64_t>(den);
+  const std::uint64_t mag = num < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(num)
+                                    : static_cast<std::uint64_t>(num);
+  const std::uint64_t q = (mag + d / 2U) / d;
+  return num < 0 ? static_cast<std::int64_t>(std::uint64_t{0} - q) : static_cast<std::int64_t>(q);
 }
 
 /// Unsigned 128-bit magnitude as four 32-bit limbs, least significant first. Portable (no
@@ -220,16 +224,25 @@ constexpr result<std::int64_t> round_div_pow10(wide a, unsigned n) noexcept {
 } // namespace detail
 
 /// Exact comparison: negative, zero or positive.
+namespace detail {
+/// compare()'s int64 path: both brought to the same places in int64; false (nothing decided)
+/// where that would overflow or a place count is over 18.
+[[gnu::always_inline]] constexpr bool compare_i64(decimal a, decimal b, int &out) noexcept {
+  if (a.places > decimal_max_places || b.places > decimal_max_places) return false;
+  std::int64_t x = a.mantissa;
+  std::int64_t y = b.mantissa;
+  if (!(a.places >= b.places ? mul_i64(y, pow10_i64(a.places - b.places), y)
+                             : mul_i64(x, pow10_i64(b.places - a.places), x))) {
+    return false;
+  }
+  out = x < y ? -1 : (x > y ? 1 : 0);
+  return true;
+}
+} // namespace detail
+
 [[nodiscard]] constexpr int compare(decimal a, decimal b) noexcept {
   // Fast path: bring both to the same places in int64 when that cannot overflow.
-  if (a.places <= decimal_max_places && b.places <= decimal_max_places) {
-    std::int64_t x = a.mantissa;
-    std::int64_t y = b.mantissa;
-    if ((a.places >= b.places ? detail::mul_i64(y, detail::pow10_i64(a.places - b.places), y)
-                              : detail::mul_i64(x, detail::pow10_i64(b.places - a.places), x))) {
-      return x < y ? -1 : (x > y ? 1 : 0);
-    }
-  }
+  if (int c = 0; detail::compare_i64(a, b, c)) return c;
   const unsigned p = a.places > b.places ? a.places : b.places;
   detail::wide wa;
   detail::wide wb;

@@ -73,6 +73,30 @@ struct range {
   return {};
 }
 
+namespace decimal_detail {
+/// scale_to_raw's int64 path, for arguments it has checked (non-zero scale, places ≤ 18):
+/// round((eu − offset) × scale) when nothing overflows int64; false (nothing decided) where
+/// the 128-bit path is needed. Inlined so that constant places and scales fold (to_raw's
+/// constant-places copies below call it too).
+[[gnu::always_inline]] constexpr bool scale_to_raw_i64(decimal eu, linear s,
+                                                       std::int64_t &raw) noexcept {
+  namespace d = fieldcodec::detail;
+  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
+  if (p + s.scale.places > decimal_max_places) return false;
+  std::int64_t a = 0;
+  std::int64_t b = 0;
+  std::int64_t diff = 0;
+  std::int64_t prod = 0;
+  if (!(d::mul_i64(eu.mantissa, d::pow10_i64(p - eu.places), a) &&
+        d::mul_i64(s.offset.mantissa, d::pow10_i64(p - s.offset.places), b) &&
+        d::sub_i64(a, b, diff) && d::mul_i64(diff, s.scale.mantissa, prod))) {
+    return false;
+  }
+  raw = d::round_div_i64(prod, d::pow10_i64(p + s.scale.places));
+  return true;
+}
+} // namespace decimal_detail
+
 /// round((eu − offset) × scale), half away from zero, exactly.
 /// Errors: invalid_argument (zero scale or places > 18), overflow (result outside int64).
 [[nodiscard]] constexpr result<std::int64_t> scale_to_raw(decimal eu, linear s) noexcept {
@@ -80,19 +104,9 @@ struct range {
       s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
     return errc::invalid_argument;
   }
-  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
   // Fast path: everything in int64 when nothing overflows (the usual case); same result.
-  if (p + s.scale.places <= decimal_max_places) {
-    std::int64_t a = 0;
-    std::int64_t b = 0;
-    std::int64_t diff = 0;
-    std::int64_t prod = 0;
-    if (detail::mul_i64(eu.mantissa, detail::pow10_i64(p - eu.places), a) &&
-        detail::mul_i64(s.offset.mantissa, detail::pow10_i64(p - s.offset.places), b) &&
-        detail::sub_i64(a, b, diff) && detail::mul_i64(diff, s.scale.mantissa, prod)) {
-      return detail::round_div_i64(prod, detail::pow10_i64(p + s.scale.places));
-    }
-  }
+  if (std::int64_t raw = 0; decimal_detail::scale_to_raw_i64(eu, s, raw)) return raw;
+  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
   detail::wide diff;
   detail::wide off;
   detail::widen(eu, p, diff);      // ≤ 63 + 60 bits, cannot fail
@@ -120,25 +134,10 @@ to_raw_decimal_slow(decimal eu, linear s, field f, bool ranged, range r) noexcep
   return to_raw_decimal(eu, s, f, ranged, r);
 }
 
-// compare()'s int64 path: false where compare() would need its wide path.
-[[gnu::always_inline]] constexpr bool compare_i64(decimal a, decimal b, int &out) noexcept {
-  if (a.places > decimal_max_places || b.places > decimal_max_places) return false;
-  std::int64_t x = a.mantissa;
-  std::int64_t y = b.mantissa;
-  if (!(a.places >= b.places
-            ? fieldcodec::detail::mul_i64(y, fieldcodec::detail::pow10_i64(a.places - b.places), y)
-            : fieldcodec::detail::mul_i64(x, fieldcodec::detail::pow10_i64(b.places - a.places),
-                                          x))) {
-    return false;
-  }
-  out = x < y ? -1 : (x > y ? 1 : 0);
-  return true;
-}
-
 // to_raw_decimal in int64 only, for a decimal whose places are a compile-time constant (a
 // template parameter, so that the copies stay distinct functions; see below): the checks in the
-// same order with the same errors, the same arithmetic as scale_to_raw's int64 path; false (nothing
-// decided) where that would need 128 bits.
+// same order with the same errors, compare()'s and scale_to_raw's own int64 paths; false
+// (nothing decided) where those would need 128 bits.
 template <std::uint8_t Places>
 [[gnu::always_inline]] constexpr bool to_raw_decimal_i64(std::int64_t mantissa, linear s, field f,
                                                          bool ranged, range r,
@@ -147,7 +146,10 @@ template <std::uint8_t Places>
   if (ranged) {
     int lo = 0;
     int hi = 0;
-    if (!compare_i64(eu, r.low, lo) || !compare_i64(eu, r.high, hi)) return false;
+    if (!fieldcodec::detail::compare_i64(eu, r.low, lo) ||
+        !fieldcodec::detail::compare_i64(eu, r.high, hi)) {
+      return false;
+    }
     if (lo < 0 || hi > 0) {
       out = errc::out_of_range;
       return true;
@@ -158,31 +160,8 @@ template <std::uint8_t Places>
     out = errc::invalid_argument;
     return true;
   }
-  const unsigned p = eu.places > s.offset.places ? eu.places : s.offset.places;
-  if (p + s.scale.places > decimal_max_places) return false;
-  namespace d = fieldcodec::detail;
-  std::int64_t a = 0;
-  std::int64_t b = 0;
-  std::int64_t diff = 0;
-  std::int64_t prod = 0;
-  if (!(d::mul_i64(eu.mantissa, d::pow10_i64(p - eu.places), a) &&
-        d::mul_i64(s.offset.mantissa, d::pow10_i64(p - s.offset.places), b) &&
-        d::sub_i64(a, b, diff) && d::mul_i64(diff, s.scale.mantissa, prod))) {
-    return false;
-  }
-  // round_div_i64(prod, 10^k) on the magnitude: half away from zero is ⌊(|prod| + 10^k / 2) /
-  // 10^k⌋ with prod's sign (10^k is even for k ≥ 1; |prod| + 10^k / 2 < 2^64). A division of an
-  // unsigned value by a constant is a multiplication; the signed quotient and remainder of
-  // round_div_i64 are not.
-  const unsigned k = p + s.scale.places;
-  std::int64_t raw = prod;
-  if (k != 0U) {
-    const auto den = static_cast<std::uint64_t>(d::pow10_i64(k));
-    const std::uint64_t mag =
-        prod < 0 ? 0U - static_cast<std::uint64_t>(prod) : static_cast<std::uint64_t>(prod);
-    const auto q = static_cast<std::int64_t>((mag + den / 2U) / den);
-    raw = prod < 0 ? -q : q;
-  }
+  std::int64_t raw = 0;
+  if (!scale_to_raw_i64(eu, s, raw)) return false;
   if (const status st = check_field(raw, f); !st) {
     out = st.error();
   } else {
