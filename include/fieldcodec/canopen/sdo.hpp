@@ -757,11 +757,17 @@ block_download_initiate_response(od::address a, std::uint8_t block_size, bool cr
                                                              std::span<const std::uint8_t> bytes,
                                                              bool last) noexcept {
   if (bytes.size() > 7U) return errc::too_long;
-  message m;
-  m.type = message_type::block_segment;
-  m.sequence = sequence;
-  m.last = last;
-  return encode(detail::with_bytes(m, bytes, 7));
+  if (sequence == 0U || sequence > max_block_size) return errc::out_of_range;
+  // written directly (encode(message)'s bytes and errors): a burst makes up to 127 of these
+  // per sub-block, and building a 28-byte message for each cost several times the copy
+  payload p{};
+  p[0] = static_cast<std::uint8_t>((last ? 0x80U : 0U) | sequence);
+  if (bytes.size() == 7U) { // every segment but the last: a copy of constant length
+    for (std::size_t i = 0; i < 7U; ++i) p[1U + i] = bytes[i];
+  } else {
+    for (std::size_t i = 0; i < bytes.size(); ++i) p[1U + i] = bytes[i];
+  }
+  return p;
 }
 /// Block acknowledgement (0xA2): the last segment received in sequence (0: none) and the size
 /// of the next sub-block. Errors: out_of_range.

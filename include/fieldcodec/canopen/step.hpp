@@ -21,7 +21,6 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -114,21 +113,13 @@ private:
     const std::size_t from = 7U * i < data.size() ? 7U * i : data.size();
     const std::size_t n = data.size() - from > 7U ? 7U : data.size() - from;
     const bool last = self.burst_.ends_transfer && i + 1U == self.size_;
-    // The bytes of sdo::encode_block_segment (sequence number | 0x80 on the last segment, the
-    // data, zeros), written straight into the frame: a burst makes up to 127 of them per call,
-    // and building a message to encode it costs several times the copy (issue 18's services
-    // benchmark). tests/canopen/burst_frames_test.cpp checks both agree on every sequence number,
-    // length and `last`.
     can_frame f;
     f.id = self.burst_.id;
     f.dlc = 8;
-    if (i + 1U > sdo::max_block_size) return f; // encode_block_segment refuses it: zeros
-    f.data[0] = static_cast<std::uint8_t>((i + 1U) | (last ? 0x80U : 0U));
-    if (n == 7U) { // every segment but the last: a copy of constant length (a few moves)
-      std::copy_n(data.begin() + static_cast<std::ptrdiff_t>(from), 7U, f.data.begin() + 1);
-    } else {
-      for (std::size_t k = 0; k < n; ++k) f.data[1U + k] = data[from + k];
-    }
+    // cannot fail: sequence 1..127 and at most 7 bytes (zeros if it ever did)
+    f.data =
+        sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U), data.subspan(from, n), last)
+            .value_or(sdo::payload{});
     return f;
   }
 
