@@ -69,14 +69,16 @@ bool same_number(const fieldcodec::od::number &a, const fieldcodec::od::number &
 }
 
 /// Same object as far as an EDS can say: PDO mapping only as mappable or not (EDS PDOMapping is
-/// 0/1; the CSV's rx/tx become 1), limits of scaled CSV entries are written as raw values.
+/// 0/1; the CSV's rx/tx become 1), limits of scaled CSV entries are written as raw values, a
+/// byte string has no limits in an EDS (F18: a CSV may give them; the CLI warns on export).
 /// (F6, fixed: DataType=0x0 is refused, so type codes survive unchanged.)
 bool same_entry(const gen::entry &a, const gen::entry &b) {
   return a.index == b.index && a.sub == b.sub && a.type_code == b.type_code &&
          a.access == b.access &&
          (a.pdo == fieldcodec::od::pdo_mapping::no) == (b.pdo == fieldcodec::od::pdo_mapping::no) &&
-         (a.scaled || (same_number(a.low, b.low) && same_number(a.high, b.high) &&
-                       a.low_nodeid == b.low_nodeid && a.high_nodeid == b.high_nodeid)) &&
+         (a.scaled || fieldcodec::od::is_byte_string(a.type) ||
+          (same_number(a.low, b.low) && same_number(a.high, b.high) &&
+           a.low_nodeid == b.low_nodeid && a.high_nodeid == b.high_nodeid)) &&
          same_number(a.default_value, b.default_value) && a.default_nodeid == b.default_nodeid &&
          a.default_text == b.default_text && a.size == b.size && a.other_keys == b.other_keys;
 }

@@ -226,6 +226,22 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
         (in.substr(in.size() - 4) == ".csv" || in.substr(in.size() - 4) == ".CSV")) {
       fieldcodec::gen::add_mandatory_objects(dict);
     }
+    // CiA 306 gives a byte string no LowLimit/HighLimit: the limits a CSV may give one (the
+    // range of the value a COMPAX BCD field encodes) are not written, and the user is told.
+    fieldcodec::gen::diagnostics lost;
+    lost.strict = cl.strict;
+    for (const auto &e : dict.entries) {
+      if (fieldcodec::od::is_byte_string(e.type) &&
+          (e.low || e.high || e.low_nodeid || e.high_nodeid)) {
+        lost.warning(cl.input, e.line, 0,
+                     "the limits of 0x" + fieldcodec::gen::hex(e.index, 4) + " sub " +
+                         std::to_string(e.sub) +
+                         " are not written to the EDS (CiA 306 has no limits for " +
+                         std::string(fieldcodec::od::name(e.type)) + ")");
+      }
+    }
+    lost.print(std::cerr, !cl.quiet);
+    if (lost.has_errors()) return 1;
     rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
   }
   return rc;
