@@ -252,11 +252,12 @@ private:
   [[nodiscard]] constexpr step upload_initiate(const message &m) noexcept {
     if (auto s = check_initiate(m, message_type::initiate_upload_response)) return *s;
     if (m.expedited) {
-      if (m.data_size > rx_.size()) {
+      if (m.size > rx_.size()) {
         return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
       }
-      for (std::size_t i = 0; i < m.data_size; ++i) rx_[i] = m.data[i];
-      count_ = m.data_size;
+      const auto bytes = m.value_bytes();
+      for (std::size_t i = 0; i < m.size; ++i) rx_[i] = bytes[i];
+      count_ = m.size;
       return done();
     }
     if (m.size_indicated && m.size > rx_.size()) {

@@ -245,7 +245,10 @@ private:
       return store_refused(c);
     }
     if (m.expedited) {
-      if (const auto c = store_->write(m.address, 0, m.bytes(), true); c != abort_code::none) {
+      const auto bytes = m.value_bytes();
+      if (const auto c = store_->write(m.address, 0, std::span<const std::uint8_t>(bytes).first(m.size),
+                                       true);
+          c != abort_code::none) {
         return store_refused(c);
       }
       return finish(download_response(m.address));
