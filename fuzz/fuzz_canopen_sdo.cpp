@@ -241,7 +241,8 @@ void server_mode(reader &r) {
         m.address == od::address{0x2000, 1}) {
       FUZZ_CHECK(m.size_indicated);
       const auto b = m.value_bytes();
-      FUZZ_CHECK(std::equal(b.begin(), b.begin() + m.size, value_before.begin(), value_before.end()));
+      FUZZ_CHECK(
+          std::equal(b.begin(), b.begin() + m.size, value_before.begin(), value_before.end()));
     }
   }
 }

@@ -156,7 +156,8 @@ TEST_CASE("expedited messages carry their data as a number") {
     CHECK(m.value_bytes()[0] == 0xD4);
     for (std::size_t i = n; i < 4U; ++i) CHECK(m.value_bytes()[i] == 0);
     // a value with bits past its size cannot be sent: nothing is dropped
-    if (n < 4U) CHECK(sdo::encode(expedited_message(n, v | (1U << (8U * n)))) == errc::out_of_range);
+    if (n < 4U)
+      CHECK(sdo::encode(expedited_message(n, v | (1U << (8U * n)))) == errc::out_of_range);
   }
   // unsized: always 4 bytes (0x22), the upload response too (0x42)
   CHECK(sdo::encode(expedited_message(4, 0x01020304U, false)).value() ==

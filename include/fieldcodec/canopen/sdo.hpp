@@ -236,7 +236,7 @@ struct message {
   od::address address{};
   std::uint16_t checksum = 0; ///< block end: CRC-16 of the data
   std::uint32_t size = 0;
-  std::uint32_t value = 0;            ///< expedited initiate: the data, little-endian
+  std::uint32_t value = 0; ///< expedited initiate: the data, little-endian
   abort_code abort = abort_code::none;
   std::array<std::uint8_t, 7> data{}; ///< segments: the data bytes
   std::uint8_t data_size = 0;         ///< segments: how many of `data` are data, 0..7
@@ -467,21 +467,25 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   return p;
 }
 
-// The table decoder stays out of line (issue 18, round 4): `decode` inlines into its callers
-// only while it is small (the straight path for expedited initiates plus a call); once the
-// expedited path no longer copied bytes, GCC inlined the table into `decode` and stopped
-// inlining `decode` into the SDO client and server (~30 instructions more per message). Built
-// for size (-Os, firmware) the compiler decides.
+// `decode(payload, direction)` is the straight path of expedited initiates plus a call of the
+// table decoder, which stays out of line (issue 18, round 4): inlined where it is called, a
+// caller's tests of the type fold and the message is built in the caller's frame. GCC's own
+// choice varied with what else a program holds (it inlined the table into `decode` and stopped
+// inlining `decode` into the SDO client and server: ~30 instructions more per message), so it
+// is said here. Built for size (-Os, firmware) the compiler decides.
 #if defined(__OPTIMIZE_SIZE__) || !defined(__GNUC__)
 #define FIELDCODEC_SDO_OUT_OF_LINE
+#define FIELDCODEC_SDO_INLINE
 #else
 #define FIELDCODEC_SDO_OUT_OF_LINE [[gnu::noinline]]
+#define FIELDCODEC_SDO_INLINE [[gnu::always_inline]]
 #endif
 
 namespace detail {
 /// decode through the command table: every command (decode takes expedited initiates first, by
 /// straight code that gives the same message).
-FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message> decode_by_table(const payload &p, direction d) noexcept {
+FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message>
+decode_by_table(const payload &p, direction d) noexcept {
   const unsigned b0 = p[0];
   const std::size_t ci = detail::command_for(d, p[0]);
   if (ci == std::size(detail::commands)) return errc::unknown_command;
@@ -543,7 +547,8 @@ FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message> decode_by_tab
 /// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
 /// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
 /// reported as they are. Errors: unknown_command (no such command in that direction).
-[[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
+FIELDCODEC_SDO_INLINE [[nodiscard]] constexpr result<message> decode(const payload &p,
+                                                                     direction d) noexcept {
   // The commonest message first (issue 18): an expedited initiate, 001x nn1s to the server
   // (download request), 010x nn1s to the client (upload response), built by straight code so
   // that a caller's tests of type and `expedited` fold after inlining. The table gives the
