@@ -143,7 +143,8 @@ public:
 
 private:
   /// Every frame but a block download segment (see on_frame).
-  [[nodiscard]] constexpr step on_any_frame(const can_frame &f, std::uint32_t now) noexcept {
+  FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr step on_any_frame(const can_frame &f,
+                                                                       std::uint32_t now) noexcept {
     if (!ch_.is_request(f)) return core_.make();
     // payload_of's check, reading the bytes in place (no copy of them through a result)
     if (const auto ok = expect_data(f, 8); !ok) {
