@@ -184,14 +184,14 @@ public:
           continue;
         }
         cfg = &rpdo_[rpdo_count_].c;
-        at = &rpdo_[rpdo_count_++].at;
+        at = &rpdo_[rpdo_count_++].pos;
       } else {
         if (tpdo_count_ == MaxTpdo) {
           st = errc::too_long;
           continue;
         }
         cfg = &tpdo_[tpdo_count_].c;
-        at = &tpdo_[tpdo_count_++].at;
+        at = &tpdo_[tpdo_count_++].pos;
       }
       const std::uint16_t base = is_rx ? pdo_index::rpdo_comm : pdo_index::tpdo_comm;
       if (!load(*cfg, *at, e.index, static_cast<std::uint16_t>(e.index - base + 1U),
@@ -443,13 +443,16 @@ private:
   /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
   /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
   /// load_mapping, the only place that changes a mapping, so it never goes stale.
+  struct resolved {
+    std::array<std::size_t, MaxEntries> at{};
+    bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
+  };
   struct no_positions {};
-  using positions =
-      std::conditional_t<by_position, std::array<std::size_t, MaxEntries>, no_positions>;
+  using positions = std::conditional_t<by_position, resolved, no_positions>;
 
   struct tx_slot {
     config c{};
-    [[no_unique_address]] positions at{};
+    [[no_unique_address]] positions pos{};
     std::array<std::uint8_t, 8> data{};
     std::uint32_t inhibit_until = 0;
     std::uint32_t event_due = 0;
@@ -470,7 +473,7 @@ private:
   };
   struct rx_slot {
     config c{};
-    [[no_unique_address]] positions at{};
+    [[no_unique_address]] positions pos{};
     std::array<std::uint8_t, 8> data{};
     std::uint32_t due = 0;
     std::uint8_t dlc = 0;
@@ -534,7 +537,7 @@ private:
     return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
   }
   [[nodiscard]] constexpr positions &positions_of(place p) noexcept {
-    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].at : tpdo_[p.slot].at;
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].pos : tpdo_[p.slot].pos;
   }
 
   // ----- parameter checks ------------------------------------------------------------------
@@ -634,9 +637,11 @@ private:
     }
     c.bytes = static_cast<std::uint8_t>((r.total_bits + 7U) / 8U);
     if constexpr (by_position) {
+      at.whole_bytes = true;
       for (std::size_t k = 0; k < c.count; ++k) {
         const pdo::mapping_entry &m = c.map[k];
-        at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
+        at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
+        if (m.bits % 8U != 0U) at.whole_bytes = false;
       }
     } else {
       (void)at;
@@ -654,23 +659,42 @@ private:
       return build_by_address(t);
     }
   }
-  /// build() by position: an object on whole bytes (every one but BOOLEAN of 1 bit and those
-  /// after it) is read straight into its bytes of the frame.
+  /// build() by position: a mapping of whole bytes (every one without a BOOLEAN of 1 bit) is
+  /// read straight into the frame's bytes, value by value.
   [[nodiscard]] constexpr bool build_at(tx_slot &t) noexcept {
     t.data = {};
+    const resolved &p = t.pos;
+    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits t.data
+      std::size_t byte = 0;
+      for (std::size_t k = 0; k < t.c.count; ++k) {
+        const pdo::mapping_entry &m = t.c.map[k];
+        const std::size_t n = m.bits / 8U;
+        if (p.at[k] != sdo::no_position) {
+          std::size_t total = 0;
+          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(t.data.data() + byte, n),
+                              total) != abort_code::none) {
+            return false;
+          }
+        } else if (!m.is_dummy()) {
+          return false; // the store has no such object
+        }
+        byte += n;
+      }
+      return true;
+    }
     std::size_t offset = 0;
     for (std::size_t k = 0; k < t.c.count; ++k) {
       const pdo::mapping_entry &m = t.c.map[k];
       if (!m.is_dummy()) {
-        if (t.at[k] == sdo::no_position) return false;
+        if (p.at[k] == sdo::no_position) return false;
         const std::size_t n = (m.bits + 7U) / 8U;
         std::size_t total = 0;
         if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
           const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
-          if (store_->read_at(t.at[k], 0, out, total) != abort_code::none) return false;
+          if (store_->read_at(p.at[k], 0, out, total) != abort_code::none) return false;
         } else {
           std::array<std::uint8_t, 8> v{};
-          if (store_->read_at(t.at[k], 0, v, total) != abort_code::none) return false;
+          if (store_->read_at(p.at[k], 0, v, total) != abort_code::none) return false;
           std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
           if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
           if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
@@ -702,7 +726,7 @@ private:
     can_frame f;
     f.id = t.c.id();
     f.dlc = t.c.bytes;
-    for (std::size_t k = 0; k < t.c.bytes; ++k) f.data[k] = t.data[k];
+    f.data = t.data; // zero past c.bytes: build writes only the mapping's bits
     out_.push(f);
   }
   /// Sample and send a TPDO now; restarts its inhibit time and event timer.
@@ -733,6 +757,7 @@ private:
   /// that passed pdo::check_mapping has bits = 8 × width for fixed-size types, 1 or 8 for a
   /// BOOLEAN (width 1) and whole bytes for byte strings.
   constexpr void apply_at(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    const resolved &p = r.pos;
     std::size_t offset = 0;
     std::uint8_t refused = 0;
     for (std::size_t k = 0; k < r.c.count; ++k) {
@@ -740,16 +765,17 @@ private:
       if (!m.is_dummy()) {
         const std::size_t n = (m.bits + 7U) / 8U;
         abort_code c = abort_code::general_error;
-        if (r.at[k] == sdo::no_position) {
+        if (p.at[k] == sdo::no_position) {
           // the store has no such object: refused, as its write would refuse it
-        } else if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
-          c = store_->write_at(r.at[k], 0, data.subspan(offset / 8U, n), true);
+        } else if ((p.whole_bytes || ((offset | m.bits) % 8U) == 0U) &&
+                   offset / 8U + n <= data.size()) {
+          c = store_->write_at(p.at[k], 0, data.subspan(offset / 8U, n), true);
         } else {
           std::array<std::uint8_t, 8> v{};
           const auto raw = pdo::unpack(data, offset, m.bits);
           if (raw && store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
                                     byte_order::little)) {
-            c = store_->write_at(r.at[k], 0, std::span<const std::uint8_t>(v).first(n), true);
+            c = store_->write_at(p.at[k], 0, std::span<const std::uint8_t>(v).first(n), true);
           }
         }
         if (c != abort_code::none) ++refused;
