@@ -45,8 +45,10 @@
 // decides and keeps one copy.
 #if defined(__OPTIMIZE_SIZE__) || !defined(__GNUC__)
 #define FIELDCODEC_NX_INLINE
+#define FIELDCODEC_NX_OUTLINE
 #else
 #define FIELDCODEC_NX_INLINE [[gnu::always_inline]]
+#define FIELDCODEC_NX_OUTLINE [[gnu::noinline]]
 #endif
 
 namespace fieldcodec::compax::nx {
@@ -925,8 +927,9 @@ struct content_reader {
         static_cast<std::uint32_t>(in[at + 4U]) | (static_cast<std::uint32_t>(in[at + 5U]) << 8U);
     const std::uint64_t u = lo | (std::uint64_t{hi} << 32U);
     at += dsp_format::size;
-    constexpr std::uint64_t sign = std::uint64_t{1} << 47U;
-    return static_cast<std::int64_t>((u ^ sign) - sign);
+    // sign extension from 48 bits by an arithmetic shift (C++20): a shift pair instead of an
+    // exclusive or and a subtraction of a 64-bit constant
+    return static_cast<std::int64_t>(u << 16U) >> 16U;
   }
 };
 
@@ -1163,6 +1166,35 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr status read_content(content_reader 
   return {};
 }
 
+inline constexpr std::uint8_t code_posr = 0x52;
+inline constexpr std::uint8_t code_speed = 0x53;
+inline constexpr std::uint8_t code_accel = 0x4C;
+static_assert(families[2] == family{op::posr, code_posr, shape::dsp, true, true} &&
+                  families[3] == family{op::speed, code_speed, shape::dsp, true, true} &&
+                  families[5] == family{op::accel, code_accel, shape::word, false, true},
+              "decode_record's straight path reads the value forms of these three families");
+
+/// The argument a value-form 6-byte field of a family with a special form (POSA, POSR, SPEED)
+/// reads as: six 0xFF bytes are the special, anything else a value or raw DSP number (as
+/// read_simple_arg reads it).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg dsp_or_special(std::int64_t raw) noexcept {
+  return raw == -1 ? special() : from_dsp(dsp_number{raw});
+}
+
+/// decode_record's general reader (the content after the length byte). Out of line, so that a
+/// caller that inlines decode_record keeps the straight path small: inlined, this code's
+/// registers were saved and restored on every call (issue 18, round 4).
+FIELDCODEC_NX_OUTLINE [[nodiscard]] constexpr result<command>
+read_record_content(std::span<const std::uint8_t> content) noexcept {
+  command c{};
+  content_reader rd{content};
+  if (auto s = read_content(rd, c); !s) {
+    if (s.error() == errc::truncated) return errc::bad_length; // length too short for it
+    return s.error();
+  }
+  return c;
+}
+
 } // namespace detail
 
 /// Content bytes (no length byte) → command. All bytes must be used. DSP values on the 0.001
@@ -1189,13 +1221,28 @@ decode_record(std::span<const std::uint8_t> in) noexcept {
   const std::size_t n = in[0];
   if (n == 0U || n > content_max) return errc::bad_length;
   if (in.size() < 1U + n) return errc::truncated;
-  command c{};
-  detail::content_reader rd{in.subspan(1, n)};
-  if (auto s = detail::read_content(rd, c); !s) {
-    if (s.error() == errc::truncated) return errc::bad_length; // length too short for it
-    return s.error();
+  const auto content = in.subspan(1, n);
+#ifndef __OPTIMIZE_SIZE__
+  // Straight path for the combined positioning record, POSR v SPEED v ACCEL v (all value
+  // forms; 17 content bytes): three code bytes compared, three fields read, no table look-up,
+  // no dispatch and no combination check (the combination is allowed). It reads exactly what
+  // the general reader reads (tests/compax/nx_speed_test.cpp).
+  if (n == 17U && content[0] == detail::code_posr && content[7] == detail::code_speed &&
+      content[14] == detail::code_accel) {
+    detail::content_reader rd{content, 1};
+    command c{};
+    c.operation = op::posr;
+    c.argument = detail::dsp_or_special(rd.dsp());
+    ++rd.at;
+    c.second_operation = op::speed;
+    c.second_argument = detail::dsp_or_special(rd.dsp());
+    ++rd.at;
+    c.third_operation = op::accel;
+    c.third_argument = arg{arg_kind::value, 0, rd.u16()}; // ACCEL has no special form
+    return c;
   }
-  return c;
+#endif
+  return detail::read_record_content(content);
 }
 
 } // namespace fieldcodec::compax::nx
