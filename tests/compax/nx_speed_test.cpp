@@ -271,7 +271,7 @@ void check_decode(std::span<const std::uint8_t> in) {
 
 } // namespace
 
-TEST_CASE("nx: dsp_raw, constant_raw and scaled_to give the reference's results") {
+TEST_CASE("nx: dsp_raw, constant_raw, dsp_of and scaled_to give the reference's results") {
   rng g(18);
   for (int i = 0; i < 300'000; ++i) {
     const std::int64_t raw = pick_number(g);
@@ -280,6 +280,17 @@ TEST_CASE("nx: dsp_raw, constant_raw and scaled_to give the reference's results"
     REQUIRE(to_ref(nx::constant_raw(fc::compax::dsp_number{raw})) ==
             ref::constant_raw(fc::compax::dsp_number{raw}));
     const auto places = static_cast<std::uint8_t>(g.below(g.chance(5) ? 256 : 24));
+    // dsp_of (round 4 tests dsp_raw first): every kind, also outside the enum
+    const nx::arg a{static_cast<nx::arg_kind>(g.below(g.chance(5) ? 256 : 5)),
+                    g.chance(50) ? std::uint8_t{0} : places, raw};
+    const auto d = nx::dsp_of(a);
+    const auto rd = ref::dsp_of(to_ref(a));
+    REQUIRE(d.has_value() == rd.has_value());
+    if (d) {
+      REQUIRE(d.value() == rd.value());
+    } else {
+      REQUIRE(d.error() == rd.error());
+    }
     const auto target = static_cast<std::uint8_t>(g.below(4));
     const auto s = nx::detail::scaled_to(raw, places, target);
     const auto rs = ref::detail::scaled_to(raw, places, target);

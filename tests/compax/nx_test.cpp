@@ -115,6 +115,10 @@ static_assert(cx::dsp_number{cx::dsp_format::raw_max + 1}.exact_thousandths().er
 static_assert(nx::dsp_of(nx::integer(250)).value().raw == 250 * cx::dsp_format::one);
 static_assert(nx::dsp_of(nx::value(decimal{-15, 1})).value() == mm(-1'500));
 static_assert(nx::dsp_of(nx::dsp_raw(3)).value().raw == 3);
+static_assert(nx::dsp_of(nx::arg{nx::arg_kind::dsp_raw, 0, std::int64_t{1} << 47}).error() ==
+              errc::overflow);
+static_assert(nx::dsp_of(nx::arg{nx::arg_kind::dsp_raw, 0, -(std::int64_t{1} << 47)}).value().raw ==
+              -(std::int64_t{1} << 47));
 static_assert(nx::dsp_of(nx::parameter(3)).error() == errc::type_mismatch);
 static_assert(nx::dsp_of(nx::special()).error() == errc::type_mismatch);
 static_assert(nx::dsp_of(nx::value(decimal{1, 4})).error() == errc::not_representable);

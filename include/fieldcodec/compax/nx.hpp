@@ -118,10 +118,9 @@ namespace detail {
   return ((static_cast<std::uint64_t>(raw) * 1000U + 500U) & mask) <= 1000U;
 }
 
-/// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
-/// (kind value), otherwise the raw integer (kind dsp_raw).
-FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
-  if (!may_be_on_grid(n.raw)) return arg{arg_kind::dsp_raw, 0, n.raw};
+/// The argument of a raw value that passed may_be_on_grid: the decimal it stands for (kind
+/// value) when it is on the grid, else the raw integer (kind dsp_raw).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp_near_grid(dsp_number n) noexcept {
   auto t = n.exact_thousandths();
   if (!t) return arg{arg_kind::dsp_raw, 0, n.raw};
   // the normalized decimal of t / 1000 (at most 3 trailing zeros to drop)
@@ -132,6 +131,19 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept
     --places;
   }
   return arg{arg_kind::value, places, v};
+}
+/// The same, out of line: a reader whose caller then branches on the argument keeps fewer
+/// values in registers when the rare case is a call (issue 18, round 4: decode_record's
+/// straight path 100 -> 87 Ir). An encoder inlines it: there the call cost 15 Ir.
+FIELDCODEC_NX_OUTLINE [[nodiscard]] constexpr arg from_dsp_near_grid_call(dsp_number n) noexcept {
+  return from_dsp_near_grid(n);
+}
+
+/// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
+/// (kind value), otherwise the raw integer (kind dsp_raw).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
+  if (!may_be_on_grid(n.raw)) return arg{arg_kind::dsp_raw, 0, n.raw};
+  return from_dsp_near_grid(n);
 }
 
 /// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
@@ -615,8 +627,9 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<dsp_number> to_dsp(decimal v
 /// Errors: type_mismatch (parameter, variable or special), not_representable (a value with more
 /// than 3 decimal places), overflow (outside the DSP range).
 [[nodiscard]] constexpr result<dsp_number> dsp_of(const arg &a) noexcept {
-  if (a.kind != arg_kind::value && a.kind != arg_kind::dsp_raw) return errc::type_mismatch;
-  return detail::to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
+  if (a.kind == arg_kind::dsp_raw) return detail::to_dsp(a.value(), true);
+  if (a.kind != arg_kind::value) return errc::type_mismatch;
+  return detail::to_dsp(a.value(), false);
 }
 
 // ------------------------------------------------------------------ encoder
@@ -1178,7 +1191,9 @@ static_assert(families[2] == family{op::posr, code_posr, shape::dsp, true, true}
 /// reads as: six 0xFF bytes are the special, anything else a value or raw DSP number (as
 /// read_simple_arg reads it).
 FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg dsp_or_special(std::int64_t raw) noexcept {
-  return raw == -1 ? special() : from_dsp(dsp_number{raw});
+  if (raw == -1) return special();
+  if (!may_be_on_grid(raw)) return arg{arg_kind::dsp_raw, 0, raw};
+  return from_dsp_near_grid_call(dsp_number{raw});
 }
 
 /// decode_record's general reader (the content after the length byte). Out of line, so that a
@@ -1218,18 +1233,15 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<command>
 decode_record(std::span<const std::uint8_t> in) noexcept {
   if (in.empty()) return errc::truncated;
   if (in.size() > record_size) return errc::too_long;
-  const std::size_t n = in[0];
-  if (n == 0U || n > content_max) return errc::bad_length;
-  if (in.size() < 1U + n) return errc::truncated;
-  const auto content = in.subspan(1, n);
 #ifndef __OPTIMIZE_SIZE__
   // Straight path for the combined positioning record, POSR v SPEED v ACCEL v (all value
-  // forms; 17 content bytes): three code bytes compared, three fields read, no table look-up,
-  // no dispatch and no combination check (the combination is allowed). It reads exactly what
-  // the general reader reads (tests/compax/nx_speed_test.cpp).
-  if (n == 17U && content[0] == detail::code_posr && content[7] == detail::code_speed &&
-      content[14] == detail::code_accel) {
-    detail::content_reader rd{content, 1};
+  // forms; length byte 17, so the length checks below pass): three code bytes compared, three
+  // fields read, no table look-up, no dispatch and no combination check (the combination is
+  // allowed). It reads exactly what the general reader reads (tests/compax/nx_speed_test.cpp).
+  // Built for size, only the general reader is kept.
+  if (in[0] == 17U && in.size() >= 18U && in[1] == detail::code_posr &&
+      in[8] == detail::code_speed && in[15] == detail::code_accel) {
+    detail::content_reader rd{in, 2};
     command c{};
     c.operation = op::posr;
     c.argument = detail::dsp_or_special(rd.dsp());
@@ -1242,7 +1254,10 @@ decode_record(std::span<const std::uint8_t> in) noexcept {
     return c;
   }
 #endif
-  return detail::read_record_content(content);
+  const std::size_t n = in[0];
+  if (n == 0U || n > content_max) return errc::bad_length;
+  if (in.size() < 1U + n) return errc::truncated;
+  return detail::read_record_content(in.subspan(1, n));
 }
 
 } // namespace fieldcodec::compax::nx
