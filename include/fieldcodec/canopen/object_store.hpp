@@ -239,8 +239,11 @@ public:
     return abort_code::none;
   }
 
-  [[nodiscard]] constexpr abort_code write(od::address a, std::size_t offset,
-                                           std::span<const std::uint8_t> part, bool last) noexcept {
+  /// Out of line (g++, clang): an SDO server inlines the flush of its buffer, a call of write,
+  /// into its segment loop, and with the whole of write inlined there g++ stopped inlining that
+  /// loop (block download: +20 % Ir). write_at, the PDO engine's, keeps it inline.
+  [[nodiscard, gnu::noinline]] constexpr abort_code
+  write(od::address a, std::size_t offset, std::span<const std::uint8_t> part, bool last) noexcept {
     return write_located(locate(a), a, offset, part, last);
   }
 
@@ -452,9 +455,9 @@ private:
     return abort_code::none;
   }
 
-  /// Copy n bytes; the widths of numbers in one move each (a constant length, which the compiler
-  /// turns into a load and a store), others byte by byte (a PDO's values are 1 to 8 bytes: a
-  /// call of memmove would cost more than the loop).
+  /// Copy n bytes: the widths of numbers (a PDO's values) as constant-length copies, which the
+  /// compiler turns into one load and one store; other lengths (SDO parts, strings) as one
+  /// memmove.
   static constexpr void copy_bytes(std::uint8_t *to, const std::uint8_t *from,
                                    std::size_t n) noexcept {
     switch (n) {
@@ -462,9 +465,7 @@ private:
     case 2: std::copy_n(from, 2, to); return;
     case 4: std::copy_n(from, 4, to); return;
     case 8: std::copy_n(from, 8, to); return;
-    default:
-      for (std::size_t i = 0; i < n; ++i) to[i] = from[i];
-      return;
+    default: std::copy_n(from, n, to); return;
     }
   }
 
