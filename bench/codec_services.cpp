@@ -195,9 +195,10 @@ void fill_sdo_inputs() {
   }
 }
 
-template <class Frames>
-void push_all(transfer_out &out, const Frames &fs) {
-  for (const co::can_frame f : fs) out.push(f);
+/// The transmit queue takes a step's frames the way a driver with a queue would: as many as
+/// fit, in one call (frames::copy_to: a burst's segments in one loop, straight into the queue).
+void push_all(transfer_out &out, const co::frames &fs) {
+  out.n += fs.copy_to(std::span<co::can_frame>(out.tx).subspan(out.n));
 }
 
 /// fieldcodec: sdo::server answering a block upload of 889 bytes from the store.

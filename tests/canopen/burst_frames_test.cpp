@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -72,4 +73,127 @@ TEST_CASE("a burst's frames equal encode_block_segment's for every count, length
   }
   CHECK(compared > 100000U);
   CHECK(mismatches == 0U);
+}
+
+namespace {
+
+/// copy_to(out, first) against operator[]: k = min(out.size(), size() − first) frames written,
+/// each equal to frames[first + j]; the rest of `out` untouched.
+bool copy_matches(const co::frames &fs, std::size_t first, std::size_t room) {
+  const co::can_frame marker{0x7FF, true, 5, {0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE, 0xEE}};
+  std::vector<co::can_frame> out(room + 2U, marker);
+  const std::size_t k = fs.copy_to(std::span<co::can_frame>(out).first(room), first);
+  const std::size_t left = first < fs.size() ? fs.size() - first : 0U;
+  if (k != std::min(room, left)) return false;
+  for (std::size_t j = 0; j < k; ++j) {
+    if (!(out[j] == fs[first + j])) return false;
+  }
+  for (std::size_t j = k; j < out.size(); ++j) {
+    if (!(out[j] == marker)) return false;
+  }
+  return true;
+}
+
+constexpr bool copy_in_constant_expression() {
+  std::array<co::can_frame, 3> out{};
+  const auto burst = co::frames::block_segments(0x585, bytes10, 2, true);
+  return burst.copy_to(out) == 2U && out[0] == burst[0] && out[1] == burst[1] &&
+         out[2] == co::can_frame{};
+}
+static_assert(copy_in_constant_expression());
+
+} // namespace
+
+TEST_CASE(
+    "copy_to writes a burst's frames equal to operator[]'s for every shape, window and room") {
+  std::vector<std::uint8_t> data(7U * 127U + 8U);
+  std::uint32_t x = 77;
+  for (auto &b : data) {
+    x = x * 1103515245U + 12345U;
+    b = static_cast<std::uint8_t>(x >> 16U);
+  }
+  std::size_t checked = 0;
+  std::size_t failures = 0;
+  for (unsigned count = 1; count <= 127U; ++count) {
+    // the last segment carries 0..7 bytes (0: the window ends before it, zeros)
+    for (std::size_t last_len = 0; last_len <= 7U; ++last_len) {
+      const std::size_t size = 7U * (count - 1U) + last_len;
+      // a window of the data at an offset (as a machine cuts its next sub-block)
+      for (const std::size_t offset : {std::size_t{0}, std::size_t{3}}) {
+        const auto window = std::span<const std::uint8_t>(data).subspan(offset, size);
+        for (const bool ends : {false, true}) {
+          const auto burst =
+              co::frames::block_segments(0x5FF, window, static_cast<std::uint8_t>(count), ends);
+          // the whole burst at once, into exactly enough and into more room
+          if (!copy_matches(burst, 0, count)) ++failures;
+          if (!copy_matches(burst, 0, count + 5U)) ++failures;
+          // the next k frames from a position: a queue with room for fewer than the burst
+          for (const std::size_t first :
+               {std::size_t{1}, std::size_t{count / 2U}, std::size_t{count - 1U}}) {
+            for (const std::size_t room : {std::size_t{0}, std::size_t{1}, std::size_t{7}}) {
+              if (!copy_matches(burst, first, room)) ++failures;
+              ++checked;
+            }
+          }
+          // past the end: nothing written
+          if (!copy_matches(burst, count, 4)) ++failures;
+          if (!copy_matches(burst, count + 9U, 4)) ++failures;
+          checked += 4U;
+        }
+      }
+    }
+  }
+  CHECK(checked == 127U * 8U * 2U * 2U * 13U);
+  CHECK(failures == 0U);
+}
+
+TEST_CASE("copy_to in pieces gives the whole burst in order") {
+  std::array<std::uint8_t, 7U * 127U> data{};
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 31U + 1U);
+  const auto burst = co::frames::block_segments(0x585, data, 127, true);
+  std::vector<co::can_frame> queue;
+  std::array<co::can_frame, 5> room{}; // a transmit queue that frees 5 places at a time
+  std::size_t i = 0;
+  while (i < burst.size()) {
+    const std::size_t k = burst.copy_to(room, i);
+    REQUIRE(k > 0U);
+    queue.insert(queue.end(), room.begin(), room.begin() + static_cast<std::ptrdiff_t>(k));
+    i += k;
+  }
+  REQUIRE(queue.size() == 127U);
+  for (std::size_t j = 0; j < queue.size(); ++j) CHECK(queue[j] == burst[j]);
+  CHECK(queue.back().data[0] == 0xFF); // 0x80 | 127: the last segment of the transfer
+  CHECK(queue.front() == co::can_frame{0x585, false, 8, {0x01, 1, 32, 63, 94, 125, 156, 187}});
+}
+
+TEST_CASE("copy_to of no frames, one frame and a list of frames") {
+  const co::can_frame marker{0x123, false, 1, {9}};
+  std::array<co::can_frame, 3> out{marker, marker, marker};
+  // empty: nothing written, 0 returned, whatever the room and position
+  CHECK(co::frames{}.copy_to(out) == 0U);
+  CHECK(co::frames{}.copy_to(out, 2) == 0U);
+  CHECK(out[0] == marker);
+  // one frame
+  const co::can_frame one{0x605, false, 8, {0x40, 0x00, 0x10, 0, 0, 0, 0, 0}};
+  const co::frames single(one);
+  CHECK(single.copy_to(std::span<co::can_frame>(out).first(0)) == 0U);
+  CHECK(out[0] == marker);
+  CHECK(single.copy_to(out, 1) == 0U);
+  CHECK(out[0] == marker);
+  CHECK(single.copy_to(out) == 1U);
+  CHECK(out[0] == one);
+  CHECK(out[1] == marker);
+  // a list: from a position, into less room than is left
+  const std::array<co::can_frame, 4> list{
+      co::can_frame{0x181, false, 1, {1}}, co::can_frame{0x182, false, 1, {2}},
+      co::can_frame{0x183, false, 1, {3}}, co::can_frame{0x184, false, 1, {4}}};
+  const co::frames many{std::span<const co::can_frame>(list)};
+  out = {marker, marker, marker};
+  CHECK(many.copy_to(std::span<co::can_frame>(out).first(2), 1) == 2U);
+  CHECK(out[0] == list[1]);
+  CHECK(out[1] == list[2]);
+  CHECK(out[2] == marker);
+  CHECK(many.copy_to(out, 3) == 1U);
+  CHECK(out[0] == list[3]);
+  CHECK(many.copy_to(out, 4) == 0U);
 }

@@ -5,13 +5,18 @@
 //   for (const can_frame &f : s.send) transmit(f);
 //   if (s.deadline) sleep_until(*s.deadline);   // poll(now) at the latest then
 //
+// or, for a transmit queue that takes several frames at once (a burst in one tight loop):
+//
+//   for (std::size_t i = 0; i < s.send.size();) i += s.send.copy_to(queue_room(), i);
+//
 // `frames` needs no heap and holds no copies of large data. It is one of:
 // * nothing, or one frame held inline (every SDO request and response);
 // * a span of frames the machine owns (for services that send several frames at once);
 // * a burst of SDO block segments: a run of 1..127 frames on one COB-ID cut from a span of
 //   bytes the machine borrows (byte 0 = sequence number 1..n, the last one of a transfer with
 //   bit 7 set, then 7 data bytes). The frames are made when the caller reads them, so a burst of
-//   127 segments costs no memory; the caller may also send them as its transmit queue frees up.
+//   127 segments costs no memory; the caller may also send them as its transmit queue frees up
+//   (`copy_to` writes the next k frames into the caller's queue in one call).
 // The frames (and the bytes a burst refers to) stay valid until the next call into the machine.
 //
 // Deadlines are absolute times in the caller's own millisecond counter (the `now` passed in);
@@ -50,7 +55,9 @@ public:
     f.burst_ = {id, data, ends_transfer};
     f.size_ = count;
     f.kind_ = kind::burst;
-    f.make_ = &frames::segment; // only code that builds a burst links the segment encoder
+    // only code that builds a burst links the segment encoder
+    f.make_ = &frames::segment;
+    f.write_ = &frames::segments;
     return f;
   }
 
@@ -68,6 +75,25 @@ public:
     case kind::none: break;
     }
     return {};
+  }
+
+  /// Write frames `first`, `first` + 1, … into `out`, as many as fit: k = min(out.size(),
+  /// size() − first) frames (none when `first` ≥ size()), each equal to (*this)[first + j].
+  /// Returns k. One call per queue refill instead of one per frame: a burst's segments are made
+  /// in one loop straight into `out`; `frames` stays lazy (nothing is held beyond the span).
+  constexpr std::size_t copy_to(std::span<can_frame> out, std::size_t first = 0) const noexcept {
+    if (first >= size_) return 0;
+    const std::size_t k = out.size() < size_ - first ? out.size() : size_ - first;
+    if (k == 0U) return 0; // no room
+    switch (kind_) {
+    case kind::one: out[0] = one_; break;
+    case kind::list:
+      for (std::size_t j = 0; j < k; ++j) out[j] = list_[first + j];
+      break;
+    case kind::burst: write_(*this, first, out.first(k)); break;
+    case kind::none: break;
+    }
+    return k;
   }
 
   class iterator {
@@ -108,6 +134,8 @@ private:
     bool ends_transfer = false;
   };
 
+  /// Segment i (from 0) of the burst: sequence number i + 1, bytes [7 i, 7 i + 7) of the data,
+  /// zero-padded; the last flag on the burst's last frame if it ends the transfer.
   [[nodiscard]] static constexpr can_frame segment(const frames &self, std::size_t i) noexcept {
     const auto data = self.burst_.data;
     const std::size_t from = 7U * i < data.size() ? 7U * i : data.size();
@@ -122,6 +150,12 @@ private:
             .value_or(sdo::payload{});
     return f;
   }
+  /// Segments first, first + 1, … into `out`: the loop of copy_to (segment() inlined, one call
+  /// per burst instead of one per frame).
+  static constexpr void segments(const frames &self, std::size_t first,
+                                 std::span<can_frame> out) noexcept {
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] = segment(self, first + j);
+  }
 
   can_frame one_{};
   std::span<const can_frame> list_{};
@@ -129,6 +163,7 @@ private:
   std::size_t size_ = 0;
   kind kind_ = kind::none;
   can_frame (*make_)(const frames &, std::size_t) = nullptr;
+  void (*write_)(const frames &, std::size_t, std::span<can_frame>) = nullptr;
 };
 
 /// What one call into a machine produced: the frames to send, the state after the call, and
