@@ -41,7 +41,8 @@ static_assert(co::frames::block_segments(0x585, bytes10, 2, false)[0] ==
 
 } // namespace
 
-TEST_CASE("a burst's frames equal encode_block_segment's for every count, length and end") {
+TEST_CASE("a burst's frames (operator[] and copy_to) equal encode_block_segment's for every count, "
+          "length and end") {
   std::vector<std::uint8_t> data(7U * 255U + 8U);
   std::uint32_t x = 2024;
   for (auto &b : data) {
@@ -68,10 +69,20 @@ TEST_CASE("a burst's frames equal encode_block_segment's for every count, length
           ++i;
           ++compared;
         }
+        // copy_to's loop (full segments apart from the rest) makes the same frames
+        std::vector<co::can_frame> copied(count);
+        if (burst.copy_to(copied) != count) ++mismatches;
+        for (std::size_t j = 0; j < count; ++j) {
+          if (!(copied[j] ==
+                reference_segment(0x5FF, window, static_cast<std::uint8_t>(count), ends, j))) {
+            ++mismatches;
+          }
+          ++compared;
+        }
       }
     }
   }
-  CHECK(compared > 100000U);
+  CHECK(compared > 200000U);
   CHECK(mismatches == 0U);
 }
 

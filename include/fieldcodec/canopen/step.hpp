@@ -154,7 +154,24 @@ private:
   /// per burst instead of one per frame).
   static constexpr void segments(const frames &self, std::size_t first,
                                  std::span<can_frame> out) noexcept {
-    for (std::size_t j = 0; j < out.size(); ++j) out[j] = segment(self, first + j);
+    const auto data = self.burst_.data;
+    // segments [first, full) carry 7 bytes of data and are not the transfer's last: the same
+    // encoder with what segment() would compute for them known in the loop
+    std::size_t full = data.size() / 7U;
+    if (self.burst_.ends_transfer && full >= self.size_ && self.size_ > 0U) full = self.size_ - 1U;
+    std::size_t j = 0;
+    for (; j < out.size() && first + j < full; ++j) {
+      const std::size_t i = first + j;
+      can_frame &f = out[j];
+      f.id = self.burst_.id;
+      f.rtr = false;
+      f.dlc = 8;
+      // cannot fail: sequence 1..127 (zeros if it ever did)
+      f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U),
+                                         data.subspan(7U * i, 7U), false)
+                   .value_or(sdo::payload{});
+    }
+    for (; j < out.size(); ++j) out[j] = segment(self, first + j); // the rest as segment() does
   }
 
   can_frame one_{};
