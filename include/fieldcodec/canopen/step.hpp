@@ -55,9 +55,8 @@ public:
     f.burst_ = {id, data, ends_transfer};
     f.size_ = count;
     f.kind_ = kind::burst;
-    // only code that builds a burst links the segment encoder
+    // only code that builds a burst, or calls copy_to, links the segment encoder
     f.make_ = &frames::segment;
-    f.write_ = &frames::segments;
     return f;
   }
 
@@ -81,6 +80,8 @@ public:
   /// size() − first) frames (none when `first` ≥ size()), each equal to (*this)[first + j].
   /// Returns k. One call per queue refill instead of one per frame: a burst's segments are made
   /// in one loop straight into `out`; `frames` stays lazy (nothing is held beyond the span).
+  /// The loop is called directly (no pointer in `frames`), so firmware that never calls copy_to
+  /// does not link it, and firmware that does links the segment encoder even without bursts.
   constexpr std::size_t copy_to(std::span<can_frame> out, std::size_t first = 0) const noexcept {
     if (first >= size_) return 0;
     const std::size_t k = out.size() < size_ - first ? out.size() : size_ - first;
@@ -90,7 +91,7 @@ public:
     case kind::list:
       for (std::size_t j = 0; j < k; ++j) out[j] = list_[first + j];
       break;
-    case kind::burst: write_(*this, first, out.first(k)); break;
+    case kind::burst: segments(*this, first, out.first(k)); break;
     case kind::none: break;
     }
     return k;
@@ -180,7 +181,6 @@ private:
   std::size_t size_ = 0;
   kind kind_ = kind::none;
   can_frame (*make_)(const frames &, std::size_t) = nullptr;
-  void (*write_)(const frames &, std::size_t, std::span<can_frame>) = nullptr;
 };
 
 /// What one call into a machine produced: the frames to send, the state after the call, and
