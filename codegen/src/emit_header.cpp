@@ -503,7 +503,6 @@ void emit_commands(writer &o, const dictionary &d) {
   o.lit("}};\n\ninline constexpr od::command_table "
         "table{commands};\nstatic_assert(table.is_valid());\n\n");
   symbols sym(d.commands.size());
-  std::string want;
   for (std::size_t i = 0; i < d.commands.size(); ++i) {
     const auto &c = d.commands[i];
     const auto suffix = lower_hex4(c.code);
@@ -567,8 +566,8 @@ std::string emit_header(const dictionary &d) {
   }
   // Names, assigned in index order (object, then its named sub-objects): a VAR object's single
   // entry and every named sub-object become standalone od::descriptor constants, ARRAY/RECORD
-  // objects od::object views into the tables. Each name is built in `want` (the object's name,
-  // or the object's symbol, '_' and the sub-object's name) and kept by `sym`.
+  // objects od::object views into the tables. A name is the file's symbol or is built from the
+  // object's name (a sub-object's: the object's C++ name, '_' and its own), `sym` keeps it.
   struct view {
     std::string_view symbol;
     const object_info *info;
@@ -578,27 +577,27 @@ std::string emit_header(const dictionary &d) {
   std::vector<bool> is_var(d.entries.size(), false);
   std::vector<view> views;
   symbols sym(d.entries.size() + d.objects.size());
+  // A name is built in `scratch` (grown, never shrunk: no clearing per name) or is the file's
+  // symbol as it is; `want` holds a sub-object's "<object>_sub<N>".
+  std::string scratch;
   std::string want;
-  // `want` = prefix + the identifier of `name` (nothing when it has none): its length
-  const auto identifier_into_want = [&want](std::string_view prefix, std::string_view name) {
-    want.resize(prefix.size() + identifier_capacity(name.size()));
-    if (!prefix.empty()) std::memcpy(want.data(), prefix.data(), prefix.size());
-    const std::size_t n = write_identifier(want.data() + prefix.size(), name);
-    want.resize(prefix.size() + n);
-    return n;
+  // prefix + the identifier of `name` (nothing after the prefix when the name has none)
+  const auto identifier = [&scratch](std::string_view prefix, std::string_view name) {
+    const std::size_t need = prefix.size() + identifier_capacity(name.size());
+    if (scratch.size() < need) scratch.resize(std::max(need, 2U * scratch.size()));
+    if (!prefix.empty()) std::memcpy(scratch.data(), prefix.data(), prefix.size());
+    const std::size_t n = write_identifier(scratch.data() + prefix.size(), name);
+    return std::string_view(scratch.data(), prefix.size() + n);
   };
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
     while (i < d.entries.size() && d.entries[i].index < index) ++i;
     std::size_t n = 0;
     while (i + n < d.entries.size() && d.entries[i + n].index == index) ++n;
-    if (!info.symbol.empty()) {
-      want = info.symbol;
-    } else {
-      identifier_into_want({}, info.name);
-    }
+    const std::string_view wanted =
+        !info.symbol.empty() ? std::string_view(info.symbol) : identifier({}, info.name);
     const auto suffix = lower_hex4(index);
-    const std::string_view s = sym.take(want, std::string_view(suffix.data(), suffix.size()));
+    const std::string_view s = sym.take(wanted, std::string_view(suffix.data(), suffix.size()));
     const bool single = info.code == od::object_code::var || info.code == od::object_code::domain ||
                         info.code == od::object_code::deftype || info.code == od::object_code::null;
     if (single && n == 1U) {
@@ -625,14 +624,17 @@ std::string emit_header(const dictionary &d) {
           for (std::size_t j = 0; j < digits; ++j) sub_suffix[3U + j] = tmp[digits - 1U - j];
         }
         const std::string_view suffix_sub(sub_suffix, 3U + digits);
-        if (!e.symbol.empty()) {
-          want = e.symbol;
-        } else if (identifier_into_want(prefix, e.name) == 0U) {
-          want.assign(s);
-          want += '_';
-          want += suffix_sub;
+        std::string_view sub_wanted = e.symbol;
+        if (e.symbol.empty()) {
+          sub_wanted = identifier(prefix, e.name);
+          if (sub_wanted.size() == prefix.size()) { // the name has no identifier
+            want.assign(s);
+            want += '_';
+            want += suffix_sub;
+            sub_wanted = want;
+          }
         }
-        named[k] = sym.take(want, suffix_sub);
+        named[k] = sym.take(sub_wanted, suffix_sub);
       }
     }
     i += n;

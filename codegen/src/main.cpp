@@ -6,6 +6,9 @@
 #include "text.hpp"
 
 #include <cstdlib>
+#if defined(__GLIBC__) || __has_include(<malloc.h>)
+#include <malloc.h>
+#endif
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -250,6 +253,13 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
 } // namespace
 
 int main(int argc, char **argv) {
+#if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
+  // Every block from the heap, none mapped on its own, and the heap never given back: the
+  // memory the reader frees (its list of keys, its sections) holds the header next, instead of
+  // the header taking fresh pages (a page fault costs microseconds; docs/performance.md).
+  mallopt(M_MMAP_THRESHOLD, 256 * 1024 * 1024);
+  mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024);
+#endif
   command_line cl;
   if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
   fieldcodec::gen::diagnostics diag;
