@@ -187,9 +187,23 @@ public:
   }
 
 private:
+  /// Eight bytes at a time, each word mixed in by a multiplication (names are 10..60 bytes).
   static std::size_t hash(std::string_view s) noexcept {
-    std::uint64_t h = 14695981039346656037ULL; // FNV-1a
-    for (const char c : s) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+    constexpr std::uint64_t k = 0x9E3779B97F4A7C15U;
+    std::uint64_t h = s.size() * k;
+    std::size_t i = 0;
+    for (; i + 8U <= s.size(); i += 8U) {
+      std::uint64_t w = 0;
+      std::memcpy(&w, s.data() + i, 8);
+      h = (h ^ w) * k;
+      h ^= h >> 32U;
+    }
+    if (i < s.size()) {
+      std::uint64_t w = 0;
+      std::memcpy(&w, s.data() + i, s.size() - i);
+      h = (h ^ w) * k;
+      h ^= h >> 32U;
+    }
     return static_cast<std::size_t>(h ^ (h >> 29U));
   }
   /// The stored name, or empty when `s` is taken already.

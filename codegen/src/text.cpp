@@ -573,31 +573,57 @@ std::string cpp_string(std::string_view s) {
   return out;
 }
 
+namespace {
+constexpr std::uint64_t byte_ones = 0x0101010101010101U;
+constexpr std::uint64_t byte_highs = 0x8080808080808080U;
+constexpr bool has_zero_byte(std::uint64_t v) noexcept {
+  return ((v - byte_ones) & ~v & byte_highs) != 0U;
+}
+/// Whether one of eight bytes is written escaped in a string literal: below 0x20, 0x7F, '"',
+/// '\\' or '?' (bytes from 0x80 up, UTF-8, are kept). Exact: each test finds whether a byte is
+/// zero / below 0x20, not which one.
+constexpr bool escape_in(std::uint64_t w) noexcept {
+  return ((w - byte_ones * 0x20U) & ~w & byte_highs) != 0U ||
+         has_zero_byte(w ^ (byte_ones * 0x7FU)) || has_zero_byte(w ^ (byte_ones * '"')) ||
+         has_zero_byte(w ^ (byte_ones * '\\')) || has_zero_byte(w ^ (byte_ones * '?'));
+}
+/// Byte `i` of `s` as a string literal writes it.
+char *write_literal_byte(char *o, std::string_view s, std::size_t i) noexcept {
+  const auto c = static_cast<unsigned char>(s[i]);
+  if (c >= 0x20U && c != 0x7FU && c != '"' && c != '\\' && c != '?') {
+    *o++ = static_cast<char>(c);
+  } else if (c == '"' || c == '\\') {
+    *o++ = '\\';
+    *o++ = static_cast<char>(c);
+  } else if (c == '?') {
+    *o++ = '?';
+    if (i + 1U < s.size() && s[i + 1U] == '?') *o++ = '\\'; // never a trigraph
+  } else {
+    *o++ = '\\';
+    *o++ = static_cast<char>('0' + ((c >> 6U) & 7U));
+    *o++ = static_cast<char>('0' + ((c >> 3U) & 7U));
+    *o++ = static_cast<char>('0' + (c & 7U));
+  }
+  return o;
+}
+} // namespace
+
 char *write_cpp_string(char *o, std::string_view s) noexcept {
   *o++ = '"';
-  // Runs of characters written as they are go in one copy.
-  std::size_t run = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c >= 0x20U && c != 0x7FU && c != '"' && c != '\\' && c != '?') continue;
-    if (i > run) std::memcpy(o, s.data() + run, i - run); // (never a null pointer to memcpy)
-    o += i - run;
-    run = i + 1U;
-    if (c == '"' || c == '\\') {
-      *o++ = '\\';
-      *o++ = static_cast<char>(c);
-    } else if (c == '?') {
-      *o++ = '?';
-      if (i + 1U < s.size() && s[i + 1U] == '?') *o++ = '\\'; // never a trigraph
-    } else {
-      *o++ = '\\';
-      *o++ = static_cast<char>('0' + ((c >> 6U) & 7U));
-      *o++ = static_cast<char>('0' + ((c >> 3U) & 7U));
-      *o++ = static_cast<char>('0' + (c & 7U));
+  // Eight bytes at a time: copied at once when none of them is escaped.
+  std::size_t i = 0;
+  while (i + 8U <= s.size()) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, s.data() + i, 8);
+    if (!escape_in(w)) {
+      std::memcpy(o, &w, 8);
+      o += 8;
+      i += 8U;
+      continue;
     }
+    for (const std::size_t end = i + 8U; i < end; ++i) o = write_literal_byte(o, s, i);
   }
-  if (s.size() > run) std::memcpy(o, s.data() + run, s.size() - run);
-  o += s.size() - run;
+  for (; i < s.size(); ++i) o = write_literal_byte(o, s, i);
   *o++ = '"';
   return o;
 }
