@@ -257,7 +257,7 @@ TEST_CASE("emit_header: as before issue 18's second round, on random dictionarie
   CHECK(h.find(" x_sub1_16{") != std::string::npos);
   // a big one: the header grows past its reservation, the symbol set rehashes
   gen::dictionary big = r.objects(3000, 4);
-  for (auto &e : big.entries) e.unit.assign(300, 'u');
+  for (auto &e : big.entries) e.unit = std::string(300, 'u');
   CHECK(big.entries.size() > 4000U);
   CHECK(gen::emit_header(big) == emit_reference::emit_header(big));
 }
@@ -290,4 +290,30 @@ TEST_CASE("write_cpp_string, write_cpp_bytes, write_identifier: within the state
   CHECK(gen::write_identifier(id.data(), "+") == 4U); // "plus"
   CHECK(id.substr(0, 4) == "plus");
   CHECK(gen::write_identifier(id.data(), "---") == 0U);
+}
+
+TEST_CASE("rare_text: reads like a std::string, copies deeply, empty without a string") {
+  gen::rare_text a;
+  CHECK(a.empty());
+  CHECK(a.size() == 0U);
+  CHECK(a.str().empty());
+  a = "bar";
+  const std::string &s = a;
+  CHECK(s == "bar");
+  CHECK(std::string_view(a) == "bar");
+  gen::rare_text b = a; // a copy of its own
+  a = std::string("mbar");
+  CHECK(b.str() == "bar");
+  CHECK(a.str() == "mbar");
+  CHECK(a.size() == 4U);
+  CHECK_FALSE(a == b);
+  b = a;
+  CHECK(a == b);
+  a = ""; // empty: as never set
+  CHECK(a.empty());
+  CHECK(a == gen::rare_text{});
+  gen::rare_text c = std::move(b);
+  CHECK(c.str() == "mbar");
+  // an entry is smaller than with six std::string columns (the point of rare_text)
+  static_assert(sizeof(gen::rare_text) == sizeof(void *));
 }
