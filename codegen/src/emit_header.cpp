@@ -21,17 +21,25 @@ namespace {
 /// a pointer (a literal is a copy of a length known at compile time, a number is formatted in
 /// place, a name or text is escaped straight into the header), no temporary strings. The
 /// string's size runs at most one chunk ahead of what is written (`grow` zero-fills that chunk
-/// only): the pages of the reservation are touched once, in order.
+/// only): the pages of the reservation are touched once, in order. With a `sink`, the string is
+/// a buffer of `capacity` bytes handed to the sink whenever it is full (and at the end).
 class writer {
 public:
-  explicit writer(std::size_t capacity) {
-    s_.reserve(capacity);
+  explicit writer(std::size_t capacity, const header_sink *sink = nullptr) : sink_(sink) {
+    if (sink_ != nullptr) {
+      s_.resize(capacity); // a buffer used again and again: its size at once
+    } else {
+      s_.reserve(capacity);
+    }
     p_ = s_.data();
-    end_ = p_;
+    end_ = p_ + s_.size();
   }
   /// Room for `n` more bytes at the returned position; write there, then `advance` to the end.
   [[nodiscard]] char *room(std::size_t n) {
-    if (static_cast<std::size_t>(end_ - p_) < n) grow(n);
+    if (static_cast<std::size_t>(end_ - p_) < n) {
+      if (sink_ != nullptr) flush();
+      if (static_cast<std::size_t>(end_ - p_) < n) grow(n);
+    }
     return p_;
   }
   void advance(char *end) noexcept { p_ = end; }
@@ -91,6 +99,12 @@ public:
     s_.resize(static_cast<std::size_t>(p_ - s_.data()));
     return std::move(s_);
   }
+  /// Hands what was written since the last flush to the sink.
+  void flush() {
+    if (p_ != s_.data())
+      (*sink_)(std::string_view(s_.data(), static_cast<std::size_t>(p_ - s_.data())));
+    p_ = s_.data();
+  }
 
 private:
   void grow(std::size_t n) {
@@ -99,6 +113,7 @@ private:
     p_ = s_.data() + used;
     end_ = s_.data() + s_.size();
   }
+  const header_sink *sink_;
   std::string s_;
   char *p_;
   char *end_;
@@ -539,9 +554,9 @@ std::string stem_identifier(std::string_view stem) {
   return s;
 }
 
-std::string emit_header(const dictionary &d) {
-  writer o(d.entries.size() * 400U + d.commands.size() * 400U +
-           4096U); // about 370 bytes per entry (three tables + names)
+namespace {
+
+void emit(writer &o, const dictionary &d) {
   o.lit("// Generated from ");
   o.put(d.source_name);
   o.lit(" by fieldcodec-gen \xE2\x80\x94 do not edit.\n");
@@ -571,7 +586,7 @@ std::string emit_header(const dictionary &d) {
     o.lit("\n} // namespace fieldcodec::dictionaries::");
     o.put(d.stem);
     o.lit("\n// clang-format on\n");
-    return o.finish();
+    return;
   }
   if (d.node_id > 0) {
     o.lit("/// [DeviceComissioning] NodeID\ninline constexpr std::uint8_t node_id = ");
@@ -742,7 +757,21 @@ std::string emit_header(const dictionary &d) {
   o.lit("\n} // namespace fieldcodec::dictionaries::");
   o.put(d.stem);
   o.lit("\n// clang-format on\n");
+}
+
+} // namespace
+
+std::string emit_header(const dictionary &d) {
+  // about 310..370 bytes per entry (three tables + names)
+  writer o(d.entries.size() * 400U + d.commands.size() * 400U + 4096U);
+  emit(o, d);
   return o.finish();
+}
+
+void emit_header(const dictionary &d, const header_sink &sink) {
+  writer o(std::size_t{64} * 1024U, &sink);
+  emit(o, d);
+  o.flush();
 }
 
 } // namespace fieldcodec::gen

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <string_view>
 
 namespace {
 
@@ -96,6 +97,65 @@ int output(const std::string &path, const std::string &content, bool check) {
   if (exists && same) return 0; // unchanged: keep the time stamp
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out || !(out << content) || !out.flush()) {
+    std::cerr << path << ": error: cannot write file\n";
+    return 1;
+  }
+  return 0;
+}
+
+// The header: emitted in pieces and compared with the existing file as they come, so that an
+// unchanged header (the usual case of a build or of --check) is never held whole; it is collected
+// (the bytes equal so far taken from the existing file) only when it is to be written.
+int output_header(const std::string &path, const fieldcodec::gen::dictionary &d, bool check) {
+  if (path == "-") {
+    if (!check) {
+      fieldcodec::gen::emit_header(d, [](std::string_view piece) {
+        std::cout.write(piece.data(), std::streamsize(piece.size()));
+      });
+    }
+    return 0;
+  }
+  bool exists = false;
+  bool differs = false;
+  std::string text; // the header, once it differs (not under --check)
+  const auto start_text = [&](std::string_view equal) {
+    text.reserve(d.entries.size() * 400U + d.commands.size() * 400U + 4096U); // as emit_header
+    text.assign(equal);
+  };
+  {
+    fieldcodec::gen::file_bytes old; // released before the file is written
+    exists = old.load(path) == nullptr;
+    const std::string_view before = exists ? old.view() : std::string_view{};
+    std::size_t same = 0; // leading bytes equal to the existing file
+    differs = !exists;
+    if (differs && !check) start_text({});
+    fieldcodec::gen::emit_header(d, [&](std::string_view piece) {
+      if (!differs) {
+        if (before.substr(same, piece.size()) == piece) {
+          same += piece.size();
+          return;
+        }
+        differs = true;
+        if (!check) start_text(before.substr(0, same));
+      }
+      if (!check) text.append(piece);
+    });
+    if (!differs && same != before.size()) { // the existing file is longer
+      differs = true;
+      if (!check) start_text(before.substr(0, same));
+    }
+  }
+  if (check) {
+    if (differs) {
+      std::cerr << path << ": error: " << (exists ? "differs from" : "missing, expected")
+                << " the generated output\n";
+      return 1;
+    }
+    return 0;
+  }
+  if (!differs) return 0; // unchanged: keep the time stamp
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out || !(out << text) || !out.flush()) {
     std::cerr << path << ": error: cannot write file\n";
     return 1;
   }
@@ -213,9 +273,7 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
       for_header = dict;
       fieldcodec::gen::expand_runs(for_header);
     }
-    rc |=
-        output(cl.header_out,
-               fieldcodec::gen::emit_header(cl.opts.compact_arrays ? for_header : dict), cl.check);
+    rc |= output_header(cl.header_out, cl.opts.compact_arrays ? for_header : dict, cl.check);
   }
   if (!cl.eds_out.empty()) {
     if (dict.is_command_table) {

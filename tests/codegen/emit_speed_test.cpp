@@ -9,6 +9,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -259,7 +260,25 @@ TEST_CASE("emit_header: as before issue 18's second round, on random dictionarie
   gen::dictionary big = r.objects(3000, 4);
   for (auto &e : big.entries) e.unit = std::string(300, 'u');
   CHECK(big.entries.size() > 4000U);
-  CHECK(gen::emit_header(big) == emit_reference::emit_header(big));
+  const std::string whole = gen::emit_header(big);
+  CHECK(whole == emit_reference::emit_header(big));
+  // in pieces: the same bytes; a piece is handed on when the next text does not fit in 64 kB,
+  // so every piece but the last is nearly full, and a text longer than that is in one piece
+  big.entries[7].unit = std::string(200000, 'v'); // one text longer than a piece
+  const std::string with_long = gen::emit_header(big);
+  std::string joined;
+  std::vector<std::size_t> sizes;
+  gen::emit_header(big, [&](std::string_view piece) {
+    joined.append(piece);
+    sizes.push_back(piece.size());
+  });
+  CHECK(joined == with_long);
+  REQUIRE(sizes.size() > 3U);
+  for (const std::size_t n : sizes) CHECK(n > 0U);
+  CHECK(*std::max_element(sizes.begin(), sizes.end()) > 200000U);
+  for (std::size_t k = 0; k + 1U < sizes.size(); ++k) {
+    CHECK((sizes[k] > 60000U || sizes[k + 1U] > 65536U)); // (or handed on before the long text)
+  }
 }
 
 TEST_CASE("write_cpp_string, write_cpp_bytes, write_identifier: within the stated room") {
