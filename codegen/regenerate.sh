@@ -1,7 +1,9 @@
 #!/bin/sh
 # Regenerate include/fieldcodec/dictionaries/<name>.hpp from every dictionaries/*.eds, *.dcf
-# and *.csv, and the EDS exports in dictionaries/export/ (DPQ). With --check nothing is written: the script fails (exit 1) when a checked-in
-# header differs from what the generator writes, is missing, or has no source any more.
+# and *.csv, the EDS exports in dictionaries/export/ (DPQ) and the dictionary of the firmware
+# example (examples/firmware/io_node_dictionary.hpp from io_node.eds). With --check nothing is
+# written: the script fails (exit 1) when a checked-in header differs from what the generator
+# writes, is missing, or has no source any more.
 #
 # usage: codegen/regenerate.sh [--check] [--gen PATH/TO/fieldcodec-gen]
 #
@@ -15,7 +17,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --check) check=--check ;;
     --gen) gen=$2; shift ;;
-    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "regenerate.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift
@@ -64,6 +66,14 @@ for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
         status=1
       fi ;;
   esac
+done
+# Example dictionaries generated from an EDS beside the example that uses them (the header says
+# "Regenerate with codegen/regenerate.sh"): source:name:output
+for ex in examples/firmware/io_node.eds:io_node:examples/firmware/io_node_dictionary.hpp; do
+  src=${ex%%:*}; rest=${ex#*:}; name=${rest%%:*}; dst=${rest#*:}
+  if ! "$gen" $check --quiet --name "$name" -o "$dst" "$src"; then
+    status=1
+  fi
 done
 if [ -n "$check" ]; then
   for h in "$out"/*.hpp; do

@@ -2,6 +2,7 @@
 #include "pacontrol_decoder.hpp"
 
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
+#include <fieldcodec/host/quoted_bytes.hpp>
 #include <fieldcodec/pacontrol/codes.hpp>
 #include <fieldcodec/pacontrol/command.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
@@ -21,22 +22,6 @@ int hex_digit(char c) {
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
   if (c >= 'A' && c <= 'F') return c - 'A' + 10;
   return -1;
-}
-
-/// Bytes with control characters named: <SOH><STX>1906;12;0;0<ETX>22<EOT>.
-std::string quoted(std::span<const std::uint8_t> bytes) {
-  static constexpr std::string_view names[] = {"<NUL>", "<SOH>", "<STX>", "<ETX>", "<EOT>"};
-  std::string out;
-  for (const std::uint8_t b : bytes) {
-    if (b < 5U) {
-      out += names[b];
-    } else if (b >= 0x20U && b < 0x7FU) {
-      out += static_cast<char>(b);
-    } else {
-      out += "<" + hex_bytes(std::span<const std::uint8_t>(&b, 1)) + ">";
-    }
-  }
-  return out;
 }
 
 std::string value_text(const pacontrol::value &v) {
@@ -171,7 +156,7 @@ std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture
     if (soh_at == 0U || soh_at == pending.size()) return;
     decoded_line l = line_at(pending_at, "NOISE");
     const auto noise = std::span<const std::uint8_t>(pending.data(), soh_at);
-    l.text = std::to_string(noise.size()) + " bytes outside a frame: " + quoted(noise);
+    l.text = std::to_string(noise.size()) + " bytes outside a frame: " + host::quoted_bytes(noise);
     l.problem = true;
     l.json.str("bytes", hex_bytes(noise, ""));
     out.push_back(std::move(l));
@@ -280,7 +265,7 @@ std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture
                check_text(*parts, request, false);
       l.json.str("body", parts->body).str("check", parts->check).str("error", "bad checksum");
     } else {
-      l.text = std::string(to_string(e)) + ": " + quoted(pending);
+      l.text = std::string(to_string(e)) + ": " + host::quoted_bytes(pending);
       l.json.str("error", to_string(e)).str("bytes", hex_bytes(pending, ""));
     }
     out.push_back(std::move(l));
@@ -293,14 +278,15 @@ std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture
   if (!pending.empty() && std::find(pending.begin(), pending.end(), ser::soh) == pending.end()) {
     decoded_line l = line_at(pending_at, "NOISE");
     l.problem = true;
-    l.text = std::to_string(pending.size()) + " bytes outside a frame: " + quoted(pending);
+    l.text =
+        std::to_string(pending.size()) + " bytes outside a frame: " + host::quoted_bytes(pending);
     l.json.str("bytes", hex_bytes(pending, ""));
     out.push_back(std::move(l));
   } else if (!pending.empty()) {
     emit_noise_before_frame();
     decoded_line l = line_at(pending_at, "TRUNCATED");
     l.problem = true;
-    l.text = "capture ends inside a frame: " + quoted(pending);
+    l.text = "capture ends inside a frame: " + host::quoted_bytes(pending);
     l.json.str("error", "truncated").str("bytes", hex_bytes(pending, ""));
     out.push_back(std::move(l));
   }

@@ -271,7 +271,7 @@ void check_decode(std::span<const std::uint8_t> in) {
 
 } // namespace
 
-TEST_CASE("nx: dsp_raw, constant_raw and scaled_to give the reference's results") {
+TEST_CASE("nx: dsp_raw, constant_raw, dsp_of and scaled_to give the reference's results") {
   rng g(18);
   for (int i = 0; i < 300'000; ++i) {
     const std::int64_t raw = pick_number(g);
@@ -280,6 +280,17 @@ TEST_CASE("nx: dsp_raw, constant_raw and scaled_to give the reference's results"
     REQUIRE(to_ref(nx::constant_raw(fc::compax::dsp_number{raw})) ==
             ref::constant_raw(fc::compax::dsp_number{raw}));
     const auto places = static_cast<std::uint8_t>(g.below(g.chance(5) ? 256 : 24));
+    // dsp_of (round 4 tests dsp_raw first): every kind, also outside the enum
+    const nx::arg a{static_cast<nx::arg_kind>(g.below(g.chance(5) ? 256 : 5)),
+                    g.chance(50) ? std::uint8_t{0} : places, raw};
+    const auto d = nx::dsp_of(a);
+    const auto rd = ref::dsp_of(to_ref(a));
+    REQUIRE(d.has_value() == rd.has_value());
+    if (d) {
+      REQUIRE(d.value() == rd.value());
+    } else {
+      REQUIRE(d.error() == rd.error());
+    }
     const auto target = static_cast<std::uint8_t>(g.below(4));
     const auto s = nx::detail::scaled_to(raw, places, target);
     const auto rs = ref::detail::scaled_to(raw, places, target);
@@ -402,4 +413,65 @@ TEST_CASE(
   }
   CHECK(valid > 20'000);
   check_decode(std::span<const std::uint8_t>{});
+}
+
+TEST_CASE("nx: decode_record's straight path for POSR SPEED ACCEL reads what the reference reads") {
+  // Issue 18, round 4: decode_record reads a 17-byte POSR v SPEED v ACCEL v content without the
+  // table look-ups. Every such record, and every record one byte away from taking the path
+  // (other code bytes, lengths and sizes), is compared with the reference.
+  rng g(0x52534C);
+  const auto put_field = [&](std::array<std::uint8_t, nx::record_size> &r, std::size_t at) {
+    std::int64_t raw = 0;
+    switch (g.below(5)) {
+    case 0: raw = -1; break; // six 0xFF: CAM / SYNC
+    case 1: raw = pick_number(g); break;
+    case 2: { // on the grid or next to it
+      const auto t = static_cast<std::int64_t>(g.below(16'000'000'000)) - 8'000'000'000;
+      raw = fc::compax::dsp_number::from_thousandths(t).value().raw +
+            static_cast<std::int64_t>(g.below(3)) - 1;
+      break;
+    }
+    case 3: raw = g.chance(50) ? (std::int64_t{1} << 47) - 1 : -(std::int64_t{1} << 47); break;
+    default: raw = static_cast<std::int64_t>(g.next()); break; // the field keeps 48 bits
+    }
+    const auto u = static_cast<std::uint64_t>(raw);
+    for (std::size_t i = 0; i < 6U; ++i) r[at + i] = static_cast<std::uint8_t>(u >> (8U * i));
+  };
+  constexpr std::array<std::uint8_t, 9> near_codes{0x52, 0x53, 0x4C, 0x72, 0xD2,
+                                                   0x73, 0xD3, 0x6C, 0xCC};
+  int on_path = 0;
+  for (int i = 0; i < 300'000; ++i) {
+    std::array<std::uint8_t, nx::record_size> r{};
+    for (auto &b : r) b = g.byte(); // padding too
+    r[0] = 17;
+    r[1] = 0x52;
+    put_field(r, 2);
+    r[8] = 0x53;
+    put_field(r, 9);
+    r[15] = 0x4C;
+    if (g.chance(10)) {
+      r[16] = 0;
+      r[17] = g.chance(50) ? 0 : 0xFF; // ACCEL 0 (no special form) and 0x00FF
+    }
+    std::size_t size = nx::record_size;
+    switch (g.below(8)) {
+    case 0: r[1 + 7 * g.below(3)] = near_codes[g.below(near_codes.size())]; break;
+    case 1: r[0] = static_cast<std::uint8_t>(14U + g.below(6)); break;
+    case 2: size = 16U + g.below(5); break; // 16, 17 truncated; 18..20 whole
+    default: ++on_path; break;
+    }
+    INFO("record #", i);
+    check_decode(std::span<const std::uint8_t>{r}.first(size));
+  }
+  CHECK(on_path > 100'000);
+  // the special forms and ACCEL 0 by hand: POSR CAM SPEED SYNC ACCEL 0
+  constexpr std::array<std::uint8_t, 18> special{17,   0x52, 0xFF, 0xFF, 0xFF, 0xFF,
+                                                 0xFF, 0xFF, 0x53, 0xFF, 0xFF, 0xFF,
+                                                 0xFF, 0xFF, 0xFF, 0x4C, 0x00, 0x00};
+  const auto c = nx::decode_record(special);
+  REQUIRE(c);
+  CHECK(c.value() ==
+        nx::then(nx::then(nx::make(nx::op::posr, nx::special()), nx::op::speed, nx::special()),
+                 nx::op::accel, nx::integer(0)));
+  check_decode(special);
 }

@@ -87,6 +87,13 @@ static_assert(nx::encode_record(nx::make(nx::op::posa, nx::special())).value() =
               nx::record{7, 0x41, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF});
 static_assert(nx::decode_record(nx::record{3, 0x47, 0x00, 0x0C}).value() ==
               nx::make(nx::op::goto_, nx::integer(12)));
+// The combined positioning record (decode_record reads it by a straight path, issue 18): POSR
+// 250.5 (on the grid: 250.5 · 2^24 = 0x00FA8000_00 raw), SPEED raw 3 (off it), ACCEL 256.
+static_assert(nx::decode_record(nx::record{17, 0x52, 0x00, 0x00, 0x80, 0xFA, 0x00, 0x00, 0x53, 0x03,
+                                           0x00, 0x00, 0x00, 0x00, 0x00, 0x4C, 0x01, 0x00})
+                  .value() == nx::then(nx::then(nx::make(nx::op::posr, nx::value(decimal{2505, 1})),
+                                                nx::op::speed, nx::dsp_raw(3)),
+                                       nx::op::accel, nx::integer(256)));
 static_assert(nx::parse_command("IF E5=1 GOTO 12").value() ==
               nx::make_if_input(5, nx::pattern{1, {1}}, nx::jump::goto_, 12));
 // Numbers carry the command's unit: POSA 250 is 250 mm however it is written (issue 13).
@@ -115,6 +122,10 @@ static_assert(cx::dsp_number{cx::dsp_format::raw_max + 1}.exact_thousandths().er
 static_assert(nx::dsp_of(nx::integer(250)).value().raw == 250 * cx::dsp_format::one);
 static_assert(nx::dsp_of(nx::value(decimal{-15, 1})).value() == mm(-1'500));
 static_assert(nx::dsp_of(nx::dsp_raw(3)).value().raw == 3);
+static_assert(nx::dsp_of(nx::arg{nx::arg_kind::dsp_raw, 0, std::int64_t{1} << 47}).error() ==
+              errc::overflow);
+static_assert(nx::dsp_of(nx::arg{nx::arg_kind::dsp_raw, 0, -(std::int64_t{1} << 47)}).value().raw ==
+              -(std::int64_t{1} << 47));
 static_assert(nx::dsp_of(nx::parameter(3)).error() == errc::type_mismatch);
 static_assert(nx::dsp_of(nx::special()).error() == errc::type_mismatch);
 static_assert(nx::dsp_of(nx::value(decimal{1, 4})).error() == errc::not_representable);

@@ -1,12 +1,14 @@
 // scaling::to_raw from a decimal takes, where scale and offset are compile-time constants, a
-// copy of its int64 path in which the decimal's places (0..6) are a constant too (issue 18).
+// copy of its int64 path in which the decimal's places are a constant too (issue 18): the
+// decimal is first written with 6 places (to_raw_decimal_at6), then the 6-place copy runs.
 // This file proves that the copies never change a result: every result (value or error code)
 // of the fast path is compared with the code as it was before, kept here as the reference
 // (check_range, scale_to_raw, check_field in that order), over millions of inputs chosen to hit
 // exact halves, both signs, range limits, int64 overflow, every field width and bad arguments.
-// The fast path is tested directly (decimal_detail::to_raw_decimal_i64<P>, the code the
-// dispatch runs), because whether the public to_raw takes it depends on the optimiser; the
-// public to_raw is compared too, with constant scales (the fast path in optimised builds).
+// The fast path is tested directly (decimal_detail::to_raw_decimal_at6, the code the dispatch
+// runs, and the template to_raw_decimal_i64<P> for every P 0..6), because whether the public to_raw
+// takes it depends on the optimiser; the public to_raw is compared too, with constant scales (the
+// fast path in optimised builds).
 #include <fieldcodec/core/scaling.hpp>
 
 #include <doctest/doctest.h>
@@ -152,6 +154,37 @@ void run_places(std::size_t n) {
   CHECK(o.decided > n / 3); // the fast path decides most inputs: the comparison is not vacuous
 }
 
+// What the dispatch runs: the decimal written with 6 places, then the 6-place copy. Places
+// 0..8 (7 and 8 must give up) and mantissas that overflow when multiplied by 10^(6 − places).
+void check_at6(rng &g, std::size_t n) {
+  std::size_t decided = 0;
+  std::size_t differ = 0;
+  std::size_t gave_up_beyond_6 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const decimal eu = any_decimal(g, 8);
+    const sc::linear s = any_scale(g);
+    const sc::field f = any_field(g);
+    const bool ranged = g.below(4) != 0U;
+    const sc::range r = any_range(g, eu);
+    fc::result<std::int64_t> out{errc::invalid_argument};
+    if (!sc::decimal_detail::to_raw_decimal_at6(eu, s, f, ranged, r, out)) {
+      if (eu.places > 6U) ++gave_up_beyond_6;
+      continue;
+    }
+    if (eu.places > 6U) FAIL_CHECK("decided a decimal of " << int{eu.places} << " places");
+    ++decided;
+    if (!same(out, reference(eu, s, f, ranged, r)) && ++differ <= 5) {
+      FAIL_CHECK("places " << int{eu.places} << " mantissa " << eu.mantissa << " scale "
+                           << s.scale.mantissa << "e-" << int{s.scale.places} << " offset "
+                           << s.offset.mantissa << "e-" << int{s.offset.places} << " field "
+                           << int{f.bytes} << (f.is_signed ? "s" : "u"));
+    }
+  }
+  CHECK(differ == 0U);
+  CHECK(decided > n / 4); // not vacuous: most inputs of 0..6 places are decided here
+  CHECK(gave_up_beyond_6 > 0U);
+}
+
 // The public to_raw with constant scales (the bench's and the DPQ's): in an optimised build the
 // dispatch takes the fast path, in any build the result is the reference's.
 template <sc::linear S, sc::field F>
@@ -177,6 +210,13 @@ static_assert([] {
          out.value() == -3;
 }());
 
+static_assert([] {
+  fc::result<std::int64_t> out{errc::invalid_argument};
+  return sc::decimal_detail::to_raw_decimal_at6({-25, 1}, {{1, 0}, {0, 0}}, {2, true}, false, {},
+                                                out) &&
+         out.value() == -3;
+}());
+
 TEST_CASE("to_raw(decimal): the constant-places fast path gives the reference's result") {
   constexpr std::size_t n = 300'000;
   run_places<0>(n);
@@ -186,6 +226,22 @@ TEST_CASE("to_raw(decimal): the constant-places fast path gives the reference's 
   run_places<4>(n);
   run_places<5>(n);
   run_places<6>(n);
+}
+
+TEST_CASE("to_raw(decimal): the 6-place normalisation the dispatch runs gives the reference's "
+          "result") {
+  rng g;
+  for (int k = 0; k < 11; ++k) (void)g.next(); // a stream of its own
+  check_at6(g, 1'000'000);
+  // the multiplication by 10^(6 − places) overflows: nothing decided, the general code decides
+  fc::result<std::int64_t> out{errc::invalid_argument};
+  CHECK(!sc::decimal_detail::to_raw_decimal_at6({i64_max / 1000, 0}, {{1, 0}, {0, 0}}, {8, true},
+                                                false, {}, out));
+  CHECK(sc::to_raw(decimal{i64_max / 1000, 0}, {{1, 0}, {0, 0}}, {8, true}).value() ==
+        i64_max / 1000);
+  REQUIRE(sc::decimal_detail::to_raw_decimal_at6({40005, 4}, {{32767, 2}, {0, 0}}, {4, false}, true,
+                                                 {{0, 0}, {100, 0}}, out));
+  CHECK(out.value() == 1311); // 4.0005 × 327.67 = 1310.8438…
 }
 
 TEST_CASE("to_raw(decimal): exact halves, limits and overflow on the fast path") {

@@ -41,12 +41,17 @@
 // The path of one to three single-argument commands (POSR … SPEED … ACCEL …) is inlined where
 // it is called (issue 18): an encoder's caller knows the operations, and the table look-ups, the
 // combination check and the shape dispatch fold away; a decoder's caller reads the fields it
-// wants without a copy of the whole command. Built for size (-Os, firmware) the compiler
-// decides and keeps one copy.
+// wants without a copy of the whole command. decode_record reads the combined positioning
+// record POSR v SPEED v ACCEL v by a straight path and leaves every other record to a general
+// reader kept out of line (FIELDCODEC_NX_OUTLINE), so that the straight path stays small where
+// it is inlined (issue 18, round 4). Built for size (-Os, firmware) the compiler decides and
+// keeps one copy, and the straight path is not compiled.
 #if defined(__OPTIMIZE_SIZE__) || !defined(__GNUC__)
 #define FIELDCODEC_NX_INLINE
+#define FIELDCODEC_NX_OUTLINE
 #else
 #define FIELDCODEC_NX_INLINE [[gnu::always_inline]]
+#define FIELDCODEC_NX_OUTLINE [[gnu::noinline]]
 #endif
 
 namespace fieldcodec::compax::nx {
@@ -116,10 +121,9 @@ namespace detail {
   return ((static_cast<std::uint64_t>(raw) * 1000U + 500U) & mask) <= 1000U;
 }
 
-/// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
-/// (kind value), otherwise the raw integer (kind dsp_raw).
-FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
-  if (!may_be_on_grid(n.raw)) return arg{arg_kind::dsp_raw, 0, n.raw};
+/// The argument of a raw value that passed may_be_on_grid: the decimal it stands for (kind
+/// value) when it is on the grid, else the raw integer (kind dsp_raw).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp_near_grid(dsp_number n) noexcept {
   auto t = n.exact_thousandths();
   if (!t) return arg{arg_kind::dsp_raw, 0, n.raw};
   // the normalized decimal of t / 1000 (at most 3 trailing zeros to drop)
@@ -130,6 +134,19 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept
     --places;
   }
   return arg{arg_kind::value, places, v};
+}
+/// The same, out of line: a reader whose caller then branches on the argument keeps fewer
+/// values in registers when the rare case is a call (issue 18, round 4: decode_record's
+/// straight path 100 -> 87 Ir). An encoder inlines it: there the call cost 15 Ir.
+FIELDCODEC_NX_OUTLINE [[nodiscard]] constexpr arg from_dsp_near_grid_call(dsp_number n) noexcept {
+  return from_dsp_near_grid(n);
+}
+
+/// A DSP number as an argument value: on the 0.001 grid it is the decimal it stands for
+/// (kind value), otherwise the raw integer (kind dsp_raw).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg from_dsp(dsp_number n) noexcept {
+  if (!may_be_on_grid(n.raw)) return arg{arg_kind::dsp_raw, 0, n.raw};
+  return from_dsp_near_grid(n);
 }
 
 /// number × 10^-places in units of 10^-target. Errors: not_representable (a non-zero digit
@@ -613,8 +630,9 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<dsp_number> to_dsp(decimal v
 /// Errors: type_mismatch (parameter, variable or special), not_representable (a value with more
 /// than 3 decimal places), overflow (outside the DSP range).
 [[nodiscard]] constexpr result<dsp_number> dsp_of(const arg &a) noexcept {
-  if (a.kind != arg_kind::value && a.kind != arg_kind::dsp_raw) return errc::type_mismatch;
-  return detail::to_dsp(a.value(), a.kind == arg_kind::dsp_raw);
+  if (a.kind == arg_kind::dsp_raw) return detail::to_dsp(a.value(), true);
+  if (a.kind != arg_kind::value) return errc::type_mismatch;
+  return detail::to_dsp(a.value(), false);
 }
 
 // ------------------------------------------------------------------ encoder
@@ -925,8 +943,9 @@ struct content_reader {
         static_cast<std::uint32_t>(in[at + 4U]) | (static_cast<std::uint32_t>(in[at + 5U]) << 8U);
     const std::uint64_t u = lo | (std::uint64_t{hi} << 32U);
     at += dsp_format::size;
-    constexpr std::uint64_t sign = std::uint64_t{1} << 47U;
-    return static_cast<std::int64_t>((u ^ sign) - sign);
+    // sign extension from 48 bits by an arithmetic shift (C++20): a shift pair instead of an
+    // exclusive or and a subtraction of a 64-bit constant
+    return static_cast<std::int64_t>(u << 16U) >> 16U;
   }
 };
 
@@ -1163,6 +1182,37 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr status read_content(content_reader 
   return {};
 }
 
+inline constexpr std::uint8_t code_posr = 0x52;
+inline constexpr std::uint8_t code_speed = 0x53;
+inline constexpr std::uint8_t code_accel = 0x4C;
+static_assert(families[2] == family{op::posr, code_posr, shape::dsp, true, true} &&
+                  families[3] == family{op::speed, code_speed, shape::dsp, true, true} &&
+                  families[5] == family{op::accel, code_accel, shape::word, false, true},
+              "decode_record's straight path reads the value forms of these three families");
+
+/// The argument a value-form 6-byte field of a family with a special form (POSA, POSR, SPEED)
+/// reads as: six 0xFF bytes are the special, anything else a value or raw DSP number (as
+/// read_simple_arg reads it).
+FIELDCODEC_NX_INLINE [[nodiscard]] constexpr arg dsp_or_special(std::int64_t raw) noexcept {
+  if (raw == -1) return special();
+  if (!may_be_on_grid(raw)) return arg{arg_kind::dsp_raw, 0, raw};
+  return from_dsp_near_grid_call(dsp_number{raw});
+}
+
+/// decode_record's general reader (the content after the length byte). Out of line, so that a
+/// caller that inlines decode_record keeps the straight path small: inlined, this code's
+/// registers were saved and restored on every call (issue 18, round 4).
+FIELDCODEC_NX_OUTLINE [[nodiscard]] constexpr result<command>
+read_record_content(std::span<const std::uint8_t> content) noexcept {
+  command c{};
+  content_reader rd{content};
+  if (auto s = read_content(rd, c); !s) {
+    if (s.error() == errc::truncated) return errc::bad_length; // length too short for it
+    return s.error();
+  }
+  return c;
+}
+
 } // namespace detail
 
 /// Content bytes (no length byte) → command. All bytes must be used. DSP values on the 0.001
@@ -1186,16 +1236,31 @@ FIELDCODEC_NX_INLINE [[nodiscard]] constexpr result<command>
 decode_record(std::span<const std::uint8_t> in) noexcept {
   if (in.empty()) return errc::truncated;
   if (in.size() > record_size) return errc::too_long;
+#ifndef __OPTIMIZE_SIZE__
+  // Straight path for the combined positioning record, POSR v SPEED v ACCEL v (all value
+  // forms; length byte 17, so the length checks below pass): three code bytes compared, three
+  // fields read, no table look-up, no dispatch and no combination check (the combination is
+  // allowed). It reads exactly what the general reader reads (tests/compax/nx_speed_test.cpp).
+  // Built for size, only the general reader is kept.
+  if (in[0] == 17U && in.size() >= 18U && in[1] == detail::code_posr &&
+      in[8] == detail::code_speed && in[15] == detail::code_accel) {
+    detail::content_reader rd{in, 2};
+    command c{};
+    c.operation = op::posr;
+    c.argument = detail::dsp_or_special(rd.dsp());
+    ++rd.at;
+    c.second_operation = op::speed;
+    c.second_argument = detail::dsp_or_special(rd.dsp());
+    ++rd.at;
+    c.third_operation = op::accel;
+    c.third_argument = arg{arg_kind::value, 0, rd.u16()}; // ACCEL has no special form
+    return c;
+  }
+#endif
   const std::size_t n = in[0];
   if (n == 0U || n > content_max) return errc::bad_length;
   if (in.size() < 1U + n) return errc::truncated;
-  command c{};
-  detail::content_reader rd{in.subspan(1, n)};
-  if (auto s = detail::read_content(rd, c); !s) {
-    if (s.error() == errc::truncated) return errc::bad_length; // length too short for it
-    return s.error();
-  }
-  return c;
+  return detail::read_record_content(in.subspan(1, n));
 }
 
 } // namespace fieldcodec::compax::nx

@@ -173,14 +173,29 @@ template <std::uint8_t Places>
 // A decimal's places are usually known only at run time (text parsed by parse_decimal, a value
 // from the network), so its powers of ten and the division by 10^(places + scale places) stay
 // run-time operations even where scale, offset and range are constants (a named descriptor).
-// For the precisions 0..6 (what a PLC, a text field or a parser hands over) the call then takes
-// a copy of the int64 path in which the places are a constant (issue 18): the powers of ten
-// fold, the range check compares mantissas and the division becomes a multiplication, as in
-// code written for one precision. Same checks, same arithmetic, same result for every input
-// (tests/core/scaling_decimal_fast_test.cpp keeps the previous code as its reference). Only
-// where the scale and offset are compile-time constants after inlining (__builtin_constant_p),
-// since otherwise the copies would not fold and only cost code; not in builds for size (-Os,
-// __OPTIMIZE_SIZE__: on a Cortex-M a 64-bit division is a library call anyway).
+// For the precisions 0..6 (what a PLC, a text field or a parser hands over) the call first
+// writes the decimal with exactly 6 places (one multiplication by 10^(6 − places), checked) and
+// then runs the copy of the int64 path in which the places are the constant 6: the powers of
+// ten fold, the range check compares mantissas and the division becomes a multiplication, as in
+// code written for one precision. The value is the same decimal, so the checks, the exact
+// arithmetic and the result are the same for every input; where the 6-place mantissa or a
+// product would overflow int64 it gives up (false) and the general code decides
+// (tests/core/scaling_decimal_fast_test.cpp keeps the previous code as its reference). (Round 3
+// switched on the places to one copy per precision 0..6; the jump table and the larger frame
+// cost ~8 instructions more than this multiplication.) Only where the scale and offset are
+// compile-time constants after inlining (__builtin_constant_p), since otherwise nothing would
+// fold; not in builds for size (-Os, __OPTIMIZE_SIZE__: on a Cortex-M a 64-bit division is a
+// library call anyway).
+[[gnu::always_inline]] constexpr bool to_raw_decimal_at6(decimal eu, linear s, field f, bool ranged,
+                                                         range r,
+                                                         result<std::int64_t> &out) noexcept {
+  std::int64_t m = 0;
+  return eu.places <= 6U &&
+         fieldcodec::detail::mul_i64(eu.mantissa, fieldcodec::detail::pow10_i64(6U - eu.places),
+                                     m) &&
+         to_raw_decimal_i64<6>(m, s, f, ranged, r, out);
+}
+
 [[gnu::always_inline]] constexpr bool constant_scale(const linear &s) noexcept {
 #if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
   return __builtin_constant_p(s.scale.mantissa) && __builtin_constant_p(s.scale.places) &&
@@ -195,19 +210,7 @@ template <std::uint8_t Places>
 to_raw_decimal_dispatch(decimal eu, linear s, field f, bool ranged, range r) noexcept {
   if (constant_scale(s)) {
     result<std::int64_t> out{errc::invalid_argument};
-    bool done = false;
-    const std::int64_t m = eu.mantissa;
-    switch (eu.places) {
-    case 0: done = to_raw_decimal_i64<0>(m, s, f, ranged, r, out); break;
-    case 1: done = to_raw_decimal_i64<1>(m, s, f, ranged, r, out); break;
-    case 2: done = to_raw_decimal_i64<2>(m, s, f, ranged, r, out); break;
-    case 3: done = to_raw_decimal_i64<3>(m, s, f, ranged, r, out); break;
-    case 4: done = to_raw_decimal_i64<4>(m, s, f, ranged, r, out); break;
-    case 5: done = to_raw_decimal_i64<5>(m, s, f, ranged, r, out); break;
-    case 6: done = to_raw_decimal_i64<6>(m, s, f, ranged, r, out); break;
-    default: break;
-    }
-    if (done) return out;
+    if (to_raw_decimal_at6(eu, s, f, ranged, r, out)) return out;
     return to_raw_decimal_slow(eu, s, f, ranged, r);
   }
   return to_raw_decimal(eu, s, f, ranged, r);

@@ -14,6 +14,7 @@
 
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/quoted_bytes.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
 
@@ -94,9 +95,9 @@ private:
       auto got = port_.read(buf, left.count() > 0 ? left : std::chrono::milliseconds(0));
       if (!got) {
         if (got.error() == errc::timeout) {
-          return fail(errc::timeout, received_.empty()
-                                         ? "no acknowledgement in time"
-                                         : "acknowledgement incomplete: " + quoted(received_));
+          return fail(errc::timeout,
+                      received_.empty() ? "no acknowledgement in time"
+                                        : "acknowledgement incomplete: " + quoted_bytes(received_));
         }
         return keep_port_error();
       }
@@ -105,33 +106,13 @@ private:
         auto k = dec.push(buf[i]);
         if (!k) {
           return fail(k.error(), "bad acknowledgement (" + std::string(to_string(k.error())) +
-                                     "): " + quoted(received_));
+                                     "): " + quoted_bytes(received_));
         }
         if (k.value() == pacontrol::serial::frame_kind::acknowledgement) {
           return dec.acknowledgement();
         }
       }
     }
-  }
-
-  /// Bytes as text with control characters named: <SOH><STX>0;1;15;0;0;0<ETX>2<EOT>.
-  static std::string quoted(std::span<const std::uint8_t> bytes) {
-    static constexpr std::string_view names[] = {"<NUL>", "<SOH>", "<STX>", "<ETX>", "<EOT>"};
-    std::string out;
-    for (const std::uint8_t b : bytes) {
-      if (b < 5U) {
-        out += names[b];
-      } else if (b >= 0x20U && b < 0x7FU) {
-        out += static_cast<char>(b);
-      } else {
-        static constexpr char digits[] = "0123456789ABCDEF";
-        out += "<";
-        out += digits[b >> 4U];
-        out += digits[b & 0xFU];
-        out += ">";
-      }
-    }
-    return out;
   }
 
   errc fail(errc code, const std::string &what) {

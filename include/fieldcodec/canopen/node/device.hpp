@@ -177,6 +177,26 @@ public:
                                              bool last) noexcept {
       return d_->write_object(a, offset, part, last);
     }
+    // by position, when the store has positions (the PDO engine then looks each mapped object
+    // up once): the same reads and the same writes through the device's rules
+    [[nodiscard]] constexpr std::size_t
+    position(od::address a) const noexcept requires sdo::positioned_store<Store> {
+      return d_->store_->position(a);
+    }
+    [[nodiscard]] constexpr od::address
+    address_at(std::size_t at) const noexcept requires sdo::positioned_store<Store> {
+      return d_->store_->address_at(at);
+    }
+    [[nodiscard]] constexpr abort_code
+    read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
+            std::size_t &total) const noexcept requires sdo::positioned_store<Store> {
+      return d_->store_->read_at(at, offset, out, total);
+    }
+    [[nodiscard]] constexpr abort_code
+    write_at(std::size_t at, std::size_t offset, std::span<const std::uint8_t> part,
+             bool last) noexcept requires sdo::positioned_store<Store> {
+      return d_->write_object(d_->store_->address_at(at), offset, part, last, at);
+    }
 
   private:
     device *d_;
@@ -564,10 +584,11 @@ private:
     pdo_.written(a, value, now_);
   }
 
-  /// The path of every SDO and RPDO write (device::access).
+  /// The path of every SDO and RPDO write (device::access); `at`: a's position in a
+  /// positioned store (the store's write_at is used), or no_position (its write).
   [[nodiscard]] constexpr abort_code write_object(od::address a, std::size_t offset,
-                                                  std::span<const std::uint8_t> part,
-                                                  bool last) noexcept {
+                                                  std::span<const std::uint8_t> part, bool last,
+                                                  std::size_t at = sdo::no_position) noexcept {
     const bool whole = offset == 0U && last;
     if (whole) {
       if (const auto c = check(a, part); c != abort_code::none) return c;
@@ -577,7 +598,14 @@ private:
       // always hold the ≤ 4 bytes of one, so this is a value of the wrong length anyway
       return abort_code::length_too_high;
     }
-    const auto c = store_->write(a, offset, part, last);
+    abort_code c = abort_code::none;
+    if constexpr (sdo::positioned_store<Store>) {
+      c = at == sdo::no_position ? store_->write(a, offset, part, last)
+                                 : store_->write_at(at, offset, part, last);
+    } else {
+      (void)at;
+      c = store_->write(a, offset, part, last);
+    }
     if (c != abort_code::none || !last) return c;
     if (whole) {
       follow(a, part);

@@ -62,6 +62,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::canopen::node {
 
@@ -147,6 +148,10 @@ public:
   using config = pdo_config<MaxEntries>;
   /// State in the steps: whether PDOs are exchanged (NMT operational).
   using step = canopen::step<bool>;
+  /// Whether the engine reaches the mapped objects by position (the store models
+  /// sdo::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
+  /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
+  static constexpr bool by_position = sdo::positioned_store<Store>;
 
   /// An engine over `store` (borrowed; its reads give the TPDO data, its writes take the RPDO
   /// data and must reach the store the application reads) and `dict` (the dictionary the
@@ -172,21 +177,24 @@ public:
       if (!is_rx && !is_tx) continue;
       last = e.index;
       config *cfg = nullptr;
+      positions *at = nullptr;
       if (is_rx) {
         if (rpdo_count_ == MaxRpdo) {
           st = errc::too_long;
           continue;
         }
-        cfg = &rpdo_[rpdo_count_++].c;
+        cfg = &rpdo_[rpdo_count_].c;
+        at = &rpdo_[rpdo_count_++].pos;
       } else {
         if (tpdo_count_ == MaxTpdo) {
           st = errc::too_long;
           continue;
         }
-        cfg = &tpdo_[tpdo_count_++].c;
+        cfg = &tpdo_[tpdo_count_].c;
+        at = &tpdo_[tpdo_count_++].pos;
       }
       const std::uint16_t base = is_rx ? pdo_index::rpdo_comm : pdo_index::tpdo_comm;
-      if (!load(*cfg, e.index, static_cast<std::uint16_t>(e.index - base + 1U),
+      if (!load(*cfg, *at, e.index, static_cast<std::uint16_t>(e.index - base + 1U),
                 is_rx ? pdo::direction::rpdo : pdo::direction::tpdo) &&
           st) {
         st = errc::bad_length;
@@ -235,7 +243,7 @@ public:
     if (where.mapping) {
       if (a.sub == 0U) {
         c.count = static_cast<std::uint8_t>(*v);
-        (void)load_mapping(c, where.dir);
+        (void)load_mapping(c, positions_of(where), where.dir);
       }
       return;
     }
@@ -268,7 +276,7 @@ public:
       rx_slot &r = rpdo_[i];
       if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
       r.buffered = false;
-      apply(r.c, std::span<const std::uint8_t>(r.data).first(r.dlc));
+      apply(r, std::span<const std::uint8_t>(r.data).first(r.dlc));
     }
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
       tx_slot &t = tpdo_[i];
@@ -341,7 +349,7 @@ public:
         r.dlc = static_cast<std::uint8_t>(data.size());
         for (std::size_t k = 0; k < data.size(); ++k) r.data[k] = data[k];
       } else {
-        apply(r.c, data);
+        apply(r, data);
       }
     }
     return make(now);
@@ -432,8 +440,19 @@ public:
   }
 
 private:
+  /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
+  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
+  /// load_mapping, the only place that changes a mapping, so it never goes stale.
+  struct resolved {
+    std::array<std::size_t, MaxEntries> at{};
+    bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
+  };
+  struct no_positions {};
+  using positions = std::conditional_t<by_position, resolved, no_positions>;
+
   struct tx_slot {
     config c{};
+    [[no_unique_address]] positions pos{};
     std::array<std::uint8_t, 8> data{};
     std::uint32_t inhibit_until = 0;
     std::uint32_t event_due = 0;
@@ -454,6 +473,7 @@ private:
   };
   struct rx_slot {
     config c{};
+    [[no_unique_address]] positions pos{};
     std::array<std::uint8_t, 8> data{};
     std::uint32_t due = 0;
     std::uint8_t dlc = 0;
@@ -516,6 +536,9 @@ private:
   [[nodiscard]] constexpr const config &slot(place p) const noexcept {
     return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
   }
+  [[nodiscard]] constexpr positions &positions_of(place p) noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].pos : tpdo_[p.slot].pos;
+  }
 
   // ----- parameter checks ------------------------------------------------------------------
 
@@ -569,8 +592,8 @@ private:
   // ----- loading ---------------------------------------------------------------------------
 
   /// Read one PDO's parameters; false when they cannot be served (the PDO is then unusable).
-  [[nodiscard]] constexpr bool load(config &c, std::uint16_t comm, std::uint16_t number,
-                                    pdo::direction d) noexcept {
+  [[nodiscard]] constexpr bool load(config &c, positions &at, std::uint16_t comm,
+                                    std::uint16_t number, pdo::direction d) noexcept {
     c = config{};
     c.number = number;
     c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
@@ -584,13 +607,13 @@ private:
     }
     c.count = static_cast<std::uint8_t>(read_u32(*store_, {map, 0}).value_or(0U));
     c.usable = check_comm(config{}, d, 2, c.type) == abort_code::none &&
-               (c.cob & 0x3FFF'F800U) == 0U && load_mapping(c, d);
+               (c.cob & 0x3FFF'F800U) == 0U && load_mapping(c, at, d);
     return c.usable;
   }
 
   /// Read mapping entries 1..count from the store and check them; false (and count 0) when
-  /// they cannot be served.
-  constexpr bool load_mapping(config &c, pdo::direction d) noexcept {
+  /// they cannot be served. A positioned store: look each mapped object up (at[k]).
+  constexpr bool load_mapping(config &c, positions &at, pdo::direction d) noexcept {
     const std::uint32_t first =
         d == pdo::direction::rpdo ? pdo_index::rpdo_map : pdo_index::tpdo_map;
     const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
@@ -613,6 +636,16 @@ private:
       return false;
     }
     c.bytes = static_cast<std::uint8_t>((r.total_bits + 7U) / 8U);
+    if constexpr (by_position) {
+      at.whole_bytes = true;
+      for (std::size_t k = 0; k < c.count; ++k) {
+        const pdo::mapping_entry &m = c.map[k];
+        at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
+        if (m.bits % 8U != 0U) at.whole_bytes = false;
+      }
+    } else {
+      (void)at;
+    }
     return true;
   }
 
@@ -620,6 +653,59 @@ private:
 
   /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
   [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
+    if constexpr (by_position) {
+      return build_at(t);
+    } else {
+      return build_by_address(t);
+    }
+  }
+  /// build() by position: a mapping of whole bytes (every one without a BOOLEAN of 1 bit) is
+  /// read straight into the frame's bytes, value by value.
+  [[nodiscard]] constexpr bool build_at(tx_slot &t) noexcept {
+    t.data = {};
+    const resolved &p = t.pos;
+    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits t.data
+      std::size_t byte = 0;
+      for (std::size_t k = 0; k < t.c.count; ++k) {
+        const pdo::mapping_entry &m = t.c.map[k];
+        const std::size_t n = m.bits / 8U;
+        if (p.at[k] != sdo::no_position) {
+          std::size_t total = 0;
+          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(t.data.data() + byte, n),
+                              total) != abort_code::none) {
+            return false;
+          }
+        } else if (!m.is_dummy()) {
+          return false; // the store has no such object
+        }
+        byte += n;
+      }
+      return true;
+    }
+    std::size_t offset = 0;
+    for (std::size_t k = 0; k < t.c.count; ++k) {
+      const pdo::mapping_entry &m = t.c.map[k];
+      if (!m.is_dummy()) {
+        if (p.at[k] == sdo::no_position) return false;
+        const std::size_t n = (m.bits + 7U) / 8U;
+        std::size_t total = 0;
+        if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
+          const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
+          if (store_->read_at(p.at[k], 0, out, total) != abort_code::none) return false;
+        } else {
+          std::array<std::uint8_t, 8> v{};
+          if (store_->read_at(p.at[k], 0, v, total) != abort_code::none) return false;
+          std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+          if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+          if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
+        }
+      }
+      offset += m.bits;
+    }
+    return true;
+  }
+  /// build() through the store's read by address (a store without positions).
+  [[nodiscard]] constexpr bool build_by_address(tx_slot &t) noexcept {
     t.data = {};
     std::size_t offset = 0;
     for (const auto &m : t.c.entries()) {
@@ -640,7 +726,7 @@ private:
     can_frame f;
     f.id = t.c.id();
     f.dlc = t.c.bytes;
-    for (std::size_t k = 0; k < t.c.bytes; ++k) f.data[k] = t.data[k];
+    f.data = t.data; // zero past c.bytes: build writes only the mapping's bits
     out_.push(f);
   }
   /// Sample and send a TPDO now; restarts its inhibit time and event timer.
@@ -659,7 +745,47 @@ private:
   }
 
   /// Write an RPDO's data (at least c.bytes long) into the mapped objects.
-  constexpr void apply(const config &c, std::span<const std::uint8_t> data) noexcept {
+  constexpr void apply(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    if constexpr (by_position) {
+      apply_at(r, data);
+    } else {
+      apply_by_address(r.c, data);
+    }
+  }
+  /// apply() by position: an object on whole bytes is written straight from the frame's bytes.
+  /// Its length, (bits + 7) / 8, is what apply_by_address takes from the dictionary: a mapping
+  /// that passed pdo::check_mapping has bits = 8 × width for fixed-size types, 1 or 8 for a
+  /// BOOLEAN (width 1) and whole bytes for byte strings.
+  constexpr void apply_at(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    const resolved &p = r.pos;
+    std::size_t offset = 0;
+    std::uint8_t refused = 0;
+    for (std::size_t k = 0; k < r.c.count; ++k) {
+      const pdo::mapping_entry &m = r.c.map[k];
+      if (!m.is_dummy()) {
+        const std::size_t n = (m.bits + 7U) / 8U;
+        abort_code c = abort_code::general_error;
+        if (p.at[k] == sdo::no_position) {
+          // the store has no such object: refused, as its write would refuse it
+        } else if ((p.whole_bytes || ((offset | m.bits) % 8U) == 0U) &&
+                   offset / 8U + n <= data.size()) {
+          c = store_->write_at(p.at[k], 0, data.subspan(offset / 8U, n), true);
+        } else {
+          std::array<std::uint8_t, 8> v{};
+          const auto raw = pdo::unpack(data, offset, m.bits);
+          if (raw && store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
+                                    byte_order::little)) {
+            c = store_->write_at(p.at[k], 0, std::span<const std::uint8_t>(v).first(n), true);
+          }
+        }
+        if (c != abort_code::none) ++refused;
+      }
+      offset += m.bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+  }
+  /// apply() through the store's write by address (a store without positions).
+  constexpr void apply_by_address(const config &c, std::span<const std::uint8_t> data) noexcept {
     std::size_t offset = 0;
     std::uint8_t refused = 0;
     for (const auto &m : c.entries()) {
