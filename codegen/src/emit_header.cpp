@@ -454,7 +454,8 @@ std::string_view command_value_enum(od::command_value v) {
 /// Four lower-case hex digits (the suffix of a colliding name).
 std::array<char, 4> lower_hex4(std::uint16_t v) {
   std::array<char, 4> h{};
-  for (std::size_t k = 0; k < 4U; ++k) h[3U - k] = "0123456789abcdef"[(v >> (4U * k)) & 0xFU];
+  for (std::size_t k = 0; k < 4U; ++k)
+    h[3U - k] = "0123456789abcdef"[(static_cast<unsigned>(v) >> (4U * k)) & 0xFU];
   return h;
 }
 
