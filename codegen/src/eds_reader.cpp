@@ -407,7 +407,7 @@ struct value_slot {
   key id;
   od::number entry::*number;
   bool entry::*nodeid;
-  std::string entry::*text; // nullptr: a limit (byte strings have none)
+  rare_text entry::*text; // nullptr: a limit (byte strings have none)
 };
 constexpr value_slot value_slots[] = {
     {key::default_value, &entry::default_value, &entry::default_nodeid, &entry::default_text},

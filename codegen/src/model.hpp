@@ -54,9 +54,12 @@ public:
   operator std::string_view() const noexcept { return str(); }
   [[nodiscard]] bool empty() const noexcept { return !p_ || p_->empty(); }
   [[nodiscard]] std::size_t size() const noexcept { return p_ ? p_->size() : 0U; }
+  [[nodiscard]] const char *data() const noexcept { return str().data(); }
+  void clear() noexcept { p_.reset(); }
   friend bool operator==(const rare_text &a, const rare_text &b) noexcept {
     return a.str() == b.str();
   }
+  friend bool operator==(const rare_text &a, std::string_view b) noexcept { return a.str() == b; }
 
 private:
   std::unique_ptr<std::string> p_;
@@ -92,7 +95,7 @@ struct entry {
   bool parameter_nodeid = false; ///< parameter_value (DCF ParameterValue) is "$NODEID + ..."
   /// Default / DCF ParameterValue of a byte-string entry: the value's bytes as a store holds them
   /// (an EDS OCTET_STRING / DOMAIN written as hex digits is decoded, a UNICODE_STRING is UTF-16LE).
-  std::string default_text, parameter_text;
+  rare_text default_text, parameter_text;
   std::string denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};

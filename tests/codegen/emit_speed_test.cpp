@@ -333,6 +333,12 @@ TEST_CASE("rare_text: reads like a std::string, copies deeply, empty without a s
   CHECK(a == gen::rare_text{});
   gen::rare_text c = std::move(b);
   CHECK(c.str() == "mbar");
-  // an entry is smaller than with six std::string columns (the point of rare_text)
+  CHECK(c == "mbar");
+  CHECK_FALSE(c == "bar");
+  CHECK(std::string(c.data(), c.size()) == "mbar");
+  c.clear();
+  CHECK(c.empty());
+  CHECK(c == "");
+  // an entry is smaller than with eight std::string columns (the point of rare_text)
   static_assert(sizeof(gen::rare_text) == sizeof(void *));
 }
