@@ -154,9 +154,8 @@ void add_sdo(bench::registry &reg) {
         const auto &msg = m.value();
         d.index = msg.address.index;
         d.sub = msg.address.sub;
-        d.size = msg.data_size;
-        d.value = static_cast<std::uint32_t>(
-            fieldcodec::load_unsigned(msg.bytes(), msg.data_size, byte_order::little).value_or(0));
+        d.size = static_cast<std::uint8_t>(msg.size); // 1..4 for an expedited message
+        d.value = msg.value;
         d.ok = true;
         return d;
       },

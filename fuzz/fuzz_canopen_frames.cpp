@@ -143,9 +143,8 @@ co::can_frame sdo_canonical(const co::can_frame &canon, const sdo::message &m) {
   case t::initiate_upload_response: {
     const auto ccs = static_cast<std::uint8_t>(d[0] & 0xE0U);
     if (m.expedited) {
-      d[0] = static_cast<std::uint8_t>(ccs |
-                                       (m.size_indicated ? ((4U - m.data_size) << 2U) | 3U : 2U));
-      clear(4U + m.data_size, 8);
+      d[0] = static_cast<std::uint8_t>(ccs | (m.size_indicated ? ((4U - m.size) << 2U) | 3U : 2U));
+      clear(4U + m.size, 8);
     } else {
       d[0] = static_cast<std::uint8_t>(ccs | (m.size_indicated ? 1U : 0U));
       if (!m.size_indicated) clear(4, 8);

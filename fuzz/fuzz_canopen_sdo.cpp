@@ -240,8 +240,9 @@ void server_mode(reader &r) {
     if (m.type == sdo::message_type::initiate_upload_response && m.expedited &&
         m.address == od::address{0x2000, 1}) {
       FUZZ_CHECK(m.size_indicated);
+      const auto b = m.value_bytes();
       FUZZ_CHECK(
-          std::equal(m.bytes().begin(), m.bytes().end(), value_before.begin(), value_before.end()));
+          std::equal(b.begin(), b.begin() + m.size, value_before.begin(), value_before.end()));
     }
   }
 }

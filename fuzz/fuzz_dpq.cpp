@@ -296,8 +296,10 @@ void check_sdo(const od::descriptor &e, reader &r) {
         auto m = fieldcodec::canopen::sdo::decode(w.value(),
                                                   fieldcodec::canopen::sdo::direction::to_server);
         FUZZ_CHECK(m.has_value() && p.has_value());
-        FUZZ_CHECK(std::equal(m.value().bytes().begin(), m.value().bytes().end(),
-                              p.value().span().begin(), p.value().span().end()));
+        const auto b = m.value().value_bytes();
+        FUZZ_CHECK(m.value().expedited &&
+                   std::equal(b.begin(), b.begin() + m.value().size, p.value().span().begin(),
+                              p.value().span().end()));
       } else {
         FUZZ_CHECK(w.is(errc::access_denied) || w.is(errc::out_of_range));
       }

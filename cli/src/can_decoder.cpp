@@ -660,7 +660,10 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
     t.expedited = msg.expedited;
     t.size_indicated = msg.size_indicated;
     t.size = msg.size;
-    if (msg.expedited) t.data.assign(msg.bytes().begin(), msg.bytes().end());
+    if (msg.expedited) {
+      const auto b = msg.value_bytes();
+      t.data.assign(b.begin(), b.begin() + msg.size);
+    }
     return;
   case sdo::message_type::download_segment_request:
     if (t.k != K::download || t.expedited) return unexpected("download segment");
@@ -693,7 +696,8 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
     t.size_indicated = msg.size_indicated;
     t.size = msg.size;
     if (msg.expedited) {
-      t.data.assign(msg.bytes().begin(), msg.bytes().end());
+      const auto b = msg.value_bytes();
+      t.data.assign(b.begin(), b.begin() + msg.size);
       break;
     }
     t.toggle = false;

@@ -105,6 +105,29 @@ TEST_CASE("store by position: position, address_at, and no_position") {
         abort_code::general_error);
 }
 
+TEST_CASE("store: a layout whose flags are not the entries' slot_flags does not fit") {
+  // offsets right, flags missing (a layout built by hand): refused as a whole, not every object
+  // read-only or written without its checks
+  auto hand_made = layout;
+  hand_made.flags = {};
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  sdo::dictionary_store<> store{dict, hand_made, storage};
+  CHECK(store.init_defaults(3).error() == fieldcodec::errc::buffer_too_small);
+  std::array<std::uint8_t, 4> out{};
+  std::size_t total = 0;
+  CHECK(store.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
+  CHECK(store.write({0x2000, 0}, 0, std::span<const std::uint8_t>(out).first(2), true) ==
+        abort_code::general_error);
+  // one flag off is enough
+  auto one_off = layout;
+  one_off.flags[1] = static_cast<std::uint8_t>(one_off.flags[1] ^ sdo::slot_flag::writable);
+  sdo::dictionary_store<> store2{dict, one_off, storage};
+  CHECK(store2.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
+  // make_layout's own flags fit
+  sdo::dictionary_store<> good{dict, layout, storage};
+  CHECK(good.init_defaults(3).has_value());
+}
+
 TEST_CASE("store by position: read_at / write_at == read / write, random values and parts") {
   std::vector<std::uint8_t> s1(layout.storage_size());
   std::vector<std::uint8_t> s2(layout.storage_size());

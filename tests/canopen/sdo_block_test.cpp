@@ -285,6 +285,44 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 20, 0, 0, 0}), 0);
     r = s.on_frame(F(0x605, {0x00, 1, 2, 3, 4, 5, 6, 7}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x00, 0x20, 0x00, 0x03, 0x00, 0x04, 0x05}));
+    CHECK(s.error()->error == errc::unexpected_frame);
+    CHECK(s.state() == transfer_state::failed);
+  }
+  // the frames around a segment, which the segment path of on_frame (issue 18) must leave to
+  // the general one: the same answers as for any other request
+  SUBCASE("during the segments: a segment restarts the deadline, nothing is answered") {
+    (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 20, 0, 0, 0}), 0);
+    r = s.on_frame(F(0x605, {0x01, 1, 2, 3, 4, 5, 6, 7}), 500);
+    CHECK(r.send.empty());
+    CHECK(r.state == transfer_state::busy);
+    CHECK(r.deadline == 1500U);
+    CHECK(s.poll(1499).send.empty());
+  }
+  SUBCASE("during the segments: DLC 7 is refused, remote frames ignored, the transfer goes on") {
+    (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 9, 0, 0, 0}), 0);
+    r = s.on_frame(F(0x605, {0x01, 1, 2, 3, 4, 5, 6}), 10);
+    CHECK(r.send.empty());
+    CHECK(s.error()->error == errc::bad_length);
+    CHECK(r.deadline == 1000U);                                  // a refused frame is no activity
+    r = s.on_frame(co::make_remote_frame(0x605, 8).value(), 10); // not for the server
+    CHECK(r.send.empty());
+    CHECK(s.error()->error == errc::bad_length);
+    CHECK(s.on_frame(F(0x606, {0x01, 1, 2, 3, 4, 5, 6, 7}), 10).send.empty()); // not ours
+    CHECK(s.on_frame(F(0x605, {0x01, '1', '2', '3', '4', '5', '6', '7'}), 10).send.empty());
+    r = s.on_frame(F(0x605, {0x82, '8', '9', 0, 0, 0, 0, 0}), 11);
+    CHECK(r.send[0].data[0] == 0xA2);
+    r = s.on_frame(F(0x605, {0xC1 | (5 << 2), 0xC3, 0x31, 0, 0, 0, 0, 0}), 12);
+    CHECK(r.send[0].data[0] == 0xA1);
+    CHECK(s.state() == transfer_state::done);
+  }
+  SUBCASE("during the segments: byte 0 = 0x80 is the client's abort, not a segment") {
+    (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 20, 0, 0, 0}), 0);
+    (void)s.on_frame(F(0x605, {0x01, 1, 2, 3, 4, 5, 6, 7}), 0);
+    r = s.on_frame(F(0x605, {0x80, 0x00, 0x20, 0x00, 0x00, 0x00, 0x00, 0x08}), 0);
+    CHECK(r.send.empty());
+    CHECK(s.state() == transfer_state::failed);
+    CHECK(s.error()->error == errc::aborted);
+    CHECK(s.error()->abort == sdo::abort_code::general_error);
   }
   SUBCASE("the client goes silent: timeout 0x05040000") {
     (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 20, 0, 0, 0}), 0);

@@ -49,8 +49,9 @@ TEST_CASE("DPQ example: TPDO1 event timer on node 5") {
   CHECK(d.m.size_indicated);
   CHECK(d.m.address == fieldcodec::od::address{0x1800, 5});
   CHECK(d.m.size == 2);
-  CHECK(d.m.bytes()[0] == 0x64);
-  CHECK(d.m.bytes()[1] == 0x00);
+  CHECK(d.m.value == 100);
+  CHECK(d.m.value_bytes() == std::array<std::uint8_t, 4>{0x64, 0x00, 0x00, 0x00});
+  CHECK(d.m.bytes().empty()); // expedited data is the number, not segment bytes
   auto rsp = sdo::decode(F(0x585, {0x60, 0x00, 0x18, 0x05, 0, 0, 0, 0})).value();
   CHECK(rsp.dir == sdo::direction::to_client);
   CHECK(rsp.m.type == message_type::initiate_download_response);
@@ -61,8 +62,8 @@ TEST_CASE("DPQ example: TPDO1 event timer on node 5") {
   CHECK(up.m.type == message_type::initiate_upload_response);
   CHECK(up.m.expedited);
   CHECK(up.m.size == 2);
-  CHECK(up.m.bytes().size() == 2);
-  CHECK(up.m.bytes()[0] == 0x64);
+  CHECK(up.m.value == 0x64);
+  CHECK(up.m.data_size == 0);
 }
 
 TEST_CASE("channels: predefined and from SDO parameter objects") {
@@ -101,10 +102,11 @@ TEST_CASE("expedited command bytes for 1..4 bytes, with and without size") {
     CHECK(f[0] == dl[n - 1]);
     auto m = sdo::decode(f, sdo::direction::to_server).value();
     CHECK(m.size == n);
-    CHECK(m.bytes().size() == n);
+    CHECK(m.value == (0x44332211U & (0xFFFF'FFFFU >> (8U * (4U - n)))));
+    CHECK(m.data_size == 0);
     auto g = sdo::expedited_upload_response({0x2000, 0}, std::span(v).first(n)).value();
     CHECK(g[0] == ul[n - 1]);
-    CHECK(sdo::decode(g, sdo::direction::to_client).value().data_size == n);
+    CHECK(sdo::decode(g, sdo::direction::to_client).value().size == n);
     for (std::size_t i = n; i < 4; ++i) CHECK(f[4 + i] == 0); // unused bytes zero
   }
   auto u = sdo::expedited_download_unsized({0x2000, 0}, v).value();
@@ -112,13 +114,70 @@ TEST_CASE("expedited command bytes for 1..4 bytes, with and without size") {
   auto um = sdo::decode(u, sdo::direction::to_server).value();
   CHECK(!um.size_indicated);
   CHECK(um.expedited);
-  CHECK(um.data_size == 4);
+  CHECK(um.size == 4);
+  CHECK(um.value == 0x44332211U);
   auto uu = sdo::expedited_upload_response_unsized({0x2000, 0}, v).value();
   CHECK(uu[0] == 0x42);
   CHECK(sdo::expedited_download({0x2000, 0}, {}) == errc::bad_length);
   const std::array<std::uint8_t, 5> five{};
   CHECK(sdo::expedited_download({0x2000, 0}, five) == errc::too_long);
   CHECK(sdo::expedited_download_unsized({0x2000, 0}, std::span(v).first(3)) == errc::bad_length);
+}
+
+// Round 4: an expedited message carries its data as a number (`value`, `size` bytes of it),
+// not in the segment bytes; encode writes it little-endian and refuses what it cannot send.
+namespace {
+constexpr sdo::message expedited_message(std::uint32_t size, std::uint32_t value,
+                                         bool size_indicated = true) {
+  sdo::message m;
+  m.type = message_type::initiate_download_request;
+  m.address = {0x6081, 0};
+  m.expedited = true;
+  m.size_indicated = size_indicated;
+  m.size = size;
+  m.value = value;
+  return m;
+}
+} // namespace
+static_assert(sdo::encode(expedited_message(4, 0x0001'86A0U)).value() ==
+              sdo::payload{0x23, 0x81, 0x60, 0x00, 0xA0, 0x86, 0x01, 0x00});
+static_assert(sdo::encode(expedited_message(2, 0x1234U)).value() ==
+              sdo::payload{0x2B, 0x81, 0x60, 0x00, 0x34, 0x12, 0x00, 0x00});
+
+TEST_CASE("expedited messages carry their data as a number") {
+  for (std::uint32_t n = 1; n <= 4; ++n) {
+    const std::uint32_t v = 0xA1B2C3D4U & (0xFFFF'FFFFU >> (8U * (4U - n)));
+    const auto p = sdo::encode(expedited_message(n, v)).value();
+    const std::array<std::uint8_t, 4> bytes{0xD4, 0xC3, 0xB2, 0xA1};
+    // the same bytes as the named constructor that takes bytes
+    CHECK(p == sdo::expedited_download({0x6081, 0}, std::span(bytes).first(n)).value());
+    const auto m = sdo::decode(p, sdo::direction::to_server).value();
+    CHECK(m == expedited_message(n, v));
+    CHECK(m.value_bytes()[0] == 0xD4);
+    for (std::size_t i = n; i < 4U; ++i) CHECK(m.value_bytes()[i] == 0);
+    // a value with bits past its size cannot be sent: nothing is dropped
+    if (n < 4U)
+      CHECK(sdo::encode(expedited_message(n, v | (1U << (8U * n)))) == errc::out_of_range);
+  }
+  // unsized: always 4 bytes (0x22), the upload response too (0x42)
+  CHECK(sdo::encode(expedited_message(4, 0x01020304U, false)).value() ==
+        sdo::payload{0x22, 0x81, 0x60, 0x00, 0x04, 0x03, 0x02, 0x01});
+  auto up = expedited_message(1, 0x7F);
+  up.type = message_type::initiate_upload_response;
+  CHECK(sdo::encode(up).value() == sdo::payload{0x4F, 0x81, 0x60, 0x00, 0x7F, 0, 0, 0});
+  // what cannot be sent
+  CHECK(sdo::encode(expedited_message(0, 0)) == errc::bad_length);
+  CHECK(sdo::encode(expedited_message(5, 0)) == errc::too_long);
+  CHECK(sdo::encode(expedited_message(3, 0, false)) == errc::bad_length);
+  // data put where segments carry it (the spelling before round 4) is refused, not sent as 0
+  auto old = expedited_message(2, 0);
+  old.data = {0x64, 0x00};
+  old.data_size = 2;
+  CHECK(sdo::encode(old) == errc::invalid_argument);
+  // a segmented initiate ignores value
+  auto seg = expedited_message(300, 0xFFFF'FFFFU);
+  seg.expedited = false;
+  CHECK(sdo::encode(seg).value() == sdo::payload{0x21, 0x81, 0x60, 0x00, 0x2C, 0x01, 0x00, 0x00});
 }
 
 TEST_CASE("segmented messages") {

@@ -59,9 +59,8 @@ fieldcodec::result<std::uint64_t> sent(const od::entry &e, T v) {
   auto p = sdo::download(e, v);
   if (!p) return p.error();
   const auto m = sdo::decode(p.value(), sdo::direction::to_server).value();
-  std::uint64_t x = 0;
-  for (std::size_t i = m.data_size; i-- > 0;) x = (x << 8U) | m.data[i];
-  return x;
+  REQUIRE(m.expedited);
+  return std::uint64_t{m.value};
 }
 } // namespace
 

@@ -175,7 +175,8 @@ public:
                              OnWrite on_write = {}) noexcept
       : dict_(dict), offsets_(layout.offsets), flags_(layout.flags), storage_(storage),
         staging_(staging), on_write_(on_write),
-        fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size()) {}
+        fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
+              flags_agree(dict, layout.flags)) {}
 
   /// Bytes of storage `dict` needs.
   [[nodiscard]] static constexpr std::size_t storage_size(od::dictionary dict) noexcept {
@@ -345,6 +346,19 @@ private:
   }
 
   [[nodiscard]] constexpr bool layout_fits() const noexcept { return fits_; }
+
+  /// The layout's flags are the entries' slot_flags (make_layout's); a layout built by hand
+  /// with other flags (or none) does not fit: every access answers general_error and
+  /// init_defaults buffer_too_small, rather than a read-only or unchecked object.
+  template <std::size_t N>
+  [[nodiscard]] static constexpr bool
+  flags_agree(od::dictionary dict, const std::array<std::uint8_t, N> &flags) noexcept {
+    if (dict.size() != N) return false;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (flags[i] != slot_flags(dict.entries()[i])) return false;
+    }
+    return true;
+  }
 
   /// Entry i's default for node_ into its slot; false when a default text had to be cut.
   constexpr bool fill_default(std::size_t i) noexcept {

@@ -208,7 +208,9 @@ enum class message_type : std::uint8_t {
 /// A decoded SDO message. Which members mean something depends on `type`:
 /// * initiate download request / initiate upload response: address, expedited, size_indicated,
 ///   size (expedited: the data bytes, 1..4, or 4 when not indicated; segmented: the announced
-///   total when size_indicated), data/data_size (expedited data).
+///   total when size_indicated), value (expedited: the data bytes as one little-endian number,
+///   the bytes past `size` zero; value_bytes() gives them as bytes). An expedited message never
+///   uses data/data_size (encode refuses one that does).
 /// * download segment request / upload segment response: toggle, last, data/data_size (0..7).
 /// * upload segment request / download segment response: toggle.
 /// * initiate upload request / initiate download response: address.
@@ -220,8 +222,8 @@ enum class message_type : std::uint8_t {
 /// * block end: unused (bytes of the last segment without data), checksum (CRC).
 /// * block segment: sequence (1..127), last (no more segments), data (7 bytes).
 struct message {
+  // (the one-byte members first, then `address`: 36 bytes, no padding but address's own byte)
   message_type type = message_type::abort;
-  od::address address{};
   bool expedited = false;
   bool size_indicated = false;
   bool toggle = false;
@@ -231,14 +233,21 @@ struct message {
   std::uint8_t sequence = 0;         ///< block ack: last good sequence number; block segment
   std::uint8_t switch_threshold = 0; ///< block upload initiate: protocol switch threshold
   std::uint8_t unused = 0;           ///< block end: bytes of the last segment without data
-  std::uint16_t checksum = 0;        ///< block end: CRC-16 of the data
+  od::address address{};
+  std::uint16_t checksum = 0; ///< block end: CRC-16 of the data
   std::uint32_t size = 0;
+  std::uint32_t value = 0; ///< expedited initiate: the data, little-endian
   abort_code abort = abort_code::none;
-  std::array<std::uint8_t, 7> data{};
-  std::uint8_t data_size = 0;
+  std::array<std::uint8_t, 7> data{}; ///< segments: the data bytes
+  std::uint8_t data_size = 0;         ///< segments: how many of `data` are data, 0..7
 
+  /// A segment's data bytes (empty for every other message).
   [[nodiscard]] constexpr std::span<const std::uint8_t> bytes() const noexcept {
     return std::span<const std::uint8_t>(data).first(data_size);
+  }
+  /// An expedited initiate's data as bytes: the first `size` are data, the rest zero.
+  [[nodiscard]] constexpr std::array<std::uint8_t, 4> value_bytes() const noexcept {
+    return to_bytes<std::uint32_t>(value, byte_order::little);
   }
   friend constexpr bool operator==(const message &, const message &) noexcept = default;
 };
@@ -364,25 +373,24 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   return n >= 1U && n <= max_block_size;
 }
 
-/// The data of an expedited initiate (byte 0 xxxx nn1s) into `m`: 1..4 data bytes (4 without
-/// size indication) as one masked word (the unused bytes zero), size = data_size.
+/// The data of an expedited initiate (byte 0 xxxx nn1s) into `m`: size = 1..4 data bytes (4
+/// without size indication), value = those bytes as one little-endian word (the unused bytes
+/// zero, whatever the sender put there).
 constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   const unsigned b0 = p[0];
   const unsigned n = (b0 & 0x01U) != 0U ? (b0 >> 2U) & 3U : 0U;
-  m.data_size = static_cast<std::uint8_t>(4U - n);
-  m.size = m.data_size;
-  // the 4 - n data bytes as one word (the unused ones zero), not a loop of run-time length
-  const auto v =
-      to_bytes<std::uint32_t>(get_u32(p) & (0xFFFF'FFFFU >> (8U * n)), byte_order::little);
-  for (std::size_t i = 0; i < 4U; ++i) m.data[i] = v[i];
+  m.size = 4U - n;
+  m.value = get_u32(p) & (0xFFFF'FFFFU >> (8U * n));
 }
 } // namespace detail
 
 /// The 8 bytes of `m`. Unused bytes are zero.
-/// Errors: bad_length (expedited without data or unsized with other than 4 bytes, a non-last
-/// segment without exactly 7 bytes), too_long (expedited over 4 or a segment over 7 bytes),
-/// out_of_range (block size not 1..127, sequence number over 127 — or 0 for a segment —,
-/// unused bytes over 7), invalid_argument (an unknown type).
+/// Errors: bad_length (expedited without data — size 0 — or unsized with a size other than 4, a
+/// non-last segment without exactly 7 bytes), too_long (expedited size over 4 or a segment over
+/// 7 bytes), out_of_range (an expedited value with bits set past its size, block size not
+/// 1..127, sequence number over 127 — or 0 for a segment —, unused bytes over 7),
+/// invalid_argument (an unknown type, an expedited message with data_size set: its data goes
+/// in `value`).
 [[nodiscard]] constexpr result<payload> encode(const message &m) noexcept {
   payload p{};
   if (m.type == message_type::block_segment) {
@@ -407,11 +415,13 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   case detail::layout::initiate:
     detail::put_address(p, m.address);
     if (m.expedited) {
-      if (m.data_size == 0U) return errc::bad_length;
-      if (m.data_size > 4U) return errc::too_long;
-      if (!m.size_indicated && m.data_size != 4U) return errc::bad_length;
-      b0 |= m.size_indicated ? ((4U - m.data_size) << 2U) | 0x03U : 0x02U;
-      for (std::size_t i = 0; i < m.data_size; ++i) p[4U + i] = m.data[i];
+      if (m.data_size != 0U) return errc::invalid_argument;
+      if (m.size == 0U) return errc::bad_length;
+      if (m.size > 4U) return errc::too_long;
+      if (!m.size_indicated && m.size != 4U) return errc::bad_length;
+      if (m.size < 4U && (m.value >> (8U * m.size)) != 0U) return errc::out_of_range;
+      b0 |= m.size_indicated ? ((4U - m.size) << 2U) | 0x03U : 0x02U;
+      detail::put_u32(p, m.value);
     } else if (m.size_indicated) {
       b0 |= 0x01U;
       detail::put_u32(p, m.size);
@@ -457,15 +467,32 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   return p;
 }
 
+// `decode(payload, direction)` is the straight path of expedited initiates plus a call of the
+// table decoder, which stays out of line (issue 18, round 4): inlined where it is called, a
+// caller's tests of the type fold and the message is built in the caller's frame. GCC's own
+// choice varied with what else a program holds (it inlined the table into `decode` and stopped
+// inlining `decode` into the SDO client and server: ~30 instructions more per message), so it
+// is said here. Built for size (-Os, firmware) the compiler decides.
+#if defined(__OPTIMIZE_SIZE__) || !defined(__GNUC__)
+#define FIELDCODEC_SDO_OUT_OF_LINE
+#define FIELDCODEC_SDO_INLINE
+#else
+#define FIELDCODEC_SDO_OUT_OF_LINE [[gnu::noinline]]
+#define FIELDCODEC_SDO_INLINE [[gnu::always_inline]]
+#endif
+
 namespace detail {
 /// decode through the command table: every command (decode takes expedited initiates first, by
 /// straight code that gives the same message).
-[[nodiscard]] constexpr result<message> decode_by_table(const payload &p, direction d) noexcept {
+FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message>
+decode_by_table(const payload &p, direction d) noexcept {
   const unsigned b0 = p[0];
   const std::size_t ci = detail::command_for(d, p[0]);
   if (ci == std::size(detail::commands)) return errc::unknown_command;
   const detail::command *c = &detail::commands[ci];
-  message m;
+  // built in the result that is returned (no copy of the message on the way out)
+  result<message> r{message{}};
+  message &m = r.value();
   m.type = c->type;
   switch (c->lay) {
   case detail::layout::segment:
@@ -513,14 +540,15 @@ namespace detail {
     break;
   case detail::layout::command_only: break;
   }
-  return m;
+  return r;
 }
 } // namespace detail
 
 /// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
 /// bits are ignored; values the machines must judge (block sizes, sequence numbers) are
 /// reported as they are. Errors: unknown_command (no such command in that direction).
-[[nodiscard]] constexpr result<message> decode(const payload &p, direction d) noexcept {
+FIELDCODEC_SDO_INLINE [[nodiscard]] constexpr result<message> decode(const payload &p,
+                                                                     direction d) noexcept {
   // The commonest message first (issue 18): an expedited initiate, 001x nn1s to the server
   // (download request), 010x nn1s to the client (upload response), built by straight code so
   // that a caller's tests of type and `expedited` fold after inlining. The table gives the

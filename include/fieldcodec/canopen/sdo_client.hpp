@@ -117,19 +117,21 @@ public:
   /// buffer_too_small (upload larger than the buffer), bad_checksum (block CRC),
   /// out_of_range (block size).
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
-    if (!core_.busy() || !ch_.is_response(f)) return core_.make({});
-    auto p = payload_of(f);
-    if (!p) return abort_with(p.error(), abort_code::general_error);
+    if (!core_.busy() || !ch_.is_response(f)) return core_.make();
+    // payload_of's check, reading the bytes in place (no copy of them through a result)
+    if (const auto ok = expect_data(f, 8); !ok)
+      return abort_with(ok.error(), abort_code::general_error);
+    const payload &p = f.data;
     core_.touch(now);
     if (raw_ != nullptr) {
-      if (auto s = (this->*raw_)(p.value())) return *s;
+      if (auto s = (this->*raw_)(p)) return *s;
     }
-    auto r = decode(p.value(), direction::to_client);
+    auto r = decode(p, direction::to_client);
     if (!r) return abort_with(r.error(), abort_code::unknown_command);
     const message &m = r.value();
     if (m.type == message_type::abort) {
       core_.fail(errc::aborted, m.abort);
-      return core_.make({});
+      return core_.make();
     }
     return (this->*handler_)(m);
   }
@@ -137,13 +139,13 @@ public:
   /// Check the timeout: abort 0x05040000, error timeout.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
     if (core_.timed_out(now)) return abort_with(errc::timeout, abort_code::timeout);
-    return core_.make({});
+    return core_.make();
   }
 
   /// Abort the running transfer from the application side (e.g. on shutdown): error aborted
   /// with `code`.
   [[nodiscard]] constexpr step cancel(abort_code code = abort_code::general_error) noexcept {
-    if (!core_.busy()) return core_.make({});
+    if (!core_.busy()) return core_.make();
     return abort_with(errc::aborted, code);
   }
 
@@ -162,7 +164,7 @@ public:
   /// When the running transfer times out (the deadline of the last step; empty when idle), for
   /// a caller that holds several machines and did not just call this one.
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline() const noexcept {
-    return core_.make({}).deadline;
+    return core_.make().deadline;
   }
   [[nodiscard]] constexpr const channel &connection() const noexcept { return ch_; }
   /// Use another channel (between transfers). Errors: bad_state.
@@ -208,7 +210,7 @@ private:
   }
   [[nodiscard]] constexpr step done() noexcept {
     core_.finish();
-    return core_.make({});
+    return core_.make();
   }
   /// An initiate response must be of `t` and name the transfer's object.
   [[nodiscard]] constexpr std::optional<step> check_initiate(const message &m,
@@ -252,11 +254,12 @@ private:
   [[nodiscard]] constexpr step upload_initiate(const message &m) noexcept {
     if (auto s = check_initiate(m, message_type::initiate_upload_response)) return *s;
     if (m.expedited) {
-      if (m.data_size > rx_.size()) {
+      if (m.size > rx_.size()) {
         return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
       }
-      for (std::size_t i = 0; i < m.data_size; ++i) rx_[i] = m.data[i];
-      count_ = m.data_size;
+      const auto bytes = m.value_bytes();
+      for (std::size_t i = 0; i < m.size; ++i) rx_[i] = bytes[i];
+      count_ = m.size;
       return done();
     }
     if (m.size_indicated && m.size > rx_.size()) {
@@ -345,13 +348,11 @@ private:
   /// During the segments of a sub-block every frame but an abort is a segment.
   [[nodiscard]] constexpr std::optional<step> block_upload_segment(const payload &p) noexcept {
     if (p[0] == 0x80U) return std::nullopt; // an abort
-    auto seg = decode_block_segment(p);
-    if (!seg) return abort_with(errc::unexpected_frame, abort_code::invalid_sequence_number);
-    const auto r = block_rx_.on_segment(seg.value(), p);
+    const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
     if (r.abort != abort_code::none) return local_abort(r.abort);
     for (std::size_t i = 0; i < r.bytes.size(); ++i) rx_[r.offset + i] = r.bytes[i];
     count_ = block_rx_.count();
-    if (!r.acknowledge) return core_.make({});
+    if (!r.acknowledge) return core_.make();
     if (block_rx_.final_received()) {
       expect(&client::block_upload_end, &client::block_upload_repeat);
     }
@@ -359,7 +360,7 @@ private:
   }
   /// While the end is awaited: the last segment once more is ignored.
   [[nodiscard]] constexpr std::optional<step> block_upload_repeat(const payload &p) noexcept {
-    if (block_rx_.is_repeat(p)) return core_.make({});
+    if (block_rx_.is_repeat(p)) return core_.make();
     return std::nullopt;
   }
   [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {

@@ -88,8 +88,10 @@ requires std::derived_from<E, od::entry>
   if (r.address != od::address{e.index, e.sub}) return errc::unexpected_frame;
   const std::size_t w = od::fixed_size(e.type);
   if (w == 0U || w > 4U) return errc::type_mismatch;
-  if (r.size_indicated && r.data_size != w) return errc::bad_length;
-  return od::decode(e, r.bytes().first(w), byte_order::little, od::limits::ignore);
+  if (r.size_indicated && r.size != w) return errc::bad_length;
+  const auto bytes = r.value_bytes();
+  return od::decode(e, std::span<const std::uint8_t>(bytes).first(w), byte_order::little,
+                    od::limits::ignore);
 }
 /// The same from a frame (the COB-ID is not checked). Errors: also bad_length (DLC not 8),
 /// unexpected_frame (remote frame).

@@ -248,8 +248,11 @@ public:
     std::size_t offset = 0;
     bool acknowledge = false;
   };
-  /// Take a segment frame's bytes. `m` is the decoded segment (decode_block_segment), `raw`
-  /// its 8 bytes. The rules (as the common C stacks apply them):
+  /// Take a segment frame's 8 bytes (byte 0 = last << 7 | sequence number, then 7 data bytes,
+  /// as decode_block_segment reads them; read here in place, without a `message`: this runs
+  /// for every segment of a block transfer). `bytes` of the result points into `raw`. The
+  /// rules (as the common C stacks apply them):
+  /// * sequence number 0 is no segment: invalid_sequence_number;
   /// * the next sequence number is taken; the last one of the sub-block (or the last segment of
   ///   the transfer) asks for the acknowledgement;
   /// * a repeat of the segment just taken, and anything before the first segment of a
@@ -259,20 +262,26 @@ public:
   /// With sub-blocks of one segment a repeated frame cannot be told from the next segment (both
   /// carry sequence number 1): it is taken as new data, and only the CRC finds it. Keep the CRC
   /// on over links that may repeat frames.
-  [[nodiscard]] constexpr segment_result on_segment(const message &m, const payload &raw) noexcept {
+  [[nodiscard]] constexpr segment_result on_segment(const payload &raw) noexcept {
     segment_result r;
-    if (final_) return r; // a repeat after the last segment: nothing new
-    const bool in_sequence = m.sequence == sequence_ + 1U;
-    if (!in_sequence) {
-      if (sequence_ != 0U && m.sequence != sequence_) r.acknowledge = true;
+    const auto sequence = static_cast<std::uint8_t>(raw[0] & 0x7FU);
+    const bool last = (raw[0] & 0x80U) != 0U;
+    if (sequence == 0U) {
+      r.abort = abort_code::invalid_sequence_number;
       return r;
     }
-    sequence_ = m.sequence;
+    if (final_) return r; // a repeat after the last segment: nothing new
+    const bool in_sequence = sequence == sequence_ + 1U;
+    if (!in_sequence) {
+      if (sequence_ != 0U && sequence != sequence_) r.acknowledge = true;
+      return r;
+    }
+    sequence_ = sequence;
     previous_ = raw;
     have_previous_ = true;
-    if (m.last) {
+    if (last) {
       final_ = true;
-      for (std::size_t i = 0; i < 7U; ++i) last_[i] = m.data[i];
+      for (std::size_t i = 0; i < 7U; ++i) last_[i] = raw[1U + i];
     } else {
       if (announced_ && count_ + 7U > *announced_) {
         r.abort = abort_code::length_too_high;
@@ -282,12 +291,12 @@ public:
         r.abort = abort_code::out_of_memory;
         return r;
       }
-      r.bytes = m.bytes();
+      r.bytes = std::span<const std::uint8_t>(raw).subspan(1, 7);
       r.offset = count_;
       if (crc_enabled_) crc_ = crc::ccitt16(r.bytes, crc_);
       count_ += 7U;
     }
-    r.acknowledge = m.sequence == block_size_ || m.last;
+    r.acknowledge = sequence == block_size_ || last;
     return r;
   }
   /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
@@ -390,15 +399,19 @@ public:
   [[nodiscard]] constexpr bool timed_out(std::uint32_t now) const noexcept {
     return busy() && reached(last_ + timeout_ms_, now);
   }
-  [[nodiscard]] constexpr step make(frames f) const noexcept {
-    step s;
-    s.send = f;
-    s.state = state_;
-    if (busy()) s.deadline = last_ + timeout_ms_;
-    return s;
+  [[nodiscard]] constexpr step make(const frames &f) const noexcept {
+    // built in place, not default-built and then assigned (issue 18)
+    return step{f, state_, deadline()};
   }
+  /// A step that sends nothing: the answer to most frames, e.g. to every block segment but the
+  /// last of a sub-block (its `frames` built in place, not copied from an argument).
+  [[nodiscard]] constexpr step make() const noexcept { return step{frames{}, state_, deadline()}; }
 
 private:
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline() const noexcept {
+    return busy() ? std::optional<std::uint32_t>(last_ + timeout_ms_) : std::nullopt;
+  }
+
   std::uint32_t timeout_ms_;
   std::uint32_t last_ = 0;
   od::address address_{};

@@ -151,8 +151,9 @@ read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_fram
   }
   const std::uint32_t w = e.width();
   if (w == 0U || w > 4U) return sdo_error{errc::type_mismatch, msg.address};
-  if (msg.size_indicated && msg.data_size != w) return sdo_error{errc::bad_length, msg.address};
-  auto raw = raw_from_bytes(e, msg.bytes().first(w));
+  if (msg.size_indicated && msg.size != w) return sdo_error{errc::bad_length, msg.address};
+  const auto bytes = msg.value_bytes();
+  auto raw = raw_from_bytes(e, std::span<const std::uint8_t>(bytes).first(w));
   if (!raw) return sdo_error{raw.error(), msg.address};
   return raw.value();
 }
