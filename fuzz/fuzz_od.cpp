@@ -88,8 +88,9 @@ void check_fixed(const od::descriptor &e, std::span<const std::uint8_t> all, fc:
       if (i && i.value() > -(std::int64_t{1} << 53) && i.value() < (std::int64_t{1} << 53)) {
         FUZZ_CHECK(d.has_value());
         auto m = sdo::decode(d.value(), sdo::direction::to_server);
-        FUZZ_CHECK(m.has_value() && m.value().data_size == w);
-        FUZZ_CHECK(std::equal(in.begin(), in.end(), m.value().bytes().begin()));
+        FUZZ_CHECK(m.has_value() && m.value().expedited && m.value().size == w);
+        const auto sent = m.value().value_bytes();
+        FUZZ_CHECK(std::equal(in.begin(), in.end(), sent.begin()));
       }
     }
   }

@@ -741,7 +741,7 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
       if (e.count != 1U) continue; // a compact run keeps no per-sub-index value
       const object_desc *d = dict->find(a);
       if (od::is_byte_string(e.type)) {
-        e.parameter_text.assign(v.value().begin(), v.value().end());
+        e.parameter_text = std::string(v.value().begin(), v.value().end());
         continue;
       }
       auto n = od::decode(d->core, v.value(), byte_order::little, od::limits::ignore);

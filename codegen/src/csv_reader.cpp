@@ -417,7 +417,7 @@ private:
     e.alt_name = text(r, "alt_name");
     e.symbol = text(r, "symbol");
     if (!e.symbol.empty() && !is_identifier(e.symbol)) {
-      bad(*get(r, "symbol"), "symbol", "expected a C++ identifier, got '" + e.symbol + "'");
+      bad(*get(r, "symbol"), "symbol", "expected a C++ identifier, got '" + e.symbol.str() + "'");
       return false;
     }
     return true;

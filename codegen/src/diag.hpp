@@ -77,11 +77,15 @@ public:
            std::to_string(w) + (w == 1U ? " warning" : " warnings");
   }
   /// Every diagnostic in line order, then (when the limit was reached) where reading stopped.
-  void print(std::ostream &os, bool warnings = true) const {
+  void print(std::ostream &os, bool warnings = true) const { os << text(warnings); }
+  /// What print() prints (fieldcodec-gen writes it without iostreams, whose start-up it saves).
+  [[nodiscard]] std::string text(bool warnings = true) const {
+    std::string out;
     for (const auto &d : sorted()) {
-      if (warnings || d.sev == severity::error) os << format(d) << '\n';
+      if (warnings || d.sev == severity::error) out += format(d) + '\n';
     }
-    if (too_many()) os << stop_message() << '\n';
+    if (too_many()) out += stop_message() + '\n';
+    return out;
   }
   /// "file:line:col: error: too many errors (50); reading stopped here, later problems are not
   /// reported".

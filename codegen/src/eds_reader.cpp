@@ -9,8 +9,10 @@
 #include <array>
 #include <cstring>
 #include <deque>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -205,17 +207,41 @@ struct ci_equal {
   bool operator()(std::string_view a, std::string_view b) const noexcept { return iequals(a, b); }
 };
 
+/// The keys of a section: a range of the reader's key list (or of the section's own list).
+struct key_range {
+  const ini_key *first = nullptr;
+  std::size_t count = 0;
+  [[nodiscard]] const ini_key *begin() const noexcept { return first; }
+  [[nodiscard]] const ini_key *end() const noexcept { return first + count; }
+  [[nodiscard]] std::size_t size() const noexcept { return count; }
+  [[nodiscard]] const ini_key &operator[](std::size_t i) const noexcept { return first[i]; }
+  [[nodiscard]] std::reverse_iterator<const ini_key *> rbegin() const noexcept {
+    return std::reverse_iterator<const ini_key *>(end());
+  }
+  [[nodiscard]] std::reverse_iterator<const ini_key *> rend() const noexcept {
+    return std::reverse_iterator<const ini_key *>(begin());
+  }
+};
+
+/// A section. Its keys follow each other in the file, so they are a range of one list of every
+/// key of the file (`all`, one allocation for the file instead of one per section, referred to
+/// by position: the list may grow); a section that gets the keys of a repeated section of the
+/// same name (merged) moves its keys into a list of its own.
 struct ini_section {
+  explicit ini_section(std::vector<ini_key> &all) : list_(&all), first_(all.size()) {}
+
   std::string name;
   std::string upper;
   int line = 0;
   section_kind kind = section_kind::other; // set when the sections are indexed
-  std::vector<ini_key> keys;
+
+  [[nodiscard]] key_range keys() const noexcept { return {list_->data() + first_, count_}; }
 
   /// The last occurrence of a known key.
   [[nodiscard]] const ini_key *find(key id) const {
     if ((known_ & key_bit(id)) == 0U) return nullptr;
-    for (auto it = keys.rbegin(); it != keys.rend(); ++it) {
+    const key_range k = keys();
+    for (auto it = k.rbegin(); it != k.rend(); ++it) {
       if (it->id == id) return &*it;
     }
     return nullptr;
@@ -224,6 +250,7 @@ struct ini_section {
   /// compared without regard to case). Object lists and comments have hundreds of keys: past a
   /// few, the names of unknown keys are looked up in a map instead of compared one by one.
   [[nodiscard]] const ini_key *find_first(key id, std::string_view key_name) {
+    const key_range keys = this->keys();
     if (id != key::other) {
       if ((known_ & key_bit(id)) == 0U) return nullptr;
       for (const auto &x : keys) {
@@ -232,13 +259,14 @@ struct ini_section {
       return nullptr;
     }
     if (keys.size() >= 16U) {
-      if (others_.empty()) {
+      if (!others_) {
+        others_ = std::make_unique<other_map>();
         for (std::size_t i = 0; i < keys.size(); ++i) {
-          if (keys[i].id == key::other) others_.emplace(keys[i].name, i);
+          if (keys[i].id == key::other) others_->emplace(keys[i].name, i);
         }
       }
-      auto it = others_.find(key_name);
-      return it == others_.end() ? nullptr : &keys[it->second];
+      auto it = others_->find(key_name);
+      return it == others_->end() ? nullptr : &keys[it->second];
     }
     for (const auto &x : keys) {
       if (x.id == key::other && iequals(x.name, key_name)) return &x;
@@ -247,14 +275,25 @@ struct ini_section {
   }
   /// Appends a key (keeps the map of unknown names, once there is one, up to date).
   void add(const ini_key &k) {
-    if (!others_.empty() && k.id == key::other) others_.emplace(k.name, keys.size());
+    if (others_ && k.id == key::other) others_->emplace(k.name, count_);
     known_ |= key_bit(k.id);
-    keys.push_back(k);
+    if (first_ + count_ != list_->size()) { // a merge: the keys of another section follow
+      own_ = std::make_unique<std::vector<ini_key>>(keys().begin(), keys().end());
+      list_ = own_.get();
+      first_ = 0;
+    }
+    list_->push_back(k);
+    ++count_;
   }
 
 private:
   // name (any case) -> first position
-  std::unordered_map<std::string_view, std::size_t, ci_hash, ci_equal> others_;
+  using other_map = std::unordered_map<std::string_view, std::size_t, ci_hash, ci_equal>;
+  std::vector<ini_key> *list_; // the reader's list of every key, or own_
+  std::size_t first_;
+  std::size_t count_ = 0;
+  std::unique_ptr<std::vector<ini_key>> own_; // after a merge
+  std::unique_ptr<other_map> others_;
   std::uint32_t known_ = 0; // key_bit of every key present
 };
 
@@ -368,7 +407,7 @@ struct value_slot {
   key id;
   od::number entry::*number;
   bool entry::*nodeid;
-  std::string entry::*text; // nullptr: a limit (byte strings have none)
+  rare_text entry::*text; // nullptr: a limit (byte strings have none)
 };
 constexpr value_slot value_slots[] = {
     {key::default_value, &entry::default_value, &entry::default_nodeid, &entry::default_text},
@@ -414,6 +453,9 @@ private:
   // Splits the text into sections of keys. Returns false when reading stops (a NUL byte, too
   // many errors).
   bool split(std::string_view text) {
+    // The list of keys reserved for a key per 16 bytes (real files have one per 20..30 bytes;
+    // the list grows should a file have more, ini_section refers to its keys by position).
+    keys_.reserve(text.size() / 16U + 16U);
     int line_no = 0;
     std::size_t pos = 0;
     ini_section *current = nullptr;
@@ -495,11 +537,10 @@ private:
       diag_.error(file_, line_no, static_cast<int>(lead) + 2, "expected a section name");
       return nullptr;
     }
-    ini_section &section = sections_.emplace_back();
+    ini_section &section = sections_.emplace_back(keys_);
     section.name = name;
     section.upper = to_upper(name);
     section.line = line_no;
-    section.keys.reserve(8);
     return &section;
   }
 
@@ -568,7 +609,7 @@ private:
           diag_.warning(file_, s.line, 2,
                         "section [" + s.name + "] appears again (first at line " +
                             std::to_string(it->second->line) + "); keys are merged");
-          for (auto &k : s.keys) it->second->add(k);
+          for (const auto &k : s.keys()) it->second->add(k);
         }
         break;
       }
@@ -581,7 +622,7 @@ private:
   std::size_t expected_entries() const {
     std::size_t n = sections_.size();
     for (const auto &[index, s] : objects_) {
-      for (const auto &k : s->keys) {
+      for (const auto &k : s->keys()) {
         if (k.id != key::compact_sub_obj) continue;
         const int_parse p = parse_int(trim(k.value.substr(0, k.value.find(';'))));
         auto c = p.value.to_uint64();
@@ -609,7 +650,7 @@ private:
 
   static void copy_keys(const ini_section *s, key_list &out) {
     if (s == nullptr) return;
-    for (const auto &k : s->keys) out.emplace_back(k.name, k.value);
+    for (const auto &k : s->keys()) out.emplace_back(k.name, k.value);
   }
 
   void header_sections() {
@@ -621,7 +662,7 @@ private:
     copy_keys(di, dict_.device_info);
     copy_keys(other("DUMMYUSAGE"), dict_.dummy_usage);
     if (const ini_section *c = other("COMMENTS")) {
-      for (const auto &k : c->keys) {
+      for (const auto &k : c->keys()) {
         if (k.name.size() >= 4U && iequals(k.name.substr(0, 4), "LINE") &&
             !iequals(k.name, "LINES")) {
           dict_.comments.emplace_back(k.value);
@@ -842,7 +883,7 @@ private:
   // Keys of a VAR-like section the reader does not interpret go to `out` (kept for the EDS
   // export); unknown ones are reported.
   void other_keys(const ini_section &s, key_list &out) {
-    for (const auto &k : s.keys) {
+    for (const auto &k : s.keys()) {
       if (interpreted_key(k.id)) continue;
       if (!known_other_key(k.id)) unknown_key(s, k);
       out.emplace_back(k.name, k.value);
@@ -853,7 +894,7 @@ private:
   // everything but its name, code, sub-object count and ObjFlags is kept as written (a DataType
   // or DefaultValue there describes no entry).
   void container_keys(const ini_section &s, key_list &out) {
-    for (const auto &k : s.keys) {
+    for (const auto &k : s.keys()) {
       if (k.id == key::parameter_name || k.id == key::object_type || k.id == key::sub_number ||
           k.id == key::compact_sub_obj || k.id == key::obj_flags) {
         continue;
@@ -1197,7 +1238,7 @@ private:
     std::map<std::uint32_t, const ini_key *> out;
     auto it = sections.find(index);
     if (it == sections.end()) return out;
-    for (const auto &k : it->second->keys) {
+    for (const auto &k : it->second->keys()) {
       if (k.id == key::nr_of_entries) continue;
       const int_parse p = parse_int(k.name);
       auto n = p.value.to_uint64();
@@ -1280,7 +1321,7 @@ private:
     auto it = links_.find(index);
     if (it == links_.end()) return;
     const ini_section &s = *it->second;
-    for (const auto &k : s.keys) {
+    for (const auto &k : s.keys()) {
       if (k.id == key::object_links) continue;
       const std::string_view v = value_of(s, k);
       const int_parse p = parse_int(v);
@@ -1305,7 +1346,7 @@ private:
       const ini_section *s = other(name);
       if (s == nullptr) continue;
       any_list = true;
-      for (const auto &k : s->keys) {
+      for (const auto &k : s->keys()) {
         if (k.id == key::supported_objects) continue;
         const std::string_view v = value_of(*s, k);
         const int_parse p = parse_int(v);
@@ -1347,6 +1388,7 @@ private:
   diagnostics &diag_;
   std::string_view text_;            // the file as UTF-8; keys and values are views into it
   std::string converted_;            // the text when the file was not UTF-8
+  std::vector<ini_key> keys_;        // every key of the file, in file order (ini_section::keys)
   std::deque<ini_section> sections_; // deque: pointers stay valid
   std::map<std::uint16_t, const ini_section *> objects_;
   std::map<std::uint16_t, std::map<std::uint8_t, const ini_section *>> subs_;

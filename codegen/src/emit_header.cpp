@@ -6,148 +6,297 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 namespace fieldcodec::gen {
 
 namespace {
 
-// Appenders that write straight into the header (no temporary strings: the emitter runs once
-// per entry and table).
-template <class Int>
-void append_int(std::string &o, Int v) {
-  std::array<char, 24> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  o.append(buf.data(), r.ptr);
-}
-/// Upper-case hex with at least `digits` digits.
-void append_hex(std::string &o, std::uint64_t v, int digits) {
-  std::array<char, 16> buf{};
-  int n = 0;
-  while (v != 0U || n < digits) {
-    buf[static_cast<std::size_t>(15 - n)] = "0123456789ABCDEF"[v & 0xFU];
-    v >>= 4U;
-    ++n;
+/// The header under construction: one string reserved for the whole header and written through
+/// a pointer (a literal is a copy of a length known at compile time, a number is formatted in
+/// place, a name or text is escaped straight into the header), no temporary strings. The
+/// string's size runs at most one chunk ahead of what is written (`grow` zero-fills that chunk
+/// only): the pages of the reservation are touched once, in order. With a `sink`, the string is
+/// a buffer of `capacity` bytes handed to the sink whenever it is full (and at the end).
+class writer {
+public:
+  explicit writer(std::size_t capacity, const header_sink *sink = nullptr) : sink_(sink) {
+    if (sink_ != nullptr) {
+      s_.resize(capacity); // a buffer used again and again: its size at once
+    } else {
+      s_.reserve(capacity);
+    }
+    p_ = s_.data();
+    end_ = p_ + s_.size();
   }
-  o.append(buf.data() + 16 - n, static_cast<std::size_t>(n));
-}
+  /// Room for `n` more bytes at the returned position; write there, then `advance` to the end.
+  [[nodiscard]] char *room(std::size_t n) {
+    if (static_cast<std::size_t>(end_ - p_) < n) {
+      if (sink_ != nullptr) flush();
+      if (static_cast<std::size_t>(end_ - p_) < n) grow(n);
+    }
+    return p_;
+  }
+  void advance(char *end) noexcept { p_ = end; }
 
-void append_number(std::string &o, const od::number &n) {
+  template <std::size_t N>
+  void lit(const char (&t)[N]) {
+    char *const q = room(N - 1U);
+    std::memcpy(q, t, N - 1U);
+    p_ = q + (N - 1U);
+  }
+  void put(std::string_view t) {
+    char *const q = room(t.size());
+    if (!t.empty()) std::memcpy(q, t.data(), t.size());
+    p_ = q + t.size();
+  }
+  void put(char c) {
+    *room(1) = c;
+    ++p_;
+  }
+  /// Decimal, as std::to_chars writes it.
+  void uint(std::uint64_t v) {
+    char tmp[20];
+    std::size_t n = 0;
+    do {
+      tmp[n++] = static_cast<char>('0' + v % 10U);
+      v /= 10U;
+    } while (v != 0U);
+    char *q = room(n);
+    while (n > 0U) *q++ = tmp[--n];
+    p_ = q;
+  }
+  void sint(std::int64_t v) {
+    if (v < 0) {
+      put('-');
+      uint(0U - static_cast<std::uint64_t>(v)); // INT64_MIN's magnitude too
+    } else {
+      uint(static_cast<std::uint64_t>(v));
+    }
+  }
+  /// Upper-case hex with at least `digits` digits.
+  void hex(std::uint64_t v, int digits) {
+    char tmp[16];
+    int n = 0;
+    while (v != 0U || n < digits) {
+      tmp[15 - n] = "0123456789ABCDEF"[v & 0xFU];
+      v >>= 4U;
+      ++n;
+    }
+    put(std::string_view(tmp + 16 - n, static_cast<std::size_t>(n)));
+  }
+  /// `"text"` (append_cpp_string's literal).
+  void cpp_string(std::string_view t) {
+    advance(write_cpp_string(room(cpp_string_capacity(t.size())), t));
+  }
+
+  [[nodiscard]] std::string finish() {
+    s_.resize(static_cast<std::size_t>(p_ - s_.data()));
+    return std::move(s_);
+  }
+  /// Hands what was written since the last flush to the sink.
+  void flush() {
+    if (p_ != s_.data())
+      (*sink_)(std::string_view(s_.data(), static_cast<std::size_t>(p_ - s_.data())));
+    p_ = s_.data();
+  }
+
+private:
+  void grow(std::size_t n) {
+    const auto used = static_cast<std::size_t>(p_ - s_.data());
+    s_.resize(used + std::max<std::size_t>(n, 16384U));
+    p_ = s_.data() + used;
+    end_ = s_.data() + s_.size();
+  }
+  const header_sink *sink_;
+  std::string s_;
+  char *p_;
+  char *end_;
+};
+
+void append_number(writer &o, const od::number &n) {
   switch (n.kind) {
-  case od::number_kind::none: o += "{}"; return;
+  case od::number_kind::none: o.lit("{}"); return;
   case od::number_kind::signed_: {
     const auto v = static_cast<std::int64_t>(n.bits);
     if (v == std::numeric_limits<std::int64_t>::min()) {
-      o += "od::signed_number(-9223372036854775807 - 1)";
+      o.lit("od::signed_number(-9223372036854775807 - 1)");
       return;
     }
-    o += "od::signed_number(";
-    append_int(o, v);
-    o += ')';
+    o.lit("od::signed_number(");
+    o.sint(v);
+    o.put(')');
     return;
   }
   case od::number_kind::unsigned_:
-    o += "od::unsigned_number(";
-    append_int(o, n.bits);
-    o += "U)";
+    o.lit("od::unsigned_number(");
+    o.uint(n.bits);
+    o.lit("U)");
     return;
   case od::number_kind::real: {
     std::array<char, 64> buf{};
     const double d = n.to_double();
     auto [p, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), d);
     std::string_view t(buf.data(), static_cast<std::size_t>(p - buf.data()));
-    o += "od::real_number(";
-    o += t;
-    if (t.find_first_of(".e") == std::string_view::npos) o += ".0";
-    o += ')';
+    o.lit("od::real_number(");
+    o.put(t);
+    if (t.find_first_of(".e") == std::string_view::npos) o.lit(".0");
+    o.put(')');
     return;
   }
   case od::number_kind::decimal_:
-    o += "od::decimal_number(";
-    append_int(o, static_cast<std::int64_t>(n.bits));
-    o += ", ";
-    append_int(o, n.places);
-    o += ')';
+    o.lit("od::decimal_number(");
+    o.sint(static_cast<std::int64_t>(n.bits));
+    o.lit(", ");
+    o.uint(n.places);
+    o.put(')');
     return;
   }
-  o += "{}";
+  o.lit("{}");
 }
-std::string number_literal(const od::number &n) {
-  std::string o;
-  append_number(o, n);
-  return o;
-}
-
-std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(v, digits)); }
 
 // The enumerators' C++ names come from od/data_type.hpp's tables (od::info(…).identifier: one
 // table per idea, shared by the readers, the EDS writer and this emitter).
 
-/// Assigns unique identifiers in a deterministic order.
+/// Assigns unique identifiers in a deterministic order. The names live in blocks that never
+/// move; the set is open addressing over views of them (one look-up per generated name, the
+/// order of names plays no part).
 class symbols {
 public:
-  symbols() {
+  explicit symbols(std::size_t expected) {
+    std::size_t cap = 64;
+    while (cap < 2U * (expected + 16U)) cap *= 2U;
+    slots_.resize(cap);
     for (const char *r : {"entries", "infos", "scales", "dictionary", "commands", "table", "od",
                           "std", "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
-      used_.insert(r);
+      (void)insert(r);
     }
   }
-  // (a hash set: one look-up per generated name, the order of names plays no part)
   /// `wanted` if free, else wanted_<suffix>, else wanted_<suffix>_2, _3, ...
-  std::string take(std::string wanted, const std::string &suffix) {
-    if (wanted.empty()) wanted = "object_" + suffix;
-    if (is_cpp_keyword(wanted)) wanted += '_';
-    if (used_.insert(wanted).second) return wanted;
-    std::string s = wanted + "_" + suffix;
-    for (int n = 2; !used_.insert(s).second; ++n)
-      s = wanted + "_" + suffix + "_" + std::to_string(n);
-    return s;
+  std::string_view take(std::string_view wanted, std::string_view suffix) {
+    std::string &w = want_;
+    w.assign(wanted);
+    if (w.empty()) {
+      w = "object_";
+      w += suffix;
+    }
+    if (is_cpp_keyword(w)) w += '_';
+    if (const std::string_view s = insert(w); !s.empty()) return s;
+    std::string &t = try_;
+    t.assign(w);
+    t += '_';
+    t += suffix;
+    for (unsigned n = 2;; ++n) {
+      if (const std::string_view s = insert(t); !s.empty()) return s;
+      t.assign(w);
+      t += '_';
+      t += suffix;
+      t += '_';
+      t += std::to_string(n);
+    }
   }
 
 private:
-  std::unordered_set<std::string> used_;
+  /// Eight bytes at a time, each word mixed in by a multiplication (names are 10..60 bytes).
+  static std::size_t hash(std::string_view s) noexcept {
+    constexpr std::uint64_t k = 0x9E3779B97F4A7C15U;
+    std::uint64_t h = s.size() * k;
+    std::size_t i = 0;
+    for (; i + 8U <= s.size(); i += 8U) {
+      std::uint64_t w = 0;
+      std::memcpy(&w, s.data() + i, 8);
+      h = (h ^ w) * k;
+      h ^= h >> 32U;
+    }
+    if (i < s.size()) {
+      std::uint64_t w = 0;
+      std::memcpy(&w, s.data() + i, s.size() - i);
+      h = (h ^ w) * k;
+      h ^= h >> 32U;
+    }
+    return static_cast<std::size_t>(h ^ (h >> 29U));
+  }
+  /// The stored name, or empty when `s` is taken already.
+  std::string_view insert(std::string_view s) {
+    if (2U * (used_ + 1U) > slots_.size()) rehash();
+    const std::size_t mask = slots_.size() - 1U;
+    for (std::size_t i = hash(s) & mask;; i = (i + 1U) & mask) {
+      if (slots_[i].empty()) {
+        slots_[i] = store(s);
+        ++used_;
+        return slots_[i];
+      }
+      if (slots_[i] == s) return {};
+    }
+  }
+  void rehash() {
+    std::vector<std::string_view> old(slots_.size() * 2U);
+    old.swap(slots_);
+    const std::size_t mask = slots_.size() - 1U;
+    for (const std::string_view s : old) {
+      if (s.empty()) continue;
+      std::size_t i = hash(s) & mask;
+      while (!slots_[i].empty()) i = (i + 1U) & mask;
+      slots_[i] = s;
+    }
+  }
+  std::string_view store(std::string_view s) {
+    if (left_ < s.size()) {
+      const std::size_t size = std::max<std::size_t>(s.size(), 32768U);
+      blocks_.push_back(std::make_unique<char[]>(size));
+      free_ = blocks_.back().get();
+      left_ = size;
+    }
+    std::memcpy(free_, s.data(), s.size());
+    const std::string_view stored(free_, s.size());
+    free_ += s.size();
+    left_ -= s.size();
+    return stored;
+  }
+  std::vector<std::string_view> slots_; ///< empty: free (a name is never empty)
+  std::size_t used_ = 0;
+  std::vector<std::unique_ptr<char[]>> blocks_;
+  char *free_ = nullptr;
+  std::size_t left_ = 0;
+  std::string want_, try_;
 };
 
 /// A std::string_view literal, `"text"sv`: its length is known without the compiler counting
 /// the characters in constant evaluation, and there is no constructor overload to resolve (both
 /// are a measurable part of compiling a big dictionary). Embedded NULs are kept.
-void append_view(std::string &o, const std::string &v) {
-  append_cpp_string(o, v);
-  o += "sv";
+void append_view(writer &o, const std::string &v) {
+  o.cpp_string(v);
+  o.lit("sv");
 }
 
 /// An od::text column, `{"text", N}`: od::text's (pointer, length) constructor, the length
 /// written out (no counting in constant evaluation). A VISIBLE_STRING (and every descriptive
 /// column) as its text, other bytes (OCTET_STRING, UNICODE_STRING, DOMAIN) with every byte
-/// escaped. Embedded NULs are kept.
-void append_text(std::string &o, od::data_type type, const std::string &bytes) {
-  if (type == od::data_type::visible_string) {
-    o += '{';
-    append_cpp_string(o, bytes);
-    o += ", ";
-    append_int(o, bytes.size());
-    o += '}';
-    return;
-  }
-  // append_cpp_value_text writes `std::string_view{"…", n}`: keep the braces
-  const std::size_t at = o.size();
-  append_cpp_value_text(o, type, bytes);
-  constexpr std::string_view prefix = "std::string_view";
-  if (o.compare(at, prefix.size(), prefix) == 0) o.erase(at, prefix.size());
+/// escaped (append_cpp_value_text's literal). Embedded NULs are kept.
+void append_text(writer &o, od::data_type type, const std::string &bytes) {
+  char *q = o.room(cpp_string_capacity(bytes.size()) + 1U);
+  *q++ = '{';
+  q = type == od::data_type::visible_string ? write_cpp_string(q, bytes)
+                                            : write_cpp_bytes(q, bytes);
+  o.advance(q);
+  o.lit(", ");
+  o.uint(bytes.size());
+  o.put('}');
 }
-void append_text(std::string &o, const std::string &v) {
+void append_text(writer &o, const std::string &v) {
   append_text(o, od::data_type::visible_string, v);
 }
 
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
-void append_flags(std::string &o, const entry &e) {
+void append_flags(writer &o, const entry &e) {
   struct bit {
     bool set;
-    const char *name;
+    std::string_view name;
   };
   const bit bits[] = {
       {(e.flags & od::flag::range_exceeds_field) != 0U, "range_exceeds_field"},
@@ -162,69 +311,77 @@ void append_flags(std::string &o, const entry &e) {
   bool first = true;
   for (const bit &b : bits) {
     if (!b.set) continue;
-    o += first ? ", .flags = od::flag::" : " | od::flag::";
-    o += b.name;
+    if (first) {
+      o.lit(", .flags = od::flag::");
+    } else {
+      o.lit(" | od::flag::");
+    }
+    o.put(b.name);
     first = false;
   }
 }
 
 /// `{...}` initialising the od::entry part.
-void emit_core(std::string &o, const entry &e) {
-  o += "{.index = 0x";
-  append_hex(o, e.index, 4);
+void emit_core(writer &o, const entry &e) {
+  o.lit("{.index = 0x");
+  o.hex(e.index, 4);
   if (e.sub != 0U) {
-    o += ", .sub = ";
-    append_int(o, e.sub);
+    o.lit(", .sub = ");
+    o.uint(e.sub);
   }
   if (e.object != od::object_code::var) {
-    o += ", .object = od::object_code::";
-    o += od::info(e.object).identifier;
+    o.lit(", .object = od::object_code::");
+    o.put(od::info(e.object).identifier);
   }
-  o += ", .type = od::data_type::";
-  o += od::info(e.type).identifier;
+  o.lit(", .type = od::data_type::");
+  o.put(od::info(e.type).identifier);
   if (e.access != od::access::rw) {
-    o += ", .access_type = od::access::";
-    o += od::info(e.access).identifier;
+    o.lit(", .access_type = od::access::");
+    o.put(od::info(e.access).identifier);
   }
   if (e.pdo != od::pdo_mapping::no) {
-    o += ", .pdo = od::pdo_mapping::";
-    o += od::name(e.pdo);
+    o.lit(", .pdo = od::pdo_mapping::");
+    o.put(od::name(e.pdo));
   }
   append_flags(o, e);
   if (e.size != 0U) {
-    o += ", .size = ";
-    append_int(o, e.size);
+    o.lit(", .size = ");
+    o.uint(e.size);
   }
   if (e.low) {
-    o += ", .low = ";
+    o.lit(", .low = ");
     append_number(o, e.low);
   }
   if (e.high) {
-    o += ", .high = ";
+    o.lit(", .high = ");
     append_number(o, e.high);
   }
   if (e.default_value) {
-    o += ", .default_value = ";
+    o.lit(", .default_value = ");
     append_number(o, e.default_value);
   }
   if (!e.default_text.empty()) {
-    o += ", .default_text = ";
+    o.lit(", .default_text = ");
     append_text(o, e.type, e.default_text);
   }
-  o += '}';
+  o.put('}');
 }
 
 /// `{...}` initialising the od::entry_info part ("{}" when the entry has no descriptive column).
-void emit_info(std::string &o, const entry &e) {
-  o += "{";
+void emit_info(writer &o, const entry &e) {
+  o.put('{');
   bool first = true;
-  auto field = [&](const char *name) {
-    o += first ? "." : ", .";
-    o += name;
-    o += " = ";
+  auto field = [&](std::string_view name) {
+    if (first) {
+      o.put('.');
+    } else {
+      o.lit(", .");
+    }
+    o.put(name);
+    o.lit(" = ");
     first = false;
   };
-  auto text = [&](const char *name, const std::string &v) {
+  auto text = [&](std::string_view name, const std::string &v) {
     if (v.empty()) return;
     field(name);
     append_text(o, v);
@@ -238,17 +395,20 @@ void emit_info(std::string &o, const entry &e) {
   text("denotation", e.denotation);
   if (e.pointer != od::no_pointer) {
     field("pointer");
-    append_int(o, e.pointer);
+    o.uint(e.pointer);
   }
   if (e.bus != od::bus_manager::unspecified) {
     field("bus");
-    o += e.bus == od::bus_manager::available ? "od::bus_manager::available"
-                                             : "od::bus_manager::not_available";
+    if (e.bus == od::bus_manager::available) {
+      o.lit("od::bus_manager::available");
+    } else {
+      o.lit("od::bus_manager::not_available");
+    }
   }
   if (e.has_obj_flags && e.obj_flags != 0U) {
     field("obj_flags");
-    o += "0x";
-    append_hex(o, e.obj_flags, 1);
+    o.lit("0x");
+    o.hex(e.obj_flags, 1);
   }
   if (e.parameter_value) {
     field("parameter_value");
@@ -258,7 +418,7 @@ void emit_info(std::string &o, const entry &e) {
     field("parameter_text");
     append_text(o, e.type, e.parameter_text);
   }
-  o += "}";
+  o.put('}');
 }
 
 bool has_scale(const entry &e) {
@@ -266,23 +426,23 @@ bool has_scale(const entry &e) {
 }
 
 /// `{{scale}, {offset}}`, or "{}" for the identity.
-void emit_scale(std::string &o, const entry &e) {
+void emit_scale(writer &o, const entry &e) {
   if (!has_scale(e)) {
-    o += "{}";
+    o.lit("{}");
     return;
   }
-  o += "{{";
-  append_int(o, e.scale.mantissa);
-  o += ", ";
-  append_int(o, e.scale.places);
-  o += "}, {";
-  append_int(o, e.offset.mantissa);
-  o += ", ";
-  append_int(o, e.offset.places);
-  o += "}}";
+  o.lit("{{");
+  o.sint(e.scale.mantissa);
+  o.lit(", ");
+  o.uint(e.scale.places);
+  o.lit("}, {");
+  o.sint(e.offset.mantissa);
+  o.lit(", ");
+  o.uint(e.offset.places);
+  o.lit("}}");
 }
 
-std::string command_value_enum(od::command_value v) {
+std::string_view command_value_enum(od::command_value v) {
   switch (v) {
   case od::command_value::none: return "none";
   case od::command_value::integer: return "integer";
@@ -291,74 +451,98 @@ std::string command_value_enum(od::command_value v) {
   return "none";
 }
 
-void emit_commands(std::string &o, const dictionary &d) {
-  o += "inline constexpr std::array<od::command, " + std::to_string(d.commands.size()) +
-       "> commands{{\n";
+/// Four lower-case hex digits (the suffix of a colliding name).
+std::array<char, 4> lower_hex4(std::uint16_t v) {
+  std::array<char, 4> h{};
+  for (std::size_t k = 0; k < 4U; ++k)
+    h[3U - k] = "0123456789abcdef"[(static_cast<unsigned>(v) >> (4U * k)) & 0xFU];
+  return h;
+}
+
+void emit_commands(writer &o, const dictionary &d) {
+  o.lit("inline constexpr std::array<od::command, ");
+  o.uint(d.commands.size());
+  o.lit("> commands{{\n");
   for (const auto &c : d.commands) {
-    o += "    {.code = 0x" + hex(c.code, 4) + ", .name = ";
+    o.lit("    {.code = 0x");
+    o.hex(c.code, 4);
+    o.lit(", .name = ");
     append_view(o, c.name);
     if (!c.section.empty()) {
-      o += ", .section = ";
+      o.lit(", .section = ");
       append_view(o, c.section);
     }
     if (!c.title.empty()) {
-      o += ", .title = ";
+      o.lit(", .title = ");
       append_view(o, c.title);
     }
     if (!c.parameter.empty()) {
-      o += ", .parameter = ";
+      o.lit(", .parameter = ");
       append_view(o, c.parameter);
     }
     if (c.parameter_min) {
-      o += ", .parameter_min = ";
-      o += number_literal(c.parameter_min);
+      o.lit(", .parameter_min = ");
+      append_number(o, c.parameter_min);
     }
     if (c.parameter_max) {
-      o += ", .parameter_max = ";
-      o += number_literal(c.parameter_max);
+      o.lit(", .parameter_max = ");
+      append_number(o, c.parameter_max);
     }
-    if (c.parameter_packing != od::packing::whole)
-      o += ", .parameter_packing = od::packing::" + std::string(od::name(c.parameter_packing));
-    if (c.date_type != od::command_value::none)
-      o += ", .date_type = od::command_value::" + command_value_enum(c.date_type);
+    if (c.parameter_packing != od::packing::whole) {
+      o.lit(", .parameter_packing = od::packing::");
+      o.put(od::name(c.parameter_packing));
+    }
+    if (c.date_type != od::command_value::none) {
+      o.lit(", .date_type = od::command_value::");
+      o.put(command_value_enum(c.date_type));
+    }
     if (!c.date.empty()) {
-      o += ", .date = ";
+      o.lit(", .date = ");
       append_view(o, c.date);
     }
     if (c.date_min) {
-      o += ", .date_min = ";
-      o += number_literal(c.date_min);
+      o.lit(", .date_min = ");
+      append_number(o, c.date_min);
     }
     if (c.date_max) {
-      o += ", .date_max = ";
-      o += number_literal(c.date_max);
+      o.lit(", .date_max = ");
+      append_number(o, c.date_max);
     }
-    if (c.date_packing != od::packing::whole)
-      o += ", .date_packing = od::packing::" + std::string(od::name(c.date_packing));
-    if (c.reply_type != od::command_value::none)
-      o += ", .reply_type = od::command_value::" + command_value_enum(c.reply_type);
+    if (c.date_packing != od::packing::whole) {
+      o.lit(", .date_packing = od::packing::");
+      o.put(od::name(c.date_packing));
+    }
+    if (c.reply_type != od::command_value::none) {
+      o.lit(", .reply_type = od::command_value::");
+      o.put(command_value_enum(c.reply_type));
+    }
     if (!c.reply.empty()) {
-      o += ", .reply = ";
+      o.lit(", .reply = ");
       append_view(o, c.reply);
     }
     if (!c.modes.empty()) {
-      o += ", .modes = ";
+      o.lit(", .modes = ");
       append_view(o, c.modes);
     }
     if (!c.remark.empty()) {
-      o += ", .remark = ";
+      o.lit(", .remark = ");
       append_view(o, c.remark);
     }
-    o += "},\n";
+    o.lit("},\n");
   }
-  o += "}};\n\ninline constexpr od::command_table "
-       "table{commands};\nstatic_assert(table.is_valid());\n\n";
-  symbols sym;
+  o.lit("}};\n\ninline constexpr od::command_table "
+        "table{commands};\nstatic_assert(table.is_valid());\n\n");
+  symbols sym(d.commands.size());
   for (std::size_t i = 0; i < d.commands.size(); ++i) {
     const auto &c = d.commands[i];
-    const std::string s =
-        sym.take(c.symbol.empty() ? make_identifier(c.name) : c.symbol, lower_hex(c.code, 4));
-    o += "inline constexpr const od::command &" + s + " = commands[" + std::to_string(i) + "];\n";
+    const auto suffix = lower_hex4(c.code);
+    const std::string_view s = sym.take(c.symbol.empty() ? make_identifier(c.name) : c.symbol,
+                                        std::string_view(suffix.data(), suffix.size()));
+    o.lit("inline constexpr const od::command &");
+    o.put(s);
+    o.lit(" = commands[");
+    o.uint(i);
+    o.lit("];\n");
   }
 }
 
@@ -371,55 +555,79 @@ std::string stem_identifier(std::string_view stem) {
   return s;
 }
 
-std::string emit_header(const dictionary &d) {
-  std::string o;
-  o.reserve(d.entries.size() * 400U + 4096U); // about 370 bytes per entry (three tables + names)
-  o += "// Generated from " + d.source_name + " by fieldcodec-gen \xE2\x80\x94 do not edit.\n";
-  o += "// Regenerate with codegen/regenerate.sh (or the fieldcodec_generate_dictionary CMake "
-       "function).\n";
-  o += "// clang-format off\n#pragma once\n\n";
+namespace {
+
+void emit(writer &o, const dictionary &d) {
+  o.lit("// Generated from ");
+  o.put(d.source_name);
+  o.lit(" by fieldcodec-gen \xE2\x80\x94 do not edit.\n");
+  o.lit("// Regenerate with codegen/regenerate.sh (or the fieldcodec_generate_dictionary CMake "
+        "function).\n");
+  o.lit("// clang-format off\n#pragma once\n\n");
   if (d.is_command_table) {
-    o += "#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
-         "<array>\n#include <string_view>\n\n";
+    o.lit("#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
+          "<array>\n#include <string_view>\n\n");
   } else {
-    o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
-         "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
-         "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-         "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
-         "<array>\n#include <cstdint>\n"
-         "#include <string_view>\n\n";
+    o.lit("#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
+          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
+          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
+          "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
+          "<array>\n#include <cstdint>\n"
+          "#include <string_view>\n\n");
   }
-  o += "namespace fieldcodec::dictionaries::" + d.stem + " {\n\n";
-  o += "using namespace std::string_view_literals;\n\n";
-  o += "inline constexpr const char *source_file = " + cpp_string(d.source_name) + ";\n\n";
+  o.lit("namespace fieldcodec::dictionaries::");
+  o.put(d.stem);
+  o.lit(" {\n\n");
+  o.lit("using namespace std::string_view_literals;\n\n");
+  o.lit("inline constexpr const char *source_file = ");
+  o.cpp_string(d.source_name);
+  o.lit(";\n\n");
   if (d.is_command_table) {
     emit_commands(o, d);
-    o += "\n} // namespace fieldcodec::dictionaries::" + d.stem + "\n// clang-format on\n";
-    return o;
+    o.lit("\n} // namespace fieldcodec::dictionaries::");
+    o.put(d.stem);
+    o.lit("\n// clang-format on\n");
+    return;
   }
   if (d.node_id > 0) {
-    o += "/// [DeviceComissioning] NodeID\ninline constexpr std::uint8_t node_id = " +
-         std::to_string(d.node_id) + ";\n\n";
+    o.lit("/// [DeviceComissioning] NodeID\ninline constexpr std::uint8_t node_id = ");
+    o.sint(d.node_id);
+    o.lit(";\n\n");
   }
   // Names, assigned in index order (object, then its named sub-objects): a VAR object's single
   // entry and every named sub-object become standalone od::descriptor constants, ARRAY/RECORD
-  // objects od::object views into the tables.
+  // objects od::object views into the tables. A name is the file's symbol or is built from the
+  // object's name (a sub-object's: the object's C++ name, '_' and its own), `sym` keeps it.
   struct view {
-    std::string symbol;
+    std::string_view symbol;
     const object_info *info;
     std::size_t first, count;
   };
-  std::vector<std::string> named(d.entries.size());
+  std::vector<std::string_view> named(d.entries.size());
   std::vector<bool> is_var(d.entries.size(), false);
   std::vector<view> views;
-  symbols sym;
+  symbols sym(d.entries.size() + d.objects.size());
+  // A name is built in `scratch` (grown, never shrunk: no clearing per name) or is the file's
+  // symbol as it is; `want` holds a sub-object's "<object>_sub<N>".
+  std::string scratch;
+  std::string want;
+  // prefix + the identifier of `name` (nothing after the prefix when the name has none)
+  const auto identifier = [&scratch](std::string_view prefix, std::string_view name) {
+    const std::size_t need = prefix.size() + identifier_capacity(name.size());
+    if (scratch.size() < need) scratch.resize(std::max(need, 2U * scratch.size()));
+    if (!prefix.empty()) std::memcpy(scratch.data(), prefix.data(), prefix.size());
+    const std::size_t n = write_identifier(scratch.data() + prefix.size(), name);
+    return std::string_view(scratch.data(), prefix.size() + n);
+  };
   std::size_t i = 0;
   for (const auto &[index, info] : d.objects) {
     while (i < d.entries.size() && d.entries[i].index < index) ++i;
     std::size_t n = 0;
     while (i + n < d.entries.size() && d.entries[i + n].index == index) ++n;
-    const std::string want = !info.symbol.empty() ? info.symbol : make_identifier(info.name);
-    const std::string s = sym.take(want, lower_hex(index, 4));
+    const std::string_view wanted =
+        !info.symbol.empty() ? std::string_view(info.symbol) : identifier({}, info.name);
+    const auto suffix = lower_hex4(index);
+    const std::string_view s = sym.take(wanted, std::string_view(suffix.data(), suffix.size()));
     const bool single = info.code == od::object_code::var || info.code == od::object_code::domain ||
                         info.code == od::object_code::deftype || info.code == od::object_code::null;
     if (single && n == 1U) {
@@ -428,15 +636,35 @@ std::string emit_header(const dictionary &d) {
     } else {
       views.push_back({s, &info, i, n});
       // named sub-entries: every sub-object of a RECORD/DEFSTRUCT, explicit symbols of arrays
+      std::string prefix(s);
+      prefix += '_';
       for (std::size_t k = i; k < i + n; ++k) {
         const entry &e = d.entries[k];
         const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
         if (!is_named) continue;
-        std::string sub = !e.symbol.empty() ? e.symbol : s + "_" + make_identifier(e.name);
-        if (e.symbol.empty() && make_identifier(e.name).empty()) {
-          sub = s + "_sub" + std::to_string(e.sub);
+        char sub_suffix[8] = {'s', 'u', 'b'};
+        std::size_t digits = 0;
+        {
+          char tmp[3];
+          unsigned v = e.sub;
+          do {
+            tmp[digits++] = static_cast<char>('0' + v % 10U);
+            v /= 10U;
+          } while (v != 0U);
+          for (std::size_t j = 0; j < digits; ++j) sub_suffix[3U + j] = tmp[digits - 1U - j];
         }
-        named[k] = sym.take(sub, "sub" + std::to_string(e.sub));
+        const std::string_view suffix_sub(sub_suffix, 3U + digits);
+        std::string_view sub_wanted = e.symbol;
+        if (e.symbol.empty()) {
+          sub_wanted = identifier(prefix, e.name);
+          if (sub_wanted.size() == prefix.size()) { // the name has no identifier
+            want.assign(s);
+            want += '_';
+            want += suffix_sub;
+            sub_wanted = want;
+          }
+        }
+        named[k] = sym.take(sub_wanted, suffix_sub);
       }
     }
     i += n;
@@ -444,58 +672,107 @@ std::string emit_header(const dictionary &d) {
   bool scales = false;
   for (const auto &e : d.entries) scales = scales || has_scale(e);
 
-  const std::string size = std::to_string(d.entries.size());
-  auto table = [&](const char *type, const char *name,
-                   void (*literal)(std::string &, const entry &)) {
-    o += std::string("inline constexpr std::array<") + type + ", " + size + "> " + name + "{{\n";
+  auto table = [&](std::string_view type, std::string_view name,
+                   void (*literal)(writer &, const entry &)) {
+    o.lit("inline constexpr std::array<");
+    o.put(type);
+    o.lit(", ");
+    o.uint(d.entries.size());
+    o.lit("> ");
+    o.put(name);
+    o.lit("{{\n");
     for (const entry &e : d.entries) {
-      o += "    ";
+      o.lit("    ");
       literal(o, e);
-      o += ",\n";
+      o.lit(",\n");
     }
-    o += "}};\n\n";
+    o.lit("}};\n\n");
   };
   table("od::entry", "entries", emit_core);
   table("od::entry_info", "infos", emit_info);
   if (scales) table("scaling::linear", "scales", emit_scale);
-  o += std::string("inline constexpr od::dictionary dictionary{entries, infos") +
-       (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
+  o.lit("inline constexpr od::dictionary dictionary{entries, infos");
+  if (scales) o.lit(", scales");
+  o.lit("};\nstatic_assert(dictionary.is_valid());\n");
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
-    const std::string at = std::to_string(k);
-    o += "inline constexpr od::descriptor ";
-    o += named[k];
-    o += "{entries[" + at + "], infos[" + at + "]";
-    if (scales) o += ", scales[" + at + "]";
-    o += "}; // 0x" + hex(d.entries[k].index, 4);
-    if (!is_var[k]) o += " sub " + std::to_string(d.entries[k].sub);
-    o += "\n";
+    o.lit("inline constexpr od::descriptor ");
+    o.put(named[k]);
+    o.lit("{entries[");
+    o.uint(k);
+    o.lit("], infos[");
+    o.uint(k);
+    o.put(']');
+    if (scales) {
+      o.lit(", scales[");
+      o.uint(k);
+      o.put(']');
+    }
+    o.lit("}; // 0x");
+    o.hex(d.entries[k].index, 4);
+    if (!is_var[k]) {
+      o.lit(" sub ");
+      o.uint(d.entries[k].sub);
+    }
+    o.put('\n');
   };
-  o += "\n// VAR objects: standalone descriptors (firmware that names one keeps only that one).\n";
+  o.lit(
+      "\n// VAR objects: standalone descriptors (firmware that names one keeps only that one).\n");
   for (std::size_t k = 0; k < d.entries.size(); ++k) {
     if (is_var[k]) descriptor(k);
   }
-  if (!views.empty()) o += "\n// ARRAY and RECORD objects: views into the tables.\n";
+  if (!views.empty()) o.lit("\n// ARRAY and RECORD objects: views into the tables.\n");
   for (const view &v : views) {
-    const std::string at = std::to_string(v.first);
-    const std::string n = std::to_string(v.count);
-    o += "inline constexpr od::object " + v.symbol + "{0x" + hex(v.info->index, 4) +
-         ", od::object_code::" + std::string(od::info(v.info->code).identifier) + ", ";
+    o.lit("inline constexpr od::object ");
+    o.put(v.symbol);
+    o.lit("{0x");
+    o.hex(v.info->index, 4);
+    o.lit(", od::object_code::");
+    o.put(od::info(v.info->code).identifier);
+    o.lit(", ");
     append_view(o, v.info->name);
     // subspan (one non-template member) instead of {entries.data() + k, n}, which makes the
     // compiler resolve std::span's constrained constructor templates for every view: bench700
     // 7.14 -> 6.74 G instructions of g++ -fsyntax-only (docs/performance.md)
-    const std::string range = ".subspan(" + at + ", " + n + ")";
-    o += ", dictionary.entries()" + range + ", dictionary.infos()" + range;
-    if (scales) o += ", dictionary.scales()" + range;
-    o += "};\n";
+    const auto range = [&] {
+      o.lit(".subspan(");
+      o.uint(v.first);
+      o.lit(", ");
+      o.uint(v.count);
+      o.put(')');
+    };
+    o.lit(", dictionary.entries()");
+    range();
+    o.lit(", dictionary.infos()");
+    range();
+    if (scales) {
+      o.lit(", dictionary.scales()");
+      range();
+    }
+    o.lit("};\n");
     // named sub-objects of the view: standalone descriptors too (as `view[sub]`)
     for (std::size_t k = v.first; k < v.first + v.count; ++k) {
       if (!named[k].empty()) descriptor(k);
     }
   }
-  o += "\n} // namespace fieldcodec::dictionaries::" + d.stem + "\n// clang-format on\n";
-  return o;
+  o.lit("\n} // namespace fieldcodec::dictionaries::");
+  o.put(d.stem);
+  o.lit("\n// clang-format on\n");
+}
+
+} // namespace
+
+std::string emit_header(const dictionary &d) {
+  // about 310..370 bytes per entry (three tables + names)
+  writer o(d.entries.size() * 400U + d.commands.size() * 400U + 4096U);
+  emit(o, d);
+  return o.finish();
+}
+
+void emit_header(const dictionary &d, const header_sink &sink) {
+  writer o(std::size_t{64} * 1024U, &sink);
+  emit(o, d);
+  o.flush();
 }
 
 } // namespace fieldcodec::gen

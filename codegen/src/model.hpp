@@ -9,7 +9,9 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -17,6 +19,51 @@ namespace fieldcodec::gen {
 
 /// Keys of a section as written (name, value), in file order.
 using key_list = std::vector<std::pair<std::string, std::string>>;
+
+/// A text that is empty for nearly every entry (the columns only CSV tables have): 8 bytes, the
+/// string allocated when a text is set, where a std::string takes 32 bytes in every entry (an
+/// entry's pages are a measurable part of reading a big EDS; docs/performance.md). Reads like a
+/// `const std::string &` (an empty one when no text is set).
+class rare_text {
+public:
+  rare_text() = default;
+  rare_text(const rare_text &o) : p_(o.p_ ? std::make_unique<std::string>(*o.p_) : nullptr) {}
+  rare_text(rare_text &&) noexcept = default;
+  rare_text &operator=(const rare_text &o) {
+    if (this != &o) p_ = o.p_ ? std::make_unique<std::string>(*o.p_) : nullptr;
+    return *this;
+  }
+  rare_text &operator=(rare_text &&) noexcept = default;
+  ~rare_text() = default;
+  /// Sets the text (an empty one frees the string).
+  rare_text &operator=(std::string_view s) {
+    if (s.empty()) {
+      p_.reset();
+    } else if (p_) {
+      p_->assign(s);
+    } else {
+      p_ = std::make_unique<std::string>(s);
+    }
+    return *this;
+  }
+  [[nodiscard]] const std::string &str() const noexcept {
+    static const std::string none;
+    return p_ ? *p_ : none;
+  }
+  operator const std::string &() const noexcept { return str(); }
+  operator std::string_view() const noexcept { return str(); }
+  [[nodiscard]] bool empty() const noexcept { return !p_ || p_->empty(); }
+  [[nodiscard]] std::size_t size() const noexcept { return p_ ? p_->size() : 0U; }
+  [[nodiscard]] const char *data() const noexcept { return str().data(); }
+  void clear() noexcept { p_.reset(); }
+  friend bool operator==(const rare_text &a, const rare_text &b) noexcept {
+    return a.str() == b.str();
+  }
+  friend bool operator==(const rare_text &a, std::string_view b) noexcept { return a.str() == b; }
+
+private:
+  std::unique_ptr<std::string> p_;
+};
 
 /// Where an EDS lists an object: [MandatoryObjects], [OptionalObjects], [ManufacturerObjects].
 enum class object_list : std::uint8_t { mandatory, optional, manufacturer };
@@ -40,7 +87,7 @@ struct entry {
   std::uint32_t size = 0;
   bool size_declared = false; ///< `size` is given by the file (CSV `bytes`, EDS `Size=`)
   std::string name;
-  std::string symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
+  rare_text symbol; ///< requested C++ identifier (CSV `symbol`), empty: derive from name
   od::number low, high, default_value, parameter_value;
   bool low_nodeid = false;       ///< low is "$NODEID + low"
   bool high_nodeid = false;      ///< high is "$NODEID + high"
@@ -48,11 +95,11 @@ struct entry {
   bool parameter_nodeid = false; ///< parameter_value (DCF ParameterValue) is "$NODEID + ..."
   /// Default / DCF ParameterValue of a byte-string entry: the value's bytes as a store holds them
   /// (an EDS OCTET_STRING / DOMAIN written as hex digits is decoded, a UNICODE_STRING is UTF-16LE).
-  std::string default_text, parameter_text;
+  rare_text default_text, parameter_text;
   std::string denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};
-  std::string unit, alt_name, acceptance, section, remark;
+  rare_text unit, alt_name, acceptance, section, remark; ///< CSV columns
   std::uint8_t pointer = od::no_pointer;
   od::bus_manager bus = od::bus_manager::unspecified;
   std::uint32_t obj_flags = 0;

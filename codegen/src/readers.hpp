@@ -4,6 +4,7 @@
 #include "diag.hpp"
 #include "model.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,6 +34,12 @@ void add_mandatory_objects(dictionary &d);
 
 /// Emit the C++ header.
 [[nodiscard]] std::string emit_header(const dictionary &d);
+/// Receives the header in pieces (consecutive, each non-empty).
+using header_sink = std::function<void(std::string_view piece)>;
+/// Emit the C++ header in pieces of up to 64 kB (a text longer than that makes its piece
+/// longer): together the bytes emit_header(d) returns, without holding them whole
+/// (fieldcodec-gen compares them with the existing output file).
+void emit_header(const dictionary &d, const header_sink &sink);
 
 /// The namespace name for a file stem ("XENAX-CANopen" → "xenax_canopen").
 [[nodiscard]] std::string stem_identifier(std::string_view stem);

@@ -498,12 +498,11 @@ bool sign_minus(std::string_view name, std::size_t i) {
 }
 } // namespace
 
-std::string make_identifier(std::string_view name) {
+std::size_t write_identifier(char *const out, std::string_view name) noexcept {
   // Written through a pointer into a buffer of the largest possible size (every input byte
-  // gives at most "_minus" or "_plus"; the first two bytes are room for a "n_" prefix), one
-  // allocation and no capacity test per character.
-  std::string out(2U + name.size() * 6U + 1U, '\0');
-  char *const start = out.data() + 2;
+  // gives at most "_minus" or "_plus"; the first two bytes are room for a "n_" prefix), no
+  // capacity test per character.
+  char *const start = out + 2;
   char *o = start;
   bool pending_sep = false;
   const auto put = [&](std::string_view t) {
@@ -549,15 +548,22 @@ std::string make_identifier(std::string_view name) {
       pending_sep = true;
     }
   }
-  if (o == start) return {};
-  const bool digit = *start >= '0' && *start <= '9';
-  if (digit) {
+  if (o == start) return 0;
+  auto n = static_cast<std::size_t>(o - start);
+  if (*start >= '0' && *start <= '9') {
     out[0] = 'n';
     out[1] = '_';
+    n += 2U;
+  } else {
+    std::memmove(out, start, n);
   }
-  out.resize(static_cast<std::size_t>(o - out.data()));
-  if (!digit) out.erase(0, 2);
-  if (is_cpp_keyword(out)) out += '_';
+  if (is_cpp_keyword(std::string_view(out, n))) out[n++] = '_';
+  return n;
+}
+
+std::string make_identifier(std::string_view name) {
+  std::string out(identifier_capacity(name.size()), '\0');
+  out.resize(write_identifier(out.data(), name));
   return out;
 }
 
@@ -567,35 +573,83 @@ std::string cpp_string(std::string_view s) {
   return out;
 }
 
+namespace {
+constexpr std::uint64_t byte_ones = 0x0101010101010101U;
+constexpr std::uint64_t byte_highs = 0x8080808080808080U;
+constexpr bool has_zero_byte(std::uint64_t v) noexcept {
+  return ((v - byte_ones) & ~v & byte_highs) != 0U;
+}
+/// Whether one of eight bytes is written escaped in a string literal: below 0x20, 0x7F, '"',
+/// '\\' or '?' (bytes from 0x80 up, UTF-8, are kept). Exact: each test finds whether a byte is
+/// zero / below 0x20, not which one.
+constexpr bool escape_in(std::uint64_t w) noexcept {
+  return ((w - byte_ones * 0x20U) & ~w & byte_highs) != 0U ||
+         has_zero_byte(w ^ (byte_ones * 0x7FU)) || has_zero_byte(w ^ (byte_ones * '"')) ||
+         has_zero_byte(w ^ (byte_ones * '\\')) || has_zero_byte(w ^ (byte_ones * '?'));
+}
+/// Byte `i` of `s` as a string literal writes it.
+char *write_literal_byte(char *o, std::string_view s, std::size_t i) noexcept {
+  const auto c = static_cast<unsigned char>(s[i]);
+  if (c >= 0x20U && c != 0x7FU && c != '"' && c != '\\' && c != '?') {
+    *o++ = static_cast<char>(c);
+  } else if (c == '"' || c == '\\') {
+    *o++ = '\\';
+    *o++ = static_cast<char>(c);
+  } else if (c == '?') {
+    *o++ = '?';
+    if (i + 1U < s.size() && s[i + 1U] == '?') *o++ = '\\'; // never a trigraph
+  } else {
+    *o++ = '\\';
+    *o++ = static_cast<char>('0' + ((c >> 6U) & 7U));
+    *o++ = static_cast<char>('0' + ((c >> 3U) & 7U));
+    *o++ = static_cast<char>('0' + (c & 7U));
+  }
+  return o;
+}
+} // namespace
+
+char *write_cpp_string(char *o, std::string_view s) noexcept {
+  *o++ = '"';
+  // Eight bytes at a time: copied at once when none of them is escaped.
+  std::size_t i = 0;
+  while (i + 8U <= s.size()) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, s.data() + i, 8);
+    if (!escape_in(w)) {
+      std::memcpy(o, &w, 8);
+      o += 8;
+      i += 8U;
+      continue;
+    }
+    for (const std::size_t end = i + 8U; i < end; ++i) o = write_literal_byte(o, s, i);
+  }
+  for (; i < s.size(); ++i) o = write_literal_byte(o, s, i);
+  *o++ = '"';
+  return o;
+}
+
 void append_cpp_string(std::string &out, std::string_view s) {
-  out.reserve(out.size() + s.size() + 2U);
-  out += '"';
-  // Runs of characters written as they are go in one append.
-  std::size_t run = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c >= 0x20U && c != 0x7FU && c != '"' && c != '\\' && c != '?') continue;
-    out.append(s.data() + run, i - run);
-    run = i + 1U;
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c == '?') {
-      if (i + 1U < s.size() && s[i + 1U] == '?') {
-        out += "?\\"; // never a trigraph
-      } else {
-        out += '?';
-      }
+  const std::size_t at = out.size();
+  out.resize(at + cpp_string_capacity(s.size()));
+  char *const end = write_cpp_string(out.data() + at, s);
+  out.resize(static_cast<std::size_t>(end - out.data()));
+}
+
+char *write_cpp_bytes(char *o, std::string_view bytes) noexcept {
+  *o++ = '"';
+  for (const char ch : bytes) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20U && c < 0x7FU && c != '"' && c != '\\' && c != '?') {
+      *o++ = static_cast<char>(c);
     } else {
-      constexpr char digits[] = "01234567";
-      out += '\\';
-      out += digits[(c >> 6U) & 7U];
-      out += digits[(c >> 3U) & 7U];
-      out += digits[c & 7U];
+      *o++ = '\\';
+      *o++ = static_cast<char>('0' + ((c >> 6U) & 7U));
+      *o++ = static_cast<char>('0' + ((c >> 3U) & 7U));
+      *o++ = static_cast<char>('0' + (c & 7U));
     }
   }
-  out.append(s.data() + run, s.size() - run);
-  out += '"';
+  *o++ = '"';
+  return o;
 }
 
 void append_cpp_value_text(std::string &out, od::data_type type, std::string_view bytes) {
@@ -603,20 +657,12 @@ void append_cpp_value_text(std::string &out, od::data_type type, std::string_vie
     append_cpp_string(out, bytes);
     return;
   }
-  out += "std::string_view{\"";
-  for (const char ch : bytes) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x20U && c < 0x7FU && c != '"' && c != '\\' && c != '?') {
-      out += static_cast<char>(c);
-    } else {
-      constexpr char digits[] = "01234567";
-      out += '\\';
-      out += digits[(c >> 6U) & 7U];
-      out += digits[(c >> 3U) & 7U];
-      out += digits[c & 7U];
-    }
-  }
-  out += "\", " + std::to_string(bytes.size()) + "}";
+  out += "std::string_view{";
+  const std::size_t at = out.size();
+  out.resize(at + cpp_string_capacity(bytes.size()));
+  char *const end = write_cpp_bytes(out.data() + at, bytes);
+  out.resize(static_cast<std::size_t>(end - out.data()));
+  out += ", " + std::to_string(bytes.size()) + "}";
 }
 
 std::string hex(std::uint64_t v, int digits) {

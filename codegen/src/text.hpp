@@ -4,6 +4,7 @@
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/number.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -80,12 +81,31 @@ struct nodeid_expr {
 /// umlauts transliterated, other characters become '_', runs of '_' collapse, a leading digit
 /// gets the prefix "n_", keywords get a trailing '_'. Empty when nothing is left.
 [[nodiscard]] std::string make_identifier(std::string_view name);
+/// The room make_identifier's identifier of an `n`-byte name may need: every byte gives at most
+/// "_minus", plus a "n_" prefix and a keyword's '_'.
+[[nodiscard]] constexpr std::size_t identifier_capacity(std::size_t n) noexcept {
+  return 2U + n * 6U + 1U;
+}
+/// make_identifier written at `out`, which has room for identifier_capacity(name.size()) bytes
+/// (no allocation; the emitter builds names in place). Returns the identifier's length.
+std::size_t write_identifier(char *out, std::string_view name) noexcept;
 [[nodiscard]] bool is_cpp_keyword(std::string_view s) noexcept;
 [[nodiscard]] bool is_identifier(std::string_view s) noexcept;
 
 /// A C++ string literal of `s` (UTF-8 kept, control characters and quotes escaped).
 [[nodiscard]] std::string cpp_string(std::string_view s);
 void append_cpp_string(std::string &out, std::string_view s);
+/// The room a string literal of `n` bytes may need (every byte a 3-digit octal escape, quotes).
+[[nodiscard]] constexpr std::size_t cpp_string_capacity(std::size_t n) noexcept {
+  return 4U * n + 2U;
+}
+/// append_cpp_string written at `out`, which has room for cpp_string_capacity(s.size()) bytes;
+/// returns the end of what was written.
+char *write_cpp_string(char *out, std::string_view s) noexcept;
+/// `"…"` of arbitrary bytes, every byte outside printable ASCII (and `"`, `\`, `?`) as a 3-digit
+/// octal escape (the literal of append_cpp_value_text's OCTET_STRING / UNICODE_STRING / DOMAIN
+/// values); room for cpp_string_capacity(bytes.size()) bytes; returns the end.
+char *write_cpp_bytes(char *out, std::string_view bytes) noexcept;
 
 /// The value of a byte-string entry as C++: VISIBLE_STRING text as a string literal; the bytes
 /// of an OCTET_STRING / UNICODE_STRING / DOMAIN (any byte, NUL included) as

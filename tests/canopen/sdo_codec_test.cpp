@@ -174,10 +174,28 @@ TEST_CASE("expedited messages carry their data as a number") {
   old.data = {0x64, 0x00};
   old.data_size = 2;
   CHECK(sdo::encode(old) == errc::invalid_argument);
-  // a segmented initiate ignores value
+  // a segmented initiate carries no data: a value (or segment bytes) set on it is refused, not
+  // dropped (expedited forgotten)
   auto seg = expedited_message(300, 0xFFFF'FFFFU);
   seg.expedited = false;
+  CHECK(sdo::encode(seg) == errc::invalid_argument);
+  seg.value = 0;
   CHECK(sdo::encode(seg).value() == sdo::payload{0x21, 0x81, 0x60, 0x00, 0x2C, 0x01, 0x00, 0x00});
+  seg.data_size = 1;
+  CHECK(sdo::encode(seg) == errc::invalid_argument);
+  seg.data_size = 0;
+  seg.type = message_type::initiate_upload_response;
+  seg.value = 1;
+  CHECK(sdo::encode(seg) == errc::invalid_argument);
+  // and a decoded one has none, whatever its bytes 4..7 hold: decode → encode goes through
+  for (const std::uint8_t b0 :
+       {std::uint8_t{0x20}, std::uint8_t{0x21}, std::uint8_t{0x40}, std::uint8_t{0x41}}) {
+    const sdo::payload p{b0, 0x81, 0x60, 0x00, 0x12, 0x34, 0x56, 0x78};
+    const auto dir = b0 < 0x40U ? sdo::direction::to_server : sdo::direction::to_client;
+    const auto m = sdo::decode(p, dir).value();
+    CHECK(m.value == 0U);
+    CHECK(sdo::encode(m).has_value());
+  }
 }
 
 TEST_CASE("segmented messages") {

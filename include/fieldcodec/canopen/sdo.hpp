@@ -390,7 +390,8 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
 /// 7 bytes), out_of_range (an expedited value with bits set past its size, block size not
 /// 1..127, sequence number over 127 — or 0 for a segment —, unused bytes over 7),
 /// invalid_argument (an unknown type, an expedited message with data_size set: its data goes
-/// in `value`).
+/// in `value`; an initiate that is not expedited with `value` or `data_size` set: its data goes
+/// in the segments).
 [[nodiscard]] constexpr result<payload> encode(const message &m) noexcept {
   payload p{};
   if (m.type == message_type::block_segment) {
@@ -422,9 +423,14 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
       if (m.size < 4U && (m.value >> (8U * m.size)) != 0U) return errc::out_of_range;
       b0 |= m.size_indicated ? ((4U - m.size) << 2U) | 0x03U : 0x02U;
       detail::put_u32(p, m.value);
-    } else if (m.size_indicated) {
-      b0 |= 0x01U;
-      detail::put_u32(p, m.size);
+    } else {
+      // data for a transfer that is not expedited goes in segments: refuse it here rather
+      // than send an initiate without it
+      if (m.value != 0U || m.data_size != 0U) return errc::invalid_argument;
+      if (m.size_indicated) {
+        b0 |= 0x01U;
+        detail::put_u32(p, m.size);
+      }
     }
     break;
   case detail::layout::address: detail::put_address(p, m.address); break;
