@@ -82,7 +82,8 @@ public:
   /// in one loop straight into `out`; `frames` stays lazy (nothing is held beyond the span).
   /// The loop is called directly (no pointer in `frames`), so firmware that never calls copy_to
   /// does not link it, and firmware that does links the segment encoder even without bursts.
-  constexpr std::size_t copy_to(std::span<can_frame> out, std::size_t first = 0) const noexcept {
+  [[nodiscard]] constexpr std::size_t copy_to(std::span<can_frame> out,
+                                              std::size_t first = 0) const noexcept {
     if (first >= size_) return 0;
     const std::size_t k = out.size() < size_ - first ? out.size() : size_ - first;
     if (k == 0U) return 0; // no room
