@@ -152,8 +152,9 @@ private:
             .value_or(sdo::payload{});
     return f;
   }
-  /// Segments first, first + 1, … into `out`: the loop of copy_to (segment() inlined, one call
-  /// per burst instead of one per frame).
+  /// Segments first, first + 1, … into `out` (copy_to's loop, called directly: one call per
+  /// burst instead of a switch and an indirect call per frame): the full segments in a loop of
+  /// their own, the rest (at most the short last one) through segment().
   static constexpr void segments(const frames &self, std::size_t first,
                                  std::span<can_frame> out) noexcept {
     const auto data = self.burst_.data;
