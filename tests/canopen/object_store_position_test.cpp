@@ -9,6 +9,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -70,14 +72,8 @@ static_assert(layout.flags[9] == (readable | writable | any_bits));
 static_assert(layout.flags[10] == (readable | writable | any_bits));
 static_assert(layout.flags[11] == (readable | writable)); // TIME_OF_DAY: reserved bits
 
-struct rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    s ^= s >> 12U;
-    s ^= s << 25U;
-    s ^= s >> 27U;
-    return s * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  using xorshift::xorshift;
 };
 
 } // namespace

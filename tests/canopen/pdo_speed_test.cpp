@@ -7,6 +7,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -66,14 +68,8 @@ fc::result<std::size_t> reference_pack_all(std::span<const mapping_entry> entrie
 // ----- inputs
 // -------------------------------------------------------------------------------------
 
-struct rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    s ^= s >> 12U;
-    s ^= s << 25U;
-    s ^= s >> 27U;
-    return s * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  using xorshift::xorshift;
   std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
 };
 

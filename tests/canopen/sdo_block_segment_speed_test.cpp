@@ -10,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -144,18 +146,9 @@ reference_result new_segment(sdo::block_receiver &rx, const sdo::payload &raw) {
   return {r.abort, {r.bytes.begin(), r.bytes.end()}, r.offset, r.acknowledge};
 }
 
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0x0F1E'2D3C'4B5A'6978ULL) {}
   unsigned below(unsigned n) { return static_cast<unsigned>(next() % n); }
-
-private:
-  std::uint64_t s_ = 0x0F1E'2D3C'4B5A'6978ULL;
 };
 
 } // namespace

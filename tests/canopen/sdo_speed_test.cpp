@@ -9,6 +9,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -141,17 +143,8 @@ fc::result<sdo::payload> reference_expedited(sdo::message_type t, fc::od::addres
   return reference_encode_expedited(sdo::detail::with_bytes(m, bytes, 4));
 }
 
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
-
-private:
-  std::uint64_t s_ = 0x0123'4567'89AB'CDEFULL;
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0x0123'4567'89AB'CDEFULL) {}
 };
 
 template <class T>

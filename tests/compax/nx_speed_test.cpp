@@ -10,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -57,21 +59,11 @@ ref::command to_ref(const nx::command &c) {
 
 // ------------------------------------------------------------ random commands
 
-class rng {
-public:
-  explicit rng(std::uint64_t seed) : s_(seed | 1U) {}
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  explicit rng(std::uint64_t seed) : xorshift(seed | 1U) {}
   std::uint64_t below(std::uint64_t n) { return next() % n; }
   bool chance(unsigned percent) { return below(100) < percent; }
   std::uint8_t byte() { return static_cast<std::uint8_t>(next()); }
-
-private:
-  std::uint64_t s_;
 };
 
 /// A number from the edges the codec checks (0, 0xFFFF, the DSP range, −1, int64 ends) or random.

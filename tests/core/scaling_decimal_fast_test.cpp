@@ -13,6 +13,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -42,21 +44,12 @@ bool same(const fc::result<std::int64_t> &a, const fc::result<std::int64_t> &b) 
   return a.has_value() ? a.value() == b.value() : a.error() == b.error();
 }
 
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0x2545'F491'4F6C'DD1DULL) {}
   std::uint64_t below(std::uint64_t n) { return next() % n; }
   std::int64_t between(std::int64_t lo, std::int64_t hi) {
     return lo + static_cast<std::int64_t>(below(static_cast<std::uint64_t>(hi - lo) + 1U));
   }
-
-private:
-  std::uint64_t s_ = 0x2545'F491'4F6C'DD1DULL;
 };
 
 constexpr std::int64_t i64_min = std::numeric_limits<std::int64_t>::min();

@@ -7,6 +7,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <bit>
 #include <cmath>
@@ -44,18 +46,9 @@ bool same(const fc::result<std::int64_t> &a, const fc::result<std::int64_t> &b) 
   return a.has_value() ? a.value() == b.value() : a.error() == b.error();
 }
 
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0x9E37'79B9'7F4A'7C15ULL) {}
   std::uint64_t below(std::uint64_t n) { return next() % n; }
-
-private:
-  std::uint64_t s_ = 0x9E37'79B9'7F4A'7C15ULL;
 };
 
 constexpr std::array scales{

@@ -5,6 +5,8 @@
 // remappings over SDO while operational.
 #include "node_test_util.hpp"
 
+#include "xorshift.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -48,14 +50,8 @@ static_assert(node::node_store<address_only> && !sdo::positioned_store<address_o
 static_assert(device_type::pdo_type::by_position);
 static_assert(!node::device<address_only, caps>::pdo_type::by_position);
 
-struct rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    s ^= s >> 12U;
-    s ^= s << 25U;
-    s ^= s >> 27U;
-    return s * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  using xorshift::xorshift;
   std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>(next() % n); }
 };
 

@@ -12,6 +12,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -178,14 +180,8 @@ static_assert(!address_engine::by_position);
 // node::device hands its store's positions on to its engine
 static_assert(node::device<store_type>::pdo_type::by_position);
 
-struct rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    s ^= s >> 12U;
-    s ^= s << 25U;
-    s ^= s >> 27U;
-    return s * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  using xorshift::xorshift;
   std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>(next() % n); }
   bool one_in(std::uint32_t n) { return below(n) == 0U; }
 };

@@ -7,6 +7,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstdint>
 #include <span>
@@ -321,18 +323,9 @@ namespace fc = fieldcodec;
 namespace pac = fieldcodec::pacontrol;
 namespace ser = fieldcodec::pacontrol::serial;
 
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0xC0FF'EE00'1234'4321ULL) {}
   std::uint64_t below(std::uint64_t n) { return next() % n; }
-
-private:
-  std::uint64_t s_ = 0xC0FF'EE00'1234'4321ULL;
 };
 
 pac::value any_value(rng &g) {

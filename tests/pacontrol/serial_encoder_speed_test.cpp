@@ -5,6 +5,8 @@
 
 #include <doctest/doctest.h>
 
+#include "xorshift.hpp"
+
 #include <array>
 #include <cstdint>
 #include <span>
@@ -112,17 +114,8 @@ reference_encode_acknowledgement(const acknowledgement &a, std::span<std::uint8_
 } // namespace reference
 
 namespace {
-class rng {
-public:
-  std::uint64_t next() {
-    s_ ^= s_ >> 12U;
-    s_ ^= s_ << 25U;
-    s_ ^= s_ >> 27U;
-    return s_ * 0x2545F4914F6CDD1DULL;
-  }
-
-private:
-  std::uint64_t s_ = 0x5555'AAAA'1234'5678ULL;
+struct rng : fieldcodec::test::xorshift {
+  rng() : xorshift(0x5555'AAAA'1234'5678ULL) {}
 };
 
 pac::value any_value(rng &g) {
