@@ -18,34 +18,7 @@ using namespace test_node;
 namespace {
 
 /// A node_store over a dictionary_store that offers only what node_store asks for.
-class address_only {
-public:
-  explicit address_only(store_type &s) : s_(&s) {}
-  [[nodiscard]] abort_code read(od::address a, std::size_t offset, std::span<std::uint8_t> out,
-                                std::size_t &total) const {
-    return s_->read(a, offset, out, total);
-  }
-  [[nodiscard]] abort_code begin_write(od::address a, std::optional<std::uint32_t> size) {
-    return s_->begin_write(a, size);
-  }
-  [[nodiscard]] abort_code write(od::address a, std::size_t offset,
-                                 std::span<const std::uint8_t> part, bool last) {
-    return s_->write(a, offset, part, last);
-  }
-  [[nodiscard]] abort_code set(od::address a, std::span<const std::uint8_t> v) {
-    return s_->set(a, v);
-  }
-  [[nodiscard]] fieldcodec::result<std::span<const std::uint8_t>> value(od::address a) const {
-    return s_->value(a);
-  }
-  [[nodiscard]] od::dictionary dictionary() const { return s_->dictionary(); }
-  [[nodiscard]] fieldcodec::status restore_defaults(std::uint16_t first, std::uint16_t last) {
-    return s_->restore_defaults(first, last);
-  }
-
-private:
-  store_type *s_;
-};
+using address_only = address_only_store<store_type>;
 static_assert(node::node_store<address_only> && !sdo::positioned_store<address_only>);
 static_assert(device_type::pdo_type::by_position);
 static_assert(!node::device<address_only, caps>::pdo_type::by_position);

@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
@@ -24,6 +25,39 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 using fieldcodec::errc;
 using sdo::abort_code;
+
+/// A store over `Store` that offers only the address interface (sdo::object_store and what
+/// node::node_store adds), not positions: a user-written store that predates
+/// sdo::positioned_store, which engines and devices must use by address.
+template <class Store>
+class address_only_store {
+public:
+  explicit address_only_store(Store &s) : s_(&s) {}
+  [[nodiscard]] abort_code read(od::address a, std::size_t offset, std::span<std::uint8_t> out,
+                                std::size_t &total) const {
+    return s_->read(a, offset, out, total);
+  }
+  [[nodiscard]] abort_code begin_write(od::address a, std::optional<std::uint32_t> size) {
+    return s_->begin_write(a, size);
+  }
+  [[nodiscard]] abort_code write(od::address a, std::size_t offset,
+                                 std::span<const std::uint8_t> part, bool last) {
+    return s_->write(a, offset, part, last);
+  }
+  [[nodiscard]] abort_code set(od::address a, std::span<const std::uint8_t> v) {
+    return s_->set(a, v);
+  }
+  [[nodiscard]] fieldcodec::result<std::span<const std::uint8_t>> value(od::address a) const {
+    return s_->value(a);
+  }
+  [[nodiscard]] od::dictionary dictionary() const { return s_->dictionary(); }
+  [[nodiscard]] fieldcodec::status restore_defaults(std::uint16_t first, std::uint16_t last) {
+    return s_->restore_defaults(first, last);
+  }
+
+private:
+  Store *s_;
+};
 
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
 constexpr od::number I(std::int64_t v) {

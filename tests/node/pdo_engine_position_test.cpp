@@ -12,6 +12,8 @@
 
 #include <doctest/doctest.h>
 
+#include "node_test_util.hpp"
+
 #include "xorshift.hpp"
 
 #include <array>
@@ -150,24 +152,7 @@ using store_type = sdo::dictionary_store<refuse_42>;
 
 /// A user-written store that models only the address interface: the engine must use it by
 /// address.
-class address_only {
-public:
-  explicit address_only(store_type &s) : s_(&s) {}
-  [[nodiscard]] abort_code read(od::address a, std::size_t offset, std::span<std::uint8_t> out,
-                                std::size_t &total) const {
-    return s_->read(a, offset, out, total);
-  }
-  [[nodiscard]] abort_code begin_write(od::address a, std::optional<std::uint32_t> size) {
-    return s_->begin_write(a, size);
-  }
-  [[nodiscard]] abort_code write(od::address a, std::size_t offset,
-                                 std::span<const std::uint8_t> part, bool last) {
-    return s_->write(a, offset, part, last);
-  }
-
-private:
-  store_type *s_;
-};
+using address_only = test_node::address_only_store<store_type>;
 
 static_assert(sdo::positioned_store<store_type>);
 static_assert(sdo::positioned_store<sdo::dictionary_store<>>);
