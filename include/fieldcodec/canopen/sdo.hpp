@@ -373,9 +373,10 @@ constexpr void put_u32(payload &p, std::uint32_t v) noexcept {
   return n >= 1U && n <= max_block_size;
 }
 
-/// The data of an expedited initiate (byte 0 xxxx nn1s) into `m`: size = 1..4 data bytes (4
-/// without size indication), value = those bytes as one little-endian word (the unused bytes
-/// zero, whatever the sender put there).
+/// The data of an expedited initiate (bit 1 of byte 0 set; bits 3..2 the unused bytes when
+/// bit 0 says the size is indicated) into `m`: size = 1..4 data bytes (4 without size
+/// indication), value = those bytes as one little-endian word (the unused bytes zero, whatever
+/// the sender put there).
 constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   const unsigned b0 = p[0];
   const unsigned n = (b0 & 0x01U) != 0U ? (b0 >> 2U) & 3U : 0U;
