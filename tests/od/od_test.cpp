@@ -174,6 +174,15 @@ TEST_CASE("od: lookup") {
   CHECK_FALSE(od::dictionary{unsorted}.is_valid());
   constexpr std::array<od::entry, 2> dup{{{.index = 1}, {.index = 1}}};
   CHECK_FALSE(od::dictionary{dup}.is_valid());
+  // the key is (index, sub): the sub-index orders entries of one index only
+  constexpr std::array<od::entry, 2> subs_down{{{.index = 1, .sub = 2}, {.index = 1, .sub = 1}}};
+  static_assert(!od::dictionary{subs_down}.is_valid());
+  constexpr std::array<od::entry, 3> by_index{
+      {{.index = 1, .sub = 5}, {.index = 2}, {.index = 2, .sub = 0xFF}}};
+  static_assert(od::dictionary{by_index}.is_valid());
+  static_assert(od::dictionary{}.is_valid());
+  constexpr std::array<od::entry, 3> last_out{{{.index = 1}, {.index = 3}, {.index = 2}}};
+  static_assert(!od::dictionary{last_out}.is_valid());
 }
 
 TEST_CASE("od: encode range checks") {
