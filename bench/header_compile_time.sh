@@ -59,7 +59,7 @@ row() { # row NAME HEADER-or-SOURCE BYTES ENTRIES
   for c in $cxxs; do printf ' %s |' "$(best "$c" "$src")"; done
   printf '\n'
 }
-entries() { grep -o 'std::array<od::entry, [0-9]*>' "$1" | grep -o '[0-9]*>' | tr -d '>'; }
+entries() { grep -o 'od::entry, [0-9]*>' "$1" | grep -o '[0-9]*>' | tr -d '>'; }
 row "(od includes only)" "$work/od_includes.cpp" - -
 for name in bench700 compax_objects xenax_canopen dpq_parameters; do
   hdr=include/fieldcodec/dictionaries/$name.hpp

@@ -572,7 +572,7 @@ void emit(writer &o, const dictionary &d) {
           "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
           "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
           "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
-          "<array>\n#include <cstdint>\n"
+          "<cstdint>\n#include <span>\n"
           "#include <string_view>\n\n");
   }
   o.lit("namespace fieldcodec::dictionaries::");
@@ -672,39 +672,63 @@ void emit(writer &o, const dictionary &d) {
   bool scales = false;
   for (const auto &e : d.entries) scales = scales || has_scale(e);
 
+  // The tables are C arrays in namespace detail, published as static-extent spans
+  // (`entries.size()` stays a constant expression): a descriptor copies `detail::entries[k]`
+  // with the built-in subscript, where std::array's operator[] was one function call per
+  // descriptor to evaluate at compile time (docs/performance.md, "Compile time").
   auto table = [&](std::string_view type, std::string_view name,
                    void (*literal)(writer &, const entry &)) {
-    o.lit("inline constexpr std::array<");
+    o.lit("inline constexpr ");
     o.put(type);
-    o.lit(", ");
-    o.uint(d.entries.size());
-    o.lit("> ");
+    o.put(' ');
     o.put(name);
-    o.lit("{{\n");
+    o.put('[');
+    o.uint(d.entries.size());
+    o.lit("]{\n");
     for (const entry &e : d.entries) {
       o.lit("    ");
       literal(o, e);
       o.lit(",\n");
     }
-    o.lit("}};\n\n");
+    o.lit("};\n");
   };
+  auto span = [&](std::string_view type, std::string_view name) {
+    o.lit("inline constexpr std::span<const ");
+    o.put(type);
+    o.lit(", ");
+    o.uint(d.entries.size());
+    o.lit("> ");
+    o.put(name);
+    o.lit("{detail::");
+    o.put(name);
+    o.lit("};\n");
+  };
+  o.lit("namespace detail {\n");
   table("od::entry", "entries", emit_core);
+  o.put('\n');
   table("od::entry_info", "infos", emit_info);
-  if (scales) table("scaling::linear", "scales", emit_scale);
-  o.lit("inline constexpr od::dictionary dictionary{entries, infos");
+  if (scales) {
+    o.put('\n');
+    table("scaling::linear", "scales", emit_scale);
+  }
+  o.lit("} // namespace detail\n\n");
+  span("od::entry", "entries");
+  span("od::entry_info", "infos");
+  if (scales) span("scaling::linear", "scales");
+  o.lit("\ninline constexpr od::dictionary dictionary{entries, infos");
   if (scales) o.lit(", scales");
   o.lit("};\nstatic_assert(dictionary.is_valid());\n");
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
     o.lit("inline constexpr od::descriptor ");
     o.put(named[k]);
-    o.lit("{entries[");
+    o.lit("{detail::entries[");
     o.uint(k);
-    o.lit("], infos[");
+    o.lit("], detail::infos[");
     o.uint(k);
     o.put(']');
     if (scales) {
-      o.lit(", scales[");
+      o.lit(", detail::scales[");
       o.uint(k);
       o.put(']');
     }

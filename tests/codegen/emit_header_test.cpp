@@ -40,18 +40,25 @@ const std::string eds = "[FileInfo]\nFileName=t.eds\n[DeviceInfo]\nVendorName=v\
 TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
   const std::string h = emit_eds(eds);
   CHECK(has(h, "using namespace std::string_view_literals;"));
-  CHECK(has(h, "inline constexpr std::array<od::entry, 3> entries{{"));
-  CHECK(has(h, "inline constexpr std::array<od::entry_info, 3> infos{{"));
+  // the tables are C arrays in namespace detail, published as static-extent spans
+  CHECK(has(h, "namespace detail {\ninline constexpr od::entry entries[3]{\n    {.index = 0x1000"));
+  CHECK(has(h, "inline constexpr od::entry_info infos[3]{\n"));
+  CHECK(has(h, "} // namespace detail\n\ninline constexpr std::span<const od::entry, 3> "
+               "entries{detail::entries};\ninline constexpr std::span<const od::entry_info, 3> "
+               "infos{detail::infos};\n"));
+  CHECK(has(h, "#include <span>\n"));
+  CHECK_FALSE(has(h, "std::array"));
   CHECK_FALSE(has(h, "scales")); // no scaled entry: no scale table
   CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos};"));
   CHECK(has(h, "{.name = {\"Device type\", 11}}"));
   // a VAR object and a named RECORD sub-object: standalone descriptors (copies of table rows)
-  CHECK(has(h, "inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000"));
+  CHECK(has(h, "inline constexpr od::descriptor device_type{detail::entries[0], detail::infos[0]}; "
+               "// 0x1000"));
   CHECK(has(h, "inline constexpr od::object server_sdo_parameter{0x1200, "
                "od::object_code::record, \"Server SDO parameter\"sv, "
                "dictionary.entries().subspan(1, 2), dictionary.infos().subspan(1, 2)};"));
   CHECK(has(h, "inline constexpr od::descriptor server_sdo_parameter_cob_id_client_to_server{"
-               "entries[2], infos[2]}; // 0x1200 sub 1"));
+               "detail::entries[2], detail::infos[2]}; // 0x1200 sub 1"));
   // $NODEID+0x600 in LowLimit, HighLimit and DefaultValue: the number plus a flag each
   CHECK(has(h, ".flags = od::flag::default_nodeid | od::flag::low_nodeid | "
                "od::flag::high_nodeid, .low = od::unsigned_number(1536U), "
@@ -67,11 +74,13 @@ TEST_CASE("emit_header: scaled CSV rows get a scale table and the scaled flag") 
   REQUIRE(dict.has_value());
   dict->stem = "t";
   const std::string h = gen::emit_header(*dict);
-  CHECK(has(h, "inline constexpr std::array<scaling::linear, 2> scales{{"));
+  CHECK(has(h, "inline constexpr scaling::linear scales[2]{\n"));
+  CHECK(has(h, "inline constexpr std::span<const scaling::linear, 2> scales{detail::scales};"));
   CHECK(has(h, "    {{32767, 2}, {0, 0}},\n    {},\n"));
   CHECK(has(h, ".flags = od::flag::scaled"));
   CHECK(has(h, "{.name = {\"Inj. P Limit 1\", 14}, .unit = {\"bar\", 3}}"));
-  CHECK(has(h, "inline constexpr od::descriptor inj_p_limit_1{entries[0], infos[0], scales[0]};"));
+  CHECK(has(h, "inline constexpr od::descriptor inj_p_limit_1{detail::entries[0], "
+               "detail::infos[0], detail::scales[0]};"));
   CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos, scales};"));
 }
 

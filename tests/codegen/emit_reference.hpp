@@ -445,7 +445,7 @@ inline std::string emit_header(const dictionary &d) {
          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
          "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
-         "<array>\n#include <cstdint>\n"
+         "<cstdint>\n#include <span>\n"
          "#include <string_view>\n\n";
   }
   o += "namespace fieldcodec::dictionaries::" + d.stem + " {\n\n";
@@ -504,28 +504,42 @@ inline std::string emit_header(const dictionary &d) {
   for (const auto &e : d.entries) scales = scales || has_scale(e);
 
   const std::string size = std::to_string(d.entries.size());
+  // round 5: C arrays in namespace detail, published as static-extent spans
   auto table = [&](const char *type, const char *name,
                    void (*literal)(std::string &, const entry &)) {
-    o += std::string("inline constexpr std::array<") + type + ", " + size + "> " + name + "{{\n";
+    o += std::string("inline constexpr ") + type + " " + name + "[" + size + "]{\n";
     for (const entry &e : d.entries) {
       o += "    ";
       literal(o, e);
       o += ",\n";
     }
-    o += "}};\n\n";
+    o += "};\n";
   };
+  auto span = [&](const char *type, const char *name) {
+    o += std::string("inline constexpr std::span<const ") + type + ", " + size + "> " + name +
+         "{detail::" + name + "};\n";
+  };
+  o += "namespace detail {\n";
   table("od::entry", "entries", emit_core);
+  o += "\n";
   table("od::entry_info", "infos", emit_info);
-  if (scales) table("scaling::linear", "scales", emit_scale);
-  o += std::string("inline constexpr od::dictionary dictionary{entries, infos") +
+  if (scales) {
+    o += "\n";
+    table("scaling::linear", "scales", emit_scale);
+  }
+  o += "} // namespace detail\n\n";
+  span("od::entry", "entries");
+  span("od::entry_info", "infos");
+  if (scales) span("scaling::linear", "scales");
+  o += std::string("\ninline constexpr od::dictionary dictionary{entries, infos") +
        (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
     const std::string at = std::to_string(k);
     o += "inline constexpr od::descriptor ";
     o += named[k];
-    o += "{entries[" + at + "], infos[" + at + "]";
-    if (scales) o += ", scales[" + at + "]";
+    o += "{detail::entries[" + at + "], detail::infos[" + at + "]";
+    if (scales) o += ", detail::scales[" + at + "]";
     o += "}; // 0x" + hex(d.entries[k].index, 4);
     if (!is_var[k]) o += " sub " + std::to_string(d.entries[k].sub);
     o += "\n";

@@ -12,8 +12,8 @@
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/text.hpp>
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dictionaries::compax_objects {
@@ -22,7 +22,8 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "compax_objects.csv";
 
-inline constexpr std::array<od::entry, 1479> entries{{
+namespace detail {
+inline constexpr od::entry entries[1479]{
     {.index = 0x5FC5, .type = od::data_type::octet_string, .access_type = od::access::wo, .pdo = od::pdo_mapping::rx, .size = 6},
     {.index = 0x5FC6, .type = od::data_type::octet_string, .access_type = od::access::ro, .pdo = od::pdo_mapping::tx, .size = 6},
     {.index = 0x5FC7, .type = od::data_type::octet_string, .access_type = od::access::wo, .size = 10},
@@ -1502,9 +1503,9 @@ inline constexpr std::array<od::entry, 1479> entries{{
     {.index = 0x6098, .type = od::data_type::integer16},
     {.index = 0x6099, .type = od::data_type::unsigned32, .flags = od::flag::scaled},
     {.index = 0x609A, .type = od::data_type::unsigned32, .flags = od::flag::scaled, .low = od::signed_number(0), .high = od::signed_number(65000)},
-}};
+};
 
-inline constexpr std::array<od::entry_info, 1479> infos{{
+inline constexpr od::entry_info infos[1479]{
     {.name = {"OBJECT_REQ", 10}, .section = {"OBJECT_REQ p.66", 15}, .remark = {"byte 1 bit 7 access (0 write, 1 read), bits 6..0 index pointer; byte 2 sub-index; bytes 3-6 object data bytes 1-4; 8-byte PD mode only; no index pointer of its own", 163}},
     {.name = {"OBJECT_RSP", 10}, .section = {"OBJECT_RSP p.66", 15}, .remark = {"answer to OBJECT_REQ: bytes 1-2 echo, bytes 3-6 read data; on error byte 1 = 0xFF, byte 3 error number (82 bad pointer, 83 bad sub-index, 84 not readable, 85 not writable), bytes 4-6 0; no index pointer of its own", 213}},
     {.name = {"PRXSDYALZ", 9}, .section = {"2.8.5", 5}, .remark = {"composite: bytes 1-4 position INTEGER32 big-endian (1 = 0.001 mm, relative), bytes 5-8 speed UNSIGNED32 big-endian (1 = 0.001 %, 1..600000), bytes 9-10 ramp time UNSIGNED16 big-endian (1 = 1 ms, 0..65000); symbol overview prints PRXS DYALZ", 239}, .pointer = 1},
@@ -2984,9 +2985,9 @@ inline constexpr std::array<od::entry_info, 1479> infos{{
     {.name = {"REF_MODE", 8}, .section = {"2.7.14", 6}, .remark = {"reference run method: 8 MN initiator direction 1, 12 MN initiator direction 2; affects P213", 91}, .pointer = 87},
     {.name = {"GESCHW_REF", 10}, .unit = {"%", 1}, .section = {"2.8.11", 6}, .remark = {"reference run speed, % of nominal speed", 39}, .pointer = 88},
     {.name = {"RAMPE_REF", 9}, .unit = {"ms", 2}, .section = {"2.9.7", 5}, .remark = {"reference run acceleration time referred to 100 % speed", 55}, .pointer = 89},
-}};
+};
 
-inline constexpr std::array<scaling::linear, 1479> scales{{
+inline constexpr scaling::linear scales[1479]{
     {},
     {},
     {},
@@ -4466,79 +4467,84 @@ inline constexpr std::array<scaling::linear, 1479> scales{{
     {},
     {{1000, 0}, {0, 0}},
     {{1, 0}, {0, 0}},
-}};
+};
+} // namespace detail
+
+inline constexpr std::span<const od::entry, 1479> entries{detail::entries};
+inline constexpr std::span<const od::entry_info, 1479> infos{detail::infos};
+inline constexpr std::span<const scaling::linear, 1479> scales{detail::scales};
 
 inline constexpr od::dictionary dictionary{entries, infos, scales};
 static_assert(dictionary.is_valid());
 
 // VAR objects: standalone descriptors (firmware that names one keeps only that one).
-inline constexpr od::descriptor object_req{entries[0], infos[0], scales[0]}; // 0x5FC5
-inline constexpr od::descriptor object_rsp{entries[1], infos[1], scales[1]}; // 0x5FC6
-inline constexpr od::descriptor prxsdyalz{entries[2], infos[2], scales[2]}; // 0x5FC7
-inline constexpr od::descriptor cam_mem_p{entries[3], infos[3], scales[3]}; // 0x5FCA
-inline constexpr od::descriptor cam_mem{entries[4], infos[4], scales[4]}; // 0x5FCB
-inline constexpr od::descriptor steuerbyte{entries[51], infos[51], scales[51]}; // 0x5FCE
-inline constexpr od::descriptor statusbyte{entries[52], infos[52], scales[52]}; // 0x5FCF
-inline constexpr od::descriptor cpx_stw{entries[61], infos[61], scales[61]}; // 0x5FD2
-inline constexpr od::descriptor cpx_zsw{entries[62], infos[62], scales[62]}; // 0x5FD3
-inline constexpr od::descriptor s12{entries[578], infos[578], scales[578]}; // 0x5FD9
-inline constexpr od::descriptor s11{entries[579], infos[579], scales[579]}; // 0x5FDA
-inline constexpr od::descriptor s10{entries[580], infos[580], scales[580]}; // 0x5FDB
-inline constexpr od::descriptor s9{entries[581], infos[581], scales[581]}; // 0x5FDC
-inline constexpr od::descriptor s6{entries[584], infos[584], scales[584]}; // 0x5FDE
-inline constexpr od::descriptor s2{entries[585], infos[585], scales[585]}; // 0x5FDF
-inline constexpr od::descriptor waitposa{entries[586], infos[586], scales[586]}; // 0x5FE0
-inline constexpr od::descriptor waitposr{entries[587], infos[587], scales[587]}; // 0x5FE1
-inline constexpr od::descriptor posrxspeedy{entries[620], infos[620], scales[620]}; // 0x5FE4
-inline constexpr od::descriptor start_n_go{entries[621], infos[621], scales[621]}; // 0x5FE5
-inline constexpr od::descriptor command{entries[622], infos[622], scales[622]}; // 0x5FE6
-inline constexpr od::descriptor control{entries[1123], infos[1123], scales[1123]}; // 0x5FE9
-inline constexpr od::descriptor accel_pos{entries[1124], infos[1124], scales[1124]}; // 0x5FEA
-inline constexpr od::descriptor accel_neg{entries[1125], infos[1125], scales[1125]}; // 0x5FEB
-inline constexpr od::descriptor speed{entries[1126], infos[1126], scales[1126]}; // 0x5FEC
-inline constexpr od::descriptor posr0speed{entries[1127], infos[1127], scales[1127]}; // 0x5FED
-inline constexpr od::descriptor override_{entries[1128], infos[1128], scales[1128]}; // 0x5FEE
-inline constexpr od::descriptor posr{entries[1129], infos[1129], scales[1129]}; // 0x5FEF
-inline constexpr od::descriptor posa{entries[1130], infos[1130], scales[1130]}; // 0x5FF0
-inline constexpr od::descriptor goto_{entries[1381], infos[1381], scales[1381]}; // 0x5FF2
-inline constexpr od::descriptor teach_n{entries[1382], infos[1382], scales[1382]}; // 0x5FF3
-inline constexpr od::descriptor start_n{entries[1383], infos[1383], scales[1383]}; // 0x5FF4
-inline constexpr od::descriptor output_mask{entries[1384], infos[1384], scales[1384]}; // 0x5FF5
-inline constexpr od::descriptor output_word{entries[1401], infos[1401], scales[1401]}; // 0x5FF7
-inline constexpr od::descriptor input_word{entries[1402], infos[1402], scales[1402]}; // 0x5FF8
-inline constexpr od::descriptor s1{entries[1403], infos[1403], scales[1403]}; // 0x5FF9
-inline constexpr od::descriptor s3{entries[1404], infos[1404], scales[1404]}; // 0x5FFA
-inline constexpr od::descriptor s5{entries[1405], infos[1405], scales[1405]}; // 0x5FFB
-inline constexpr od::descriptor s4{entries[1406], infos[1406], scales[1406]}; // 0x5FFC
-inline constexpr od::descriptor out_enable{entries[1413], infos[1413], scales[1413]}; // 0x5FFF
-inline constexpr od::descriptor pa_enable{entries[1442], infos[1442], scales[1442]}; // 0x6002
-inline constexpr od::descriptor stoerung{entries[1450], infos[1450], scales[1450]}; // 0x603F
-inline constexpr od::descriptor steuerwort{entries[1451], infos[1451], scales[1451]}; // 0x6040
-inline constexpr od::descriptor statuswort{entries[1452], infos[1452], scales[1452]}; // 0x6041
-inline constexpr od::descriptor betriebsart{entries[1453], infos[1453], scales[1453]}; // 0x6060
-inline constexpr od::descriptor betr_art_az{entries[1454], infos[1454], scales[1454]}; // 0x6061
-inline constexpr od::descriptor lage_ist{entries[1455], infos[1455], scales[1455]}; // 0x6064
-inline constexpr od::descriptor schlepp_fen{entries[1456], infos[1456], scales[1456]}; // 0x6065
-inline constexpr od::descriptor pos_fenster{entries[1457], infos[1457], scales[1457]}; // 0x6067
-inline constexpr od::descriptor geschw_ist{entries[1458], infos[1458], scales[1458]}; // 0x606C
-inline constexpr od::descriptor moment_max{entries[1459], infos[1459], scales[1459]}; // 0x6072
-inline constexpr od::descriptor nennstrom{entries[1460], infos[1460], scales[1460]}; // 0x6075
-inline constexpr od::descriptor nennmoment{entries[1461], infos[1461], scales[1461]}; // 0x6076
-inline constexpr od::descriptor moment_ist{entries[1462], infos[1462], scales[1462]}; // 0x6077
-inline constexpr od::descriptor zwk_spg{entries[1463], infos[1463], scales[1463]}; // 0x6079
-inline constexpr od::descriptor lage_ziel{entries[1464], infos[1464], scales[1464]}; // 0x607A
-inline constexpr od::descriptor realnull{entries[1465], infos[1465], scales[1465]}; // 0x607C
-inline constexpr od::descriptor polaritaet{entries[1468], infos[1468], scales[1468]}; // 0x607E
-inline constexpr od::descriptor geschw_max{entries[1469], infos[1469], scales[1469]}; // 0x607F
-inline constexpr od::descriptor drehzahlmax{entries[1470], infos[1470], scales[1470]}; // 0x6080
-inline constexpr od::descriptor verf_geschw{entries[1471], infos[1471], scales[1471]}; // 0x6081
-inline constexpr od::descriptor rampe_pos{entries[1472], infos[1472], scales[1472]}; // 0x6083
-inline constexpr od::descriptor rampe_neg{entries[1473], infos[1473], scales[1473]}; // 0x6084
-inline constexpr od::descriptor rampe_nots{entries[1474], infos[1474], scales[1474]}; // 0x6085
-inline constexpr od::descriptor rampenform{entries[1475], infos[1475], scales[1475]}; // 0x6086
-inline constexpr od::descriptor ref_mode{entries[1476], infos[1476], scales[1476]}; // 0x6098
-inline constexpr od::descriptor geschw_ref{entries[1477], infos[1477], scales[1477]}; // 0x6099
-inline constexpr od::descriptor rampe_ref{entries[1478], infos[1478], scales[1478]}; // 0x609A
+inline constexpr od::descriptor object_req{detail::entries[0], detail::infos[0], detail::scales[0]}; // 0x5FC5
+inline constexpr od::descriptor object_rsp{detail::entries[1], detail::infos[1], detail::scales[1]}; // 0x5FC6
+inline constexpr od::descriptor prxsdyalz{detail::entries[2], detail::infos[2], detail::scales[2]}; // 0x5FC7
+inline constexpr od::descriptor cam_mem_p{detail::entries[3], detail::infos[3], detail::scales[3]}; // 0x5FCA
+inline constexpr od::descriptor cam_mem{detail::entries[4], detail::infos[4], detail::scales[4]}; // 0x5FCB
+inline constexpr od::descriptor steuerbyte{detail::entries[51], detail::infos[51], detail::scales[51]}; // 0x5FCE
+inline constexpr od::descriptor statusbyte{detail::entries[52], detail::infos[52], detail::scales[52]}; // 0x5FCF
+inline constexpr od::descriptor cpx_stw{detail::entries[61], detail::infos[61], detail::scales[61]}; // 0x5FD2
+inline constexpr od::descriptor cpx_zsw{detail::entries[62], detail::infos[62], detail::scales[62]}; // 0x5FD3
+inline constexpr od::descriptor s12{detail::entries[578], detail::infos[578], detail::scales[578]}; // 0x5FD9
+inline constexpr od::descriptor s11{detail::entries[579], detail::infos[579], detail::scales[579]}; // 0x5FDA
+inline constexpr od::descriptor s10{detail::entries[580], detail::infos[580], detail::scales[580]}; // 0x5FDB
+inline constexpr od::descriptor s9{detail::entries[581], detail::infos[581], detail::scales[581]}; // 0x5FDC
+inline constexpr od::descriptor s6{detail::entries[584], detail::infos[584], detail::scales[584]}; // 0x5FDE
+inline constexpr od::descriptor s2{detail::entries[585], detail::infos[585], detail::scales[585]}; // 0x5FDF
+inline constexpr od::descriptor waitposa{detail::entries[586], detail::infos[586], detail::scales[586]}; // 0x5FE0
+inline constexpr od::descriptor waitposr{detail::entries[587], detail::infos[587], detail::scales[587]}; // 0x5FE1
+inline constexpr od::descriptor posrxspeedy{detail::entries[620], detail::infos[620], detail::scales[620]}; // 0x5FE4
+inline constexpr od::descriptor start_n_go{detail::entries[621], detail::infos[621], detail::scales[621]}; // 0x5FE5
+inline constexpr od::descriptor command{detail::entries[622], detail::infos[622], detail::scales[622]}; // 0x5FE6
+inline constexpr od::descriptor control{detail::entries[1123], detail::infos[1123], detail::scales[1123]}; // 0x5FE9
+inline constexpr od::descriptor accel_pos{detail::entries[1124], detail::infos[1124], detail::scales[1124]}; // 0x5FEA
+inline constexpr od::descriptor accel_neg{detail::entries[1125], detail::infos[1125], detail::scales[1125]}; // 0x5FEB
+inline constexpr od::descriptor speed{detail::entries[1126], detail::infos[1126], detail::scales[1126]}; // 0x5FEC
+inline constexpr od::descriptor posr0speed{detail::entries[1127], detail::infos[1127], detail::scales[1127]}; // 0x5FED
+inline constexpr od::descriptor override_{detail::entries[1128], detail::infos[1128], detail::scales[1128]}; // 0x5FEE
+inline constexpr od::descriptor posr{detail::entries[1129], detail::infos[1129], detail::scales[1129]}; // 0x5FEF
+inline constexpr od::descriptor posa{detail::entries[1130], detail::infos[1130], detail::scales[1130]}; // 0x5FF0
+inline constexpr od::descriptor goto_{detail::entries[1381], detail::infos[1381], detail::scales[1381]}; // 0x5FF2
+inline constexpr od::descriptor teach_n{detail::entries[1382], detail::infos[1382], detail::scales[1382]}; // 0x5FF3
+inline constexpr od::descriptor start_n{detail::entries[1383], detail::infos[1383], detail::scales[1383]}; // 0x5FF4
+inline constexpr od::descriptor output_mask{detail::entries[1384], detail::infos[1384], detail::scales[1384]}; // 0x5FF5
+inline constexpr od::descriptor output_word{detail::entries[1401], detail::infos[1401], detail::scales[1401]}; // 0x5FF7
+inline constexpr od::descriptor input_word{detail::entries[1402], detail::infos[1402], detail::scales[1402]}; // 0x5FF8
+inline constexpr od::descriptor s1{detail::entries[1403], detail::infos[1403], detail::scales[1403]}; // 0x5FF9
+inline constexpr od::descriptor s3{detail::entries[1404], detail::infos[1404], detail::scales[1404]}; // 0x5FFA
+inline constexpr od::descriptor s5{detail::entries[1405], detail::infos[1405], detail::scales[1405]}; // 0x5FFB
+inline constexpr od::descriptor s4{detail::entries[1406], detail::infos[1406], detail::scales[1406]}; // 0x5FFC
+inline constexpr od::descriptor out_enable{detail::entries[1413], detail::infos[1413], detail::scales[1413]}; // 0x5FFF
+inline constexpr od::descriptor pa_enable{detail::entries[1442], detail::infos[1442], detail::scales[1442]}; // 0x6002
+inline constexpr od::descriptor stoerung{detail::entries[1450], detail::infos[1450], detail::scales[1450]}; // 0x603F
+inline constexpr od::descriptor steuerwort{detail::entries[1451], detail::infos[1451], detail::scales[1451]}; // 0x6040
+inline constexpr od::descriptor statuswort{detail::entries[1452], detail::infos[1452], detail::scales[1452]}; // 0x6041
+inline constexpr od::descriptor betriebsart{detail::entries[1453], detail::infos[1453], detail::scales[1453]}; // 0x6060
+inline constexpr od::descriptor betr_art_az{detail::entries[1454], detail::infos[1454], detail::scales[1454]}; // 0x6061
+inline constexpr od::descriptor lage_ist{detail::entries[1455], detail::infos[1455], detail::scales[1455]}; // 0x6064
+inline constexpr od::descriptor schlepp_fen{detail::entries[1456], detail::infos[1456], detail::scales[1456]}; // 0x6065
+inline constexpr od::descriptor pos_fenster{detail::entries[1457], detail::infos[1457], detail::scales[1457]}; // 0x6067
+inline constexpr od::descriptor geschw_ist{detail::entries[1458], detail::infos[1458], detail::scales[1458]}; // 0x606C
+inline constexpr od::descriptor moment_max{detail::entries[1459], detail::infos[1459], detail::scales[1459]}; // 0x6072
+inline constexpr od::descriptor nennstrom{detail::entries[1460], detail::infos[1460], detail::scales[1460]}; // 0x6075
+inline constexpr od::descriptor nennmoment{detail::entries[1461], detail::infos[1461], detail::scales[1461]}; // 0x6076
+inline constexpr od::descriptor moment_ist{detail::entries[1462], detail::infos[1462], detail::scales[1462]}; // 0x6077
+inline constexpr od::descriptor zwk_spg{detail::entries[1463], detail::infos[1463], detail::scales[1463]}; // 0x6079
+inline constexpr od::descriptor lage_ziel{detail::entries[1464], detail::infos[1464], detail::scales[1464]}; // 0x607A
+inline constexpr od::descriptor realnull{detail::entries[1465], detail::infos[1465], detail::scales[1465]}; // 0x607C
+inline constexpr od::descriptor polaritaet{detail::entries[1468], detail::infos[1468], detail::scales[1468]}; // 0x607E
+inline constexpr od::descriptor geschw_max{detail::entries[1469], detail::infos[1469], detail::scales[1469]}; // 0x607F
+inline constexpr od::descriptor drehzahlmax{detail::entries[1470], detail::infos[1470], detail::scales[1470]}; // 0x6080
+inline constexpr od::descriptor verf_geschw{detail::entries[1471], detail::infos[1471], detail::scales[1471]}; // 0x6081
+inline constexpr od::descriptor rampe_pos{detail::entries[1472], detail::infos[1472], detail::scales[1472]}; // 0x6083
+inline constexpr od::descriptor rampe_neg{detail::entries[1473], detail::infos[1473], detail::scales[1473]}; // 0x6084
+inline constexpr od::descriptor rampe_nots{detail::entries[1474], detail::infos[1474], detail::scales[1474]}; // 0x6085
+inline constexpr od::descriptor rampenform{detail::entries[1475], detail::infos[1475], detail::scales[1475]}; // 0x6086
+inline constexpr od::descriptor ref_mode{detail::entries[1476], detail::infos[1476], detail::scales[1476]}; // 0x6098
+inline constexpr od::descriptor geschw_ref{detail::entries[1477], detail::infos[1477], detail::scales[1477]}; // 0x6099
+inline constexpr od::descriptor rampe_ref{detail::entries[1478], detail::infos[1478], detail::scales[1478]}; // 0x609A
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object cam_cmd{0x5FCC, od::object_code::array, "CAM_CMD"sv, dictionary.entries().subspan(5, 6), dictionary.infos().subspan(5, 6), dictionary.scales().subspan(5, 6)};
@@ -4558,43 +4564,43 @@ inline constexpr od::object s{0x5FE8, od::object_code::array, "S"sv, dictionary.
 inline constexpr od::object n{0x5FF1, od::object_code::array, "N"sv, dictionary.entries().subspan(1131, 250), dictionary.infos().subspan(1131, 250), dictionary.scales().subspan(1131, 250)};
 inline constexpr od::object output{0x5FF6, od::object_code::array, "OUTPUT"sv, dictionary.entries().subspan(1385, 16), dictionary.infos().subspan(1385, 16), dictionary.scales().subspan(1385, 16)};
 inline constexpr od::object in_select{0x5FFD, od::object_code::record, "IN_SELECT"sv, dictionary.entries().subspan(1407, 3), dictionary.infos().subspan(1407, 3), dictionary.scales().subspan(1407, 3)};
-inline constexpr od::descriptor in_select_in_select{entries[1407], infos[1407], scales[1407]}; // 0x5FFD sub 0
-inline constexpr od::descriptor in_select_in_select_sub1{entries[1408], infos[1408], scales[1408]}; // 0x5FFD sub 1
-inline constexpr od::descriptor in_select_in_select_sub2{entries[1409], infos[1409], scales[1409]}; // 0x5FFD sub 2
+inline constexpr od::descriptor in_select_in_select{detail::entries[1407], detail::infos[1407], detail::scales[1407]}; // 0x5FFD sub 0
+inline constexpr od::descriptor in_select_in_select_sub1{detail::entries[1408], detail::infos[1408], detail::scales[1408]}; // 0x5FFD sub 1
+inline constexpr od::descriptor in_select_in_select_sub2{detail::entries[1409], detail::infos[1409], detail::scales[1409]}; // 0x5FFD sub 2
 inline constexpr od::object out_select{0x5FFE, od::object_code::record, "OUT_SELECT"sv, dictionary.entries().subspan(1410, 3), dictionary.infos().subspan(1410, 3), dictionary.scales().subspan(1410, 3)};
-inline constexpr od::descriptor out_select_out_select{entries[1410], infos[1410], scales[1410]}; // 0x5FFE sub 0
-inline constexpr od::descriptor out_select_out_select_sub1{entries[1411], infos[1411], scales[1411]}; // 0x5FFE sub 1
-inline constexpr od::descriptor out_select_out_select_sub2{entries[1412], infos[1412], scales[1412]}; // 0x5FFE sub 2
+inline constexpr od::descriptor out_select_out_select{detail::entries[1410], detail::infos[1410], detail::scales[1410]}; // 0x5FFE sub 0
+inline constexpr od::descriptor out_select_out_select_sub1{detail::entries[1411], detail::infos[1411], detail::scales[1411]}; // 0x5FFE sub 1
+inline constexpr od::descriptor out_select_out_select_sub2{detail::entries[1412], detail::infos[1412], detail::scales[1412]}; // 0x5FFE sub 2
 inline constexpr od::object pe_select{0x6000, od::object_code::record, "PE_SELECT"sv, dictionary.entries().subspan(1414, 14), dictionary.infos().subspan(1414, 14), dictionary.scales().subspan(1414, 14)};
-inline constexpr od::descriptor pe_select_pe_select{entries[1414], infos[1414], scales[1414]}; // 0x6000 sub 0
-inline constexpr od::descriptor pe_select_pe_select_sub1{entries[1415], infos[1415], scales[1415]}; // 0x6000 sub 1
-inline constexpr od::descriptor pe_select_pe_select_sub2{entries[1416], infos[1416], scales[1416]}; // 0x6000 sub 2
-inline constexpr od::descriptor pe_select_pe_select_sub3{entries[1417], infos[1417], scales[1417]}; // 0x6000 sub 3
-inline constexpr od::descriptor pe_select_pe_select_sub4{entries[1418], infos[1418], scales[1418]}; // 0x6000 sub 4
-inline constexpr od::descriptor pe_select_pe_select_sub5{entries[1419], infos[1419], scales[1419]}; // 0x6000 sub 5
-inline constexpr od::descriptor pe_select_pe_select_sub6{entries[1420], infos[1420], scales[1420]}; // 0x6000 sub 6
-inline constexpr od::descriptor pe_select_pe_select_sub7{entries[1421], infos[1421], scales[1421]}; // 0x6000 sub 7
-inline constexpr od::descriptor pe_select_pe_select_sub8{entries[1422], infos[1422], scales[1422]}; // 0x6000 sub 8
-inline constexpr od::descriptor pe_select_pe_select_sub9{entries[1423], infos[1423], scales[1423]}; // 0x6000 sub 9
-inline constexpr od::descriptor pe_select_pe_select_sub10{entries[1424], infos[1424], scales[1424]}; // 0x6000 sub 10
-inline constexpr od::descriptor pe_select_pe_select_sub11{entries[1425], infos[1425], scales[1425]}; // 0x6000 sub 11
-inline constexpr od::descriptor pe_select_pe_select_sub12{entries[1426], infos[1426], scales[1426]}; // 0x6000 sub 12
-inline constexpr od::descriptor pe_select_pe_select_sub13{entries[1427], infos[1427], scales[1427]}; // 0x6000 sub 13
+inline constexpr od::descriptor pe_select_pe_select{detail::entries[1414], detail::infos[1414], detail::scales[1414]}; // 0x6000 sub 0
+inline constexpr od::descriptor pe_select_pe_select_sub1{detail::entries[1415], detail::infos[1415], detail::scales[1415]}; // 0x6000 sub 1
+inline constexpr od::descriptor pe_select_pe_select_sub2{detail::entries[1416], detail::infos[1416], detail::scales[1416]}; // 0x6000 sub 2
+inline constexpr od::descriptor pe_select_pe_select_sub3{detail::entries[1417], detail::infos[1417], detail::scales[1417]}; // 0x6000 sub 3
+inline constexpr od::descriptor pe_select_pe_select_sub4{detail::entries[1418], detail::infos[1418], detail::scales[1418]}; // 0x6000 sub 4
+inline constexpr od::descriptor pe_select_pe_select_sub5{detail::entries[1419], detail::infos[1419], detail::scales[1419]}; // 0x6000 sub 5
+inline constexpr od::descriptor pe_select_pe_select_sub6{detail::entries[1420], detail::infos[1420], detail::scales[1420]}; // 0x6000 sub 6
+inline constexpr od::descriptor pe_select_pe_select_sub7{detail::entries[1421], detail::infos[1421], detail::scales[1421]}; // 0x6000 sub 7
+inline constexpr od::descriptor pe_select_pe_select_sub8{detail::entries[1422], detail::infos[1422], detail::scales[1422]}; // 0x6000 sub 8
+inline constexpr od::descriptor pe_select_pe_select_sub9{detail::entries[1423], detail::infos[1423], detail::scales[1423]}; // 0x6000 sub 9
+inline constexpr od::descriptor pe_select_pe_select_sub10{detail::entries[1424], detail::infos[1424], detail::scales[1424]}; // 0x6000 sub 10
+inline constexpr od::descriptor pe_select_pe_select_sub11{detail::entries[1425], detail::infos[1425], detail::scales[1425]}; // 0x6000 sub 11
+inline constexpr od::descriptor pe_select_pe_select_sub12{detail::entries[1426], detail::infos[1426], detail::scales[1426]}; // 0x6000 sub 12
+inline constexpr od::descriptor pe_select_pe_select_sub13{detail::entries[1427], detail::infos[1427], detail::scales[1427]}; // 0x6000 sub 13
 inline constexpr od::object pa_select{0x6001, od::object_code::record, "PA_SELECT"sv, dictionary.entries().subspan(1428, 14), dictionary.infos().subspan(1428, 14), dictionary.scales().subspan(1428, 14)};
-inline constexpr od::descriptor pa_select_pa_select{entries[1428], infos[1428], scales[1428]}; // 0x6001 sub 0
-inline constexpr od::descriptor pa_select_pa_select_sub1{entries[1429], infos[1429], scales[1429]}; // 0x6001 sub 1
-inline constexpr od::descriptor pa_select_pa_select_sub2{entries[1430], infos[1430], scales[1430]}; // 0x6001 sub 2
-inline constexpr od::descriptor pa_select_pa_select_sub3{entries[1431], infos[1431], scales[1431]}; // 0x6001 sub 3
-inline constexpr od::descriptor pa_select_pa_select_sub4{entries[1432], infos[1432], scales[1432]}; // 0x6001 sub 4
-inline constexpr od::descriptor pa_select_pa_select_sub5{entries[1433], infos[1433], scales[1433]}; // 0x6001 sub 5
-inline constexpr od::descriptor pa_select_pa_select_sub6{entries[1434], infos[1434], scales[1434]}; // 0x6001 sub 6
-inline constexpr od::descriptor pa_select_pa_select_sub7{entries[1435], infos[1435], scales[1435]}; // 0x6001 sub 7
-inline constexpr od::descriptor pa_select_pa_select_sub8{entries[1436], infos[1436], scales[1436]}; // 0x6001 sub 8
-inline constexpr od::descriptor pa_select_pa_select_sub9{entries[1437], infos[1437], scales[1437]}; // 0x6001 sub 9
-inline constexpr od::descriptor pa_select_pa_select_sub10{entries[1438], infos[1438], scales[1438]}; // 0x6001 sub 10
-inline constexpr od::descriptor pa_select_pa_select_sub11{entries[1439], infos[1439], scales[1439]}; // 0x6001 sub 11
-inline constexpr od::descriptor pa_select_pa_select_sub12{entries[1440], infos[1440], scales[1440]}; // 0x6001 sub 12
-inline constexpr od::descriptor pa_select_pa_select_sub13{entries[1441], infos[1441], scales[1441]}; // 0x6001 sub 13
+inline constexpr od::descriptor pa_select_pa_select{detail::entries[1428], detail::infos[1428], detail::scales[1428]}; // 0x6001 sub 0
+inline constexpr od::descriptor pa_select_pa_select_sub1{detail::entries[1429], detail::infos[1429], detail::scales[1429]}; // 0x6001 sub 1
+inline constexpr od::descriptor pa_select_pa_select_sub2{detail::entries[1430], detail::infos[1430], detail::scales[1430]}; // 0x6001 sub 2
+inline constexpr od::descriptor pa_select_pa_select_sub3{detail::entries[1431], detail::infos[1431], detail::scales[1431]}; // 0x6001 sub 3
+inline constexpr od::descriptor pa_select_pa_select_sub4{detail::entries[1432], detail::infos[1432], detail::scales[1432]}; // 0x6001 sub 4
+inline constexpr od::descriptor pa_select_pa_select_sub5{detail::entries[1433], detail::infos[1433], detail::scales[1433]}; // 0x6001 sub 5
+inline constexpr od::descriptor pa_select_pa_select_sub6{detail::entries[1434], detail::infos[1434], detail::scales[1434]}; // 0x6001 sub 6
+inline constexpr od::descriptor pa_select_pa_select_sub7{detail::entries[1435], detail::infos[1435], detail::scales[1435]}; // 0x6001 sub 7
+inline constexpr od::descriptor pa_select_pa_select_sub8{detail::entries[1436], detail::infos[1436], detail::scales[1436]}; // 0x6001 sub 8
+inline constexpr od::descriptor pa_select_pa_select_sub9{detail::entries[1437], detail::infos[1437], detail::scales[1437]}; // 0x6001 sub 9
+inline constexpr od::descriptor pa_select_pa_select_sub10{detail::entries[1438], detail::infos[1438], detail::scales[1438]}; // 0x6001 sub 10
+inline constexpr od::descriptor pa_select_pa_select_sub11{detail::entries[1439], detail::infos[1439], detail::scales[1439]}; // 0x6001 sub 11
+inline constexpr od::descriptor pa_select_pa_select_sub12{detail::entries[1440], detail::infos[1440], detail::scales[1440]}; // 0x6001 sub 12
+inline constexpr od::descriptor pa_select_pa_select_sub13{detail::entries[1441], detail::infos[1441], detail::scales[1441]}; // 0x6001 sub 13
 inline constexpr od::object fkt_gruppe{0x600F, od::object_code::array, "FKT_GRUPPE"sv, dictionary.entries().subspan(1443, 7), dictionary.infos().subspan(1443, 7), dictionary.scales().subspan(1443, 7)};
 inline constexpr od::object grenzen{0x607D, od::object_code::array, "GRENZEN"sv, dictionary.entries().subspan(1466, 2), dictionary.infos().subspan(1466, 2), dictionary.scales().subspan(1466, 2)};
 

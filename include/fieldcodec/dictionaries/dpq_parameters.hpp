@@ -12,8 +12,8 @@
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/text.hpp>
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dictionaries::dpq_parameters {
@@ -22,7 +22,8 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "dpq_parameters.csv";
 
-inline constexpr std::array<od::entry, 240> entries{{
+namespace detail {
+inline constexpr od::entry entries[240]{
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro},
     {.index = 0x1003, .object = od::object_code::array, .type = od::data_type::unsigned8, .low = od::unsigned_number(0U), .high = od::unsigned_number(4U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1003, .sub = 1, .object = od::object_code::array, .type = od::data_type::unsigned32, .access_type = od::access::ro},
@@ -263,9 +264,9 @@ inline constexpr std::array<od::entry, 240> entries{{
     {.index = 0x361D, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
     {.index = 0x361E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
     {.index = 0x362E, .type = od::data_type::integer32, .access_type = od::access::ro, .flags = od::flag::scaled, .low = od::signed_number(-100), .high = od::signed_number(100)},
-}};
+};
 
-inline constexpr std::array<od::entry_info, 240> infos{{
+inline constexpr od::entry_info infos[240]{
     {.name = {"Error Register", 14}, .section = {"3.5", 3}},
     {.name = {"Error History", 13}, .section = {"3.5", 3}, .remark = {"number of errors; writing 0 clears the history", 46}},
     {.name = {"Error Code 1", 12}, .section = {"3.5", 3}, .remark = {"bits 0-15 EMCY code, bits 16-31 manufacturer-specific", 53}},
@@ -506,9 +507,9 @@ inline constexpr std::array<od::entry_info, 240> infos{{
     {.name = {"Hist. Pos.FB 29", 15}, .section = {"4.58", 4}, .acceptance = {"only with deactivated enabling", 30}, .bus = od::bus_manager::not_available},
     {.name = {"Hist. Pos.FB 30", 15}, .section = {"4.60", 4}, .acceptance = {"only with deactivated enabling", 30}, .bus = od::bus_manager::not_available},
     {.name = {"Hist. Pres.FB 13", 16}, .section = {"4.65", 4}, .acceptance = {"only with deactivated enabling", 30}, .bus = od::bus_manager::not_available},
-}};
+};
 
-inline constexpr std::array<scaling::linear, 240> scales{{
+inline constexpr scaling::linear scales[240]{
     {},
     {},
     {},
@@ -749,260 +750,265 @@ inline constexpr std::array<scaling::linear, 240> scales{{
     {{32767, 2}, {0, 0}},
     {{32767, 2}, {0, 0}},
     {{32767, 2}, {0, 0}},
-}};
+};
+} // namespace detail
+
+inline constexpr std::span<const od::entry, 240> entries{detail::entries};
+inline constexpr std::span<const od::entry_info, 240> infos{detail::infos};
+inline constexpr std::span<const scaling::linear, 240> scales{detail::scales};
 
 inline constexpr od::dictionary dictionary{entries, infos, scales};
 static_assert(dictionary.is_valid());
 
 // VAR objects: standalone descriptors (firmware that names one keeps only that one).
-inline constexpr od::descriptor error_register{entries[0], infos[0], scales[0]}; // 0x1001
-inline constexpr od::descriptor guard_time{entries[6], infos[6], scales[6]}; // 0x100C
-inline constexpr od::descriptor life_time_factor{entries[7], infos[7], scales[7]}; // 0x100D
-inline constexpr od::descriptor producer_heartbeat_time_interval{entries[10], infos[10], scales[10]}; // 0x1017
-inline constexpr od::descriptor holding_vel_limit_1{entries[19], infos[19], scales[19]}; // 0x200D
-inline constexpr od::descriptor holding_vel_limit_2{entries[20], infos[20], scales[20]}; // 0x200E
-inline constexpr od::descriptor holding_vel_limit_3{entries[21], infos[21], scales[21]}; // 0x200F
-inline constexpr od::descriptor holding_vel_limit_4{entries[22], infos[22], scales[22]}; // 0x2010
-inline constexpr od::descriptor holding_vel_limit_5{entries[23], infos[23], scales[23]}; // 0x2011
-inline constexpr od::descriptor jogmode_vel_forward{entries[24], infos[24], scales[24]}; // 0x2012
-inline constexpr od::descriptor jogmode_vel_backward{entries[25], infos[25], scales[25]}; // 0x2013
-inline constexpr od::descriptor screw_speed_2{entries[26], infos[26], scales[26]}; // 0x2014
-inline constexpr od::descriptor screw_speed_3{entries[27], infos[27], scales[27]}; // 0x2015
-inline constexpr od::descriptor pre_decomp_velocity{entries[28], infos[28], scales[28]}; // 0x2017
-inline constexpr od::descriptor screw_speed_4{entries[29], infos[29], scales[29]}; // 0x2018
-inline constexpr od::descriptor post_decomp_velocit{entries[30], infos[30], scales[30]}; // 0x201F
-inline constexpr od::descriptor inj_p_limit_1{entries[31], infos[31], scales[31]}; // 0x2023
-inline constexpr od::descriptor inj_p_limit_2{entries[32], infos[32], scales[32]}; // 0x2025
-inline constexpr od::descriptor inj_p_limit_3{entries[33], infos[33], scales[33]}; // 0x2026
-inline constexpr od::descriptor inj_p_limit_4{entries[34], infos[34], scales[34]}; // 0x2027
-inline constexpr od::descriptor inj_p_limit_5{entries[35], infos[35], scales[35]}; // 0x2028
-inline constexpr od::descriptor holding_pressure_1{entries[36], infos[36], scales[36]}; // 0x202F
-inline constexpr od::descriptor holding_pressure_2{entries[37], infos[37], scales[37]}; // 0x2030
-inline constexpr od::descriptor holding_pressure_3{entries[38], infos[38], scales[38]}; // 0x2031
-inline constexpr od::descriptor holding_pressure_4{entries[39], infos[39], scales[39]}; // 0x2032
-inline constexpr od::descriptor holding_pressure_5{entries[40], infos[40], scales[40]}; // 0x2033
-inline constexpr od::descriptor backpress_press_2{entries[41], infos[41], scales[41]}; // 0x2036
-inline constexpr od::descriptor backpress_press_3{entries[42], infos[42], scales[42]}; // 0x2037
-inline constexpr od::descriptor press_predecompress{entries[43], infos[43], scales[43]}; // 0x2039
-inline constexpr od::descriptor backpress_press_4{entries[44], infos[44], scales[44]}; // 0x203A
-inline constexpr od::descriptor inj_p_limit_6{entries[45], infos[45], scales[45]}; // 0x203C
-inline constexpr od::descriptor inj_p_limit_7{entries[46], infos[46], scales[46]}; // 0x203D
-inline constexpr od::descriptor inj_p_limit_8{entries[47], infos[47], scales[47]}; // 0x203E
-inline constexpr od::descriptor inj_p_limit_9{entries[48], infos[48], scales[48]}; // 0x203F
-inline constexpr od::descriptor inj_p_limit_10{entries[49], infos[49], scales[49]}; // 0x2040
-inline constexpr od::descriptor press_postdecompres{entries[50], infos[50], scales[50]}; // 0x2041
-inline constexpr od::descriptor backp_vel_ramp_2{entries[51], infos[51], scales[51]}; // 0x2114
-inline constexpr od::descriptor pah_press_rate_2{entries[52], infos[52], scales[52]}; // 0x2130
-inline constexpr od::descriptor pah_press_rate_3{entries[53], infos[53], scales[53]}; // 0x2131
-inline constexpr od::descriptor pah_press_rate_4{entries[54], infos[54], scales[54]}; // 0x2132
-inline constexpr od::descriptor pah_press_rate_5{entries[55], infos[55], scales[55]}; // 0x2133
-inline constexpr od::descriptor backp_press_rate_2{entries[56], infos[56], scales[56]}; // 0x2136
-inline constexpr od::descriptor backp_press_rate_3{entries[57], infos[57], scales[57]}; // 0x2137
-inline constexpr od::descriptor backp_press_rate_4{entries[58], infos[58], scales[58]}; // 0x213A
-inline constexpr od::descriptor inj_velocity_1{entries[59], infos[59], scales[59]}; // 0x2167
-inline constexpr od::descriptor inj_velocity_2{entries[60], infos[60], scales[60]}; // 0x2169
-inline constexpr od::descriptor inj_velocity_3{entries[61], infos[61], scales[61]}; // 0x216A
-inline constexpr od::descriptor inj_velocity_4{entries[62], infos[62], scales[62]}; // 0x216B
-inline constexpr od::descriptor inj_velocity_5{entries[63], infos[63], scales[63]}; // 0x216C
-inline constexpr od::descriptor inj_velocity_6{entries[64], infos[64], scales[64]}; // 0x2180
-inline constexpr od::descriptor inj_velocity_7{entries[65], infos[65], scales[65]}; // 0x2181
-inline constexpr od::descriptor inj_velocity_8{entries[66], infos[66], scales[66]}; // 0x2182
-inline constexpr od::descriptor inj_velocity_9{entries[67], infos[67], scales[67]}; // 0x2183
-inline constexpr od::descriptor inj_velocity_10{entries[68], infos[68], scales[68]}; // 0x2184
-inline constexpr od::descriptor pah_decomp_rate_1{entries[69], infos[69], scales[69]}; // 0x2195
-inline constexpr od::descriptor pah_decomp_rate_2{entries[70], infos[70], scales[70]}; // 0x2196
-inline constexpr od::descriptor pah_decomp_rate_3{entries[71], infos[71], scales[71]}; // 0x2197
-inline constexpr od::descriptor pah_decomp_rate_4{entries[72], infos[72], scales[72]}; // 0x2198
-inline constexpr od::descriptor pah_decomp_rate_5{entries[73], infos[73], scales[73]}; // 0x2199
-inline constexpr od::descriptor backp_decomp_rate_2{entries[74], infos[74], scales[74]}; // 0x219C
-inline constexpr od::descriptor backp_decomp_rate_3{entries[75], infos[75], scales[75]}; // 0x219D
-inline constexpr od::descriptor backp_decomp_rate_4{entries[76], infos[76], scales[76]}; // 0x21A0
-inline constexpr od::descriptor inj_accel_ramp{entries[77], infos[77], scales[77]}; // 0x2201
-inline constexpr od::descriptor inj_velocity_p{entries[78], infos[78], scales[78]}; // 0x2301
-inline constexpr od::descriptor pah_pressure_p{entries[79], infos[79], scales[79]}; // 0x2323
-inline constexpr od::descriptor backp_press_p_2{entries[80], infos[80], scales[80]}; // 0x2336
-inline constexpr od::descriptor backp_press_p_3{entries[81], infos[81], scales[81]}; // 0x2337
-inline constexpr od::descriptor backp_press_p_4{entries[82], infos[82], scales[82]}; // 0x233A
-inline constexpr od::descriptor pah_pressure_i{entries[83], infos[83], scales[83]}; // 0x2423
-inline constexpr od::descriptor backp_press_i_2{entries[84], infos[84], scales[84]}; // 0x2436
-inline constexpr od::descriptor backp_press_i_3{entries[85], infos[85], scales[85]}; // 0x2437
-inline constexpr od::descriptor backp_press_i_4{entries[86], infos[86], scales[86]}; // 0x243A
-inline constexpr od::descriptor inj_velocity_d{entries[87], infos[87], scales[87]}; // 0x2701
-inline constexpr od::descriptor pah_pressure_d{entries[88], infos[88], scales[88]}; // 0x2723
-inline constexpr od::descriptor backp_press_d_2{entries[89], infos[89], scales[89]}; // 0x2736
-inline constexpr od::descriptor backp_press_d_3{entries[90], infos[90], scales[90]}; // 0x2737
-inline constexpr od::descriptor backp_press_d_4{entries[91], infos[91], scales[91]}; // 0x273A
-inline constexpr od::descriptor fwd_inject{entries[92], infos[92], scales[92]}; // 0x2923
-inline constexpr od::descriptor fwd_backpress_1{entries[93], infos[93], scales[93]}; // 0x2936
-inline constexpr od::descriptor fwd_backpress_2{entries[94], infos[94], scales[94]}; // 0x2937
-inline constexpr od::descriptor fwd_backpress_3{entries[95], infos[95], scales[95]}; // 0x293A
-inline constexpr od::descriptor inj_position_2{entries[96], infos[96], scales[96]}; // 0x2A01
-inline constexpr od::descriptor inj_position_3{entries[97], infos[97], scales[97]}; // 0x2A03
-inline constexpr od::descriptor inj_position_4{entries[98], infos[98], scales[98]}; // 0x2A04
-inline constexpr od::descriptor inj_position_5{entries[99], infos[99], scales[99]}; // 0x2A05
-inline constexpr od::descriptor inj_position_6{entries[100], infos[100], scales[100]}; // 0x2A06
-inline constexpr od::descriptor backpress_position3{entries[101], infos[101], scales[101]}; // 0x2A14
-inline constexpr od::descriptor backpress_position4{entries[102], infos[102], scales[102]}; // 0x2A15
-inline constexpr od::descriptor pre_decomp_position{entries[103], infos[103], scales[103]}; // 0x2A17
-inline constexpr od::descriptor inj_position_7{entries[104], infos[104], scales[104]}; // 0x2A1A
-inline constexpr od::descriptor inj_position_8{entries[105], infos[105], scales[105]}; // 0x2A1B
-inline constexpr od::descriptor inj_position_9{entries[106], infos[106], scales[106]}; // 0x2A1C
-inline constexpr od::descriptor inj_position_10{entries[107], infos[107], scales[107]}; // 0x2A1D
-inline constexpr od::descriptor post_decomp_positio{entries[108], infos[108], scales[108]}; // 0x2A64
-inline constexpr od::descriptor holding_time_1{entries[109], infos[109], scales[109]}; // 0x2B2F
-inline constexpr od::descriptor holding_time_2{entries[110], infos[110], scales[110]}; // 0x2B30
-inline constexpr od::descriptor holding_time_3{entries[111], infos[111], scales[111]}; // 0x2B31
-inline constexpr od::descriptor holding_time_4{entries[112], infos[112], scales[112]}; // 0x2B32
-inline constexpr od::descriptor holding_time_5{entries[113], infos[113], scales[113]}; // 0x2B33
-inline constexpr od::descriptor trigger{entries[114], infos[114], scales[114]}; // 0x2C67
-inline constexpr od::descriptor status{entries[115], infos[115], scales[115]}; // 0x2C68
-inline constexpr od::descriptor analog_vel_max{entries[116], infos[116], scales[116]}; // 0x2C69
-inline constexpr od::descriptor set_ssi_incr_to_zero{entries[117], infos[117], scales[117]}; // 0x2C78
-inline constexpr od::descriptor pah_act_damp_freq{entries[118], infos[118], scales[118]}; // 0x2D02
-inline constexpr od::descriptor inj_vel_activedamp{entries[119], infos[119], scales[119]}; // 0x2D04
-inline constexpr od::descriptor pah_act_damp_gain{entries[120], infos[120], scales[120]}; // 0x2D05
-inline constexpr od::descriptor shot_size_position{entries[121], infos[121], scales[121]}; // 0x2D0E
-inline constexpr od::descriptor do7_at_press_level{entries[122], infos[122], scales[122]}; // 0x2D0F
-inline constexpr od::descriptor do7_at_press_delay{entries[123], infos[123], scales[123]}; // 0x2D17
-inline constexpr od::descriptor transfer_position{entries[124], infos[124], scales[124]}; // 0x2D3B
-inline constexpr od::descriptor transfer_cavity_pres{entries[125], infos[125], scales[125]}; // 0x2D3C
-inline constexpr od::descriptor transfer_hydr_press{entries[126], infos[126], scales[126]}; // 0x2D3D
-inline constexpr od::descriptor transfer_hydr_pos{entries[127], infos[127], scales[127]}; // 0x2D3E
-inline constexpr od::descriptor press_cmd_min{entries[128], infos[128], scales[128]}; // 0x2D71
-inline constexpr od::descriptor press_fb_1_min{entries[129], infos[129], scales[129]}; // 0x2D72
-inline constexpr od::descriptor cavity_press_min{entries[130], infos[130], scales[130]}; // 0x2D73
-inline constexpr od::descriptor press_fb_2_min{entries[131], infos[131], scales[131]}; // 0x2D74
-inline constexpr od::descriptor cyl_pos_fb_min{entries[132], infos[132], scales[132]}; // 0x2D75
-inline constexpr od::descriptor vel_cmd_min{entries[133], infos[133], scales[133]}; // 0x2D76
-inline constexpr od::descriptor press_cmd_max{entries[134], infos[134], scales[134]}; // 0x2D7C
-inline constexpr od::descriptor press_fb_1_max{entries[135], infos[135], scales[135]}; // 0x2D7D
-inline constexpr od::descriptor cavity_press_max{entries[136], infos[136], scales[136]}; // 0x2D7E
-inline constexpr od::descriptor press_fb_2_max{entries[137], infos[137], scales[137]}; // 0x2D7F
-inline constexpr od::descriptor cyl_pos_fb_max{entries[138], infos[138], scales[138]}; // 0x2D80
-inline constexpr od::descriptor vel_cmd_max{entries[139], infos[139], scales[139]}; // 0x2D81
-inline constexpr od::descriptor press_cmd_min_fau{entries[140], infos[140], scales[140]}; // 0x2D87
-inline constexpr od::descriptor press_fb_1_min_fau{entries[141], infos[141], scales[141]}; // 0x2D88
-inline constexpr od::descriptor cavity_press_min_fau{entries[142], infos[142], scales[142]}; // 0x2D89
-inline constexpr od::descriptor press_fb_2_min_fau{entries[143], infos[143], scales[143]}; // 0x2D8A
-inline constexpr od::descriptor cyl_pos_fb_min_fau{entries[144], infos[144], scales[144]}; // 0x2D8B
-inline constexpr od::descriptor vel_cmd_min_fau{entries[145], infos[145], scales[145]}; // 0x2D8C
-inline constexpr od::descriptor press_cmd_max_fau{entries[146], infos[146], scales[146]}; // 0x2D92
-inline constexpr od::descriptor press_fb_1_max_fau{entries[147], infos[147], scales[147]}; // 0x2D93
-inline constexpr od::descriptor cavity_press_max_fau{entries[148], infos[148], scales[148]}; // 0x2D94
-inline constexpr od::descriptor press_fb_2_max_fau{entries[149], infos[149], scales[149]}; // 0x2D95
-inline constexpr od::descriptor cyl_pos_fb_max_fau{entries[150], infos[150], scales[150]}; // 0x2D96
-inline constexpr od::descriptor vel_cmd_max_fau{entries[151], infos[151], scales[151]}; // 0x2D97
-inline constexpr od::descriptor press_cmd_max_uni{entries[152], infos[152], scales[152]}; // 0x2D9D
-inline constexpr od::descriptor press_fb_1_max_uni{entries[153], infos[153], scales[153]}; // 0x2D9E
-inline constexpr od::descriptor cavity_press_max_uni{entries[154], infos[154], scales[154]}; // 0x2D9F
-inline constexpr od::descriptor press_fb_2_max_uni{entries[155], infos[155], scales[155]}; // 0x2DA0
-inline constexpr od::descriptor cyl_pos_cmd_max_uni{entries[156], infos[156], scales[156]}; // 0x2DA1
-inline constexpr od::descriptor ssi_nb_of_bits{entries[157], infos[157], scales[157]}; // 0x2DC1
-inline constexpr od::descriptor ssi_resolution{entries[158], infos[158], scales[158]}; // 0x2DC4
-inline constexpr od::descriptor ssi_offset{entries[159], infos[159], scales[159]}; // 0x2DC5
-inline constexpr od::descriptor incr_home_offset{entries[160], infos[160], scales[160]}; // 0x2DCB
-inline constexpr od::descriptor incr_resolution{entries[161], infos[161], scales[161]}; // 0x2DCC
-inline constexpr od::descriptor injection_scale{entries[162], infos[162], scales[162]}; // 0x2E21
-inline constexpr od::descriptor injection_limit_plus{entries[163], infos[163], scales[163]}; // 0x2E2A
-inline constexpr od::descriptor injection_limit_minus{entries[164], infos[164], scales[164]}; // 0x2E2D
-inline constexpr od::descriptor out2_inject_limit_minus{entries[165], infos[165], scales[165]}; // 0x2E2E
-inline constexpr od::descriptor velocity_cmd_ai6{entries[166], infos[166], scales[166]}; // 0x2F03
-inline constexpr od::descriptor vel_loop_cmd{entries[167], infos[167], scales[167]}; // 0x2F04
-inline constexpr od::descriptor position_fb{entries[168], infos[168], scales[168]}; // 0x2F07
-inline constexpr od::descriptor position_error{entries[169], infos[169], scales[169]}; // 0x2F09
-inline constexpr od::descriptor pressure_cmd_ai1{entries[170], infos[170], scales[170]}; // 0x2F0B
-inline constexpr od::descriptor press_loop_cmd{entries[171], infos[171], scales[171]}; // 0x2F0E
-inline constexpr od::descriptor pressure_fb_1_ai2{entries[172], infos[172], scales[172]}; // 0x2F0F
-inline constexpr od::descriptor pressure_fb_2_ai4{entries[173], infos[173], scales[173]}; // 0x2F10
-inline constexpr od::descriptor pressure_fb{entries[174], infos[174], scales[174]}; // 0x2F11
-inline constexpr od::descriptor pressure_error{entries[175], infos[175], scales[175]}; // 0x2F13
-inline constexpr od::descriptor cavity_pressure_ai3{entries[176], infos[176], scales[176]}; // 0x2F19
-inline constexpr od::descriptor position_ai5{entries[177], infos[177], scales[177]}; // 0x2F1A
-inline constexpr od::descriptor valve_output_1{entries[178], infos[178], scales[178]}; // 0x2F1F
-inline constexpr od::descriptor valve_output_2{entries[179], infos[179], scales[179]}; // 0x2F20
-inline constexpr od::descriptor valve_output_3{entries[180], infos[180], scales[180]}; // 0x2F21
-inline constexpr od::descriptor program_block{entries[181], infos[181], scales[181]}; // 0x2F25
-inline constexpr od::descriptor discrete_outputs{entries[182], infos[182], scales[182]}; // 0x2F26
-inline constexpr od::descriptor discrete_inputs{entries[183], infos[183], scales[183]}; // 0x2F27
-inline constexpr od::descriptor output_mode{entries[184], infos[184], scales[184]}; // 0x2F28
-inline constexpr od::descriptor program_status{entries[185], infos[185], scales[185]}; // 0x2F34
-inline constexpr od::descriptor injection_offset{entries[186], infos[186], scales[186]}; // 0x2F6D
-inline constexpr od::descriptor pos_max_length{entries[187], infos[187], scales[187]}; // 0x2F72
-inline constexpr od::descriptor pres_max_inject{entries[188], infos[188], scales[188]}; // 0x2F78
-inline constexpr od::descriptor jog_mode_offset{entries[189], infos[189], scales[189]}; // 0x2F7F
-inline constexpr od::descriptor jog_mode_scale{entries[190], infos[190], scales[190]}; // 0x2F80
-inline constexpr od::descriptor jog_mode_limit_minus{entries[191], infos[191], scales[191]}; // 0x2F81
-inline constexpr od::descriptor jog_mode_limit_plus{entries[192], infos[192], scales[192]}; // 0x2F82
-inline constexpr od::descriptor out2_jog_limit_minus{entries[193], infos[193], scales[193]}; // 0x2F87
-inline constexpr od::descriptor pah_backpres_offset{entries[194], infos[194], scales[194]}; // 0x2F91
-inline constexpr od::descriptor pah_backpres_scale{entries[195], infos[195], scales[195]}; // 0x2F92
-inline constexpr od::descriptor pah_backpres_limit_minus{entries[196], infos[196], scales[196]}; // 0x2F93
-inline constexpr od::descriptor pah_backpres_limit_plus{entries[197], infos[197], scales[197]}; // 0x2F94
-inline constexpr od::descriptor out2_backpress_lim_minus{entries[198], infos[198], scales[198]}; // 0x2F99
-inline constexpr od::descriptor decompres_offset{entries[199], infos[199], scales[199]}; // 0x2FA3
-inline constexpr od::descriptor decompres_scale{entries[200], infos[200], scales[200]}; // 0x2FA4
-inline constexpr od::descriptor decompres_limit_minus{entries[201], infos[201], scales[201]}; // 0x2FA5
-inline constexpr od::descriptor decompres_limit_plus{entries[202], infos[202], scales[202]}; // 0x2FA6
-inline constexpr od::descriptor out2_decomp_limit_minus{entries[203], infos[203], scales[203]}; // 0x2FAB
-inline constexpr od::descriptor cyl_area_ratio{entries[204], infos[204], scales[204]}; // 0x3116
-inline constexpr od::descriptor hist_time_1{entries[205], infos[205], scales[205]}; // 0x3501
-inline constexpr od::descriptor hist_time_3{entries[206], infos[206], scales[206]}; // 0x3503
-inline constexpr od::descriptor hist_time_4{entries[207], infos[207], scales[207]}; // 0x3504
-inline constexpr od::descriptor hist_time_5{entries[208], infos[208], scales[208]}; // 0x3505
-inline constexpr od::descriptor hist_time_6{entries[209], infos[209], scales[209]}; // 0x3506
-inline constexpr od::descriptor hist_time_13{entries[210], infos[210], scales[210]}; // 0x350E
-inline constexpr od::descriptor hist_time_14{entries[211], infos[211], scales[211]}; // 0x350F
-inline constexpr od::descriptor hist_time_15{entries[212], infos[212], scales[212]}; // 0x3510
-inline constexpr od::descriptor hist_time_16{entries[213], infos[213], scales[213]}; // 0x3511
-inline constexpr od::descriptor hist_time_17{entries[214], infos[214], scales[214]}; // 0x3512
-inline constexpr od::descriptor hist_time_23{entries[215], infos[215], scales[215]}; // 0x3518
-inline constexpr od::descriptor hist_time_26{entries[216], infos[216], scales[216]}; // 0x351B
-inline constexpr od::descriptor hist_time_27{entries[217], infos[217], scales[217]}; // 0x351C
-inline constexpr od::descriptor hist_time_28{entries[218], infos[218], scales[218]}; // 0x351D
-inline constexpr od::descriptor hist_time_29{entries[219], infos[219], scales[219]}; // 0x351E
-inline constexpr od::descriptor hist_time_30{entries[220], infos[220], scales[220]}; // 0x351F
-inline constexpr od::descriptor hist_pres_cmd_13{entries[221], infos[221], scales[221]}; // 0x3571
-inline constexpr od::descriptor hist_pos_fb_1{entries[222], infos[222], scales[222]}; // 0x3601
-inline constexpr od::descriptor hist_pos_fb_2{entries[223], infos[223], scales[223]}; // 0x3602
-inline constexpr od::descriptor hist_pos_fb_3{entries[224], infos[224], scales[224]}; // 0x3603
-inline constexpr od::descriptor hist_pos_fb_4{entries[225], infos[225], scales[225]}; // 0x3604
-inline constexpr od::descriptor hist_pos_fb_5{entries[226], infos[226], scales[226]}; // 0x3605
-inline constexpr od::descriptor hist_pos_fb_6{entries[227], infos[227], scales[227]}; // 0x3606
-inline constexpr od::descriptor hist_pos_fb_13{entries[228], infos[228], scales[228]}; // 0x360D
-inline constexpr od::descriptor hist_pos_fb_14{entries[229], infos[229], scales[229]}; // 0x360E
-inline constexpr od::descriptor hist_pos_fb_15{entries[230], infos[230], scales[230]}; // 0x360F
-inline constexpr od::descriptor hist_pos_fb_16{entries[231], infos[231], scales[231]}; // 0x3610
-inline constexpr od::descriptor hist_pos_fb_17{entries[232], infos[232], scales[232]}; // 0x3611
-inline constexpr od::descriptor hist_pos_fb_18{entries[233], infos[233], scales[233]}; // 0x3617
-inline constexpr od::descriptor hist_pos_fb_26{entries[234], infos[234], scales[234]}; // 0x361A
-inline constexpr od::descriptor hist_pos_fb_27{entries[235], infos[235], scales[235]}; // 0x361B
-inline constexpr od::descriptor hist_pos_fb_28{entries[236], infos[236], scales[236]}; // 0x361C
-inline constexpr od::descriptor hist_pos_fb_29{entries[237], infos[237], scales[237]}; // 0x361D
-inline constexpr od::descriptor hist_pos_fb_30{entries[238], infos[238], scales[238]}; // 0x361E
-inline constexpr od::descriptor hist_pres_fb_13{entries[239], infos[239], scales[239]}; // 0x362E
+inline constexpr od::descriptor error_register{detail::entries[0], detail::infos[0], detail::scales[0]}; // 0x1001
+inline constexpr od::descriptor guard_time{detail::entries[6], detail::infos[6], detail::scales[6]}; // 0x100C
+inline constexpr od::descriptor life_time_factor{detail::entries[7], detail::infos[7], detail::scales[7]}; // 0x100D
+inline constexpr od::descriptor producer_heartbeat_time_interval{detail::entries[10], detail::infos[10], detail::scales[10]}; // 0x1017
+inline constexpr od::descriptor holding_vel_limit_1{detail::entries[19], detail::infos[19], detail::scales[19]}; // 0x200D
+inline constexpr od::descriptor holding_vel_limit_2{detail::entries[20], detail::infos[20], detail::scales[20]}; // 0x200E
+inline constexpr od::descriptor holding_vel_limit_3{detail::entries[21], detail::infos[21], detail::scales[21]}; // 0x200F
+inline constexpr od::descriptor holding_vel_limit_4{detail::entries[22], detail::infos[22], detail::scales[22]}; // 0x2010
+inline constexpr od::descriptor holding_vel_limit_5{detail::entries[23], detail::infos[23], detail::scales[23]}; // 0x2011
+inline constexpr od::descriptor jogmode_vel_forward{detail::entries[24], detail::infos[24], detail::scales[24]}; // 0x2012
+inline constexpr od::descriptor jogmode_vel_backward{detail::entries[25], detail::infos[25], detail::scales[25]}; // 0x2013
+inline constexpr od::descriptor screw_speed_2{detail::entries[26], detail::infos[26], detail::scales[26]}; // 0x2014
+inline constexpr od::descriptor screw_speed_3{detail::entries[27], detail::infos[27], detail::scales[27]}; // 0x2015
+inline constexpr od::descriptor pre_decomp_velocity{detail::entries[28], detail::infos[28], detail::scales[28]}; // 0x2017
+inline constexpr od::descriptor screw_speed_4{detail::entries[29], detail::infos[29], detail::scales[29]}; // 0x2018
+inline constexpr od::descriptor post_decomp_velocit{detail::entries[30], detail::infos[30], detail::scales[30]}; // 0x201F
+inline constexpr od::descriptor inj_p_limit_1{detail::entries[31], detail::infos[31], detail::scales[31]}; // 0x2023
+inline constexpr od::descriptor inj_p_limit_2{detail::entries[32], detail::infos[32], detail::scales[32]}; // 0x2025
+inline constexpr od::descriptor inj_p_limit_3{detail::entries[33], detail::infos[33], detail::scales[33]}; // 0x2026
+inline constexpr od::descriptor inj_p_limit_4{detail::entries[34], detail::infos[34], detail::scales[34]}; // 0x2027
+inline constexpr od::descriptor inj_p_limit_5{detail::entries[35], detail::infos[35], detail::scales[35]}; // 0x2028
+inline constexpr od::descriptor holding_pressure_1{detail::entries[36], detail::infos[36], detail::scales[36]}; // 0x202F
+inline constexpr od::descriptor holding_pressure_2{detail::entries[37], detail::infos[37], detail::scales[37]}; // 0x2030
+inline constexpr od::descriptor holding_pressure_3{detail::entries[38], detail::infos[38], detail::scales[38]}; // 0x2031
+inline constexpr od::descriptor holding_pressure_4{detail::entries[39], detail::infos[39], detail::scales[39]}; // 0x2032
+inline constexpr od::descriptor holding_pressure_5{detail::entries[40], detail::infos[40], detail::scales[40]}; // 0x2033
+inline constexpr od::descriptor backpress_press_2{detail::entries[41], detail::infos[41], detail::scales[41]}; // 0x2036
+inline constexpr od::descriptor backpress_press_3{detail::entries[42], detail::infos[42], detail::scales[42]}; // 0x2037
+inline constexpr od::descriptor press_predecompress{detail::entries[43], detail::infos[43], detail::scales[43]}; // 0x2039
+inline constexpr od::descriptor backpress_press_4{detail::entries[44], detail::infos[44], detail::scales[44]}; // 0x203A
+inline constexpr od::descriptor inj_p_limit_6{detail::entries[45], detail::infos[45], detail::scales[45]}; // 0x203C
+inline constexpr od::descriptor inj_p_limit_7{detail::entries[46], detail::infos[46], detail::scales[46]}; // 0x203D
+inline constexpr od::descriptor inj_p_limit_8{detail::entries[47], detail::infos[47], detail::scales[47]}; // 0x203E
+inline constexpr od::descriptor inj_p_limit_9{detail::entries[48], detail::infos[48], detail::scales[48]}; // 0x203F
+inline constexpr od::descriptor inj_p_limit_10{detail::entries[49], detail::infos[49], detail::scales[49]}; // 0x2040
+inline constexpr od::descriptor press_postdecompres{detail::entries[50], detail::infos[50], detail::scales[50]}; // 0x2041
+inline constexpr od::descriptor backp_vel_ramp_2{detail::entries[51], detail::infos[51], detail::scales[51]}; // 0x2114
+inline constexpr od::descriptor pah_press_rate_2{detail::entries[52], detail::infos[52], detail::scales[52]}; // 0x2130
+inline constexpr od::descriptor pah_press_rate_3{detail::entries[53], detail::infos[53], detail::scales[53]}; // 0x2131
+inline constexpr od::descriptor pah_press_rate_4{detail::entries[54], detail::infos[54], detail::scales[54]}; // 0x2132
+inline constexpr od::descriptor pah_press_rate_5{detail::entries[55], detail::infos[55], detail::scales[55]}; // 0x2133
+inline constexpr od::descriptor backp_press_rate_2{detail::entries[56], detail::infos[56], detail::scales[56]}; // 0x2136
+inline constexpr od::descriptor backp_press_rate_3{detail::entries[57], detail::infos[57], detail::scales[57]}; // 0x2137
+inline constexpr od::descriptor backp_press_rate_4{detail::entries[58], detail::infos[58], detail::scales[58]}; // 0x213A
+inline constexpr od::descriptor inj_velocity_1{detail::entries[59], detail::infos[59], detail::scales[59]}; // 0x2167
+inline constexpr od::descriptor inj_velocity_2{detail::entries[60], detail::infos[60], detail::scales[60]}; // 0x2169
+inline constexpr od::descriptor inj_velocity_3{detail::entries[61], detail::infos[61], detail::scales[61]}; // 0x216A
+inline constexpr od::descriptor inj_velocity_4{detail::entries[62], detail::infos[62], detail::scales[62]}; // 0x216B
+inline constexpr od::descriptor inj_velocity_5{detail::entries[63], detail::infos[63], detail::scales[63]}; // 0x216C
+inline constexpr od::descriptor inj_velocity_6{detail::entries[64], detail::infos[64], detail::scales[64]}; // 0x2180
+inline constexpr od::descriptor inj_velocity_7{detail::entries[65], detail::infos[65], detail::scales[65]}; // 0x2181
+inline constexpr od::descriptor inj_velocity_8{detail::entries[66], detail::infos[66], detail::scales[66]}; // 0x2182
+inline constexpr od::descriptor inj_velocity_9{detail::entries[67], detail::infos[67], detail::scales[67]}; // 0x2183
+inline constexpr od::descriptor inj_velocity_10{detail::entries[68], detail::infos[68], detail::scales[68]}; // 0x2184
+inline constexpr od::descriptor pah_decomp_rate_1{detail::entries[69], detail::infos[69], detail::scales[69]}; // 0x2195
+inline constexpr od::descriptor pah_decomp_rate_2{detail::entries[70], detail::infos[70], detail::scales[70]}; // 0x2196
+inline constexpr od::descriptor pah_decomp_rate_3{detail::entries[71], detail::infos[71], detail::scales[71]}; // 0x2197
+inline constexpr od::descriptor pah_decomp_rate_4{detail::entries[72], detail::infos[72], detail::scales[72]}; // 0x2198
+inline constexpr od::descriptor pah_decomp_rate_5{detail::entries[73], detail::infos[73], detail::scales[73]}; // 0x2199
+inline constexpr od::descriptor backp_decomp_rate_2{detail::entries[74], detail::infos[74], detail::scales[74]}; // 0x219C
+inline constexpr od::descriptor backp_decomp_rate_3{detail::entries[75], detail::infos[75], detail::scales[75]}; // 0x219D
+inline constexpr od::descriptor backp_decomp_rate_4{detail::entries[76], detail::infos[76], detail::scales[76]}; // 0x21A0
+inline constexpr od::descriptor inj_accel_ramp{detail::entries[77], detail::infos[77], detail::scales[77]}; // 0x2201
+inline constexpr od::descriptor inj_velocity_p{detail::entries[78], detail::infos[78], detail::scales[78]}; // 0x2301
+inline constexpr od::descriptor pah_pressure_p{detail::entries[79], detail::infos[79], detail::scales[79]}; // 0x2323
+inline constexpr od::descriptor backp_press_p_2{detail::entries[80], detail::infos[80], detail::scales[80]}; // 0x2336
+inline constexpr od::descriptor backp_press_p_3{detail::entries[81], detail::infos[81], detail::scales[81]}; // 0x2337
+inline constexpr od::descriptor backp_press_p_4{detail::entries[82], detail::infos[82], detail::scales[82]}; // 0x233A
+inline constexpr od::descriptor pah_pressure_i{detail::entries[83], detail::infos[83], detail::scales[83]}; // 0x2423
+inline constexpr od::descriptor backp_press_i_2{detail::entries[84], detail::infos[84], detail::scales[84]}; // 0x2436
+inline constexpr od::descriptor backp_press_i_3{detail::entries[85], detail::infos[85], detail::scales[85]}; // 0x2437
+inline constexpr od::descriptor backp_press_i_4{detail::entries[86], detail::infos[86], detail::scales[86]}; // 0x243A
+inline constexpr od::descriptor inj_velocity_d{detail::entries[87], detail::infos[87], detail::scales[87]}; // 0x2701
+inline constexpr od::descriptor pah_pressure_d{detail::entries[88], detail::infos[88], detail::scales[88]}; // 0x2723
+inline constexpr od::descriptor backp_press_d_2{detail::entries[89], detail::infos[89], detail::scales[89]}; // 0x2736
+inline constexpr od::descriptor backp_press_d_3{detail::entries[90], detail::infos[90], detail::scales[90]}; // 0x2737
+inline constexpr od::descriptor backp_press_d_4{detail::entries[91], detail::infos[91], detail::scales[91]}; // 0x273A
+inline constexpr od::descriptor fwd_inject{detail::entries[92], detail::infos[92], detail::scales[92]}; // 0x2923
+inline constexpr od::descriptor fwd_backpress_1{detail::entries[93], detail::infos[93], detail::scales[93]}; // 0x2936
+inline constexpr od::descriptor fwd_backpress_2{detail::entries[94], detail::infos[94], detail::scales[94]}; // 0x2937
+inline constexpr od::descriptor fwd_backpress_3{detail::entries[95], detail::infos[95], detail::scales[95]}; // 0x293A
+inline constexpr od::descriptor inj_position_2{detail::entries[96], detail::infos[96], detail::scales[96]}; // 0x2A01
+inline constexpr od::descriptor inj_position_3{detail::entries[97], detail::infos[97], detail::scales[97]}; // 0x2A03
+inline constexpr od::descriptor inj_position_4{detail::entries[98], detail::infos[98], detail::scales[98]}; // 0x2A04
+inline constexpr od::descriptor inj_position_5{detail::entries[99], detail::infos[99], detail::scales[99]}; // 0x2A05
+inline constexpr od::descriptor inj_position_6{detail::entries[100], detail::infos[100], detail::scales[100]}; // 0x2A06
+inline constexpr od::descriptor backpress_position3{detail::entries[101], detail::infos[101], detail::scales[101]}; // 0x2A14
+inline constexpr od::descriptor backpress_position4{detail::entries[102], detail::infos[102], detail::scales[102]}; // 0x2A15
+inline constexpr od::descriptor pre_decomp_position{detail::entries[103], detail::infos[103], detail::scales[103]}; // 0x2A17
+inline constexpr od::descriptor inj_position_7{detail::entries[104], detail::infos[104], detail::scales[104]}; // 0x2A1A
+inline constexpr od::descriptor inj_position_8{detail::entries[105], detail::infos[105], detail::scales[105]}; // 0x2A1B
+inline constexpr od::descriptor inj_position_9{detail::entries[106], detail::infos[106], detail::scales[106]}; // 0x2A1C
+inline constexpr od::descriptor inj_position_10{detail::entries[107], detail::infos[107], detail::scales[107]}; // 0x2A1D
+inline constexpr od::descriptor post_decomp_positio{detail::entries[108], detail::infos[108], detail::scales[108]}; // 0x2A64
+inline constexpr od::descriptor holding_time_1{detail::entries[109], detail::infos[109], detail::scales[109]}; // 0x2B2F
+inline constexpr od::descriptor holding_time_2{detail::entries[110], detail::infos[110], detail::scales[110]}; // 0x2B30
+inline constexpr od::descriptor holding_time_3{detail::entries[111], detail::infos[111], detail::scales[111]}; // 0x2B31
+inline constexpr od::descriptor holding_time_4{detail::entries[112], detail::infos[112], detail::scales[112]}; // 0x2B32
+inline constexpr od::descriptor holding_time_5{detail::entries[113], detail::infos[113], detail::scales[113]}; // 0x2B33
+inline constexpr od::descriptor trigger{detail::entries[114], detail::infos[114], detail::scales[114]}; // 0x2C67
+inline constexpr od::descriptor status{detail::entries[115], detail::infos[115], detail::scales[115]}; // 0x2C68
+inline constexpr od::descriptor analog_vel_max{detail::entries[116], detail::infos[116], detail::scales[116]}; // 0x2C69
+inline constexpr od::descriptor set_ssi_incr_to_zero{detail::entries[117], detail::infos[117], detail::scales[117]}; // 0x2C78
+inline constexpr od::descriptor pah_act_damp_freq{detail::entries[118], detail::infos[118], detail::scales[118]}; // 0x2D02
+inline constexpr od::descriptor inj_vel_activedamp{detail::entries[119], detail::infos[119], detail::scales[119]}; // 0x2D04
+inline constexpr od::descriptor pah_act_damp_gain{detail::entries[120], detail::infos[120], detail::scales[120]}; // 0x2D05
+inline constexpr od::descriptor shot_size_position{detail::entries[121], detail::infos[121], detail::scales[121]}; // 0x2D0E
+inline constexpr od::descriptor do7_at_press_level{detail::entries[122], detail::infos[122], detail::scales[122]}; // 0x2D0F
+inline constexpr od::descriptor do7_at_press_delay{detail::entries[123], detail::infos[123], detail::scales[123]}; // 0x2D17
+inline constexpr od::descriptor transfer_position{detail::entries[124], detail::infos[124], detail::scales[124]}; // 0x2D3B
+inline constexpr od::descriptor transfer_cavity_pres{detail::entries[125], detail::infos[125], detail::scales[125]}; // 0x2D3C
+inline constexpr od::descriptor transfer_hydr_press{detail::entries[126], detail::infos[126], detail::scales[126]}; // 0x2D3D
+inline constexpr od::descriptor transfer_hydr_pos{detail::entries[127], detail::infos[127], detail::scales[127]}; // 0x2D3E
+inline constexpr od::descriptor press_cmd_min{detail::entries[128], detail::infos[128], detail::scales[128]}; // 0x2D71
+inline constexpr od::descriptor press_fb_1_min{detail::entries[129], detail::infos[129], detail::scales[129]}; // 0x2D72
+inline constexpr od::descriptor cavity_press_min{detail::entries[130], detail::infos[130], detail::scales[130]}; // 0x2D73
+inline constexpr od::descriptor press_fb_2_min{detail::entries[131], detail::infos[131], detail::scales[131]}; // 0x2D74
+inline constexpr od::descriptor cyl_pos_fb_min{detail::entries[132], detail::infos[132], detail::scales[132]}; // 0x2D75
+inline constexpr od::descriptor vel_cmd_min{detail::entries[133], detail::infos[133], detail::scales[133]}; // 0x2D76
+inline constexpr od::descriptor press_cmd_max{detail::entries[134], detail::infos[134], detail::scales[134]}; // 0x2D7C
+inline constexpr od::descriptor press_fb_1_max{detail::entries[135], detail::infos[135], detail::scales[135]}; // 0x2D7D
+inline constexpr od::descriptor cavity_press_max{detail::entries[136], detail::infos[136], detail::scales[136]}; // 0x2D7E
+inline constexpr od::descriptor press_fb_2_max{detail::entries[137], detail::infos[137], detail::scales[137]}; // 0x2D7F
+inline constexpr od::descriptor cyl_pos_fb_max{detail::entries[138], detail::infos[138], detail::scales[138]}; // 0x2D80
+inline constexpr od::descriptor vel_cmd_max{detail::entries[139], detail::infos[139], detail::scales[139]}; // 0x2D81
+inline constexpr od::descriptor press_cmd_min_fau{detail::entries[140], detail::infos[140], detail::scales[140]}; // 0x2D87
+inline constexpr od::descriptor press_fb_1_min_fau{detail::entries[141], detail::infos[141], detail::scales[141]}; // 0x2D88
+inline constexpr od::descriptor cavity_press_min_fau{detail::entries[142], detail::infos[142], detail::scales[142]}; // 0x2D89
+inline constexpr od::descriptor press_fb_2_min_fau{detail::entries[143], detail::infos[143], detail::scales[143]}; // 0x2D8A
+inline constexpr od::descriptor cyl_pos_fb_min_fau{detail::entries[144], detail::infos[144], detail::scales[144]}; // 0x2D8B
+inline constexpr od::descriptor vel_cmd_min_fau{detail::entries[145], detail::infos[145], detail::scales[145]}; // 0x2D8C
+inline constexpr od::descriptor press_cmd_max_fau{detail::entries[146], detail::infos[146], detail::scales[146]}; // 0x2D92
+inline constexpr od::descriptor press_fb_1_max_fau{detail::entries[147], detail::infos[147], detail::scales[147]}; // 0x2D93
+inline constexpr od::descriptor cavity_press_max_fau{detail::entries[148], detail::infos[148], detail::scales[148]}; // 0x2D94
+inline constexpr od::descriptor press_fb_2_max_fau{detail::entries[149], detail::infos[149], detail::scales[149]}; // 0x2D95
+inline constexpr od::descriptor cyl_pos_fb_max_fau{detail::entries[150], detail::infos[150], detail::scales[150]}; // 0x2D96
+inline constexpr od::descriptor vel_cmd_max_fau{detail::entries[151], detail::infos[151], detail::scales[151]}; // 0x2D97
+inline constexpr od::descriptor press_cmd_max_uni{detail::entries[152], detail::infos[152], detail::scales[152]}; // 0x2D9D
+inline constexpr od::descriptor press_fb_1_max_uni{detail::entries[153], detail::infos[153], detail::scales[153]}; // 0x2D9E
+inline constexpr od::descriptor cavity_press_max_uni{detail::entries[154], detail::infos[154], detail::scales[154]}; // 0x2D9F
+inline constexpr od::descriptor press_fb_2_max_uni{detail::entries[155], detail::infos[155], detail::scales[155]}; // 0x2DA0
+inline constexpr od::descriptor cyl_pos_cmd_max_uni{detail::entries[156], detail::infos[156], detail::scales[156]}; // 0x2DA1
+inline constexpr od::descriptor ssi_nb_of_bits{detail::entries[157], detail::infos[157], detail::scales[157]}; // 0x2DC1
+inline constexpr od::descriptor ssi_resolution{detail::entries[158], detail::infos[158], detail::scales[158]}; // 0x2DC4
+inline constexpr od::descriptor ssi_offset{detail::entries[159], detail::infos[159], detail::scales[159]}; // 0x2DC5
+inline constexpr od::descriptor incr_home_offset{detail::entries[160], detail::infos[160], detail::scales[160]}; // 0x2DCB
+inline constexpr od::descriptor incr_resolution{detail::entries[161], detail::infos[161], detail::scales[161]}; // 0x2DCC
+inline constexpr od::descriptor injection_scale{detail::entries[162], detail::infos[162], detail::scales[162]}; // 0x2E21
+inline constexpr od::descriptor injection_limit_plus{detail::entries[163], detail::infos[163], detail::scales[163]}; // 0x2E2A
+inline constexpr od::descriptor injection_limit_minus{detail::entries[164], detail::infos[164], detail::scales[164]}; // 0x2E2D
+inline constexpr od::descriptor out2_inject_limit_minus{detail::entries[165], detail::infos[165], detail::scales[165]}; // 0x2E2E
+inline constexpr od::descriptor velocity_cmd_ai6{detail::entries[166], detail::infos[166], detail::scales[166]}; // 0x2F03
+inline constexpr od::descriptor vel_loop_cmd{detail::entries[167], detail::infos[167], detail::scales[167]}; // 0x2F04
+inline constexpr od::descriptor position_fb{detail::entries[168], detail::infos[168], detail::scales[168]}; // 0x2F07
+inline constexpr od::descriptor position_error{detail::entries[169], detail::infos[169], detail::scales[169]}; // 0x2F09
+inline constexpr od::descriptor pressure_cmd_ai1{detail::entries[170], detail::infos[170], detail::scales[170]}; // 0x2F0B
+inline constexpr od::descriptor press_loop_cmd{detail::entries[171], detail::infos[171], detail::scales[171]}; // 0x2F0E
+inline constexpr od::descriptor pressure_fb_1_ai2{detail::entries[172], detail::infos[172], detail::scales[172]}; // 0x2F0F
+inline constexpr od::descriptor pressure_fb_2_ai4{detail::entries[173], detail::infos[173], detail::scales[173]}; // 0x2F10
+inline constexpr od::descriptor pressure_fb{detail::entries[174], detail::infos[174], detail::scales[174]}; // 0x2F11
+inline constexpr od::descriptor pressure_error{detail::entries[175], detail::infos[175], detail::scales[175]}; // 0x2F13
+inline constexpr od::descriptor cavity_pressure_ai3{detail::entries[176], detail::infos[176], detail::scales[176]}; // 0x2F19
+inline constexpr od::descriptor position_ai5{detail::entries[177], detail::infos[177], detail::scales[177]}; // 0x2F1A
+inline constexpr od::descriptor valve_output_1{detail::entries[178], detail::infos[178], detail::scales[178]}; // 0x2F1F
+inline constexpr od::descriptor valve_output_2{detail::entries[179], detail::infos[179], detail::scales[179]}; // 0x2F20
+inline constexpr od::descriptor valve_output_3{detail::entries[180], detail::infos[180], detail::scales[180]}; // 0x2F21
+inline constexpr od::descriptor program_block{detail::entries[181], detail::infos[181], detail::scales[181]}; // 0x2F25
+inline constexpr od::descriptor discrete_outputs{detail::entries[182], detail::infos[182], detail::scales[182]}; // 0x2F26
+inline constexpr od::descriptor discrete_inputs{detail::entries[183], detail::infos[183], detail::scales[183]}; // 0x2F27
+inline constexpr od::descriptor output_mode{detail::entries[184], detail::infos[184], detail::scales[184]}; // 0x2F28
+inline constexpr od::descriptor program_status{detail::entries[185], detail::infos[185], detail::scales[185]}; // 0x2F34
+inline constexpr od::descriptor injection_offset{detail::entries[186], detail::infos[186], detail::scales[186]}; // 0x2F6D
+inline constexpr od::descriptor pos_max_length{detail::entries[187], detail::infos[187], detail::scales[187]}; // 0x2F72
+inline constexpr od::descriptor pres_max_inject{detail::entries[188], detail::infos[188], detail::scales[188]}; // 0x2F78
+inline constexpr od::descriptor jog_mode_offset{detail::entries[189], detail::infos[189], detail::scales[189]}; // 0x2F7F
+inline constexpr od::descriptor jog_mode_scale{detail::entries[190], detail::infos[190], detail::scales[190]}; // 0x2F80
+inline constexpr od::descriptor jog_mode_limit_minus{detail::entries[191], detail::infos[191], detail::scales[191]}; // 0x2F81
+inline constexpr od::descriptor jog_mode_limit_plus{detail::entries[192], detail::infos[192], detail::scales[192]}; // 0x2F82
+inline constexpr od::descriptor out2_jog_limit_minus{detail::entries[193], detail::infos[193], detail::scales[193]}; // 0x2F87
+inline constexpr od::descriptor pah_backpres_offset{detail::entries[194], detail::infos[194], detail::scales[194]}; // 0x2F91
+inline constexpr od::descriptor pah_backpres_scale{detail::entries[195], detail::infos[195], detail::scales[195]}; // 0x2F92
+inline constexpr od::descriptor pah_backpres_limit_minus{detail::entries[196], detail::infos[196], detail::scales[196]}; // 0x2F93
+inline constexpr od::descriptor pah_backpres_limit_plus{detail::entries[197], detail::infos[197], detail::scales[197]}; // 0x2F94
+inline constexpr od::descriptor out2_backpress_lim_minus{detail::entries[198], detail::infos[198], detail::scales[198]}; // 0x2F99
+inline constexpr od::descriptor decompres_offset{detail::entries[199], detail::infos[199], detail::scales[199]}; // 0x2FA3
+inline constexpr od::descriptor decompres_scale{detail::entries[200], detail::infos[200], detail::scales[200]}; // 0x2FA4
+inline constexpr od::descriptor decompres_limit_minus{detail::entries[201], detail::infos[201], detail::scales[201]}; // 0x2FA5
+inline constexpr od::descriptor decompres_limit_plus{detail::entries[202], detail::infos[202], detail::scales[202]}; // 0x2FA6
+inline constexpr od::descriptor out2_decomp_limit_minus{detail::entries[203], detail::infos[203], detail::scales[203]}; // 0x2FAB
+inline constexpr od::descriptor cyl_area_ratio{detail::entries[204], detail::infos[204], detail::scales[204]}; // 0x3116
+inline constexpr od::descriptor hist_time_1{detail::entries[205], detail::infos[205], detail::scales[205]}; // 0x3501
+inline constexpr od::descriptor hist_time_3{detail::entries[206], detail::infos[206], detail::scales[206]}; // 0x3503
+inline constexpr od::descriptor hist_time_4{detail::entries[207], detail::infos[207], detail::scales[207]}; // 0x3504
+inline constexpr od::descriptor hist_time_5{detail::entries[208], detail::infos[208], detail::scales[208]}; // 0x3505
+inline constexpr od::descriptor hist_time_6{detail::entries[209], detail::infos[209], detail::scales[209]}; // 0x3506
+inline constexpr od::descriptor hist_time_13{detail::entries[210], detail::infos[210], detail::scales[210]}; // 0x350E
+inline constexpr od::descriptor hist_time_14{detail::entries[211], detail::infos[211], detail::scales[211]}; // 0x350F
+inline constexpr od::descriptor hist_time_15{detail::entries[212], detail::infos[212], detail::scales[212]}; // 0x3510
+inline constexpr od::descriptor hist_time_16{detail::entries[213], detail::infos[213], detail::scales[213]}; // 0x3511
+inline constexpr od::descriptor hist_time_17{detail::entries[214], detail::infos[214], detail::scales[214]}; // 0x3512
+inline constexpr od::descriptor hist_time_23{detail::entries[215], detail::infos[215], detail::scales[215]}; // 0x3518
+inline constexpr od::descriptor hist_time_26{detail::entries[216], detail::infos[216], detail::scales[216]}; // 0x351B
+inline constexpr od::descriptor hist_time_27{detail::entries[217], detail::infos[217], detail::scales[217]}; // 0x351C
+inline constexpr od::descriptor hist_time_28{detail::entries[218], detail::infos[218], detail::scales[218]}; // 0x351D
+inline constexpr od::descriptor hist_time_29{detail::entries[219], detail::infos[219], detail::scales[219]}; // 0x351E
+inline constexpr od::descriptor hist_time_30{detail::entries[220], detail::infos[220], detail::scales[220]}; // 0x351F
+inline constexpr od::descriptor hist_pres_cmd_13{detail::entries[221], detail::infos[221], detail::scales[221]}; // 0x3571
+inline constexpr od::descriptor hist_pos_fb_1{detail::entries[222], detail::infos[222], detail::scales[222]}; // 0x3601
+inline constexpr od::descriptor hist_pos_fb_2{detail::entries[223], detail::infos[223], detail::scales[223]}; // 0x3602
+inline constexpr od::descriptor hist_pos_fb_3{detail::entries[224], detail::infos[224], detail::scales[224]}; // 0x3603
+inline constexpr od::descriptor hist_pos_fb_4{detail::entries[225], detail::infos[225], detail::scales[225]}; // 0x3604
+inline constexpr od::descriptor hist_pos_fb_5{detail::entries[226], detail::infos[226], detail::scales[226]}; // 0x3605
+inline constexpr od::descriptor hist_pos_fb_6{detail::entries[227], detail::infos[227], detail::scales[227]}; // 0x3606
+inline constexpr od::descriptor hist_pos_fb_13{detail::entries[228], detail::infos[228], detail::scales[228]}; // 0x360D
+inline constexpr od::descriptor hist_pos_fb_14{detail::entries[229], detail::infos[229], detail::scales[229]}; // 0x360E
+inline constexpr od::descriptor hist_pos_fb_15{detail::entries[230], detail::infos[230], detail::scales[230]}; // 0x360F
+inline constexpr od::descriptor hist_pos_fb_16{detail::entries[231], detail::infos[231], detail::scales[231]}; // 0x3610
+inline constexpr od::descriptor hist_pos_fb_17{detail::entries[232], detail::infos[232], detail::scales[232]}; // 0x3611
+inline constexpr od::descriptor hist_pos_fb_18{detail::entries[233], detail::infos[233], detail::scales[233]}; // 0x3617
+inline constexpr od::descriptor hist_pos_fb_26{detail::entries[234], detail::infos[234], detail::scales[234]}; // 0x361A
+inline constexpr od::descriptor hist_pos_fb_27{detail::entries[235], detail::infos[235], detail::scales[235]}; // 0x361B
+inline constexpr od::descriptor hist_pos_fb_28{detail::entries[236], detail::infos[236], detail::scales[236]}; // 0x361C
+inline constexpr od::descriptor hist_pos_fb_29{detail::entries[237], detail::infos[237], detail::scales[237]}; // 0x361D
+inline constexpr od::descriptor hist_pos_fb_30{detail::entries[238], detail::infos[238], detail::scales[238]}; // 0x361E
+inline constexpr od::descriptor hist_pres_fb_13{detail::entries[239], detail::infos[239], detail::scales[239]}; // 0x362E
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object error_history{0x1003, od::object_code::array, "Error History"sv, dictionary.entries().subspan(1, 5), dictionary.infos().subspan(1, 5), dictionary.scales().subspan(1, 5)};
-inline constexpr od::descriptor error_history_sub0{entries[1], infos[1], scales[1]}; // 0x1003 sub 0
-inline constexpr od::descriptor error_code_1{entries[2], infos[2], scales[2]}; // 0x1003 sub 1
-inline constexpr od::descriptor error_code_2{entries[3], infos[3], scales[3]}; // 0x1003 sub 2
-inline constexpr od::descriptor error_code_3{entries[4], infos[4], scales[4]}; // 0x1003 sub 3
-inline constexpr od::descriptor error_code_4{entries[5], infos[5], scales[5]}; // 0x1003 sub 4
+inline constexpr od::descriptor error_history_sub0{detail::entries[1], detail::infos[1], detail::scales[1]}; // 0x1003 sub 0
+inline constexpr od::descriptor error_code_1{detail::entries[2], detail::infos[2], detail::scales[2]}; // 0x1003 sub 1
+inline constexpr od::descriptor error_code_2{detail::entries[3], detail::infos[3], detail::scales[3]}; // 0x1003 sub 2
+inline constexpr od::descriptor error_code_3{detail::entries[4], detail::infos[4], detail::scales[4]}; // 0x1003 sub 3
+inline constexpr od::descriptor error_code_4{detail::entries[5], detail::infos[5], detail::scales[5]}; // 0x1003 sub 4
 inline constexpr od::object consumer_heartbeat_time{0x1016, od::object_code::array, "Consumer Heartbeat Time"sv, dictionary.entries().subspan(8, 2), dictionary.infos().subspan(8, 2), dictionary.scales().subspan(8, 2)};
-inline constexpr od::descriptor consumer_heartbeat_time_sub0{entries[8], infos[8], scales[8]}; // 0x1016 sub 0
-inline constexpr od::descriptor consumer_heartbeat_time_interval{entries[9], infos[9], scales[9]}; // 0x1016 sub 1
+inline constexpr od::descriptor consumer_heartbeat_time_sub0{detail::entries[8], detail::infos[8], detail::scales[8]}; // 0x1016 sub 0
+inline constexpr od::descriptor consumer_heartbeat_time_interval{detail::entries[9], detail::infos[9], detail::scales[9]}; // 0x1016 sub 1
 inline constexpr od::object tx_pdo1{0x1800, od::object_code::record, "Tx-PDO1 Communication Parameter"sv, dictionary.entries().subspan(11, 2), dictionary.infos().subspan(11, 2), dictionary.scales().subspan(11, 2)};
-inline constexpr od::descriptor tx_pdo1_sub0{entries[11], infos[11], scales[11]}; // 0x1800 sub 0
-inline constexpr od::descriptor tx_pdo1_event_timer{entries[12], infos[12], scales[12]}; // 0x1800 sub 5
+inline constexpr od::descriptor tx_pdo1_sub0{detail::entries[11], detail::infos[11], detail::scales[11]}; // 0x1800 sub 0
+inline constexpr od::descriptor tx_pdo1_event_timer{detail::entries[12], detail::infos[12], detail::scales[12]}; // 0x1800 sub 5
 inline constexpr od::object tx_pdo2{0x1801, od::object_code::record, "Tx-PDO2 Communication Parameter"sv, dictionary.entries().subspan(13, 2), dictionary.infos().subspan(13, 2), dictionary.scales().subspan(13, 2)};
-inline constexpr od::descriptor tx_pdo2_sub0{entries[13], infos[13], scales[13]}; // 0x1801 sub 0
-inline constexpr od::descriptor tx_pdo2_event_timer{entries[14], infos[14], scales[14]}; // 0x1801 sub 5
+inline constexpr od::descriptor tx_pdo2_sub0{detail::entries[13], detail::infos[13], detail::scales[13]}; // 0x1801 sub 0
+inline constexpr od::descriptor tx_pdo2_event_timer{detail::entries[14], detail::infos[14], detail::scales[14]}; // 0x1801 sub 5
 inline constexpr od::object tx_pdo3{0x1802, od::object_code::record, "Tx-PDO3 Communication Parameter"sv, dictionary.entries().subspan(15, 2), dictionary.infos().subspan(15, 2), dictionary.scales().subspan(15, 2)};
-inline constexpr od::descriptor tx_pdo3_sub0{entries[15], infos[15], scales[15]}; // 0x1802 sub 0
-inline constexpr od::descriptor tx_pdo3_event_timer{entries[16], infos[16], scales[16]}; // 0x1802 sub 5
+inline constexpr od::descriptor tx_pdo3_sub0{detail::entries[15], detail::infos[15], detail::scales[15]}; // 0x1802 sub 0
+inline constexpr od::descriptor tx_pdo3_event_timer{detail::entries[16], detail::infos[16], detail::scales[16]}; // 0x1802 sub 5
 inline constexpr od::object tx_pdo4{0x1803, od::object_code::record, "Tx-PDO4 Communication Parameter"sv, dictionary.entries().subspan(17, 2), dictionary.infos().subspan(17, 2), dictionary.scales().subspan(17, 2)};
-inline constexpr od::descriptor tx_pdo4_sub0{entries[17], infos[17], scales[17]}; // 0x1803 sub 0
-inline constexpr od::descriptor tx_pdo4_event_timer{entries[18], infos[18], scales[18]}; // 0x1803 sub 5
+inline constexpr od::descriptor tx_pdo4_sub0{detail::entries[17], detail::infos[17], detail::scales[17]}; // 0x1803 sub 0
+inline constexpr od::descriptor tx_pdo4_event_timer{detail::entries[18], detail::infos[18], detail::scales[18]}; // 0x1803 sub 5
 
 } // namespace fieldcodec::dictionaries::dpq_parameters
 // clang-format on

@@ -12,8 +12,8 @@
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/text.hpp>
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dictionaries::xenax_canopen {
@@ -22,7 +22,8 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_canopen.eds";
 
-inline constexpr std::array<od::entry, 463> entries{{
+namespace detail {
+inline constexpr od::entry entries[463]{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(131474U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1005, .type = od::data_type::unsigned32, .low = od::unsigned_number(1U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(2147483776U)},
@@ -486,9 +487,9 @@ inline constexpr std::array<od::entry, 463> entries{{
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
     {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .default_text = {"http://www.jennyscience.ch", 26}},
-}};
+};
 
-inline constexpr std::array<od::entry_info, 463> infos{{
+inline constexpr od::entry_info infos[463]{
     {.name = {"Device Type", 11}},
     {.name = {"Error Register", 14}},
     {.name = {"COB-ID SYNC", 11}},
@@ -952,285 +953,289 @@ inline constexpr std::array<od::entry_info, 463> infos{{
     {.name = {"Target Velocity", 15}},
     {.name = {"Supported Modes of Operation", 28}},
     {.name = {"Product Website Address", 23}},
-}};
+};
+} // namespace detail
+
+inline constexpr std::span<const od::entry, 463> entries{detail::entries};
+inline constexpr std::span<const od::entry_info, 463> infos{detail::infos};
 
 inline constexpr od::dictionary dictionary{entries, infos};
 static_assert(dictionary.is_valid());
 
 // VAR objects: standalone descriptors (firmware that names one keeps only that one).
-inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000
-inline constexpr od::descriptor error_register{entries[1], infos[1]}; // 0x1001
-inline constexpr od::descriptor cob_id_sync{entries[2], infos[2]}; // 0x1005
-inline constexpr od::descriptor manufacturer_device_name{entries[3], infos[3]}; // 0x1008
-inline constexpr od::descriptor manufacturer_hardware_version{entries[4], infos[4]}; // 0x1009
-inline constexpr od::descriptor manufacturer_software_version{entries[5], infos[5]}; // 0x100A
-inline constexpr od::descriptor cob_id_emcy{entries[6], infos[6]}; // 0x1014
-inline constexpr od::descriptor producer_heartbeat_time{entries[7], infos[7]}; // 0x1017
-inline constexpr od::descriptor s_curve_profile{entries[189], infos[189]}; // 0x2000
-inline constexpr od::descriptor reserved_2001{entries[190], infos[190]}; // 0x2001
-inline constexpr od::descriptor reserved_2002{entries[191], infos[191]}; // 0x2002
-inline constexpr od::descriptor reserved_2003{entries[192], infos[192]}; // 0x2003
-inline constexpr od::descriptor xenax_error_number{entries[193], infos[193]}; // 0x2004
-inline constexpr od::descriptor i_force_actual{entries[194], infos[194]}; // 0x2005
-inline constexpr od::descriptor process_status_register{entries[195], infos[195]}; // 0x2006
-inline constexpr od::descriptor pdo_cycle_time{entries[196], infos[196]}; // 0x2007
-inline constexpr od::descriptor motor_type{entries[197], infos[197]}; // 0x2008
-inline constexpr od::descriptor limit_force{entries[198], infos[198]}; // 0x2009
-inline constexpr od::descriptor force_actual_value{entries[199], infos[199]}; // 0x200A
-inline constexpr od::descriptor direct_commands{entries[200], infos[200]}; // 0x5000
-inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{entries[423], infos[423]}; // 0x5011
-inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{entries[424], infos[424]}; // 0x5012
-inline constexpr od::descriptor tell_error_string_tes{entries[425], infos[425]}; // 0x5020
-inline constexpr od::descriptor servo_identification_string_sid{entries[426], infos[426]}; // 0x5021
-inline constexpr od::descriptor error_code{entries[427], infos[427]}; // 0x603F
-inline constexpr od::descriptor controlword{entries[428], infos[428]}; // 0x6040
-inline constexpr od::descriptor statusword{entries[429], infos[429]}; // 0x6041
-inline constexpr od::descriptor modes_of_operation_requested{entries[430], infos[430]}; // 0x6060
-inline constexpr od::descriptor modes_of_operation_display{entries[431], infos[431]}; // 0x6061
-inline constexpr od::descriptor position_actual_value{entries[432], infos[432]}; // 0x6064
-inline constexpr od::descriptor following_position_error_window{entries[433], infos[433]}; // 0x6065
-inline constexpr od::descriptor target_position_window{entries[434], infos[434]}; // 0x6067
-inline constexpr od::descriptor position_window_time{entries[435], infos[435]}; // 0x6068
-inline constexpr od::descriptor velocity_actual_value{entries[436], infos[436]}; // 0x606C
-inline constexpr od::descriptor limit_i_force{entries[437], infos[437]}; // 0x6073
-inline constexpr od::descriptor motor_current_actual_value{entries[438], infos[438]}; // 0x6078
-inline constexpr od::descriptor target_position{entries[439], infos[439]}; // 0x607A
-inline constexpr od::descriptor speed{entries[443], infos[443]}; // 0x6081
-inline constexpr od::descriptor acceleration{entries[444], infos[444]}; // 0x6083
-inline constexpr od::descriptor quick_stop_deceleration{entries[445], infos[445]}; // 0x6085
-inline constexpr od::descriptor reference_methods{entries[446], infos[446]}; // 0x6098
-inline constexpr od::descriptor velocity_offset{entries[450], infos[450]}; // 0x60B1
-inline constexpr od::descriptor torque_offset{entries[451], infos[451]}; // 0x60B2
-inline constexpr od::descriptor actual_position_following_error{entries[455], infos[455]}; // 0x60F4
-inline constexpr od::descriptor digital_inputs{entries[456], infos[456]}; // 0x60FD
-inline constexpr od::descriptor target_velocity{entries[460], infos[460]}; // 0x60FF
-inline constexpr od::descriptor supported_modes_of_operation{entries[461], infos[461]}; // 0x6502
-inline constexpr od::descriptor product_website_address{entries[462], infos[462]}; // 0x6505
+inline constexpr od::descriptor device_type{detail::entries[0], detail::infos[0]}; // 0x1000
+inline constexpr od::descriptor error_register{detail::entries[1], detail::infos[1]}; // 0x1001
+inline constexpr od::descriptor cob_id_sync{detail::entries[2], detail::infos[2]}; // 0x1005
+inline constexpr od::descriptor manufacturer_device_name{detail::entries[3], detail::infos[3]}; // 0x1008
+inline constexpr od::descriptor manufacturer_hardware_version{detail::entries[4], detail::infos[4]}; // 0x1009
+inline constexpr od::descriptor manufacturer_software_version{detail::entries[5], detail::infos[5]}; // 0x100A
+inline constexpr od::descriptor cob_id_emcy{detail::entries[6], detail::infos[6]}; // 0x1014
+inline constexpr od::descriptor producer_heartbeat_time{detail::entries[7], detail::infos[7]}; // 0x1017
+inline constexpr od::descriptor s_curve_profile{detail::entries[189], detail::infos[189]}; // 0x2000
+inline constexpr od::descriptor reserved_2001{detail::entries[190], detail::infos[190]}; // 0x2001
+inline constexpr od::descriptor reserved_2002{detail::entries[191], detail::infos[191]}; // 0x2002
+inline constexpr od::descriptor reserved_2003{detail::entries[192], detail::infos[192]}; // 0x2003
+inline constexpr od::descriptor xenax_error_number{detail::entries[193], detail::infos[193]}; // 0x2004
+inline constexpr od::descriptor i_force_actual{detail::entries[194], detail::infos[194]}; // 0x2005
+inline constexpr od::descriptor process_status_register{detail::entries[195], detail::infos[195]}; // 0x2006
+inline constexpr od::descriptor pdo_cycle_time{detail::entries[196], detail::infos[196]}; // 0x2007
+inline constexpr od::descriptor motor_type{detail::entries[197], detail::infos[197]}; // 0x2008
+inline constexpr od::descriptor limit_force{detail::entries[198], detail::infos[198]}; // 0x2009
+inline constexpr od::descriptor force_actual_value{detail::entries[199], detail::infos[199]}; // 0x200A
+inline constexpr od::descriptor direct_commands{detail::entries[200], detail::infos[200]}; // 0x5000
+inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{detail::entries[423], detail::infos[423]}; // 0x5011
+inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{detail::entries[424], detail::infos[424]}; // 0x5012
+inline constexpr od::descriptor tell_error_string_tes{detail::entries[425], detail::infos[425]}; // 0x5020
+inline constexpr od::descriptor servo_identification_string_sid{detail::entries[426], detail::infos[426]}; // 0x5021
+inline constexpr od::descriptor error_code{detail::entries[427], detail::infos[427]}; // 0x603F
+inline constexpr od::descriptor controlword{detail::entries[428], detail::infos[428]}; // 0x6040
+inline constexpr od::descriptor statusword{detail::entries[429], detail::infos[429]}; // 0x6041
+inline constexpr od::descriptor modes_of_operation_requested{detail::entries[430], detail::infos[430]}; // 0x6060
+inline constexpr od::descriptor modes_of_operation_display{detail::entries[431], detail::infos[431]}; // 0x6061
+inline constexpr od::descriptor position_actual_value{detail::entries[432], detail::infos[432]}; // 0x6064
+inline constexpr od::descriptor following_position_error_window{detail::entries[433], detail::infos[433]}; // 0x6065
+inline constexpr od::descriptor target_position_window{detail::entries[434], detail::infos[434]}; // 0x6067
+inline constexpr od::descriptor position_window_time{detail::entries[435], detail::infos[435]}; // 0x6068
+inline constexpr od::descriptor velocity_actual_value{detail::entries[436], detail::infos[436]}; // 0x606C
+inline constexpr od::descriptor limit_i_force{detail::entries[437], detail::infos[437]}; // 0x6073
+inline constexpr od::descriptor motor_current_actual_value{detail::entries[438], detail::infos[438]}; // 0x6078
+inline constexpr od::descriptor target_position{detail::entries[439], detail::infos[439]}; // 0x607A
+inline constexpr od::descriptor speed{detail::entries[443], detail::infos[443]}; // 0x6081
+inline constexpr od::descriptor acceleration{detail::entries[444], detail::infos[444]}; // 0x6083
+inline constexpr od::descriptor quick_stop_deceleration{detail::entries[445], detail::infos[445]}; // 0x6085
+inline constexpr od::descriptor reference_methods{detail::entries[446], detail::infos[446]}; // 0x6098
+inline constexpr od::descriptor velocity_offset{detail::entries[450], detail::infos[450]}; // 0x60B1
+inline constexpr od::descriptor torque_offset{detail::entries[451], detail::infos[451]}; // 0x60B2
+inline constexpr od::descriptor actual_position_following_error{detail::entries[455], detail::infos[455]}; // 0x60F4
+inline constexpr od::descriptor digital_inputs{detail::entries[456], detail::infos[456]}; // 0x60FD
+inline constexpr od::descriptor target_velocity{detail::entries[460], detail::infos[460]}; // 0x60FF
+inline constexpr od::descriptor supported_modes_of_operation{detail::entries[461], detail::infos[461]}; // 0x6502
+inline constexpr od::descriptor product_website_address{detail::entries[462], detail::infos[462]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(8, 5), dictionary.infos().subspan(8, 5)};
-inline constexpr od::descriptor identity_object_nbr_of_entries{entries[8], infos[8]}; // 0x1018 sub 0
-inline constexpr od::descriptor identity_object_vendor_id{entries[9], infos[9]}; // 0x1018 sub 1
-inline constexpr od::descriptor identity_object_product_code{entries[10], infos[10]}; // 0x1018 sub 2
-inline constexpr od::descriptor identity_object_revision_number{entries[11], infos[11]}; // 0x1018 sub 3
-inline constexpr od::descriptor identity_object_serial_number{entries[12], infos[12]}; // 0x1018 sub 4
+inline constexpr od::descriptor identity_object_nbr_of_entries{detail::entries[8], detail::infos[8]}; // 0x1018 sub 0
+inline constexpr od::descriptor identity_object_vendor_id{detail::entries[9], detail::infos[9]}; // 0x1018 sub 1
+inline constexpr od::descriptor identity_object_product_code{detail::entries[10], detail::infos[10]}; // 0x1018 sub 2
+inline constexpr od::descriptor identity_object_revision_number{detail::entries[11], detail::infos[11]}; // 0x1018 sub 3
+inline constexpr od::descriptor identity_object_serial_number{detail::entries[12], detail::infos[12]}; // 0x1018 sub 4
 inline constexpr od::object server_sdo_parameter_1{0x1200, od::object_code::record, "Server SDO Parameter 1"sv, dictionary.entries().subspan(13, 3), dictionary.infos().subspan(13, 3)};
-inline constexpr od::descriptor server_sdo_parameter_1_nbr_of_entries{entries[13], infos[13]}; // 0x1200 sub 0
-inline constexpr od::descriptor server_sdo_parameter_1_cob_id_client_server{entries[14], infos[14]}; // 0x1200 sub 1
-inline constexpr od::descriptor server_sdo_parameter_1_cob_id_server_client{entries[15], infos[15]}; // 0x1200 sub 2
+inline constexpr od::descriptor server_sdo_parameter_1_nbr_of_entries{detail::entries[13], detail::infos[13]}; // 0x1200 sub 0
+inline constexpr od::descriptor server_sdo_parameter_1_cob_id_client_server{detail::entries[14], detail::infos[14]}; // 0x1200 sub 1
+inline constexpr od::descriptor server_sdo_parameter_1_cob_id_server_client{detail::entries[15], detail::infos[15]}; // 0x1200 sub 2
 inline constexpr od::object receive_pdo_comm_param_1{0x1400, od::object_code::record, "Receive PDO Comm Param 1"sv, dictionary.entries().subspan(16, 6), dictionary.infos().subspan(16, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_1_nbr_of_entries{entries[16], infos[16]}; // 0x1400 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_1_cob_id{entries[17], infos[17]}; // 0x1400 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_1_transmission_type{entries[18], infos[18]}; // 0x1400 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_1_inhibit_time{entries[19], infos[19]}; // 0x1400 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_1_compatibility_entry{entries[20], infos[20]}; // 0x1400 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_1_event_timer{entries[21], infos[21]}; // 0x1400 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_1_nbr_of_entries{detail::entries[16], detail::infos[16]}; // 0x1400 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_1_cob_id{detail::entries[17], detail::infos[17]}; // 0x1400 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_1_transmission_type{detail::entries[18], detail::infos[18]}; // 0x1400 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_1_inhibit_time{detail::entries[19], detail::infos[19]}; // 0x1400 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_1_compatibility_entry{detail::entries[20], detail::infos[20]}; // 0x1400 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_1_event_timer{detail::entries[21], detail::infos[21]}; // 0x1400 sub 5
 inline constexpr od::object receive_pdo_comm_param_2{0x1401, od::object_code::record, "Receive PDO Comm Param 2"sv, dictionary.entries().subspan(22, 6), dictionary.infos().subspan(22, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_2_nbr_of_entries{entries[22], infos[22]}; // 0x1401 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_2_cob_id{entries[23], infos[23]}; // 0x1401 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_2_transmission_type{entries[24], infos[24]}; // 0x1401 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_2_inhibit_time{entries[25], infos[25]}; // 0x1401 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_2_compatibility_entry{entries[26], infos[26]}; // 0x1401 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_2_event_timer{entries[27], infos[27]}; // 0x1401 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_2_nbr_of_entries{detail::entries[22], detail::infos[22]}; // 0x1401 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_2_cob_id{detail::entries[23], detail::infos[23]}; // 0x1401 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_2_transmission_type{detail::entries[24], detail::infos[24]}; // 0x1401 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_2_inhibit_time{detail::entries[25], detail::infos[25]}; // 0x1401 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_2_compatibility_entry{detail::entries[26], detail::infos[26]}; // 0x1401 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_2_event_timer{detail::entries[27], detail::infos[27]}; // 0x1401 sub 5
 inline constexpr od::object receive_pdo_comm_param_17{0x1410, od::object_code::record, "Receive PDO Comm Param 17"sv, dictionary.entries().subspan(28, 6), dictionary.infos().subspan(28, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_17_nbr_of_entries{entries[28], infos[28]}; // 0x1410 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_17_cob_id{entries[29], infos[29]}; // 0x1410 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_17_transmission_type{entries[30], infos[30]}; // 0x1410 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_17_inhibit_time{entries[31], infos[31]}; // 0x1410 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_17_compatibility_entry{entries[32], infos[32]}; // 0x1410 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_17_event_timer{entries[33], infos[33]}; // 0x1410 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_17_nbr_of_entries{detail::entries[28], detail::infos[28]}; // 0x1410 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_17_cob_id{detail::entries[29], detail::infos[29]}; // 0x1410 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_17_transmission_type{detail::entries[30], detail::infos[30]}; // 0x1410 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_17_inhibit_time{detail::entries[31], detail::infos[31]}; // 0x1410 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_17_compatibility_entry{detail::entries[32], detail::infos[32]}; // 0x1410 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_17_event_timer{detail::entries[33], detail::infos[33]}; // 0x1410 sub 5
 inline constexpr od::object receive_pdo_comm_param_18{0x1411, od::object_code::record, "Receive PDO Comm Param 18"sv, dictionary.entries().subspan(34, 6), dictionary.infos().subspan(34, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_18_nbr_of_entries{entries[34], infos[34]}; // 0x1411 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_18_cob_id{entries[35], infos[35]}; // 0x1411 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_18_transmission_type{entries[36], infos[36]}; // 0x1411 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_18_inhibit_time{entries[37], infos[37]}; // 0x1411 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_18_compatibility_entry{entries[38], infos[38]}; // 0x1411 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_18_event_timer{entries[39], infos[39]}; // 0x1411 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_18_nbr_of_entries{detail::entries[34], detail::infos[34]}; // 0x1411 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_18_cob_id{detail::entries[35], detail::infos[35]}; // 0x1411 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_18_transmission_type{detail::entries[36], detail::infos[36]}; // 0x1411 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_18_inhibit_time{detail::entries[37], detail::infos[37]}; // 0x1411 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_18_compatibility_entry{detail::entries[38], detail::infos[38]}; // 0x1411 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_18_event_timer{detail::entries[39], detail::infos[39]}; // 0x1411 sub 5
 inline constexpr od::object receive_pdo_comm_param_19{0x1412, od::object_code::record, "Receive PDO Comm Param 19"sv, dictionary.entries().subspan(40, 6), dictionary.infos().subspan(40, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_19_nbr_of_entries{entries[40], infos[40]}; // 0x1412 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_19_cob_id{entries[41], infos[41]}; // 0x1412 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_19_transmission_type{entries[42], infos[42]}; // 0x1412 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_19_inhibit_time{entries[43], infos[43]}; // 0x1412 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_19_compatibility_entry{entries[44], infos[44]}; // 0x1412 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_19_event_timer{entries[45], infos[45]}; // 0x1412 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_19_nbr_of_entries{detail::entries[40], detail::infos[40]}; // 0x1412 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_19_cob_id{detail::entries[41], detail::infos[41]}; // 0x1412 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_19_transmission_type{detail::entries[42], detail::infos[42]}; // 0x1412 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_19_inhibit_time{detail::entries[43], detail::infos[43]}; // 0x1412 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_19_compatibility_entry{detail::entries[44], detail::infos[44]}; // 0x1412 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_19_event_timer{detail::entries[45], detail::infos[45]}; // 0x1412 sub 5
 inline constexpr od::object receive_pdo_comm_param_20{0x1413, od::object_code::record, "Receive PDO Comm Param 20"sv, dictionary.entries().subspan(46, 6), dictionary.infos().subspan(46, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_20_nbr_of_entries{entries[46], infos[46]}; // 0x1413 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_20_cob_id{entries[47], infos[47]}; // 0x1413 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_20_transmission_type{entries[48], infos[48]}; // 0x1413 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_20_inhibit_time{entries[49], infos[49]}; // 0x1413 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_20_compatibility_entry{entries[50], infos[50]}; // 0x1413 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_20_event_timer{entries[51], infos[51]}; // 0x1413 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_20_nbr_of_entries{detail::entries[46], detail::infos[46]}; // 0x1413 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_20_cob_id{detail::entries[47], detail::infos[47]}; // 0x1413 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_20_transmission_type{detail::entries[48], detail::infos[48]}; // 0x1413 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_20_inhibit_time{detail::entries[49], detail::infos[49]}; // 0x1413 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_20_compatibility_entry{detail::entries[50], detail::infos[50]}; // 0x1413 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_20_event_timer{detail::entries[51], detail::infos[51]}; // 0x1413 sub 5
 inline constexpr od::object receive_pdo_comm_param_21{0x1414, od::object_code::record, "Receive PDO Comm Param 21"sv, dictionary.entries().subspan(52, 6), dictionary.infos().subspan(52, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_21_nbr_of_entries{entries[52], infos[52]}; // 0x1414 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_21_cob_id{entries[53], infos[53]}; // 0x1414 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_21_transmission_type{entries[54], infos[54]}; // 0x1414 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_21_inhibit_time{entries[55], infos[55]}; // 0x1414 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_21_compatibility_entry{entries[56], infos[56]}; // 0x1414 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_21_event_timer{entries[57], infos[57]}; // 0x1414 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_21_nbr_of_entries{detail::entries[52], detail::infos[52]}; // 0x1414 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_21_cob_id{detail::entries[53], detail::infos[53]}; // 0x1414 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_21_transmission_type{detail::entries[54], detail::infos[54]}; // 0x1414 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_21_inhibit_time{detail::entries[55], detail::infos[55]}; // 0x1414 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_21_compatibility_entry{detail::entries[56], detail::infos[56]}; // 0x1414 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_21_event_timer{detail::entries[57], detail::infos[57]}; // 0x1414 sub 5
 inline constexpr od::object receive_pdo_comm_param_22{0x1415, od::object_code::record, "Receive PDO Comm Param 22"sv, dictionary.entries().subspan(58, 6), dictionary.infos().subspan(58, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_22_nbr_of_entries{entries[58], infos[58]}; // 0x1415 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_22_cob_id{entries[59], infos[59]}; // 0x1415 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_22_transmission_type{entries[60], infos[60]}; // 0x1415 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_22_inhibit_time{entries[61], infos[61]}; // 0x1415 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_22_compatibility_entry{entries[62], infos[62]}; // 0x1415 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_22_event_timer{entries[63], infos[63]}; // 0x1415 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_22_nbr_of_entries{detail::entries[58], detail::infos[58]}; // 0x1415 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_22_cob_id{detail::entries[59], detail::infos[59]}; // 0x1415 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_22_transmission_type{detail::entries[60], detail::infos[60]}; // 0x1415 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_22_inhibit_time{detail::entries[61], detail::infos[61]}; // 0x1415 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_22_compatibility_entry{detail::entries[62], detail::infos[62]}; // 0x1415 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_22_event_timer{detail::entries[63], detail::infos[63]}; // 0x1415 sub 5
 inline constexpr od::object receive_pdo_comm_param_23{0x1416, od::object_code::record, "Receive PDO Comm Param 23"sv, dictionary.entries().subspan(64, 6), dictionary.infos().subspan(64, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_23_nbr_of_entries{entries[64], infos[64]}; // 0x1416 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_23_cob_id{entries[65], infos[65]}; // 0x1416 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_23_transmission_type{entries[66], infos[66]}; // 0x1416 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_23_inhibit_time{entries[67], infos[67]}; // 0x1416 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_23_compatibility_entry{entries[68], infos[68]}; // 0x1416 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_23_event_timer{entries[69], infos[69]}; // 0x1416 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_23_nbr_of_entries{detail::entries[64], detail::infos[64]}; // 0x1416 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_23_cob_id{detail::entries[65], detail::infos[65]}; // 0x1416 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_23_transmission_type{detail::entries[66], detail::infos[66]}; // 0x1416 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_23_inhibit_time{detail::entries[67], detail::infos[67]}; // 0x1416 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_23_compatibility_entry{detail::entries[68], detail::infos[68]}; // 0x1416 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_23_event_timer{detail::entries[69], detail::infos[69]}; // 0x1416 sub 5
 inline constexpr od::object receive_pdo_comm_param_24{0x1417, od::object_code::record, "Receive PDO Comm Param 24"sv, dictionary.entries().subspan(70, 6), dictionary.infos().subspan(70, 6)};
-inline constexpr od::descriptor receive_pdo_comm_param_24_nbr_of_entries{entries[70], infos[70]}; // 0x1417 sub 0
-inline constexpr od::descriptor receive_pdo_comm_param_24_cob_id{entries[71], infos[71]}; // 0x1417 sub 1
-inline constexpr od::descriptor receive_pdo_comm_param_24_transmission_type{entries[72], infos[72]}; // 0x1417 sub 2
-inline constexpr od::descriptor receive_pdo_comm_param_24_inhibit_time{entries[73], infos[73]}; // 0x1417 sub 3
-inline constexpr od::descriptor receive_pdo_comm_param_24_compatibility_entry{entries[74], infos[74]}; // 0x1417 sub 4
-inline constexpr od::descriptor receive_pdo_comm_param_24_event_timer{entries[75], infos[75]}; // 0x1417 sub 5
+inline constexpr od::descriptor receive_pdo_comm_param_24_nbr_of_entries{detail::entries[70], detail::infos[70]}; // 0x1417 sub 0
+inline constexpr od::descriptor receive_pdo_comm_param_24_cob_id{detail::entries[71], detail::infos[71]}; // 0x1417 sub 1
+inline constexpr od::descriptor receive_pdo_comm_param_24_transmission_type{detail::entries[72], detail::infos[72]}; // 0x1417 sub 2
+inline constexpr od::descriptor receive_pdo_comm_param_24_inhibit_time{detail::entries[73], detail::infos[73]}; // 0x1417 sub 3
+inline constexpr od::descriptor receive_pdo_comm_param_24_compatibility_entry{detail::entries[74], detail::infos[74]}; // 0x1417 sub 4
+inline constexpr od::descriptor receive_pdo_comm_param_24_event_timer{detail::entries[75], detail::infos[75]}; // 0x1417 sub 5
 inline constexpr od::object receive_pdo_mapping_param_1{0x1600, od::object_code::record, "Receive PDO Mapping Param 1"sv, dictionary.entries().subspan(76, 2), dictionary.infos().subspan(76, 2)};
-inline constexpr od::descriptor receive_pdo_mapping_param_1_nbr_of_entries{entries[76], infos[76]}; // 0x1600 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_1_controlword{entries[77], infos[77]}; // 0x1600 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_1_nbr_of_entries{detail::entries[76], detail::infos[76]}; // 0x1600 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_1_controlword{detail::entries[77], detail::infos[77]}; // 0x1600 sub 1
 inline constexpr od::object receive_pdo_mapping_param_2{0x1601, od::object_code::record, "Receive PDO Mapping Param 2"sv, dictionary.entries().subspan(78, 3), dictionary.infos().subspan(78, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_2_nbr_of_entries{entries[78], infos[78]}; // 0x1601 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_2_controlword{entries[79], infos[79]}; // 0x1601 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_2_target_position{entries[80], infos[80]}; // 0x1601 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_2_nbr_of_entries{detail::entries[78], detail::infos[78]}; // 0x1601 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_2_controlword{detail::entries[79], detail::infos[79]}; // 0x1601 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_2_target_position{detail::entries[80], detail::infos[80]}; // 0x1601 sub 2
 inline constexpr od::object receive_pdo_mapping_param_17{0x1610, od::object_code::record, "Receive PDO Mapping Param 17"sv, dictionary.entries().subspan(81, 2), dictionary.infos().subspan(81, 2)};
-inline constexpr od::descriptor receive_pdo_mapping_param_17_nbr_of_entries{entries[81], infos[81]}; // 0x1610 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_17_digital_outputs{entries[82], infos[82]}; // 0x1610 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_17_nbr_of_entries{detail::entries[81], detail::infos[81]}; // 0x1610 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_17_digital_outputs{detail::entries[82], detail::infos[82]}; // 0x1610 sub 1
 inline constexpr od::object receive_pdo_mapping_param_18{0x1611, od::object_code::record, "Receive PDO Mapping Param 18"sv, dictionary.entries().subspan(83, 3), dictionary.infos().subspan(83, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_18_nbr_of_entries{entries[83], infos[83]}; // 0x1611 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_18_acceleration{entries[84], infos[84]}; // 0x1611 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_18_s_curve{entries[85], infos[85]}; // 0x1611 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_18_nbr_of_entries{detail::entries[83], detail::infos[83]}; // 0x1611 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_18_acceleration{detail::entries[84], detail::infos[84]}; // 0x1611 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_18_s_curve{detail::entries[85], detail::infos[85]}; // 0x1611 sub 2
 inline constexpr od::object receive_pdo_mapping_param_19{0x1612, od::object_code::record, "Receive PDO Mapping Param 19"sv, dictionary.entries().subspan(86, 2), dictionary.infos().subspan(86, 2)};
-inline constexpr od::descriptor receive_pdo_mapping_param_19_nbr_of_entries{entries[86], infos[86]}; // 0x1612 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_19_speed{entries[87], infos[87]}; // 0x1612 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_19_nbr_of_entries{detail::entries[86], detail::infos[86]}; // 0x1612 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_19_speed{detail::entries[87], detail::infos[87]}; // 0x1612 sub 1
 inline constexpr od::object receive_pdo_mapping_param_20{0x1613, od::object_code::record, "Receive PDO Mapping Param 20"sv, dictionary.entries().subspan(88, 3), dictionary.infos().subspan(88, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_20_nbr_of_entries{entries[88], infos[88]}; // 0x1613 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_20_following_position_error_window{entries[89], infos[89]}; // 0x1613 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_20_target_position_error_window{entries[90], infos[90]}; // 0x1613 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_20_nbr_of_entries{detail::entries[88], detail::infos[88]}; // 0x1613 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_20_following_position_error_window{detail::entries[89], detail::infos[89]}; // 0x1613 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_20_target_position_error_window{detail::entries[90], detail::infos[90]}; // 0x1613 sub 2
 inline constexpr od::object receive_pdo_mapping_param_21{0x1614, od::object_code::record, "Receive PDO Mapping Param 21"sv, dictionary.entries().subspan(91, 2), dictionary.infos().subspan(91, 2)};
-inline constexpr od::descriptor receive_pdo_mapping_param_21_nbr_of_entries{entries[91], infos[91]}; // 0x1614 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_21_i_force_max{entries[92], infos[92]}; // 0x1614 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_21_nbr_of_entries{detail::entries[91], detail::infos[91]}; // 0x1614 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_21_i_force_max{detail::entries[92], detail::infos[92]}; // 0x1614 sub 1
 inline constexpr od::object receive_pdo_mapping_param_22{0x1615, od::object_code::record, "Receive PDO Mapping Param 22"sv, dictionary.entries().subspan(93, 3), dictionary.infos().subspan(93, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_22_nbr_of_entries{entries[93], infos[93]}; // 0x1615 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_1{entries[94], infos[94]}; // 0x1615 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_2{entries[95], infos[95]}; // 0x1615 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_22_nbr_of_entries{detail::entries[93], detail::infos[93]}; // 0x1615 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_1{detail::entries[94], detail::infos[94]}; // 0x1615 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_22_mapping_entry_2{detail::entries[95], detail::infos[95]}; // 0x1615 sub 2
 inline constexpr od::object receive_pdo_mapping_param_23{0x1616, od::object_code::record, "Receive PDO Mapping Param 23"sv, dictionary.entries().subspan(96, 3), dictionary.infos().subspan(96, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_23_nbr_of_entries{entries[96], infos[96]}; // 0x1616 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_1{entries[97], infos[97]}; // 0x1616 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_2{entries[98], infos[98]}; // 0x1616 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_23_nbr_of_entries{detail::entries[96], detail::infos[96]}; // 0x1616 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_1{detail::entries[97], detail::infos[97]}; // 0x1616 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_23_mapping_entry_2{detail::entries[98], detail::infos[98]}; // 0x1616 sub 2
 inline constexpr od::object receive_pdo_mapping_param_24{0x1617, od::object_code::record, "Receive PDO Mapping Param 24"sv, dictionary.entries().subspan(99, 3), dictionary.infos().subspan(99, 3)};
-inline constexpr od::descriptor receive_pdo_mapping_param_24_nbr_of_entries{entries[99], infos[99]}; // 0x1617 sub 0
-inline constexpr od::descriptor receive_pdo_mapping_param_24_controlword{entries[100], infos[100]}; // 0x1617 sub 1
-inline constexpr od::descriptor receive_pdo_mapping_param_24_reserved_for_future{entries[101], infos[101]}; // 0x1617 sub 2
+inline constexpr od::descriptor receive_pdo_mapping_param_24_nbr_of_entries{detail::entries[99], detail::infos[99]}; // 0x1617 sub 0
+inline constexpr od::descriptor receive_pdo_mapping_param_24_controlword{detail::entries[100], detail::infos[100]}; // 0x1617 sub 1
+inline constexpr od::descriptor receive_pdo_mapping_param_24_reserved_for_future{detail::entries[101], detail::infos[101]}; // 0x1617 sub 2
 inline constexpr od::object transmit_pdo_comm_param_1{0x1800, od::object_code::record, "Transmit PDO Comm Param 1"sv, dictionary.entries().subspan(102, 6), dictionary.infos().subspan(102, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_1_nbr_of_entries{entries[102], infos[102]}; // 0x1800 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_1_cob_id{entries[103], infos[103]}; // 0x1800 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_1_transmission_type{entries[104], infos[104]}; // 0x1800 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_1_inhibit_time{entries[105], infos[105]}; // 0x1800 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_1_compatibility_entry{entries[106], infos[106]}; // 0x1800 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_1_event_timer{entries[107], infos[107]}; // 0x1800 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_1_nbr_of_entries{detail::entries[102], detail::infos[102]}; // 0x1800 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_1_cob_id{detail::entries[103], detail::infos[103]}; // 0x1800 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_1_transmission_type{detail::entries[104], detail::infos[104]}; // 0x1800 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_1_inhibit_time{detail::entries[105], detail::infos[105]}; // 0x1800 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_1_compatibility_entry{detail::entries[106], detail::infos[106]}; // 0x1800 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_1_event_timer{detail::entries[107], detail::infos[107]}; // 0x1800 sub 5
 inline constexpr od::object transmit_pdo_comm_param_2{0x1801, od::object_code::record, "Transmit PDO Comm Param 2"sv, dictionary.entries().subspan(108, 6), dictionary.infos().subspan(108, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_2_nbr_of_entries{entries[108], infos[108]}; // 0x1801 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_2_cob_id{entries[109], infos[109]}; // 0x1801 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_2_transmission_type{entries[110], infos[110]}; // 0x1801 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_2_inhibit_time{entries[111], infos[111]}; // 0x1801 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_2_compatibility_entry{entries[112], infos[112]}; // 0x1801 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_2_event_timer{entries[113], infos[113]}; // 0x1801 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_2_nbr_of_entries{detail::entries[108], detail::infos[108]}; // 0x1801 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_2_cob_id{detail::entries[109], detail::infos[109]}; // 0x1801 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_2_transmission_type{detail::entries[110], detail::infos[110]}; // 0x1801 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_2_inhibit_time{detail::entries[111], detail::infos[111]}; // 0x1801 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_2_compatibility_entry{detail::entries[112], detail::infos[112]}; // 0x1801 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_2_event_timer{detail::entries[113], detail::infos[113]}; // 0x1801 sub 5
 inline constexpr od::object transmit_pdo_comm_param_17{0x1810, od::object_code::record, "Transmit PDO Comm Param 17"sv, dictionary.entries().subspan(114, 6), dictionary.infos().subspan(114, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_17_nbr_of_entries{entries[114], infos[114]}; // 0x1810 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_17_cob_id{entries[115], infos[115]}; // 0x1810 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_17_transmission_type{entries[116], infos[116]}; // 0x1810 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_17_inhibit_time{entries[117], infos[117]}; // 0x1810 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_17_compatibility_entry{entries[118], infos[118]}; // 0x1810 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_17_event_timer{entries[119], infos[119]}; // 0x1810 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_17_nbr_of_entries{detail::entries[114], detail::infos[114]}; // 0x1810 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_17_cob_id{detail::entries[115], detail::infos[115]}; // 0x1810 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_17_transmission_type{detail::entries[116], detail::infos[116]}; // 0x1810 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_17_inhibit_time{detail::entries[117], detail::infos[117]}; // 0x1810 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_17_compatibility_entry{detail::entries[118], detail::infos[118]}; // 0x1810 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_17_event_timer{detail::entries[119], detail::infos[119]}; // 0x1810 sub 5
 inline constexpr od::object transmit_pdo_comm_param_18{0x1811, od::object_code::record, "Transmit PDO Comm Param 18"sv, dictionary.entries().subspan(120, 6), dictionary.infos().subspan(120, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_18_nbr_of_entries{entries[120], infos[120]}; // 0x1811 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_18_cob_id{entries[121], infos[121]}; // 0x1811 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_18_transmission_type{entries[122], infos[122]}; // 0x1811 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_18_inhibit_time{entries[123], infos[123]}; // 0x1811 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_18_compatibility_entry{entries[124], infos[124]}; // 0x1811 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_18_event_timer{entries[125], infos[125]}; // 0x1811 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_18_nbr_of_entries{detail::entries[120], detail::infos[120]}; // 0x1811 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_18_cob_id{detail::entries[121], detail::infos[121]}; // 0x1811 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_18_transmission_type{detail::entries[122], detail::infos[122]}; // 0x1811 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_18_inhibit_time{detail::entries[123], detail::infos[123]}; // 0x1811 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_18_compatibility_entry{detail::entries[124], detail::infos[124]}; // 0x1811 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_18_event_timer{detail::entries[125], detail::infos[125]}; // 0x1811 sub 5
 inline constexpr od::object transmit_pdo_comm_param_19{0x1812, od::object_code::record, "Transmit PDO Comm Param 19"sv, dictionary.entries().subspan(126, 6), dictionary.infos().subspan(126, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_19_nbr_of_entries{entries[126], infos[126]}; // 0x1812 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_19_cob_id{entries[127], infos[127]}; // 0x1812 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_19_transmission_type{entries[128], infos[128]}; // 0x1812 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_19_inhibit_time{entries[129], infos[129]}; // 0x1812 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_19_compatibility_entry{entries[130], infos[130]}; // 0x1812 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_19_event_timer{entries[131], infos[131]}; // 0x1812 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_19_nbr_of_entries{detail::entries[126], detail::infos[126]}; // 0x1812 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_19_cob_id{detail::entries[127], detail::infos[127]}; // 0x1812 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_19_transmission_type{detail::entries[128], detail::infos[128]}; // 0x1812 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_19_inhibit_time{detail::entries[129], detail::infos[129]}; // 0x1812 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_19_compatibility_entry{detail::entries[130], detail::infos[130]}; // 0x1812 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_19_event_timer{detail::entries[131], detail::infos[131]}; // 0x1812 sub 5
 inline constexpr od::object transmit_pdo_comm_param_20{0x1813, od::object_code::record, "Transmit PDO Comm Param 20"sv, dictionary.entries().subspan(132, 6), dictionary.infos().subspan(132, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_20_nbr_of_entries{entries[132], infos[132]}; // 0x1813 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_20_cob_id{entries[133], infos[133]}; // 0x1813 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_20_transmission_type{entries[134], infos[134]}; // 0x1813 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_20_inhibit_time{entries[135], infos[135]}; // 0x1813 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_20_compatibility_entry{entries[136], infos[136]}; // 0x1813 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_20_event_timer{entries[137], infos[137]}; // 0x1813 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_20_nbr_of_entries{detail::entries[132], detail::infos[132]}; // 0x1813 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_20_cob_id{detail::entries[133], detail::infos[133]}; // 0x1813 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_20_transmission_type{detail::entries[134], detail::infos[134]}; // 0x1813 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_20_inhibit_time{detail::entries[135], detail::infos[135]}; // 0x1813 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_20_compatibility_entry{detail::entries[136], detail::infos[136]}; // 0x1813 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_20_event_timer{detail::entries[137], detail::infos[137]}; // 0x1813 sub 5
 inline constexpr od::object transmit_pdo_comm_param_21{0x1814, od::object_code::record, "Transmit PDO Comm Param 21"sv, dictionary.entries().subspan(138, 6), dictionary.infos().subspan(138, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_21_nbr_of_entries{entries[138], infos[138]}; // 0x1814 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_21_cob_id{entries[139], infos[139]}; // 0x1814 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_21_transmission_type{entries[140], infos[140]}; // 0x1814 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_21_inhibit_time{entries[141], infos[141]}; // 0x1814 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_21_compatibility_entry{entries[142], infos[142]}; // 0x1814 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_21_event_timer{entries[143], infos[143]}; // 0x1814 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_21_nbr_of_entries{detail::entries[138], detail::infos[138]}; // 0x1814 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_21_cob_id{detail::entries[139], detail::infos[139]}; // 0x1814 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_21_transmission_type{detail::entries[140], detail::infos[140]}; // 0x1814 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_21_inhibit_time{detail::entries[141], detail::infos[141]}; // 0x1814 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_21_compatibility_entry{detail::entries[142], detail::infos[142]}; // 0x1814 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_21_event_timer{detail::entries[143], detail::infos[143]}; // 0x1814 sub 5
 inline constexpr od::object transmit_pdo_comm_param_22{0x1815, od::object_code::record, "Transmit PDO Comm Param 22"sv, dictionary.entries().subspan(144, 6), dictionary.infos().subspan(144, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_22_nbr_of_entries{entries[144], infos[144]}; // 0x1815 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_22_cob_id{entries[145], infos[145]}; // 0x1815 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_22_transmission_type{entries[146], infos[146]}; // 0x1815 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_22_inhibit_time{entries[147], infos[147]}; // 0x1815 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_22_compatibility_entry{entries[148], infos[148]}; // 0x1815 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_22_event_timer{entries[149], infos[149]}; // 0x1815 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_22_nbr_of_entries{detail::entries[144], detail::infos[144]}; // 0x1815 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_22_cob_id{detail::entries[145], detail::infos[145]}; // 0x1815 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_22_transmission_type{detail::entries[146], detail::infos[146]}; // 0x1815 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_22_inhibit_time{detail::entries[147], detail::infos[147]}; // 0x1815 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_22_compatibility_entry{detail::entries[148], detail::infos[148]}; // 0x1815 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_22_event_timer{detail::entries[149], detail::infos[149]}; // 0x1815 sub 5
 inline constexpr od::object transmit_pdo_comm_param_23{0x1816, od::object_code::record, "Transmit PDO Comm Param 23"sv, dictionary.entries().subspan(150, 6), dictionary.infos().subspan(150, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_23_nbr_of_entries{entries[150], infos[150]}; // 0x1816 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_23_cob_id{entries[151], infos[151]}; // 0x1816 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_23_transmission_type{entries[152], infos[152]}; // 0x1816 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_23_inhibit_time{entries[153], infos[153]}; // 0x1816 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_23_compatibility_entry{entries[154], infos[154]}; // 0x1816 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_23_event_timer{entries[155], infos[155]}; // 0x1816 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_23_nbr_of_entries{detail::entries[150], detail::infos[150]}; // 0x1816 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_23_cob_id{detail::entries[151], detail::infos[151]}; // 0x1816 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_23_transmission_type{detail::entries[152], detail::infos[152]}; // 0x1816 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_23_inhibit_time{detail::entries[153], detail::infos[153]}; // 0x1816 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_23_compatibility_entry{detail::entries[154], detail::infos[154]}; // 0x1816 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_23_event_timer{detail::entries[155], detail::infos[155]}; // 0x1816 sub 5
 inline constexpr od::object transmit_pdo_comm_param_24{0x1817, od::object_code::record, "Transmit PDO Comm Param 24"sv, dictionary.entries().subspan(156, 6), dictionary.infos().subspan(156, 6)};
-inline constexpr od::descriptor transmit_pdo_comm_param_24_nbr_of_entries{entries[156], infos[156]}; // 0x1817 sub 0
-inline constexpr od::descriptor transmit_pdo_comm_param_24_cob_id{entries[157], infos[157]}; // 0x1817 sub 1
-inline constexpr od::descriptor transmit_pdo_comm_param_24_transmission_type{entries[158], infos[158]}; // 0x1817 sub 2
-inline constexpr od::descriptor transmit_pdo_comm_param_24_inhibit_time{entries[159], infos[159]}; // 0x1817 sub 3
-inline constexpr od::descriptor transmit_pdo_comm_param_24_compatibility_entry{entries[160], infos[160]}; // 0x1817 sub 4
-inline constexpr od::descriptor transmit_pdo_comm_param_24_event_timer{entries[161], infos[161]}; // 0x1817 sub 5
+inline constexpr od::descriptor transmit_pdo_comm_param_24_nbr_of_entries{detail::entries[156], detail::infos[156]}; // 0x1817 sub 0
+inline constexpr od::descriptor transmit_pdo_comm_param_24_cob_id{detail::entries[157], detail::infos[157]}; // 0x1817 sub 1
+inline constexpr od::descriptor transmit_pdo_comm_param_24_transmission_type{detail::entries[158], detail::infos[158]}; // 0x1817 sub 2
+inline constexpr od::descriptor transmit_pdo_comm_param_24_inhibit_time{detail::entries[159], detail::infos[159]}; // 0x1817 sub 3
+inline constexpr od::descriptor transmit_pdo_comm_param_24_compatibility_entry{detail::entries[160], detail::infos[160]}; // 0x1817 sub 4
+inline constexpr od::descriptor transmit_pdo_comm_param_24_event_timer{detail::entries[161], detail::infos[161]}; // 0x1817 sub 5
 inline constexpr od::object transmit_pdo_mapping_param_1{0x1A00, od::object_code::record, "Transmit PDO Mapping Param 1"sv, dictionary.entries().subspan(162, 2), dictionary.infos().subspan(162, 2)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_1_nbr_of_entries{entries[162], infos[162]}; // 0x1A00 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_1_statusword{entries[163], infos[163]}; // 0x1A00 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_1_nbr_of_entries{detail::entries[162], detail::infos[162]}; // 0x1A00 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_1_statusword{detail::entries[163], detail::infos[163]}; // 0x1A00 sub 1
 inline constexpr od::object transmit_pdo_mapping_param_2{0x1A01, od::object_code::record, "Transmit PDO Mapping Param 2"sv, dictionary.entries().subspan(164, 3), dictionary.infos().subspan(164, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_nbr_of_entries{entries[164], infos[164]}; // 0x1A01 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_statusword{entries[165], infos[165]}; // 0x1A01 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_2_actual_position{entries[166], infos[166]}; // 0x1A01 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_nbr_of_entries{detail::entries[164], detail::infos[164]}; // 0x1A01 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_statusword{detail::entries[165], detail::infos[165]}; // 0x1A01 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_2_actual_position{detail::entries[166], detail::infos[166]}; // 0x1A01 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_17{0x1A10, od::object_code::record, "Transmit PDO Mapping Param 17"sv, dictionary.entries().subspan(167, 2), dictionary.infos().subspan(167, 2)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_17_nbr_of_entries{entries[167], infos[167]}; // 0x1A10 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_17_digital_inputs{entries[168], infos[168]}; // 0x1A10 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_17_nbr_of_entries{detail::entries[167], detail::infos[167]}; // 0x1A10 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_17_digital_inputs{detail::entries[168], detail::infos[168]}; // 0x1A10 sub 1
 inline constexpr od::object transmit_pdo_mapping_param_18{0x1A11, od::object_code::record, "Transmit PDO Mapping Param 18"sv, dictionary.entries().subspan(169, 3), dictionary.infos().subspan(169, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_18_nbr_of_entries{entries[169], infos[169]}; // 0x1A11 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_1{entries[170], infos[170]}; // 0x1A11 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_2{entries[171], infos[171]}; // 0x1A11 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_nbr_of_entries{detail::entries[169], detail::infos[169]}; // 0x1A11 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_1{detail::entries[170], detail::infos[170]}; // 0x1A11 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_18_mapping_entry_2{detail::entries[171], detail::infos[171]}; // 0x1A11 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_19{0x1A12, od::object_code::record, "Transmit PDO Mapping Param 19"sv, dictionary.entries().subspan(172, 3), dictionary.infos().subspan(172, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_19_nbr_of_entries{entries[172], infos[172]}; // 0x1A12 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_1{entries[173], infos[173]}; // 0x1A12 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_2{entries[174], infos[174]}; // 0x1A12 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_nbr_of_entries{detail::entries[172], detail::infos[172]}; // 0x1A12 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_1{detail::entries[173], detail::infos[173]}; // 0x1A12 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_19_mapping_entry_2{detail::entries[174], detail::infos[174]}; // 0x1A12 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_20{0x1A13, od::object_code::record, "Transmit PDO Mapping Param 20"sv, dictionary.entries().subspan(175, 3), dictionary.infos().subspan(175, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_nbr_of_entries{entries[175], infos[175]}; // 0x1A13 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_actual_following_position_error{entries[176], infos[176]}; // 0x1A13 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_20_process_status_register{entries[177], infos[177]}; // 0x1A13 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_nbr_of_entries{detail::entries[175], detail::infos[175]}; // 0x1A13 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_actual_following_position_error{detail::entries[176], detail::infos[176]}; // 0x1A13 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_20_process_status_register{detail::entries[177], detail::infos[177]}; // 0x1A13 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_21{0x1A14, od::object_code::record, "Transmit PDO Mapping Param 21"sv, dictionary.entries().subspan(178, 2), dictionary.infos().subspan(178, 2)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_21_nbr_of_entries{entries[178], infos[178]}; // 0x1A14 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_21_actual_current{entries[179], infos[179]}; // 0x1A14 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_21_nbr_of_entries{detail::entries[178], detail::infos[178]}; // 0x1A14 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_21_actual_current{detail::entries[179], detail::infos[179]}; // 0x1A14 sub 1
 inline constexpr od::object transmit_pdo_mapping_param_22{0x1A15, od::object_code::record, "Transmit PDO Mapping Param 22"sv, dictionary.entries().subspan(180, 3), dictionary.infos().subspan(180, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_22_nbr_of_entries{entries[180], infos[180]}; // 0x1A15 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_1{entries[181], infos[181]}; // 0x1A15 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_2{entries[182], infos[182]}; // 0x1A15 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_nbr_of_entries{detail::entries[180], detail::infos[180]}; // 0x1A15 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_1{detail::entries[181], detail::infos[181]}; // 0x1A15 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_22_mapping_entry_2{detail::entries[182], detail::infos[182]}; // 0x1A15 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_23{0x1A16, od::object_code::record, "Transmit PDO Mapping Param 23"sv, dictionary.entries().subspan(183, 3), dictionary.infos().subspan(183, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_nbr_of_entries{entries[183], infos[183]}; // 0x1A16 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_i_force_actual{entries[184], infos[184]}; // 0x1A16 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_23_process_status_register{entries[185], infos[185]}; // 0x1A16 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_nbr_of_entries{detail::entries[183], detail::infos[183]}; // 0x1A16 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_i_force_actual{detail::entries[184], detail::infos[184]}; // 0x1A16 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_23_process_status_register{detail::entries[185], detail::infos[185]}; // 0x1A16 sub 2
 inline constexpr od::object transmit_pdo_mapping_param_24{0x1A17, od::object_code::record, "Transmit PDO Mapping Param 24"sv, dictionary.entries().subspan(186, 3), dictionary.infos().subspan(186, 3)};
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_nbr_of_entries{entries[186], infos[186]}; // 0x1A17 sub 0
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_statusword{entries[187], infos[187]}; // 0x1A17 sub 1
-inline constexpr od::descriptor transmit_pdo_mapping_param_24_i_force_actual{entries[188], infos[188]}; // 0x1A17 sub 2
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_nbr_of_entries{detail::entries[186], detail::infos[186]}; // 0x1A17 sub 0
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_statusword{detail::entries[187], detail::infos[187]}; // 0x1A17 sub 1
+inline constexpr od::descriptor transmit_pdo_mapping_param_24_i_force_actual{detail::entries[188], detail::infos[188]}; // 0x1A17 sub 2
 inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, dictionary.entries().subspan(201, 46), dictionary.infos().subspan(201, 46)};
 inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, dictionary.entries().subspan(247, 17), dictionary.infos().subspan(247, 17)};
 inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, dictionary.entries().subspan(264, 107), dictionary.infos().subspan(264, 107)};
@@ -1241,9 +1246,9 @@ inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::arra
 inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(440, 3), dictionary.infos().subspan(440, 3)};
 inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(447, 3), dictionary.infos().subspan(447, 3)};
 inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(452, 3), dictionary.infos().subspan(452, 3)};
-inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[452], infos[452]}; // 0x60C2 sub 0
-inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[453], infos[453]}; // 0x60C2 sub 1
-inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[454], infos[454]}; // 0x60C2 sub 2
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{detail::entries[452], detail::infos[452]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{detail::entries[453], detail::infos[453]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{detail::entries[454], detail::infos[454]}; // 0x60C2 sub 2
 inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(457, 3), dictionary.infos().subspan(457, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_canopen

@@ -12,8 +12,8 @@
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/text.hpp>
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dictionaries::xenax_ethercat {
@@ -22,7 +22,8 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_ethercat.eds";
 
-inline constexpr std::array<od::entry, 358> entries{{
+namespace detail {
+inline constexpr od::entry entries[358]{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(4325778U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1008, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 30, .default_text = {"Servocontroller XENAX Xvi xxVx", 30}},
@@ -381,9 +382,9 @@ inline constexpr std::array<od::entry, 358> entries{{
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
     {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .default_text = {"http://www.jennyscience.ch", 26}},
-}};
+};
 
-inline constexpr std::array<od::entry_info, 358> infos{{
+inline constexpr od::entry_info infos[358]{
     {.name = {"Device Type", 11}},
     {.name = {"Error Register", 14}},
     {.name = {"Manufacturer Device Name", 24}},
@@ -742,140 +743,144 @@ inline constexpr std::array<od::entry_info, 358> infos{{
     {.name = {"Target Velocity", 15}},
     {.name = {"Supported Modes of Operation", 28}},
     {.name = {"Product Website Address", 23}},
-}};
+};
+} // namespace detail
+
+inline constexpr std::span<const od::entry, 358> entries{detail::entries};
+inline constexpr std::span<const od::entry_info, 358> infos{detail::infos};
 
 inline constexpr od::dictionary dictionary{entries, infos};
 static_assert(dictionary.is_valid());
 
 // VAR objects: standalone descriptors (firmware that names one keeps only that one).
-inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000
-inline constexpr od::descriptor error_register{entries[1], infos[1]}; // 0x1001
-inline constexpr od::descriptor manufacturer_device_name{entries[2], infos[2]}; // 0x1008
-inline constexpr od::descriptor manufacturer_hardware_version{entries[3], infos[3]}; // 0x1009
-inline constexpr od::descriptor manufacturer_software_version{entries[4], infos[4]}; // 0x100A
-inline constexpr od::descriptor s_curve_profile{entries[83], infos[83]}; // 0x2000
-inline constexpr od::descriptor reserved_2001{entries[84], infos[84]}; // 0x2001
-inline constexpr od::descriptor reserved_2002{entries[85], infos[85]}; // 0x2002
-inline constexpr od::descriptor reserved_2003{entries[86], infos[86]}; // 0x2003
-inline constexpr od::descriptor xenax_error_number{entries[87], infos[87]}; // 0x2004
-inline constexpr od::descriptor i_force_actual{entries[88], infos[88]}; // 0x2005
-inline constexpr od::descriptor process_status_register{entries[89], infos[89]}; // 0x2006
-inline constexpr od::descriptor pdo_cycle_time{entries[90], infos[90]}; // 0x2007
-inline constexpr od::descriptor motor_type{entries[91], infos[91]}; // 0x2008
-inline constexpr od::descriptor limit_force{entries[92], infos[92]}; // 0x2009
-inline constexpr od::descriptor force_actual_value{entries[93], infos[93]}; // 0x200A
-inline constexpr od::descriptor direct_commands{entries[94], infos[94]}; // 0x5000
-inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{entries[317], infos[317]}; // 0x5011
-inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{entries[318], infos[318]}; // 0x5012
-inline constexpr od::descriptor tell_error_string_tes{entries[319], infos[319]}; // 0x5020
-inline constexpr od::descriptor servo_identification_string_sid{entries[320], infos[320]}; // 0x5021
-inline constexpr od::descriptor error_code{entries[321], infos[321]}; // 0x603F
-inline constexpr od::descriptor controlword{entries[322], infos[322]}; // 0x6040
-inline constexpr od::descriptor statusword{entries[323], infos[323]}; // 0x6041
-inline constexpr od::descriptor modes_of_operation_requested{entries[324], infos[324]}; // 0x6060
-inline constexpr od::descriptor modes_of_operation_display{entries[325], infos[325]}; // 0x6061
-inline constexpr od::descriptor position_actual_value{entries[326], infos[326]}; // 0x6064
-inline constexpr od::descriptor following_position_error_window{entries[327], infos[327]}; // 0x6065
-inline constexpr od::descriptor target_position_window{entries[328], infos[328]}; // 0x6067
-inline constexpr od::descriptor position_window_time{entries[329], infos[329]}; // 0x6068
-inline constexpr od::descriptor velocity_actual_value{entries[330], infos[330]}; // 0x606C
-inline constexpr od::descriptor limit_i_force{entries[331], infos[331]}; // 0x6073
-inline constexpr od::descriptor motor_current_actual_value{entries[332], infos[332]}; // 0x6078
-inline constexpr od::descriptor target_position{entries[333], infos[333]}; // 0x607A
-inline constexpr od::descriptor speed{entries[337], infos[337]}; // 0x6081
-inline constexpr od::descriptor acceleration{entries[338], infos[338]}; // 0x6083
-inline constexpr od::descriptor deceleration_reserved_for_future{entries[339], infos[339]}; // 0x6084
-inline constexpr od::descriptor quick_stop_deceleration{entries[340], infos[340]}; // 0x6085
-inline constexpr od::descriptor reference_methods{entries[341], infos[341]}; // 0x6098
-inline constexpr od::descriptor velocity_offset{entries[345], infos[345]}; // 0x60B1
-inline constexpr od::descriptor torque_offset{entries[346], infos[346]}; // 0x60B2
-inline constexpr od::descriptor actual_position_following_error{entries[350], infos[350]}; // 0x60F4
-inline constexpr od::descriptor digital_inputs{entries[351], infos[351]}; // 0x60FD
-inline constexpr od::descriptor target_velocity{entries[355], infos[355]}; // 0x60FF
-inline constexpr od::descriptor supported_modes_of_operation{entries[356], infos[356]}; // 0x6502
-inline constexpr od::descriptor product_website_address{entries[357], infos[357]}; // 0x6505
+inline constexpr od::descriptor device_type{detail::entries[0], detail::infos[0]}; // 0x1000
+inline constexpr od::descriptor error_register{detail::entries[1], detail::infos[1]}; // 0x1001
+inline constexpr od::descriptor manufacturer_device_name{detail::entries[2], detail::infos[2]}; // 0x1008
+inline constexpr od::descriptor manufacturer_hardware_version{detail::entries[3], detail::infos[3]}; // 0x1009
+inline constexpr od::descriptor manufacturer_software_version{detail::entries[4], detail::infos[4]}; // 0x100A
+inline constexpr od::descriptor s_curve_profile{detail::entries[83], detail::infos[83]}; // 0x2000
+inline constexpr od::descriptor reserved_2001{detail::entries[84], detail::infos[84]}; // 0x2001
+inline constexpr od::descriptor reserved_2002{detail::entries[85], detail::infos[85]}; // 0x2002
+inline constexpr od::descriptor reserved_2003{detail::entries[86], detail::infos[86]}; // 0x2003
+inline constexpr od::descriptor xenax_error_number{detail::entries[87], detail::infos[87]}; // 0x2004
+inline constexpr od::descriptor i_force_actual{detail::entries[88], detail::infos[88]}; // 0x2005
+inline constexpr od::descriptor process_status_register{detail::entries[89], detail::infos[89]}; // 0x2006
+inline constexpr od::descriptor pdo_cycle_time{detail::entries[90], detail::infos[90]}; // 0x2007
+inline constexpr od::descriptor motor_type{detail::entries[91], detail::infos[91]}; // 0x2008
+inline constexpr od::descriptor limit_force{detail::entries[92], detail::infos[92]}; // 0x2009
+inline constexpr od::descriptor force_actual_value{detail::entries[93], detail::infos[93]}; // 0x200A
+inline constexpr od::descriptor direct_commands{detail::entries[94], detail::infos[94]}; // 0x5000
+inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{detail::entries[317], detail::infos[317]}; // 0x5011
+inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{detail::entries[318], detail::infos[318]}; // 0x5012
+inline constexpr od::descriptor tell_error_string_tes{detail::entries[319], detail::infos[319]}; // 0x5020
+inline constexpr od::descriptor servo_identification_string_sid{detail::entries[320], detail::infos[320]}; // 0x5021
+inline constexpr od::descriptor error_code{detail::entries[321], detail::infos[321]}; // 0x603F
+inline constexpr od::descriptor controlword{detail::entries[322], detail::infos[322]}; // 0x6040
+inline constexpr od::descriptor statusword{detail::entries[323], detail::infos[323]}; // 0x6041
+inline constexpr od::descriptor modes_of_operation_requested{detail::entries[324], detail::infos[324]}; // 0x6060
+inline constexpr od::descriptor modes_of_operation_display{detail::entries[325], detail::infos[325]}; // 0x6061
+inline constexpr od::descriptor position_actual_value{detail::entries[326], detail::infos[326]}; // 0x6064
+inline constexpr od::descriptor following_position_error_window{detail::entries[327], detail::infos[327]}; // 0x6065
+inline constexpr od::descriptor target_position_window{detail::entries[328], detail::infos[328]}; // 0x6067
+inline constexpr od::descriptor position_window_time{detail::entries[329], detail::infos[329]}; // 0x6068
+inline constexpr od::descriptor velocity_actual_value{detail::entries[330], detail::infos[330]}; // 0x606C
+inline constexpr od::descriptor limit_i_force{detail::entries[331], detail::infos[331]}; // 0x6073
+inline constexpr od::descriptor motor_current_actual_value{detail::entries[332], detail::infos[332]}; // 0x6078
+inline constexpr od::descriptor target_position{detail::entries[333], detail::infos[333]}; // 0x607A
+inline constexpr od::descriptor speed{detail::entries[337], detail::infos[337]}; // 0x6081
+inline constexpr od::descriptor acceleration{detail::entries[338], detail::infos[338]}; // 0x6083
+inline constexpr od::descriptor deceleration_reserved_for_future{detail::entries[339], detail::infos[339]}; // 0x6084
+inline constexpr od::descriptor quick_stop_deceleration{detail::entries[340], detail::infos[340]}; // 0x6085
+inline constexpr od::descriptor reference_methods{detail::entries[341], detail::infos[341]}; // 0x6098
+inline constexpr od::descriptor velocity_offset{detail::entries[345], detail::infos[345]}; // 0x60B1
+inline constexpr od::descriptor torque_offset{detail::entries[346], detail::infos[346]}; // 0x60B2
+inline constexpr od::descriptor actual_position_following_error{detail::entries[350], detail::infos[350]}; // 0x60F4
+inline constexpr od::descriptor digital_inputs{detail::entries[351], detail::infos[351]}; // 0x60FD
+inline constexpr od::descriptor target_velocity{detail::entries[355], detail::infos[355]}; // 0x60FF
+inline constexpr od::descriptor supported_modes_of_operation{detail::entries[356], detail::infos[356]}; // 0x6502
+inline constexpr od::descriptor product_website_address{detail::entries[357], detail::infos[357]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(5, 5), dictionary.infos().subspan(5, 5)};
-inline constexpr od::descriptor identity_object_nbr_of_entries{entries[5], infos[5]}; // 0x1018 sub 0
-inline constexpr od::descriptor identity_object_vendor_id{entries[6], infos[6]}; // 0x1018 sub 1
-inline constexpr od::descriptor identity_object_product_code{entries[7], infos[7]}; // 0x1018 sub 2
-inline constexpr od::descriptor identity_object_revision_number{entries[8], infos[8]}; // 0x1018 sub 3
-inline constexpr od::descriptor identity_object_serial_number{entries[9], infos[9]}; // 0x1018 sub 4
+inline constexpr od::descriptor identity_object_nbr_of_entries{detail::entries[5], detail::infos[5]}; // 0x1018 sub 0
+inline constexpr od::descriptor identity_object_vendor_id{detail::entries[6], detail::infos[6]}; // 0x1018 sub 1
+inline constexpr od::descriptor identity_object_product_code{detail::entries[7], detail::infos[7]}; // 0x1018 sub 2
+inline constexpr od::descriptor identity_object_revision_number{detail::entries[8], detail::infos[8]}; // 0x1018 sub 3
+inline constexpr od::descriptor identity_object_serial_number{detail::entries[9], detail::infos[9]}; // 0x1018 sub 4
 inline constexpr od::object receive_pdo_1{0x1600, od::object_code::record, "Receive PDO 1"sv, dictionary.entries().subspan(10, 2), dictionary.infos().subspan(10, 2)};
-inline constexpr od::descriptor receive_pdo_1_nbr_of_entries{entries[10], infos[10]}; // 0x1600 sub 0
-inline constexpr od::descriptor receive_pdo_1_controlword{entries[11], infos[11]}; // 0x1600 sub 1
+inline constexpr od::descriptor receive_pdo_1_nbr_of_entries{detail::entries[10], detail::infos[10]}; // 0x1600 sub 0
+inline constexpr od::descriptor receive_pdo_1_controlword{detail::entries[11], detail::infos[11]}; // 0x1600 sub 1
 inline constexpr od::object receive_pdo_2{0x1601, od::object_code::record, "Receive PDO 2"sv, dictionary.entries().subspan(12, 3), dictionary.infos().subspan(12, 3)};
-inline constexpr od::descriptor receive_pdo_2_nbr_of_entries{entries[12], infos[12]}; // 0x1601 sub 0
-inline constexpr od::descriptor receive_pdo_2_controlword{entries[13], infos[13]}; // 0x1601 sub 1
-inline constexpr od::descriptor receive_pdo_2_target_position{entries[14], infos[14]}; // 0x1601 sub 2
+inline constexpr od::descriptor receive_pdo_2_nbr_of_entries{detail::entries[12], detail::infos[12]}; // 0x1601 sub 0
+inline constexpr od::descriptor receive_pdo_2_controlword{detail::entries[13], detail::infos[13]}; // 0x1601 sub 1
+inline constexpr od::descriptor receive_pdo_2_target_position{detail::entries[14], detail::infos[14]}; // 0x1601 sub 2
 inline constexpr od::object receive_pdo_17{0x1611, od::object_code::record, "Receive PDO 17"sv, dictionary.entries().subspan(15, 4), dictionary.infos().subspan(15, 4)};
-inline constexpr od::descriptor receive_pdo_17_nbr_of_entries{entries[15], infos[15]}; // 0x1611 sub 0
-inline constexpr od::descriptor receive_pdo_17_controlword{entries[16], infos[16]}; // 0x1611 sub 1
-inline constexpr od::descriptor receive_pdo_17_target_position{entries[17], infos[17]}; // 0x1611 sub 2
-inline constexpr od::descriptor receive_pdo_17_digital_outputs{entries[18], infos[18]}; // 0x1611 sub 3
+inline constexpr od::descriptor receive_pdo_17_nbr_of_entries{detail::entries[15], detail::infos[15]}; // 0x1611 sub 0
+inline constexpr od::descriptor receive_pdo_17_controlword{detail::entries[16], detail::infos[16]}; // 0x1611 sub 1
+inline constexpr od::descriptor receive_pdo_17_target_position{detail::entries[17], detail::infos[17]}; // 0x1611 sub 2
+inline constexpr od::descriptor receive_pdo_17_digital_outputs{detail::entries[18], detail::infos[18]}; // 0x1611 sub 3
 inline constexpr od::object receive_pdo_18{0x1612, od::object_code::record, "Receive PDO 18"sv, dictionary.entries().subspan(19, 10), dictionary.infos().subspan(19, 10)};
-inline constexpr od::descriptor receive_pdo_18_nbr_of_entries{entries[19], infos[19]}; // 0x1612 sub 0
-inline constexpr od::descriptor receive_pdo_18_controlword{entries[20], infos[20]}; // 0x1612 sub 1
-inline constexpr od::descriptor receive_pdo_18_target_position{entries[21], infos[21]}; // 0x1612 sub 2
-inline constexpr od::descriptor receive_pdo_18_speed{entries[22], infos[22]}; // 0x1612 sub 3
-inline constexpr od::descriptor receive_pdo_18_acceleration{entries[23], infos[23]}; // 0x1612 sub 4
-inline constexpr od::descriptor receive_pdo_18_deceleration_reserved_for_future{entries[24], infos[24]}; // 0x1612 sub 5
-inline constexpr od::descriptor receive_pdo_18_s_curve{entries[25], infos[25]}; // 0x1612 sub 6
-inline constexpr od::descriptor receive_pdo_18_following_position_error_window{entries[26], infos[26]}; // 0x1612 sub 7
-inline constexpr od::descriptor receive_pdo_18_target_position_error_window{entries[27], infos[27]}; // 0x1612 sub 8
-inline constexpr od::descriptor receive_pdo_18_digital_outputs{entries[28], infos[28]}; // 0x1612 sub 9
+inline constexpr od::descriptor receive_pdo_18_nbr_of_entries{detail::entries[19], detail::infos[19]}; // 0x1612 sub 0
+inline constexpr od::descriptor receive_pdo_18_controlword{detail::entries[20], detail::infos[20]}; // 0x1612 sub 1
+inline constexpr od::descriptor receive_pdo_18_target_position{detail::entries[21], detail::infos[21]}; // 0x1612 sub 2
+inline constexpr od::descriptor receive_pdo_18_speed{detail::entries[22], detail::infos[22]}; // 0x1612 sub 3
+inline constexpr od::descriptor receive_pdo_18_acceleration{detail::entries[23], detail::infos[23]}; // 0x1612 sub 4
+inline constexpr od::descriptor receive_pdo_18_deceleration_reserved_for_future{detail::entries[24], detail::infos[24]}; // 0x1612 sub 5
+inline constexpr od::descriptor receive_pdo_18_s_curve{detail::entries[25], detail::infos[25]}; // 0x1612 sub 6
+inline constexpr od::descriptor receive_pdo_18_following_position_error_window{detail::entries[26], detail::infos[26]}; // 0x1612 sub 7
+inline constexpr od::descriptor receive_pdo_18_target_position_error_window{detail::entries[27], detail::infos[27]}; // 0x1612 sub 8
+inline constexpr od::descriptor receive_pdo_18_digital_outputs{detail::entries[28], detail::infos[28]}; // 0x1612 sub 9
 inline constexpr od::object receive_pdo_19_reserved_for_future{0x1613, od::object_code::record, "Receive PDO 19 (reserved for future)"sv, dictionary.entries().subspan(29, 6), dictionary.infos().subspan(29, 6)};
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_nbr_of_entries{entries[29], infos[29]}; // 0x1613 sub 0
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_controlword{entries[30], infos[30]}; // 0x1613 sub 1
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_speed{entries[31], infos[31]}; // 0x1613 sub 2
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2001{entries[32], infos[32]}; // 0x1613 sub 3
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2003{entries[33], infos[33]}; // 0x1613 sub 4
-inline constexpr od::descriptor receive_pdo_19_reserved_for_future_digital_outputs{entries[34], infos[34]}; // 0x1613 sub 5
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_nbr_of_entries{detail::entries[29], detail::infos[29]}; // 0x1613 sub 0
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_controlword{detail::entries[30], detail::infos[30]}; // 0x1613 sub 1
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_speed{detail::entries[31], detail::infos[31]}; // 0x1613 sub 2
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2001{detail::entries[32], detail::infos[32]}; // 0x1613 sub 3
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_reserved_for_future_2003{detail::entries[33], detail::infos[33]}; // 0x1613 sub 4
+inline constexpr od::descriptor receive_pdo_19_reserved_for_future_digital_outputs{detail::entries[34], detail::infos[34]}; // 0x1613 sub 5
 inline constexpr od::object receive_pdo_20_reserved_for_future{0x1614, od::object_code::record, "Receive PDO 20 (reserved for future)"sv, dictionary.entries().subspan(35, 4), dictionary.infos().subspan(35, 4)};
-inline constexpr od::descriptor receive_pdo_20_reserved_for_future_nbr_of_entries{entries[35], infos[35]}; // 0x1614 sub 0
-inline constexpr od::descriptor receive_pdo_20_reserved_for_future_controlword{entries[36], infos[36]}; // 0x1614 sub 1
-inline constexpr od::descriptor receive_pdo_20_reserved_for_future_reserved_for_future_2002{entries[37], infos[37]}; // 0x1614 sub 2
-inline constexpr od::descriptor receive_pdo_20_reserved_for_future_digital_outputs{entries[38], infos[38]}; // 0x1614 sub 3
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_nbr_of_entries{detail::entries[35], detail::infos[35]}; // 0x1614 sub 0
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_controlword{detail::entries[36], detail::infos[36]}; // 0x1614 sub 1
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_reserved_for_future_2002{detail::entries[37], detail::infos[37]}; // 0x1614 sub 2
+inline constexpr od::descriptor receive_pdo_20_reserved_for_future_digital_outputs{detail::entries[38], detail::infos[38]}; // 0x1614 sub 3
 inline constexpr od::object receive_pdo_21{0x1615, od::object_code::record, "Receive PDO 21"sv, dictionary.entries().subspan(39, 6), dictionary.infos().subspan(39, 6)};
-inline constexpr od::descriptor receive_pdo_21_nbr_of_entries{entries[39], infos[39]}; // 0x1615 sub 0
-inline constexpr od::descriptor receive_pdo_21_controlword{entries[40], infos[40]}; // 0x1615 sub 1
-inline constexpr od::descriptor receive_pdo_21_target_position{entries[41], infos[41]}; // 0x1615 sub 2
-inline constexpr od::descriptor receive_pdo_21_following_position_error_window{entries[42], infos[42]}; // 0x1615 sub 3
-inline constexpr od::descriptor receive_pdo_21_target_position_error_window{entries[43], infos[43]}; // 0x1615 sub 4
-inline constexpr od::descriptor receive_pdo_21_i_force_max{entries[44], infos[44]}; // 0x1615 sub 5
+inline constexpr od::descriptor receive_pdo_21_nbr_of_entries{detail::entries[39], detail::infos[39]}; // 0x1615 sub 0
+inline constexpr od::descriptor receive_pdo_21_controlword{detail::entries[40], detail::infos[40]}; // 0x1615 sub 1
+inline constexpr od::descriptor receive_pdo_21_target_position{detail::entries[41], detail::infos[41]}; // 0x1615 sub 2
+inline constexpr od::descriptor receive_pdo_21_following_position_error_window{detail::entries[42], detail::infos[42]}; // 0x1615 sub 3
+inline constexpr od::descriptor receive_pdo_21_target_position_error_window{detail::entries[43], detail::infos[43]}; // 0x1615 sub 4
+inline constexpr od::descriptor receive_pdo_21_i_force_max{detail::entries[44], detail::infos[44]}; // 0x1615 sub 5
 inline constexpr od::object transmit_pdo_1{0x1A00, od::object_code::record, "Transmit PDO 1"sv, dictionary.entries().subspan(45, 2), dictionary.infos().subspan(45, 2)};
-inline constexpr od::descriptor transmit_pdo_1_nbr_of_entries{entries[45], infos[45]}; // 0x1A00 sub 0
-inline constexpr od::descriptor transmit_pdo_1_statusword{entries[46], infos[46]}; // 0x1A00 sub 1
+inline constexpr od::descriptor transmit_pdo_1_nbr_of_entries{detail::entries[45], detail::infos[45]}; // 0x1A00 sub 0
+inline constexpr od::descriptor transmit_pdo_1_statusword{detail::entries[46], detail::infos[46]}; // 0x1A00 sub 1
 inline constexpr od::object transmit_pdo_2{0x1A01, od::object_code::record, "Transmit PDO 2"sv, dictionary.entries().subspan(47, 3), dictionary.infos().subspan(47, 3)};
-inline constexpr od::descriptor transmit_pdo_2_nbr_of_entries{entries[47], infos[47]}; // 0x1A01 sub 0
-inline constexpr od::descriptor transmit_pdo_2_statusword{entries[48], infos[48]}; // 0x1A01 sub 1
-inline constexpr od::descriptor transmit_pdo_2_actual_position{entries[49], infos[49]}; // 0x1A01 sub 2
+inline constexpr od::descriptor transmit_pdo_2_nbr_of_entries{detail::entries[47], detail::infos[47]}; // 0x1A01 sub 0
+inline constexpr od::descriptor transmit_pdo_2_statusword{detail::entries[48], detail::infos[48]}; // 0x1A01 sub 1
+inline constexpr od::descriptor transmit_pdo_2_actual_position{detail::entries[49], detail::infos[49]}; // 0x1A01 sub 2
 inline constexpr od::object transmit_pdo_17{0x1A10, od::object_code::record, "Transmit PDO 17"sv, dictionary.entries().subspan(50, 4), dictionary.infos().subspan(50, 4)};
-inline constexpr od::descriptor transmit_pdo_17_nbr_of_entries{entries[50], infos[50]}; // 0x1A10 sub 0
-inline constexpr od::descriptor transmit_pdo_17_statusword{entries[51], infos[51]}; // 0x1A10 sub 1
-inline constexpr od::descriptor transmit_pdo_17_actual_position{entries[52], infos[52]}; // 0x1A10 sub 2
-inline constexpr od::descriptor transmit_pdo_17_digital_inputs{entries[53], infos[53]}; // 0x1A10 sub 3
+inline constexpr od::descriptor transmit_pdo_17_nbr_of_entries{detail::entries[50], detail::infos[50]}; // 0x1A10 sub 0
+inline constexpr od::descriptor transmit_pdo_17_statusword{detail::entries[51], detail::infos[51]}; // 0x1A10 sub 1
+inline constexpr od::descriptor transmit_pdo_17_actual_position{detail::entries[52], detail::infos[52]}; // 0x1A10 sub 2
+inline constexpr od::descriptor transmit_pdo_17_digital_inputs{detail::entries[53], detail::infos[53]}; // 0x1A10 sub 3
 inline constexpr od::object transmit_pdo_18{0x1A11, od::object_code::record, "Transmit PDO 18"sv, dictionary.entries().subspan(54, 6), dictionary.infos().subspan(54, 6)};
-inline constexpr od::descriptor transmit_pdo_18_nbr_of_entries{entries[54], infos[54]}; // 0x1A11 sub 0
-inline constexpr od::descriptor transmit_pdo_18_statusword{entries[55], infos[55]}; // 0x1A11 sub 1
-inline constexpr od::descriptor transmit_pdo_18_actual_position{entries[56], infos[56]}; // 0x1A11 sub 2
-inline constexpr od::descriptor transmit_pdo_18_actual_following_position_error{entries[57], infos[57]}; // 0x1A11 sub 3
-inline constexpr od::descriptor transmit_pdo_18_actual_current{entries[58], infos[58]}; // 0x1A11 sub 4
-inline constexpr od::descriptor transmit_pdo_18_digital_inputs{entries[59], infos[59]}; // 0x1A11 sub 5
+inline constexpr od::descriptor transmit_pdo_18_nbr_of_entries{detail::entries[54], detail::infos[54]}; // 0x1A11 sub 0
+inline constexpr od::descriptor transmit_pdo_18_statusword{detail::entries[55], detail::infos[55]}; // 0x1A11 sub 1
+inline constexpr od::descriptor transmit_pdo_18_actual_position{detail::entries[56], detail::infos[56]}; // 0x1A11 sub 2
+inline constexpr od::descriptor transmit_pdo_18_actual_following_position_error{detail::entries[57], detail::infos[57]}; // 0x1A11 sub 3
+inline constexpr od::descriptor transmit_pdo_18_actual_current{detail::entries[58], detail::infos[58]}; // 0x1A11 sub 4
+inline constexpr od::descriptor transmit_pdo_18_digital_inputs{detail::entries[59], detail::infos[59]}; // 0x1A11 sub 5
 inline constexpr od::object transmit_pdo_19_reserved_for_future{0x1A12, od::object_code::record, "Transmit PDO 19 (reserved for future)"sv, dictionary.entries().subspan(60, 5), dictionary.infos().subspan(60, 5)};
-inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_nbr_of_entries{entries[60], infos[60]}; // 0x1A12 sub 0
-inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_statusword{entries[61], infos[61]}; // 0x1A12 sub 1
-inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_actual_position{entries[62], infos[62]}; // 0x1A12 sub 2
-inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_i_force_actual{entries[63], infos[63]}; // 0x1A12 sub 3
-inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_digital_inputs{entries[64], infos[64]}; // 0x1A12 sub 4
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_nbr_of_entries{detail::entries[60], detail::infos[60]}; // 0x1A12 sub 0
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_statusword{detail::entries[61], detail::infos[61]}; // 0x1A12 sub 1
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_actual_position{detail::entries[62], detail::infos[62]}; // 0x1A12 sub 2
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_i_force_actual{detail::entries[63], detail::infos[63]}; // 0x1A12 sub 3
+inline constexpr od::descriptor transmit_pdo_19_reserved_for_future_digital_inputs{detail::entries[64], detail::infos[64]}; // 0x1A12 sub 4
 inline constexpr od::object transmit_pdo_21{0x1A13, od::object_code::record, "Transmit PDO 21"sv, dictionary.entries().subspan(65, 6), dictionary.infos().subspan(65, 6)};
-inline constexpr od::descriptor transmit_pdo_21_nbr_of_entries{entries[65], infos[65]}; // 0x1A13 sub 0
-inline constexpr od::descriptor transmit_pdo_21_statusword{entries[66], infos[66]}; // 0x1A13 sub 1
-inline constexpr od::descriptor transmit_pdo_21_actual_position{entries[67], infos[67]}; // 0x1A13 sub 2
-inline constexpr od::descriptor transmit_pdo_21_actual_following_position_error{entries[68], infos[68]}; // 0x1A13 sub 3
-inline constexpr od::descriptor transmit_pdo_21_actual_current{entries[69], infos[69]}; // 0x1A13 sub 4
-inline constexpr od::descriptor transmit_pdo_21_process_status_register{entries[70], infos[70]}; // 0x1A13 sub 5
+inline constexpr od::descriptor transmit_pdo_21_nbr_of_entries{detail::entries[65], detail::infos[65]}; // 0x1A13 sub 0
+inline constexpr od::descriptor transmit_pdo_21_statusword{detail::entries[66], detail::infos[66]}; // 0x1A13 sub 1
+inline constexpr od::descriptor transmit_pdo_21_actual_position{detail::entries[67], detail::infos[67]}; // 0x1A13 sub 2
+inline constexpr od::descriptor transmit_pdo_21_actual_following_position_error{detail::entries[68], detail::infos[68]}; // 0x1A13 sub 3
+inline constexpr od::descriptor transmit_pdo_21_actual_current{detail::entries[69], detail::infos[69]}; // 0x1A13 sub 4
+inline constexpr od::descriptor transmit_pdo_21_process_status_register{detail::entries[70], detail::infos[70]}; // 0x1A13 sub 5
 inline constexpr od::object sync_manager_communication_type{0x1C00, od::object_code::array, "Sync Manager Communication Type"sv, dictionary.entries().subspan(71, 6), dictionary.infos().subspan(71, 6)};
 inline constexpr od::object sync_manager_pdo_assignment_0{0x1C10, od::object_code::array, "Sync Manager PDO Assignment 0"sv, dictionary.entries().subspan(77, 1), dictionary.infos().subspan(77, 1)};
 inline constexpr od::object sync_manager_pdo_assignment_1{0x1C11, od::object_code::array, "Sync Manager PDO Assignment 1"sv, dictionary.entries().subspan(78, 1), dictionary.infos().subspan(78, 1)};
@@ -891,9 +896,9 @@ inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::arra
 inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(334, 3), dictionary.infos().subspan(334, 3)};
 inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(342, 3), dictionary.infos().subspan(342, 3)};
 inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(347, 3), dictionary.infos().subspan(347, 3)};
-inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[347], infos[347]}; // 0x60C2 sub 0
-inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[348], infos[348]}; // 0x60C2 sub 1
-inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[349], infos[349]}; // 0x60C2 sub 2
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{detail::entries[347], detail::infos[347]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{detail::entries[348], detail::infos[348]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{detail::entries[349], detail::infos[349]}; // 0x60C2 sub 2
 inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(352, 3), dictionary.infos().subspan(352, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_ethercat

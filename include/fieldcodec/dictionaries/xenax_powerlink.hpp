@@ -12,8 +12,8 @@
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/text.hpp>
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dictionaries::xenax_powerlink {
@@ -22,7 +22,8 @@ using namespace std::string_view_literals;
 
 inline constexpr const char *source_file = "xenax_powerlink.eds";
 
-inline constexpr std::array<od::entry, 364> entries{{
+namespace detail {
+inline constexpr od::entry entries[364]{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(4294967295U), .default_value = od::unsigned_number(131474U)},
     {.index = 0x1001, .type = od::data_type::unsigned8, .access_type = od::access::ro, .low = od::unsigned_number(0U), .high = od::unsigned_number(255U), .default_value = od::unsigned_number(0U)},
     {.index = 0x1006, .type = od::data_type::unsigned32, .low = od::unsigned_number(100U), .high = od::unsigned_number(100000U), .default_value = od::unsigned_number(1000U)},
@@ -387,9 +388,9 @@ inline constexpr std::array<od::entry, 364> entries{{
     {.index = 0x60FF, .type = od::data_type::integer32, .pdo = od::pdo_mapping::yes, .low = od::signed_number(-9000000), .high = od::signed_number(9000000), .default_value = od::signed_number(0)},
     {.index = 0x6502, .type = od::data_type::unsigned32, .access_type = od::access::ro, .low = od::unsigned_number(65697U), .high = od::unsigned_number(65697U), .default_value = od::unsigned_number(65697U)},
     {.index = 0x6505, .type = od::data_type::visible_string, .access_type = od::access::ro, .size = 26, .default_text = {"http://www.jennyscience.ch", 26}},
-}};
+};
 
-inline constexpr std::array<od::entry_info, 364> infos{{
+inline constexpr od::entry_info infos[364]{
     {.name = {"Device Type", 11}},
     {.name = {"Error Register", 14}},
     {.name = {"NMT_CycleLen_U32", 16}},
@@ -754,139 +755,143 @@ inline constexpr std::array<od::entry_info, 364> infos{{
     {.name = {"Target Velocity", 15}},
     {.name = {"Supported Modes of Operation", 28}},
     {.name = {"Product Website Address", 23}},
-}};
+};
+} // namespace detail
+
+inline constexpr std::span<const od::entry, 364> entries{detail::entries};
+inline constexpr std::span<const od::entry_info, 364> infos{detail::infos};
 
 inline constexpr od::dictionary dictionary{entries, infos};
 static_assert(dictionary.is_valid());
 
 // VAR objects: standalone descriptors (firmware that names one keeps only that one).
-inline constexpr od::descriptor device_type{entries[0], infos[0]}; // 0x1000
-inline constexpr od::descriptor error_register{entries[1], infos[1]}; // 0x1001
-inline constexpr od::descriptor nmt_cyclelen_u32{entries[2], infos[2]}; // 0x1006
-inline constexpr od::descriptor manufacturer_device_name{entries[3], infos[3]}; // 0x1008
-inline constexpr od::descriptor manufacturer_hardware_version{entries[4], infos[4]}; // 0x1009
-inline constexpr od::descriptor manufacturer_software_version{entries[5], infos[5]}; // 0x100A
-inline constexpr od::descriptor sdo_sequlayertimeout_u32{entries[26], infos[26]}; // 0x1300
-inline constexpr od::descriptor sdo_cmdlayertimeout_u32{entries[27], infos[27]}; // 0x1301
-inline constexpr od::descriptor dll_cnlossofsoctolerance_u32{entries[60], infos[60]}; // 0x1C14
-inline constexpr od::descriptor nmt_featureflags_u32{entries[71], infos[71]}; // 0x1F82
-inline constexpr od::descriptor nmt_eplversion_u8{entries[72], infos[72]}; // 0x1F83
-inline constexpr od::descriptor nmt_currnmtstate_u8{entries[73], infos[73]}; // 0x1F8C
-inline constexpr od::descriptor nmt_cnbasicethernettimeout_u32{entries[87], infos[87]}; // 0x1F99
-inline constexpr od::descriptor nmt_hostname_vstr{entries[88], infos[88]}; // 0x1F9A
-inline constexpr od::descriptor nmt_resetcmd_u8{entries[89], infos[89]}; // 0x1F9E
-inline constexpr od::descriptor s_curve_profile{entries[90], infos[90]}; // 0x2000
-inline constexpr od::descriptor reserved_2001{entries[91], infos[91]}; // 0x2001
-inline constexpr od::descriptor reserved_2002{entries[92], infos[92]}; // 0x2002
-inline constexpr od::descriptor reserved_2003{entries[93], infos[93]}; // 0x2003
-inline constexpr od::descriptor xenax_error_number{entries[94], infos[94]}; // 0x2004
-inline constexpr od::descriptor i_force_actual{entries[95], infos[95]}; // 0x2005
-inline constexpr od::descriptor process_status_register{entries[96], infos[96]}; // 0x2006
-inline constexpr od::descriptor pdo_cycle_time{entries[97], infos[97]}; // 0x2007
-inline constexpr od::descriptor motor_type{entries[98], infos[98]}; // 0x2008
-inline constexpr od::descriptor limit_force{entries[99], infos[99]}; // 0x2009
-inline constexpr od::descriptor force_actual_value{entries[100], infos[100]}; // 0x200A
-inline constexpr od::descriptor direct_commands{entries[101], infos[101]}; // 0x5000
-inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{entries[324], infos[324]}; // 0x5011
-inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{entries[325], infos[325]}; // 0x5012
-inline constexpr od::descriptor tell_error_string_tes{entries[326], infos[326]}; // 0x5020
-inline constexpr od::descriptor servo_identification_string_sid{entries[327], infos[327]}; // 0x5021
-inline constexpr od::descriptor error_code{entries[328], infos[328]}; // 0x603F
-inline constexpr od::descriptor controlword{entries[329], infos[329]}; // 0x6040
-inline constexpr od::descriptor statusword{entries[330], infos[330]}; // 0x6041
-inline constexpr od::descriptor modes_of_operation_requested{entries[331], infos[331]}; // 0x6060
-inline constexpr od::descriptor modes_of_operation_display{entries[332], infos[332]}; // 0x6061
-inline constexpr od::descriptor position_actual_value{entries[333], infos[333]}; // 0x6064
-inline constexpr od::descriptor following_position_error_window{entries[334], infos[334]}; // 0x6065
-inline constexpr od::descriptor target_position_window{entries[335], infos[335]}; // 0x6067
-inline constexpr od::descriptor position_window_time{entries[336], infos[336]}; // 0x6068
-inline constexpr od::descriptor velocity_actual_value{entries[337], infos[337]}; // 0x606C
-inline constexpr od::descriptor limit_i_force{entries[338], infos[338]}; // 0x6073
-inline constexpr od::descriptor motor_current_actual_value{entries[339], infos[339]}; // 0x6078
-inline constexpr od::descriptor target_position{entries[340], infos[340]}; // 0x607A
-inline constexpr od::descriptor speed{entries[344], infos[344]}; // 0x6081
-inline constexpr od::descriptor acceleration{entries[345], infos[345]}; // 0x6083
-inline constexpr od::descriptor quick_stop_deceleration{entries[346], infos[346]}; // 0x6085
-inline constexpr od::descriptor reference_methods{entries[347], infos[347]}; // 0x6098
-inline constexpr od::descriptor velocity_offset{entries[351], infos[351]}; // 0x60B1
-inline constexpr od::descriptor torque_offset{entries[352], infos[352]}; // 0x60B2
-inline constexpr od::descriptor actual_position_following_error{entries[356], infos[356]}; // 0x60F4
-inline constexpr od::descriptor digital_inputs{entries[357], infos[357]}; // 0x60FD
-inline constexpr od::descriptor target_velocity{entries[361], infos[361]}; // 0x60FF
-inline constexpr od::descriptor supported_modes_of_operation{entries[362], infos[362]}; // 0x6502
-inline constexpr od::descriptor product_website_address{entries[363], infos[363]}; // 0x6505
+inline constexpr od::descriptor device_type{detail::entries[0], detail::infos[0]}; // 0x1000
+inline constexpr od::descriptor error_register{detail::entries[1], detail::infos[1]}; // 0x1001
+inline constexpr od::descriptor nmt_cyclelen_u32{detail::entries[2], detail::infos[2]}; // 0x1006
+inline constexpr od::descriptor manufacturer_device_name{detail::entries[3], detail::infos[3]}; // 0x1008
+inline constexpr od::descriptor manufacturer_hardware_version{detail::entries[4], detail::infos[4]}; // 0x1009
+inline constexpr od::descriptor manufacturer_software_version{detail::entries[5], detail::infos[5]}; // 0x100A
+inline constexpr od::descriptor sdo_sequlayertimeout_u32{detail::entries[26], detail::infos[26]}; // 0x1300
+inline constexpr od::descriptor sdo_cmdlayertimeout_u32{detail::entries[27], detail::infos[27]}; // 0x1301
+inline constexpr od::descriptor dll_cnlossofsoctolerance_u32{detail::entries[60], detail::infos[60]}; // 0x1C14
+inline constexpr od::descriptor nmt_featureflags_u32{detail::entries[71], detail::infos[71]}; // 0x1F82
+inline constexpr od::descriptor nmt_eplversion_u8{detail::entries[72], detail::infos[72]}; // 0x1F83
+inline constexpr od::descriptor nmt_currnmtstate_u8{detail::entries[73], detail::infos[73]}; // 0x1F8C
+inline constexpr od::descriptor nmt_cnbasicethernettimeout_u32{detail::entries[87], detail::infos[87]}; // 0x1F99
+inline constexpr od::descriptor nmt_hostname_vstr{detail::entries[88], detail::infos[88]}; // 0x1F9A
+inline constexpr od::descriptor nmt_resetcmd_u8{detail::entries[89], detail::infos[89]}; // 0x1F9E
+inline constexpr od::descriptor s_curve_profile{detail::entries[90], detail::infos[90]}; // 0x2000
+inline constexpr od::descriptor reserved_2001{detail::entries[91], detail::infos[91]}; // 0x2001
+inline constexpr od::descriptor reserved_2002{detail::entries[92], detail::infos[92]}; // 0x2002
+inline constexpr od::descriptor reserved_2003{detail::entries[93], detail::infos[93]}; // 0x2003
+inline constexpr od::descriptor xenax_error_number{detail::entries[94], detail::infos[94]}; // 0x2004
+inline constexpr od::descriptor i_force_actual{detail::entries[95], detail::infos[95]}; // 0x2005
+inline constexpr od::descriptor process_status_register{detail::entries[96], detail::infos[96]}; // 0x2006
+inline constexpr od::descriptor pdo_cycle_time{detail::entries[97], detail::infos[97]}; // 0x2007
+inline constexpr od::descriptor motor_type{detail::entries[98], detail::infos[98]}; // 0x2008
+inline constexpr od::descriptor limit_force{detail::entries[99], detail::infos[99]}; // 0x2009
+inline constexpr od::descriptor force_actual_value{detail::entries[100], detail::infos[100]}; // 0x200A
+inline constexpr od::descriptor direct_commands{detail::entries[101], detail::infos[101]}; // 0x5000
+inline constexpr od::descriptor signateq_sensor_model_type_sqsmt{detail::entries[324], detail::infos[324]}; // 0x5011
+inline constexpr od::descriptor signateq_sensor_serial_number_sqssn{detail::entries[325], detail::infos[325]}; // 0x5012
+inline constexpr od::descriptor tell_error_string_tes{detail::entries[326], detail::infos[326]}; // 0x5020
+inline constexpr od::descriptor servo_identification_string_sid{detail::entries[327], detail::infos[327]}; // 0x5021
+inline constexpr od::descriptor error_code{detail::entries[328], detail::infos[328]}; // 0x603F
+inline constexpr od::descriptor controlword{detail::entries[329], detail::infos[329]}; // 0x6040
+inline constexpr od::descriptor statusword{detail::entries[330], detail::infos[330]}; // 0x6041
+inline constexpr od::descriptor modes_of_operation_requested{detail::entries[331], detail::infos[331]}; // 0x6060
+inline constexpr od::descriptor modes_of_operation_display{detail::entries[332], detail::infos[332]}; // 0x6061
+inline constexpr od::descriptor position_actual_value{detail::entries[333], detail::infos[333]}; // 0x6064
+inline constexpr od::descriptor following_position_error_window{detail::entries[334], detail::infos[334]}; // 0x6065
+inline constexpr od::descriptor target_position_window{detail::entries[335], detail::infos[335]}; // 0x6067
+inline constexpr od::descriptor position_window_time{detail::entries[336], detail::infos[336]}; // 0x6068
+inline constexpr od::descriptor velocity_actual_value{detail::entries[337], detail::infos[337]}; // 0x606C
+inline constexpr od::descriptor limit_i_force{detail::entries[338], detail::infos[338]}; // 0x6073
+inline constexpr od::descriptor motor_current_actual_value{detail::entries[339], detail::infos[339]}; // 0x6078
+inline constexpr od::descriptor target_position{detail::entries[340], detail::infos[340]}; // 0x607A
+inline constexpr od::descriptor speed{detail::entries[344], detail::infos[344]}; // 0x6081
+inline constexpr od::descriptor acceleration{detail::entries[345], detail::infos[345]}; // 0x6083
+inline constexpr od::descriptor quick_stop_deceleration{detail::entries[346], detail::infos[346]}; // 0x6085
+inline constexpr od::descriptor reference_methods{detail::entries[347], detail::infos[347]}; // 0x6098
+inline constexpr od::descriptor velocity_offset{detail::entries[351], detail::infos[351]}; // 0x60B1
+inline constexpr od::descriptor torque_offset{detail::entries[352], detail::infos[352]}; // 0x60B2
+inline constexpr od::descriptor actual_position_following_error{detail::entries[356], detail::infos[356]}; // 0x60F4
+inline constexpr od::descriptor digital_inputs{detail::entries[357], detail::infos[357]}; // 0x60FD
+inline constexpr od::descriptor target_velocity{detail::entries[361], detail::infos[361]}; // 0x60FF
+inline constexpr od::descriptor supported_modes_of_operation{detail::entries[362], detail::infos[362]}; // 0x6502
+inline constexpr od::descriptor product_website_address{detail::entries[363], detail::infos[363]}; // 0x6505
 
 // ARRAY and RECORD objects: views into the tables.
 inline constexpr od::object identity_object{0x1018, od::object_code::record, "Identity Object"sv, dictionary.entries().subspan(6, 5), dictionary.infos().subspan(6, 5)};
-inline constexpr od::descriptor identity_object_nbr_of_entries{entries[6], infos[6]}; // 0x1018 sub 0
-inline constexpr od::descriptor identity_object_vendor_id{entries[7], infos[7]}; // 0x1018 sub 1
-inline constexpr od::descriptor identity_object_product_code{entries[8], infos[8]}; // 0x1018 sub 2
-inline constexpr od::descriptor identity_object_revision_number{entries[9], infos[9]}; // 0x1018 sub 3
-inline constexpr od::descriptor identity_object_serial_number{entries[10], infos[10]}; // 0x1018 sub 4
+inline constexpr od::descriptor identity_object_nbr_of_entries{detail::entries[6], detail::infos[6]}; // 0x1018 sub 0
+inline constexpr od::descriptor identity_object_vendor_id{detail::entries[7], detail::infos[7]}; // 0x1018 sub 1
+inline constexpr od::descriptor identity_object_product_code{detail::entries[8], detail::infos[8]}; // 0x1018 sub 2
+inline constexpr od::descriptor identity_object_revision_number{detail::entries[9], detail::infos[9]}; // 0x1018 sub 3
+inline constexpr od::descriptor identity_object_serial_number{detail::entries[10], detail::infos[10]}; // 0x1018 sub 4
 inline constexpr od::object cfm_verifyconfiguration{0x1020, od::object_code::record, "CFM_VerifyConfiguration"sv, dictionary.entries().subspan(11, 5), dictionary.infos().subspan(11, 5)};
-inline constexpr od::descriptor cfm_verifyconfiguration_nbr_of_entries{entries[11], infos[11]}; // 0x1020 sub 0
-inline constexpr od::descriptor cfm_verifyconfiguration_confdate_u32{entries[12], infos[12]}; // 0x1020 sub 1
-inline constexpr od::descriptor cfm_verifyconfiguration_conftime_u32{entries[13], infos[13]}; // 0x1020 sub 2
-inline constexpr od::descriptor cfm_verifyconfiguration_confid_u32{entries[14], infos[14]}; // 0x1020 sub 3
-inline constexpr od::descriptor cfm_verifyconfiguration_verifyconfinvalid_u32{entries[15], infos[15]}; // 0x1020 sub 4
+inline constexpr od::descriptor cfm_verifyconfiguration_nbr_of_entries{detail::entries[11], detail::infos[11]}; // 0x1020 sub 0
+inline constexpr od::descriptor cfm_verifyconfiguration_confdate_u32{detail::entries[12], detail::infos[12]}; // 0x1020 sub 1
+inline constexpr od::descriptor cfm_verifyconfiguration_conftime_u32{detail::entries[13], detail::infos[13]}; // 0x1020 sub 2
+inline constexpr od::descriptor cfm_verifyconfiguration_confid_u32{detail::entries[14], detail::infos[14]}; // 0x1020 sub 3
+inline constexpr od::descriptor cfm_verifyconfiguration_verifyconfinvalid_u32{detail::entries[15], detail::infos[15]}; // 0x1020 sub 4
 inline constexpr od::object nmt_interfacegroup_0h_rec{0x1030, od::object_code::record, "NMT_InterfaceGroup_0h_REC"sv, dictionary.entries().subspan(16, 10), dictionary.infos().subspan(16, 10)};
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_nbr_of_entries{entries[16], infos[16]}; // 0x1030 sub 0
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceindex_u16{entries[17], infos[17]}; // 0x1030 sub 1
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacedescription_vstr{entries[18], infos[18]}; // 0x1030 sub 2
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacetype_u8{entries[19], infos[19]}; // 0x1030 sub 3
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacemtu_u32{entries[20], infos[20]}; // 0x1030 sub 4
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacephysaddress_ostr{entries[21], infos[21]}; // 0x1030 sub 5
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacename_vstr{entries[22], infos[22]}; // 0x1030 sub 6
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceoperstatus_u8{entries[23], infos[23]}; // 0x1030 sub 7
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceadminstate_u8{entries[24], infos[24]}; // 0x1030 sub 8
-inline constexpr od::descriptor nmt_interfacegroup_0h_rec_valid_bool{entries[25], infos[25]}; // 0x1030 sub 9
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_nbr_of_entries{detail::entries[16], detail::infos[16]}; // 0x1030 sub 0
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceindex_u16{detail::entries[17], detail::infos[17]}; // 0x1030 sub 1
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacedescription_vstr{detail::entries[18], detail::infos[18]}; // 0x1030 sub 2
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacetype_u8{detail::entries[19], detail::infos[19]}; // 0x1030 sub 3
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacemtu_u32{detail::entries[20], detail::infos[20]}; // 0x1030 sub 4
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacephysaddress_ostr{detail::entries[21], detail::infos[21]}; // 0x1030 sub 5
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfacename_vstr{detail::entries[22], detail::infos[22]}; // 0x1030 sub 6
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceoperstatus_u8{detail::entries[23], detail::infos[23]}; // 0x1030 sub 7
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_interfaceadminstate_u8{detail::entries[24], detail::infos[24]}; // 0x1030 sub 8
+inline constexpr od::descriptor nmt_interfacegroup_0h_rec_valid_bool{detail::entries[25], detail::infos[25]}; // 0x1030 sub 9
 inline constexpr od::object pdo_rxcommparam_00h_rec{0x1400, od::object_code::record, "PDO_RxCommParam_00h_REC"sv, dictionary.entries().subspan(28, 3), dictionary.infos().subspan(28, 3)};
-inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nbr_of_entries{entries[28], infos[28]}; // 0x1400 sub 0
-inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nodeid_u8{entries[29], infos[29]}; // 0x1400 sub 1
-inline constexpr od::descriptor pdo_rxcommparam_00h_rec_mappingversion_u8{entries[30], infos[30]}; // 0x1400 sub 2
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nbr_of_entries{detail::entries[28], detail::infos[28]}; // 0x1400 sub 0
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_nodeid_u8{detail::entries[29], detail::infos[29]}; // 0x1400 sub 1
+inline constexpr od::descriptor pdo_rxcommparam_00h_rec_mappingversion_u8{detail::entries[30], detail::infos[30]}; // 0x1400 sub 2
 inline constexpr od::object pdo_rxmappparam_00h_au64{0x1600, od::object_code::array, "PDO_RxMappParam_00h_AU64"sv, dictionary.entries().subspan(31, 9), dictionary.infos().subspan(31, 9)};
 inline constexpr od::object pdo_txcommparam_00h_rec{0x1800, od::object_code::record, "PDO_TxCommParam_00h_REC"sv, dictionary.entries().subspan(40, 3), dictionary.infos().subspan(40, 3)};
-inline constexpr od::descriptor pdo_txcommparam_00h_rec_nbr_of_entries{entries[40], infos[40]}; // 0x1800 sub 0
-inline constexpr od::descriptor pdo_txcommparam_00h_rec_nodeid_u8{entries[41], infos[41]}; // 0x1800 sub 1
-inline constexpr od::descriptor pdo_txcommparam_00h_rec_mappingversion_u8{entries[42], infos[42]}; // 0x1800 sub 2
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_nbr_of_entries{detail::entries[40], detail::infos[40]}; // 0x1800 sub 0
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_nodeid_u8{detail::entries[41], detail::infos[41]}; // 0x1800 sub 1
+inline constexpr od::descriptor pdo_txcommparam_00h_rec_mappingversion_u8{detail::entries[42], detail::infos[42]}; // 0x1800 sub 2
 inline constexpr od::object pdo_txmappparam_00h_au64{0x1A00, od::object_code::array, "PDO_TxMappParam_00h_AU64"sv, dictionary.entries().subspan(43, 9), dictionary.infos().subspan(43, 9)};
 inline constexpr od::object dll_cnlosssoc_rec{0x1C0B, od::object_code::record, "DLL_CNLossSoC_REC"sv, dictionary.entries().subspan(52, 4), dictionary.infos().subspan(52, 4)};
-inline constexpr od::descriptor dll_cnlosssoc_rec_numberofentries{entries[52], infos[52]}; // 0x1C0B sub 0
-inline constexpr od::descriptor dll_cnlosssoc_rec_cumulativecnt_u32{entries[53], infos[53]}; // 0x1C0B sub 1
-inline constexpr od::descriptor dll_cnlosssoc_rec_thresholdcnt_u32{entries[54], infos[54]}; // 0x1C0B sub 2
-inline constexpr od::descriptor dll_cnlosssoc_rec_threshold_u32{entries[55], infos[55]}; // 0x1C0B sub 3
+inline constexpr od::descriptor dll_cnlosssoc_rec_numberofentries{detail::entries[52], detail::infos[52]}; // 0x1C0B sub 0
+inline constexpr od::descriptor dll_cnlosssoc_rec_cumulativecnt_u32{detail::entries[53], detail::infos[53]}; // 0x1C0B sub 1
+inline constexpr od::descriptor dll_cnlosssoc_rec_thresholdcnt_u32{detail::entries[54], detail::infos[54]}; // 0x1C0B sub 2
+inline constexpr od::descriptor dll_cnlosssoc_rec_threshold_u32{detail::entries[55], detail::infos[55]}; // 0x1C0B sub 3
 inline constexpr od::object dll_cncrcerror_rec{0x1C0F, od::object_code::record, "DLL_CNCRCError_REC"sv, dictionary.entries().subspan(56, 4), dictionary.infos().subspan(56, 4)};
-inline constexpr od::descriptor dll_cncrcerror_rec_numberofentries{entries[56], infos[56]}; // 0x1C0F sub 0
-inline constexpr od::descriptor dll_cncrcerror_rec_cumulativecnt_u32{entries[57], infos[57]}; // 0x1C0F sub 1
-inline constexpr od::descriptor dll_cncrcerror_rec_thresholdcnt_u32{entries[58], infos[58]}; // 0x1C0F sub 2
-inline constexpr od::descriptor dll_cncrcerror_rec_threshold_u32{entries[59], infos[59]}; // 0x1C0F sub 3
+inline constexpr od::descriptor dll_cncrcerror_rec_numberofentries{detail::entries[56], detail::infos[56]}; // 0x1C0F sub 0
+inline constexpr od::descriptor dll_cncrcerror_rec_cumulativecnt_u32{detail::entries[57], detail::infos[57]}; // 0x1C0F sub 1
+inline constexpr od::descriptor dll_cncrcerror_rec_thresholdcnt_u32{detail::entries[58], detail::infos[58]}; // 0x1C0F sub 2
+inline constexpr od::descriptor dll_cncrcerror_rec_threshold_u32{detail::entries[59], detail::infos[59]}; // 0x1C0F sub 3
 inline constexpr od::object nwl_ipaddrtable_0h_rec{0x1E40, od::object_code::record, "NWL_IpAddrTable_0h_REC"sv, dictionary.entries().subspan(61, 6), dictionary.infos().subspan(61, 6)};
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_numberofentries{entries[61], infos[61]}; // 0x1E40 sub 0
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_ifindex_u16{entries[62], infos[62]}; // 0x1E40 sub 1
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_addr_ipad{entries[63], infos[63]}; // 0x1E40 sub 2
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_netmask_ipad{entries[64], infos[64]}; // 0x1E40 sub 3
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_reasmmaxsize_u16{entries[65], infos[65]}; // 0x1E40 sub 4
-inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_defaultgateway_ipad{entries[66], infos[66]}; // 0x1E40 sub 5
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_numberofentries{detail::entries[61], detail::infos[61]}; // 0x1E40 sub 0
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_ifindex_u16{detail::entries[62], detail::infos[62]}; // 0x1E40 sub 1
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_addr_ipad{detail::entries[63], detail::infos[63]}; // 0x1E40 sub 2
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_netmask_ipad{detail::entries[64], detail::infos[64]}; // 0x1E40 sub 3
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_reasmmaxsize_u16{detail::entries[65], detail::infos[65]}; // 0x1E40 sub 4
+inline constexpr od::descriptor nwl_ipaddrtable_0h_rec_defaultgateway_ipad{detail::entries[66], detail::infos[66]}; // 0x1E40 sub 5
 inline constexpr od::object nwl_ipgroup_rec{0x1E4A, od::object_code::record, "NWL_IpGroup_REC"sv, dictionary.entries().subspan(67, 4), dictionary.infos().subspan(67, 4)};
-inline constexpr od::descriptor nwl_ipgroup_rec_numberofentries{entries[67], infos[67]}; // 0x1E4A sub 0
-inline constexpr od::descriptor nwl_ipgroup_rec_forwarding_bool{entries[68], infos[68]}; // 0x1E4A sub 1
-inline constexpr od::descriptor nwl_ipgroup_rec_defaultttl_u16{entries[69], infos[69]}; // 0x1E4A sub 2
-inline constexpr od::descriptor nwl_ipgroup_rec_forwarddatagrams_u32{entries[70], infos[70]}; // 0x1E4A sub 3
+inline constexpr od::descriptor nwl_ipgroup_rec_numberofentries{detail::entries[67], detail::infos[67]}; // 0x1E4A sub 0
+inline constexpr od::descriptor nwl_ipgroup_rec_forwarding_bool{detail::entries[68], detail::infos[68]}; // 0x1E4A sub 1
+inline constexpr od::descriptor nwl_ipgroup_rec_defaultttl_u16{detail::entries[69], detail::infos[69]}; // 0x1E4A sub 2
+inline constexpr od::descriptor nwl_ipgroup_rec_forwarddatagrams_u32{detail::entries[70], detail::infos[70]}; // 0x1E4A sub 3
 inline constexpr od::object nmt_eplnodeid_rec{0x1F93, od::object_code::record, "NMT_EPLNodeID_REC"sv, dictionary.entries().subspan(74, 3), dictionary.infos().subspan(74, 3)};
-inline constexpr od::descriptor nmt_eplnodeid_rec_numberofentries{entries[74], infos[74]}; // 0x1F93 sub 0
-inline constexpr od::descriptor nmt_eplnodeid_rec_nodeid_u8{entries[75], infos[75]}; // 0x1F93 sub 1
-inline constexpr od::descriptor nmt_eplnodeid_rec_nodeidbyhw_bool{entries[76], infos[76]}; // 0x1F93 sub 2
+inline constexpr od::descriptor nmt_eplnodeid_rec_numberofentries{detail::entries[74], detail::infos[74]}; // 0x1F93 sub 0
+inline constexpr od::descriptor nmt_eplnodeid_rec_nodeid_u8{detail::entries[75], detail::infos[75]}; // 0x1F93 sub 1
+inline constexpr od::descriptor nmt_eplnodeid_rec_nodeidbyhw_bool{detail::entries[76], detail::infos[76]}; // 0x1F93 sub 2
 inline constexpr od::object nmt_cycletiming_rec{0x1F98, od::object_code::record, "NMT_CycleTiming_REC"sv, dictionary.entries().subspan(77, 10), dictionary.infos().subspan(77, 10)};
-inline constexpr od::descriptor nmt_cycletiming_rec_numberofentries{entries[77], infos[77]}; // 0x1F98 sub 0
-inline constexpr od::descriptor nmt_cycletiming_rec_isochrtxmaxpayload_u16{entries[78], infos[78]}; // 0x1F98 sub 1
-inline constexpr od::descriptor nmt_cycletiming_rec_isochrrxmaxpayload_u16{entries[79], infos[79]}; // 0x1F98 sub 2
-inline constexpr od::descriptor nmt_cycletiming_rec_presmaxlatency_u32{entries[80], infos[80]}; // 0x1F98 sub 3
-inline constexpr od::descriptor nmt_cycletiming_rec_preqactpayloadlimit_u16{entries[81], infos[81]}; // 0x1F98 sub 4
-inline constexpr od::descriptor nmt_cycletiming_rec_presactpayloadlimit_u16{entries[82], infos[82]}; // 0x1F98 sub 5
-inline constexpr od::descriptor nmt_cycletiming_rec_asndmaxlatency_u32{entries[83], infos[83]}; // 0x1F98 sub 6
-inline constexpr od::descriptor nmt_cycletiming_rec_multiplcyclecnt_u8{entries[84], infos[84]}; // 0x1F98 sub 7
-inline constexpr od::descriptor nmt_cycletiming_rec_asyncmtusize_u16{entries[85], infos[85]}; // 0x1F98 sub 8
-inline constexpr od::descriptor nmt_cycletiming_rec_prescaler_u16{entries[86], infos[86]}; // 0x1F98 sub 9
+inline constexpr od::descriptor nmt_cycletiming_rec_numberofentries{detail::entries[77], detail::infos[77]}; // 0x1F98 sub 0
+inline constexpr od::descriptor nmt_cycletiming_rec_isochrtxmaxpayload_u16{detail::entries[78], detail::infos[78]}; // 0x1F98 sub 1
+inline constexpr od::descriptor nmt_cycletiming_rec_isochrrxmaxpayload_u16{detail::entries[79], detail::infos[79]}; // 0x1F98 sub 2
+inline constexpr od::descriptor nmt_cycletiming_rec_presmaxlatency_u32{detail::entries[80], detail::infos[80]}; // 0x1F98 sub 3
+inline constexpr od::descriptor nmt_cycletiming_rec_preqactpayloadlimit_u16{detail::entries[81], detail::infos[81]}; // 0x1F98 sub 4
+inline constexpr od::descriptor nmt_cycletiming_rec_presactpayloadlimit_u16{detail::entries[82], detail::infos[82]}; // 0x1F98 sub 5
+inline constexpr od::descriptor nmt_cycletiming_rec_asndmaxlatency_u32{detail::entries[83], detail::infos[83]}; // 0x1F98 sub 6
+inline constexpr od::descriptor nmt_cycletiming_rec_multiplcyclecnt_u8{detail::entries[84], detail::infos[84]}; // 0x1F98 sub 7
+inline constexpr od::descriptor nmt_cycletiming_rec_asyncmtusize_u16{detail::entries[85], detail::infos[85]}; // 0x1F98 sub 8
+inline constexpr od::descriptor nmt_cycletiming_rec_prescaler_u16{detail::entries[86], detail::infos[86]}; // 0x1F98 sub 9
 inline constexpr od::object read_parameter{0x5001, od::object_code::array, "Read Parameter"sv, dictionary.entries().subspan(102, 46), dictionary.infos().subspan(102, 46)};
 inline constexpr od::object write_parameter{0x5002, od::object_code::array, "Write Parameter"sv, dictionary.entries().subspan(148, 17), dictionary.infos().subspan(148, 17)};
 inline constexpr od::object read_write_parameter{0x5003, od::object_code::array, "Read Write Parameter"sv, dictionary.entries().subspan(165, 107), dictionary.infos().subspan(165, 107)};
@@ -897,9 +902,9 @@ inline constexpr od::object forceteq_pro_parameter{0x5010, od::object_code::arra
 inline constexpr od::object soft_limit_positions{0x607D, od::object_code::array, "Soft-Limit Positions"sv, dictionary.entries().subspan(341, 3), dictionary.infos().subspan(341, 3)};
 inline constexpr od::object reference_speeds{0x6099, od::object_code::array, "Reference Speeds"sv, dictionary.entries().subspan(348, 3), dictionary.infos().subspan(348, 3)};
 inline constexpr od::object synchronous_cycle_time{0x60C2, od::object_code::record, "Synchronous Cycle Time"sv, dictionary.entries().subspan(353, 3), dictionary.infos().subspan(353, 3)};
-inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{entries[353], infos[353]}; // 0x60C2 sub 0
-inline constexpr od::descriptor synchronous_cycle_time_base_value{entries[354], infos[354]}; // 0x60C2 sub 1
-inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{entries[355], infos[355]}; // 0x60C2 sub 2
+inline constexpr od::descriptor synchronous_cycle_time_highest_sub_index_value{detail::entries[353], detail::infos[353]}; // 0x60C2 sub 0
+inline constexpr od::descriptor synchronous_cycle_time_base_value{detail::entries[354], detail::infos[354]}; // 0x60C2 sub 1
+inline constexpr od::descriptor synchronous_cycle_time_n_10_exponent{detail::entries[355], detail::infos[355]}; // 0x60C2 sub 2
 inline constexpr od::object digital_outputs{0x60FE, od::object_code::array, "Digital Outputs"sv, dictionary.entries().subspan(358, 3), dictionary.infos().subspan(358, 3)};
 
 } // namespace fieldcodec::dictionaries::xenax_powerlink
