@@ -745,7 +745,13 @@ void emit(writer &o, const dictionary &d) {
   for (std::size_t k = 0; k < d.entries.size(); ++k) {
     if (is_var[k]) descriptor(k);
   }
-  if (!views.empty()) o.lit("\n// ARRAY and RECORD objects: views into the tables.\n");
+  if (!views.empty()) {
+    o.lit("\n// ARRAY and RECORD objects: views into the tables.\n");
+    if (!d.sub_descriptors) {
+      o.lit("// Sub-objects: view[sub] (generated with --no-sub-descriptors: no standalone "
+            "descriptors).\n");
+    }
+  }
   for (const view &v : views) {
     o.lit("inline constexpr od::object ");
     o.put(v.symbol);
@@ -775,7 +781,7 @@ void emit(writer &o, const dictionary &d) {
     }
     o.lit("};\n");
     // named sub-objects of the view: standalone descriptors too (as `view[sub]`)
-    for (std::size_t k = v.first; k < v.first + v.count; ++k) {
+    for (std::size_t k = v.first; k < v.first + v.count && d.sub_descriptors; ++k) {
       if (!named[k].empty()) descriptor(k);
     }
   }

@@ -53,6 +53,9 @@ options:
       --compact-arrays
                       keep runs of alike ARRAY sub-objects (CompactSubObj) as one
                       entry each instead of one entry per sub-index
+      --no-sub-descriptors
+                      no standalone descriptor per named sub-object of an ARRAY or
+                      RECORD (name it as view[sub]): the header compiles faster
       --config-list FILE
                       write the configuration list of a DCF to FILE: the SDO
                       downloads from the EDS defaults to the DCF's values, in
@@ -240,6 +243,8 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       }
     } else if (a == "--compact-arrays") {
       cl.opts.compact_arrays = true;
+    } else if (a == "--no-sub-descriptors") {
+      cl.opts.sub_descriptors = false;
     } else if (a == "--check") {
       cl.check = true;
     } else if (a == "--strict") {
@@ -333,9 +338,10 @@ int main(int argc, char **argv) {
   auto dict = fieldcodec::gen::read_file(cl.input, diag);
   if (dict && !diag.has_errors()) {
     const auto &o = cl.opts;
-    if (dict->is_command_table &&
-        (!o.only.empty() || o.compact_arrays || o.string_capacity || !o.capacities.empty())) {
-      return usage_error("--only, --string-capacity and --compact-arrays apply to object "
+    if (dict->is_command_table && (!o.only.empty() || o.compact_arrays || o.string_capacity ||
+                                   !o.capacities.empty() || !o.sub_descriptors)) {
+      return usage_error("--only, --string-capacity, --compact-arrays and --no-sub-descriptors "
+                         "apply to object "
                          "dictionaries, not to the command table '" +
                          cl.input + "'");
     }

@@ -157,6 +157,9 @@ struct dictionary {
   std::string source_name; ///< file name (no directories) for the "generated from" line
   std::string stem;        ///< namespace name
   bool is_command_table = false;
+  /// The header names each named sub-object of an ARRAY/RECORD with a standalone descriptor
+  /// (the default); false (--no-sub-descriptors): only the object's view, `view[sub]`.
+  bool sub_descriptors = true;
   std::vector<entry> entries; ///< sorted by (index, sub-index)
   std::map<std::uint16_t, object_info> objects;
   std::vector<command> commands; ///< sorted by code

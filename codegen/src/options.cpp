@@ -273,6 +273,7 @@ bool apply_options(dictionary &d, const generator_options &o, const std::string 
   only(d, o, file, diag);
   const bool ok = capacities(d, o, file, diag);
   if (o.compact_arrays) compact_arrays(d);
+  d.sub_descriptors = o.sub_descriptors;
   return ok && !diag.has_errors();
 }
 

@@ -34,6 +34,7 @@ struct generator_options {
   std::optional<std::uint32_t> string_capacity; ///< --string-capacity BYTES
   std::vector<capacity_override> capacities;    ///< --string-capacity INDEX[:SUB]=BYTES
   bool compact_arrays = false;                  ///< --compact-arrays
+  bool sub_descriptors = true;                  ///< false: --no-sub-descriptors
 };
 
 /// Parses the argument of --only ("0x1000-0x1FFF,0x6000-0x67FF", "0x1018"; indices in hex with
@@ -47,7 +48,8 @@ struct generator_options {
 /// Applies the options to a dictionary read from `file`, in this order: --only, the capacities
 /// of byte strings (overrides, then --string-capacity BYTES; every VISIBLE_STRING /
 /// OCTET_STRING / UNICODE_STRING / DOMAIN entry still without a capacity gets a warning), then
-/// --compact-arrays. Returns false when an error was reported.
+/// --compact-arrays; --no-sub-descriptors sets dictionary::sub_descriptors. Returns false when an
+/// error was reported.
 bool apply_options(dictionary &d, const generator_options &o, const std::string &file,
                    diagnostics &diag);
 

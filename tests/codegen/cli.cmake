@@ -89,6 +89,15 @@ expect(2 --only "0x1000,,0x2000" "${fx}/quirks.eds")
 expect(2 --string-capacity 0 "${fx}/quirks.eds")
 expect(2 --string-capacity 0x2000=x "${fx}/quirks.eds")
 expect(2 --compact-arrays "${SOURCE_DIR}/dictionaries/pacontrol_commands.csv")
+expect(2 --no-sub-descriptors "${SOURCE_DIR}/dictionaries/pacontrol_commands.csv")
+# --no-sub-descriptors: the RECORD 0x1400 keeps its view, loses its sub-object descriptors
+expect(0 -q --no-sub-descriptors -o "${WORK_DIR}/views_only.hpp" "${fx}/interop.eds")
+file(READ "${WORK_DIR}/views_only.hpp" views_only)
+if(NOT views_only MATCHES "inline constexpr od::object rpdo_1_communication_parameter\\{0x1400, "
+   OR views_only MATCHES "// 0x1400 sub [0-9]+\n"
+   OR NOT views_only MATCHES "Sub-objects: view\\[sub\\]")
+  message(FATAL_ERROR "--no-sub-descriptors:\n${views_only}")
+endif()
 # an override naming no string is an error in the input
 expect(1 --string-capacity 0x2000=8 "${fx}/interop.eds")
 if(NOT last_err MATCHES "interop.eds: error: --string-capacity 0x2000=8: object 0x2000 has no VISIBLE_STRING, OCTET_STRING, UNICODE_STRING or DOMAIN entry")

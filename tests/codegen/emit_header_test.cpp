@@ -12,12 +12,13 @@ namespace gen = fieldcodec::gen;
 
 namespace {
 
-std::string emit_eds(const std::string &eds) {
+std::string emit_eds(const std::string &eds, bool sub_descriptors = true) {
   gen::diagnostics d;
   auto dict = gen::read_eds(eds, "t.eds", d);
   REQUIRE(dict.has_value());
   dict->stem = "t";
   dict->source_name = "t.eds";
+  dict->sub_descriptors = sub_descriptors;
   return gen::emit_header(*dict);
 }
 
@@ -63,6 +64,37 @@ TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
   CHECK(has(h, ".flags = od::flag::default_nodeid | od::flag::low_nodeid | "
                "od::flag::high_nodeid, .low = od::unsigned_number(1536U), "
                ".high = od::unsigned_number(1536U), .default_value = od::unsigned_number(1536U)"));
+}
+
+TEST_CASE("emit_header: --no-sub-descriptors leaves out exactly the sub-object descriptors") {
+  const std::string all = emit_eds(eds);
+  const std::string views_only = emit_eds(eds, false);
+  // the default header without its sub-object descriptor lines, plus one comment line: every
+  // other name, table and view is the same (names are assigned as if the descriptors were there)
+  std::string expected;
+  std::size_t at = 0;
+  std::size_t dropped = 0;
+  while (at < all.size()) {
+    const std::size_t end = all.find('\n', at) + 1U;
+    const std::string line = all.substr(at, end - at);
+    const bool sub_descriptor = line.starts_with("inline constexpr od::descriptor ") &&
+                                line.find(" sub ") != std::string::npos;
+    if (sub_descriptor) {
+      ++dropped;
+    } else {
+      expected += line;
+    }
+    if (line == "// ARRAY and RECORD objects: views into the tables.\n") {
+      expected += "// Sub-objects: view[sub] (generated with --no-sub-descriptors: no standalone "
+                  "descriptors).\n";
+    }
+    at = end;
+  }
+  CHECK(dropped == 2); // 0x1200 sub 0 and sub 1
+  CHECK(views_only == expected);
+  CHECK(has(views_only, "inline constexpr od::object server_sdo_parameter{0x1200, "));
+  CHECK(has(views_only, "inline constexpr od::descriptor device_type{"));
+  CHECK_FALSE(has(views_only, "server_sdo_parameter_cob_id_client_to_server"));
 }
 
 TEST_CASE("emit_header: scaled CSV rows get a scale table and the scaled flag") {

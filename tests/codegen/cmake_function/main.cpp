@@ -1,9 +1,21 @@
 #include <fieldcodec/dictionaries/my_drive.hpp>
+#include <fieldcodec/dictionaries/my_drive_views.hpp>
 
 namespace drive = fieldcodec::dictionaries::my_drive;
+namespace views = fieldcodec::dictionaries::my_drive_views;
 
 static_assert(drive::device_type.index == 0x1000);
 static_assert(drive::identity_object.find(4) != nullptr);
+// the tables are spans with a constant size
+static_assert(drive::entries.size() == drive::dictionary.size() &&
+              drive::infos.size() == drive::entries.size());
+
+// --no-sub-descriptors: the view names the sub-object; the descriptor is the same constant
+inline constexpr fieldcodec::od::descriptor vendor_id = views::identity_object[1];
+static_assert(vendor_id.index == drive::identity_object_vendor_id.index &&
+              vendor_id.sub == drive::identity_object_vendor_id.sub &&
+              vendor_id.info.name == drive::identity_object_vendor_id.info.name);
+static_assert(views::device_type.index == 0x1000); // VAR objects keep their descriptors
 
 int main() {
   return drive::dictionary.find(0x1014, 0)->default_for(3).value().bits == 0x83U ? 0 : 1;
