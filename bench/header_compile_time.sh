@@ -3,6 +3,8 @@
 # g++ and clang++, the minimum of RUNS runs (the machine is shared; the minimum is the least
 # disturbed run). Headers measured:
 #   bench700        the header of a ~700 kB DCF written by fieldcodec_gen_bench (4574 entries)
+#   bench700_views  the same with --no-sub-descriptors (no standalone descriptor per named
+#                   ARRAY/RECORD sub-object)
 #   <checked-in>    include/fieldcodec/dictionaries/{compax_objects,xenax_canopen,dpq_parameters}
 #   (od includes)   only the od/ headers a generated header includes: the floor of every row
 #
@@ -27,6 +29,8 @@ mkdir -p "$work/h/fieldcodec/dictionaries"
 "$build/codegen/fieldcodec_gen_bench" 700000 --dcf "$work/bench700.dcf" >/dev/null
 "$build/codegen/fieldcodec-gen" --quiet --name bench700 \
   -o "$work/h/fieldcodec/dictionaries/bench700.hpp" "$work/bench700.dcf"
+"$build/codegen/fieldcodec-gen" --quiet --no-sub-descriptors --name bench700_views \
+  -o "$work/h/fieldcodec/dictionaries/bench700_views.hpp" "$work/bench700.dcf"
 
 # The od/ includes of a generated header, nothing else.
 grep '^#include <fieldcodec/' "$work/h/fieldcodec/dictionaries/bench700.hpp" > "$work/od_includes.cpp"
@@ -61,9 +65,9 @@ row() { # row NAME HEADER-or-SOURCE BYTES ENTRIES
 }
 entries() { grep -o 'od::entry, [0-9]*>' "$1" | grep -o '[0-9]*>' | tr -d '>'; }
 row "(od includes only)" "$work/od_includes.cpp" - -
-for name in bench700 compax_objects xenax_canopen dpq_parameters; do
+for name in bench700 bench700_views compax_objects xenax_canopen dpq_parameters; do
   hdr=include/fieldcodec/dictionaries/$name.hpp
-  [ "$name" = bench700 ] && hdr=$work/h/fieldcodec/dictionaries/bench700.hpp
+  case $name in bench700*) hdr=$work/h/fieldcodec/dictionaries/$name.hpp ;; esac
   echo "#include <fieldcodec/dictionaries/$name.hpp>" > "$work/$name.cpp"
   row "$name" "$work/$name.cpp" "$(( $(wc -c < "$hdr") / 1024 )) kB" "$(entries "$hdr")"
 done
