@@ -25,12 +25,14 @@
 //   and every text (name, unit, ..., default and DCF byte strings) as a literal that decodes to
 //   the model's bytes, with the written length `{"…", n}` equal to the decoded length; an
 //   object view's name literal (`"…"sv`) decodes to the object's name; `source_file` decodes to
-//   the file name. Command tables: names and texts of every command.
+//   the file name; `node_id` is the DCF's node-ID (1..127), declared exactly when it has one.
+//   Command tables: codes, names and texts of every command.
 // * Identifiers: every declared constant (descriptors, object views, command references, the
 //   namespace) is a valid C++ identifier (ASCII letter or '_' then letters, digits, '_'; no
 //   leading '_', no "__" — both reserved to the implementation —, not a keyword), unique in the
-//   namespace, different from the names the header itself declares; a descriptor's comment names
-//   the index of the table row it copies.
+//   namespace (so different from the header's own entries, infos, dictionary, ...), not one of
+//   the names the header uses unqualified (od, std, fieldcodec, scaling, detail); a descriptor's
+//   comment names the index of the table row it copies.
 #include "check.hpp"
 
 #include "../codegen/src/text.cpp"
@@ -61,7 +63,7 @@ enum class tok : std::uint8_t { ident, number, string, punct };
 
 struct token {
   tok kind;
-  std::string text; ///< identifier, number or punctuator as written; a string's decoded bytes
+  std::string text;   ///< identifier, number or punctuator as written; a string's decoded bytes
   std::string suffix; ///< a string literal's ud-suffix ("sv")
   int line;
 };
@@ -376,7 +378,8 @@ struct reader {
 bool same_number(const od::number &a, const od::number &b) {
   if (a.kind != b.kind) return false;
   if (a.kind == od::number_kind::real) { // printed shortest round trip: the same double
-    return std::bit_cast<std::uint64_t>(a.to_double()) == std::bit_cast<std::uint64_t>(b.to_double());
+    return std::bit_cast<std::uint64_t>(a.to_double()) ==
+           std::bit_cast<std::uint64_t>(b.to_double());
   }
   return a == b;
 }
@@ -517,8 +520,8 @@ void check_commands(reader &r, const gen::dictionary &d) {
     });
     FUZZ_CHECK(code == c.code);
     FUZZ_CHECK(name == c.name && section == c.section && title == c.title &&
-               parameter == c.parameter && date == c.date && reply == c.reply &&
-               modes == c.modes && remark == c.remark);
+               parameter == c.parameter && date == c.date && reply == c.reply && modes == c.modes &&
+               remark == c.remark);
     r.expect(",");
   }
 }
@@ -529,7 +532,12 @@ bool good_identifier(std::string_view s) {
   for (const char c : s) {
     if (!is_ident_char(c)) return false;
   }
-  return s.find("__") == std::string_view::npos && !gen::is_cpp_keyword(s);
+  if (s.find("__") != std::string_view::npos || gen::is_cpp_keyword(s)) return false;
+  // the namespaces and names the header uses unqualified (docs/generator.md "Identifiers")
+  for (const std::string_view used : {"od", "std", "fieldcodec", "scaling", "detail"}) {
+    if (s == used) return false;
+  }
+  return true;
 }
 
 /// Every declaration of the namespace: `inline constexpr <type> NAME{` / `= ...`.
@@ -595,6 +603,11 @@ void check_names(const std::vector<token> &t, const gen::dictionary &d) {
       ++commands;
     } else if (name == "source_file") {
       FUZZ_CHECK(t[k + 1U].kind == tok::string && t[k + 1U].text == d.source_name);
+    } else if (name == "node_id") { // std::uint8_t node_id = N: the DCF's node-ID, 1..127
+      reader r{t, k};
+      r.expect("=");
+      FUZZ_CHECK(d.node_id >= 1 && d.node_id <= 127 &&
+                 r.unsigned_number() == static_cast<std::uint64_t>(d.node_id));
     }
   }
   if (d.is_command_table) {
@@ -606,6 +619,7 @@ void check_names(const std::vector<token> &t, const gen::dictionary &d) {
                names.contains("dictionary"));
   }
   FUZZ_CHECK(names.contains("source_file"));
+  FUZZ_CHECK(names.contains("node_id") == (!d.is_command_table && d.node_id > 0));
 }
 
 /// The descriptors' trailing comments: `// 0xIIII` or `// 0xIIII sub S` naming their row.

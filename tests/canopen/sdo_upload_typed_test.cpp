@@ -89,8 +89,7 @@ TEST_CASE("upload_value<T>: signedness mismatches never flip a sign") {
   CHECK(sdo::upload_value<std::int32_t>(e_u32, response(e_u32, 0x7FFFFFFFU)).value() ==
         std::numeric_limits<std::int32_t>::max());
   CHECK(sdo::upload_value<std::int8_t>(e_u8, response(e_u8, 0x80U)) == errc::overflow);
-  CHECK(sdo::upload_value<std::int64_t>(e_u32, response(e_u32, 0x80000000U)).value() ==
-        0x80000000);
+  CHECK(sdo::upload_value<std::int64_t>(e_u32, response(e_u32, 0x80000000U)).value() == 0x80000000);
 }
 
 TEST_CASE("upload_value<T>: REAL32 and floating-point T") {
@@ -128,8 +127,7 @@ TEST_CASE("upload_value<T>: bool and enumerations") {
   CHECK(sdo::upload_value<bool>(e_i8, response(e_i8, 0xFFU)) == errc::overflow);
   // an enumeration is its underlying type: int8_t
   CHECK(sdo::upload_value<mode>(e_i8, response(e_i8, 0xFFU)).value() == mode::jog);
-  CHECK(sdo::upload_value<mode>(e_i16, response(e_i16, 0x0001U)).value() ==
-        mode::profile_position);
+  CHECK(sdo::upload_value<mode>(e_i16, response(e_i16, 0x0001U)).value() == mode::profile_position);
   CHECK(sdo::upload_value<mode>(e_i16, response(e_i16, 0x0080U)) == errc::overflow);
   CHECK(sdo::upload_value<mode>(e_u8, response(e_u8, 0xC8U)) == errc::overflow);
   CHECK(sdo::upload_value<small_code>(e_i8, response(e_i8, 0xFFU)) == errc::overflow);
@@ -140,8 +138,7 @@ TEST_CASE("upload_value<T>: the errors of upload_value come first, from a payloa
     return co::make_frame(0x581, {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}).value();
   };
   CHECK(sdo::upload_value<std::int16_t>(e_i16, frame(response(e_i16, 0xFFFEU))).value() == -2);
-  CHECK(sdo::upload_value<std::uint8_t>(e_u16, frame(response(e_u16, 0x0100U))) ==
-        errc::overflow);
+  CHECK(sdo::upload_value<std::uint8_t>(e_u16, frame(response(e_u16, 0x0100U))) == errc::overflow);
   // another object
   CHECK(sdo::upload_value<std::int16_t>(e_i16, response(e_u16, 1U)) == errc::unexpected_frame);
   // an abort

@@ -496,8 +496,7 @@ inline std::string emit_header(const dictionary &d) {
         const entry &e = d.entries[k];
         const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
         if (!is_named) continue;
-        std::string sub =
-            !e.symbol.empty() ? e.symbol : symbols::join(s, make_identifier(e.name));
+        std::string sub = !e.symbol.empty() ? e.symbol : symbols::join(s, make_identifier(e.name));
         if (e.symbol.empty() && make_identifier(e.name).empty()) {
           sub = symbols::join(s, "sub" + std::to_string(e.sub));
         }

@@ -50,8 +50,9 @@ TEST_CASE("number_as: floating-point T holds the value exactly or refuses it") {
   CHECK(od::number_as<double>(od::unsigned_number(0x20000000000001U)) == errc::not_representable);
   CHECK(od::number_as<double>(od::unsigned_number(0x20000000000002U)).value() ==
         9007199254740994.0);
-  CHECK(od::number_as<double>(od::signed_number(std::numeric_limits<std::int64_t>::min()))
-            .value() == -9223372036854775808.0);
+  CHECK(
+      od::number_as<double>(od::signed_number(std::numeric_limits<std::int64_t>::min())).value() ==
+      -9223372036854775808.0);
   // reals: a double into float only when it is a float value
   CHECK(od::number_as<float>(od::real_number(0.5)).value() == 0.5F);
   CHECK(od::number_as<float>(od::real_number(static_cast<double>(0.1F))).value() == 0.1F);

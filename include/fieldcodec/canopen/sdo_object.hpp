@@ -103,7 +103,6 @@ requires std::derived_from<E, od::entry>
   return upload_value(e, p.value());
 }
 
-
 /// The value in an expedited upload response for entry `e` as a T (bool, any integer type,
 /// float, double or an enumeration), never narrowed: od::number_as<T> of upload_value(e, p), so
 /// `upload_value<std::uint8_t>(unsigned16_entry, p)` of 0x0100 is overflow, not 0, and

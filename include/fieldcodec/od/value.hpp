@@ -479,7 +479,8 @@ template <value_type T>
     if (x.negative) {
       if constexpr (std::is_signed_v<T>) {
         constexpr auto min_mag =
-            std::uint64_t{0} - static_cast<std::uint64_t>(std::int64_t{std::numeric_limits<T>::min()});
+            std::uint64_t{0} -
+            static_cast<std::uint64_t>(std::int64_t{std::numeric_limits<T>::min()});
         if (x.mag > min_mag) return errc::overflow;
         return static_cast<T>(static_cast<std::int64_t>(std::uint64_t{0} - x.mag));
       } else {
