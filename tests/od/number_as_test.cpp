@@ -39,6 +39,10 @@ TEST_CASE("number_as: no value, decimals and reals for an integer T") {
   CHECK(od::number_as<int>(od::decimal_number(15, 1)) == errc::not_representable);
   CHECK(od::number_as<std::uint8_t>(od::decimal_number(2560, 1)) == errc::overflow);
   CHECK(od::number_as<std::uint8_t>(od::decimal_number(-10, 1)) == errc::overflow);
+  CHECK(od::number_as<std::int64_t>(od::decimal_number(1000000000000000000, 18)).value() == 1);
+  CHECK(od::number_as<std::int64_t>(od::decimal_number(0, 200)).value() == 0);
+  CHECK(od::number_as<std::int64_t>(od::decimal_number(1, 30)) == errc::not_representable);
+  CHECK(od::number_as<std::int64_t>(od::decimal_number(-1000, 2)).value() == -10);
   // a real is never an integer's value
   CHECK(od::number_as<int>(od::real_number(3.0)) == errc::not_representable);
 }

@@ -471,10 +471,15 @@ template <value_type T>
       x = {false, v.bits};
     } else if (v.kind == number_kind::signed_) {
       x = detail::from_int64(static_cast<std::int64_t>(v.bits));
-    } else { // decimal: an integer only
-      auto i = v.to_int64();
-      if (!i) return i.error();
-      x = detail::from_int64(i.value());
+    } else { // a decimal: an integer only. Its digits are divided off here: number::to_int64
+             // and to_fixed would link the conversion of reals or the powers of ten into every
+             // decode<integer> (+1.4 kB on a Cortex-M), the loop costs 64 bytes.
+      auto m = static_cast<std::int64_t>(v.bits);
+      for (unsigned p = v.places; p > 0U && m != 0; --p) {
+        if (m % 10 != 0) return errc::not_representable;
+        m /= 10;
+      }
+      x = detail::from_int64(m);
     }
     if (x.negative) {
       if constexpr (std::is_signed_v<T>) {
