@@ -59,6 +59,28 @@ private:
   Store *s_;
 };
 
+/// A store over `Store` that offers the address interface and positions
+/// (sdo::positioned_store) but does not show where values live (not sdo::plain_store): a
+/// user-written store with positions, which engines serve by read_at / write_at.
+template <class Store>
+class positions_only_store : public address_only_store<Store> {
+public:
+  explicit positions_only_store(Store &s) : address_only_store<Store>(s), p_(&s) {}
+  [[nodiscard]] std::size_t position(od::address a) const { return p_->position(a); }
+  [[nodiscard]] od::address address_at(std::size_t at) const { return p_->address_at(at); }
+  [[nodiscard]] abort_code read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
+                                   std::size_t &total) const {
+    return p_->read_at(at, offset, out, total);
+  }
+  [[nodiscard]] abort_code write_at(std::size_t at, std::size_t offset,
+                                    std::span<const std::uint8_t> part, bool last) {
+    return p_->write_at(at, offset, part, last);
+  }
+
+private:
+  Store *p_;
+};
+
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
 constexpr od::number I(std::int64_t v) {
   return {od::number_kind::signed_, 0, static_cast<std::uint64_t>(v)};

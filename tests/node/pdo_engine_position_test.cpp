@@ -30,6 +30,7 @@ namespace co = fieldcodec::canopen;
 namespace node = fieldcodec::canopen::node;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
+namespace pdo = fieldcodec::canopen::pdo;
 using sdo::abort_code;
 
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
@@ -149,6 +150,8 @@ struct refuse_42 {
   }
 };
 using store_type = sdo::dictionary_store<refuse_42>;
+/// A store without a write hook: RPDO objects that take any bits are copied, not written.
+using plain_type = sdo::dictionary_store<>;
 
 /// A user-written store that models only the address interface: the engine must use it by
 /// address.
@@ -157,13 +160,19 @@ using address_only = test_node::address_only_store<store_type>;
 static_assert(sdo::positioned_store<store_type>);
 static_assert(sdo::positioned_store<sdo::dictionary_store<>>);
 static_assert(sdo::object_store<address_only> && !sdo::positioned_store<address_only>);
+static_assert(sdo::plain_store<store_type> && sdo::plain_store<plain_type>);
+static_assert(sdo::positioned_store<test_node::positions_only_store<store_type>> &&
+              !sdo::plain_store<test_node::positions_only_store<store_type>>);
 
 using fast_engine = node::pdo_engine<store_type, 2, 2, 8>;
 using address_engine = node::pdo_engine<address_only, 2, 2, 8>;
-static_assert(fast_engine::by_position);
-static_assert(!address_engine::by_position);
-// node::device hands its store's positions on to its engine
+using position_engine = node::pdo_engine<test_node::positions_only_store<store_type>, 2, 2, 8>;
+static_assert(fast_engine::by_position && fast_engine::by_copy);
+static_assert(position_engine::by_position && !position_engine::by_copy);
+static_assert(!address_engine::by_position && !address_engine::by_copy);
+// node::device hands its store's positions on to its engine, and its plain values (read only)
 static_assert(node::device<store_type>::pdo_type::by_position);
+static_assert(node::device<store_type>::pdo_type::by_copy);
 
 struct rng : fieldcodec::test::xorshift {
   using xorshift::xorshift;
@@ -176,20 +185,32 @@ std::array<std::uint8_t, 4> le32(std::uint32_t v) {
           static_cast<std::uint8_t>(v >> 16U), static_cast<std::uint8_t>(v >> 24U)};
 }
 
-/// One store and one engine over it: the engine by position (Fast) or by address.
-template <bool Fast>
+/// How an engine reaches the mapped objects: compiled copies (the store itself, a plain_store),
+/// by position (a store that offers positions only), by address (a store without positions:
+/// the engine's code before round 4, the reference).
+enum class path { copy, position, address };
+
+/// One store and one engine over it, reaching the store by path P; the store's write hook Hook.
+template <path P, class Hook = refuse_42>
 struct side {
+  using store_t = sdo::dictionary_store<Hook>;
+  using view_t = std::conditional_t<P == path::address, test_node::address_only_store<store_t>,
+                                    test_node::positions_only_store<store_t>>;
+  using engine_t = node::pdo_engine<std::conditional_t<P == path::copy, store_t, view_t>, 2, 2, 8>;
+  static_assert(engine_t::by_copy == (P == path::copy));
+  static_assert(engine_t::by_position == (P != path::address));
+
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout.storage_size());
-  store_type store{dict, layout, storage};
-  address_only view{store};
-  std::conditional_t<Fast, fast_engine, address_engine> engine = make();
+  store_t store{dict, layout, storage};
+  view_t view{store};
+  engine_t engine = make();
 
   side() { REQUIRE(store.init_defaults(1).has_value()); }
-  auto make() {
-    if constexpr (Fast) {
-      return fast_engine(store, dict);
+  engine_t make() {
+    if constexpr (P == path::copy) {
+      return engine_t(store, dict);
     } else {
-      return address_engine(view, dict);
+      return engine_t(view, dict);
     }
   }
   /// A parameter write the way node::device makes it: check, store, follow.
@@ -201,41 +222,85 @@ struct side {
   }
 };
 
+/// The three engines over three stores that start alike.
+template <class Hook>
+struct trio {
+  side<path::copy, Hook> c;
+  side<path::position, Hook> p;
+  side<path::address, Hook> a;
+};
+
 /// What the random runs exercised (checked at the end: the inputs must keep reaching every path).
 struct coverage {
-  std::size_t frames = 0;    ///< TPDOs sent
-  std::size_t received = 0;  ///< RPDOs written with every object taken
-  std::size_t refused = 0;   ///< RPDOs with objects the store refused
-  std::size_t too_short = 0; ///< RPDOs shorter than their mapping
-  std::size_t remapped = 0;  ///< mappings of one entry or more taken while running
-  std::size_t off_byte = 0;  ///< PDOs served with an entry off byte boundaries
+  std::size_t frames = 0;      ///< TPDOs sent
+  std::size_t received = 0;    ///< RPDOs written with every object taken
+  std::size_t refused = 0;     ///< RPDOs with objects the store refused
+  std::size_t too_short = 0;   ///< RPDOs shorter than their mapping
+  std::size_t remapped = 0;    ///< mappings of one entry or more taken while running
+  std::size_t off_byte = 0;    ///< PDOs served with an entry off byte boundaries
+  std::size_t tx_copied = 0;   ///< entries of sent TPDOs the compiled engine copied
+  std::size_t rx_copied = 0;   ///< entries of received RPDOs the compiled engine copied
+  std::size_t tx_object = 0;   ///< entries of sent TPDOs read by position
+  std::size_t rx_object = 0;   ///< entries of received RPDOs written by position
+  std::size_t mixed = 0;       ///< PDOs served with copies and per-object entries together
+  std::size_t merged = 0;      ///< PDOs served with adjacent copies merged into one
+  std::size_t sent_copied = 0; ///< TPDOs sent whose every entry was copied
 };
 coverage seen;
 
-/// Both engines did the same: frames, step state and deadline, events, stored bytes.
-void compare(const auto &f, const auto &a, const side<true> &fast, const side<false> &ref) {
-  seen.frames += f.send.size();
-  for (const auto &ev : fast.engine.events()) {
-    if (ev.what == node::pdo_event::kind::received)
+void count_plan(const auto &engine, pdo::direction d, std::size_t k, std::size_t &copied,
+                std::size_t &object) {
+  const auto plan = engine.compiled_plan(d, k);
+  copied += plan.copied;
+  object += plan.per_object;
+  if (plan.copied != 0U && plan.per_object != 0U) ++seen.mixed;
+  if (plan.runs < plan.copied) ++seen.merged;
+}
+
+/// The engines did the same: frames, step state and deadline, events, stored bytes.
+template <class Hook>
+void compare(const auto &sc, const auto &sp, const auto &sa, const trio<Hook> &t,
+             std::uint32_t now) {
+  const auto &e = t.c.engine;
+  seen.frames += sc.send.size();
+  for (const auto &f : sc.send) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      if (e.tpdo(k).valid() && e.tpdo(k).id() == f.id) {
+        count_plan(e, pdo::direction::tpdo, k, seen.tx_copied, seen.tx_object);
+        const auto plan = e.compiled_plan(pdo::direction::tpdo, k);
+        if (plan.per_object == 0U && plan.copied != 0U) ++seen.sent_copied;
+      }
+    }
+  }
+  for (const auto &ev : e.events()) {
+    if (ev.what == node::pdo_event::kind::received) {
       ++(ev.refused == 0U ? seen.received : seen.refused);
+      count_plan(e, pdo::direction::rpdo, ev.number - 1U, seen.rx_copied, seen.rx_object);
+    }
     if (ev.what == node::pdo_event::kind::too_short) ++seen.too_short;
   }
   for (std::size_t k = 0; k < 2; ++k) {
-    for (const auto *c : {&fast.engine.rpdo(k), &fast.engine.tpdo(k)}) {
+    for (const auto *c : {&e.rpdo(k), &e.tpdo(k)}) {
       std::size_t bits = 0;
       for (const auto &m : c->entries()) bits += m.bits;
-      if (c->valid() && bits % 8U != 0U && !f.send.empty()) ++seen.off_byte;
+      if (c->valid() && bits % 8U != 0U && !sc.send.empty()) ++seen.off_byte;
     }
   }
-  REQUIRE(f.send.size() == a.send.size());
-  for (std::size_t i = 0; i < f.send.size(); ++i) CHECK(f.send[i] == a.send[i]);
-  CHECK(f.state == a.state);
-  CHECK(f.deadline == a.deadline);
-  const auto fe = fast.engine.events();
-  const auto re = ref.engine.events();
-  REQUIRE(fe.size() == re.size());
-  for (std::size_t i = 0; i < fe.size(); ++i) CHECK(fe[i] == re[i]);
-  CHECK(fast.storage == ref.storage);
+  // the step's deadline is the engine's (a step need not scan for it when nothing is timed)
+  CHECK(sc.deadline == e.deadline(now));
+  for (const auto *other : {&sp, &sa}) {
+    REQUIRE(sc.send.size() == other->send.size());
+    for (std::size_t i = 0; i < sc.send.size(); ++i) CHECK(sc.send[i] == other->send[i]);
+    CHECK(sc.state == other->state);
+    CHECK(sc.deadline == other->deadline);
+  }
+  const auto ce = e.events();
+  for (const auto ref : {t.p.engine.events(), t.a.engine.events()}) {
+    REQUIRE(ce.size() == ref.size());
+    for (std::size_t i = 0; i < ce.size(); ++i) CHECK(ce[i] == ref[i]);
+  }
+  CHECK(t.c.storage == t.p.storage);
+  CHECK(t.c.storage == t.a.storage);
 }
 
 /// A random mapping entry: mostly valid ones, some of a wrong length, unknown or not mappable
@@ -257,31 +322,32 @@ std::uint32_t random_entry(rng &r) {
   return (index << 16U) | bits;
 }
 
-template <class F>
-void both(side<true> &fast, side<false> &ref, F f) {
-  const auto a = f(fast);
-  const auto b = f(ref);
-  CHECK(a == b);
+/// f on each side; every side answers the same.
+template <class Hook, class F>
+void all(trio<Hook> &t, F f) {
+  const auto a = f(t.c);
+  CHECK(a == f(t.p));
+  CHECK(a == f(t.a));
 }
 
 /// Remap PDO `k` (0, 1) of direction `rx` in the CiA 301 sequence (with random deviations) on
-/// both sides, comparing every answer.
-void remap(rng &r, side<true> &fast, side<false> &ref, bool rx, std::uint16_t k,
-           std::uint32_t now) {
+/// every side, comparing every answer.
+template <class Hook>
+void remap(rng &r, trio<Hook> &t, bool rx, std::uint16_t k, std::uint32_t now) {
   const auto comm = static_cast<std::uint16_t>((rx ? 0x1400U : 0x1800U) + k);
   const auto map = static_cast<std::uint16_t>((rx ? 0x1600U : 0x1A00U) + k);
   const std::uint32_t id = (rx ? 0x201U : 0x181U) + k;
   auto w = [&](od::address a, std::uint32_t v, std::size_t len) {
     const auto b = le32(v);
     const auto s = std::span<const std::uint8_t>(b).first(len);
-    both(fast, ref, [&](auto &side) { return side.param(a, s, now); });
+    all(t, [&](auto &side) { return side.param(a, s, now); });
   };
   if (!r.one_in(10)) w({comm, 1}, id | 0x8000'0000U, 4);
   if (!r.one_in(10)) w({map, 0}, 0, 1);
   const std::uint32_t n = r.below(9);
   for (std::uint32_t s = 1; s <= n; ++s) w({map, static_cast<std::uint8_t>(s)}, random_entry(r), 4);
   w({map, 0}, r.one_in(10) ? r.below(10) : n, 1);
-  const auto &c = rx ? fast.engine.rpdo(k) : fast.engine.tpdo(k);
+  const auto &c = rx ? t.c.engine.rpdo(k) : t.c.engine.tpdo(k);
   if (c.count != 0U) ++seen.remapped;
   if (r.one_in(3)) {
     std::uint32_t type = 0;
@@ -303,7 +369,8 @@ void remap(rng &r, side<true> &fast, side<false> &ref, bool rx, std::uint16_t k,
 
 /// Random application values into the objects a TPDO may map (set, like the application), and
 /// mark them.
-void set_values(rng &r, side<true> &fast, side<false> &ref) {
+template <class Hook>
+void set_values(rng &r, trio<Hook> &t) {
   for (std::uint16_t index = 0x2000; index <= 0x2010; ++index) {
     if (!r.one_in(3)) continue;
     const od::entry *e = dict.find(index, 0);
@@ -313,31 +380,34 @@ void set_values(rng &r, side<true> &fast, side<false> &ref) {
     if (e->type == data_type::boolean) v[0] = static_cast<std::uint8_t>(v[0] & 1U);
     const std::size_t n = od::is_byte_string(e->type) ? r.below(e->size + 1U) : e->width();
     const auto s = std::span<const std::uint8_t>(v).first(n);
-    both(fast, ref, [&](auto &side) { return side.store.set({index, 0}, s); });
-    fast.engine.mark({index, 0});
-    ref.engine.mark({index, 0});
+    all(t, [&](auto &side) { return side.store.set({index, 0}, s); });
+    all(t, [&](auto &side) {
+      side.engine.mark({index, 0});
+      return 0;
+    });
   }
 }
 
+template <class Hook>
 void run(std::uint64_t seed, std::size_t steps) {
   rng r{seed};
-  side<true> fast;
-  side<false> ref;
-  both(fast, ref, [](auto &side) { return side.engine.reload(); });
+  trio<Hook> t;
+  all(t, [](auto &side) { return side.engine.reload(); });
   std::uint32_t now = 0;
   for (std::size_t i = 0; i < steps; ++i) {
     now += r.below(4);
     const std::uint32_t op = r.below(100);
     if (op < 12) {
-      remap(r, fast, ref, r.one_in(2), static_cast<std::uint16_t>(r.below(2)), now);
+      remap(r, t, r.one_in(2), static_cast<std::uint16_t>(r.below(2)), now);
     } else if (op < 30) {
-      set_values(r, fast, ref);
+      set_values(r, t);
     } else if (op < 50) {
       std::optional<std::uint8_t> counter;
       if (r.one_in(2)) counter = static_cast<std::uint8_t>(1U + r.below(4));
-      const auto a = fast.engine.on_sync(counter, now);
-      const auto b = ref.engine.on_sync(counter, now);
-      compare(a, b, fast, ref);
+      const auto sc = t.c.engine.on_sync(counter, now);
+      const auto sp = t.p.engine.on_sync(counter, now);
+      const auto sa = t.a.engine.on_sync(counter, now);
+      compare(sc, sp, sa, t, now);
     } else if (op < 80) {
       co::can_frame f;
       f.id = static_cast<std::uint16_t>(r.one_in(10) ? r.below(0x800) : 0x201U + r.below(2));
@@ -345,57 +415,81 @@ void run(std::uint64_t seed, std::size_t steps) {
       for (std::size_t k = 0; k < f.dlc; ++k) f.data[k] = static_cast<std::uint8_t>(r.next());
       if (r.one_in(8)) f.data[0] = 0x42; // the hook refuses 2001h = 0x..42
       const bool window = !r.one_in(8);
-      const auto a = fast.engine.on_frame(f, now, window);
-      const auto b = ref.engine.on_frame(f, now, window);
-      compare(a, b, fast, ref);
+      const auto sc = t.c.engine.on_frame(f, now, window);
+      const auto sp = t.p.engine.on_frame(f, now, window);
+      const auto sa = t.a.engine.on_frame(f, now, window);
+      compare(sc, sp, sa, t, now);
     } else if (op < 86) {
       co::can_frame f;
       f.id = static_cast<std::uint16_t>(0x181U + r.below(2));
       f.rtr = true;
-      const auto a = fast.engine.on_frame(f, now);
-      const auto b = ref.engine.on_frame(f, now);
-      compare(a, b, fast, ref);
+      const auto sc = t.c.engine.on_frame(f, now);
+      const auto sp = t.p.engine.on_frame(f, now);
+      const auto sa = t.a.engine.on_frame(f, now);
+      compare(sc, sp, sa, t, now);
     } else if (op < 96) {
-      const auto a = fast.engine.poll(now);
-      const auto b = ref.engine.poll(now);
-      compare(a, b, fast, ref);
+      const auto sc = t.c.engine.poll(now);
+      const auto sp = t.p.engine.poll(now);
+      const auto sa = t.a.engine.poll(now);
+      compare(sc, sp, sa, t, now);
     } else if (op < 98) {
       const bool on = !r.one_in(4);
-      fast.engine.set_operational(on, now);
-      ref.engine.set_operational(on, now);
+      all(t, [&](auto &side) {
+        side.engine.set_operational(on, now);
+        return 0;
+      });
     } else {
-      both(fast, ref, [](auto &side) { return side.engine.reload(); });
+      all(t, [](auto &side) { return side.engine.reload(); });
     }
-    CHECK(fast.storage == ref.storage);
+    CHECK(t.c.storage == t.p.storage);
+    CHECK(t.c.storage == t.a.storage);
     for (std::size_t k = 0; k < 2; ++k) {
-      CHECK(fast.engine.rpdo(k).count == ref.engine.rpdo(k).count);
-      CHECK(fast.engine.tpdo(k).count == ref.engine.tpdo(k).count);
-      CHECK(fast.engine.rpdo(k).valid() == ref.engine.rpdo(k).valid());
-      CHECK(fast.engine.tpdo(k).valid() == ref.engine.tpdo(k).valid());
+      for (const auto *o : {&t.p.engine.rpdo(k), &t.a.engine.rpdo(k)}) {
+        CHECK(t.c.engine.rpdo(k).count == o->count);
+        CHECK(t.c.engine.rpdo(k).valid() == o->valid());
+      }
+      for (const auto *o : {&t.p.engine.tpdo(k), &t.a.engine.tpdo(k)}) {
+        CHECK(t.c.engine.tpdo(k).count == o->count);
+        CHECK(t.c.engine.tpdo(k).valid() == o->valid());
+      }
     }
   }
 }
 
 } // namespace
 
-TEST_CASE("pdo engine by position == by address: random mappings, remaps, values, traffic") {
-  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+TEST_CASE("pdo engine compiled == by position == by address: random mappings, remaps, values, "
+          "traffic") {
+  // with the write hook (RPDO objects by position, TPDO objects copied) and without (RPDO
+  // objects that take any bits copied too)
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     CAPTURE(seed);
-    run(seed * 0x9E3779B97F4A7C15ULL, 1500);
+    run<refuse_42>(seed * 0x9E3779B97F4A7C15ULL, 1500);
+    run<sdo::accept_writes>(seed * 0xD1B54A32D192ED03ULL, 1500);
   }
   MESSAGE("frames ", seen.frames, ", received ", seen.received, ", with refusals ", seen.refused,
           ", too short ", seen.too_short, ", remapped ", seen.remapped, ", off byte boundaries ",
-          seen.off_byte);
+          seen.off_byte, "; entries copied / by position: TPDO ", seen.tx_copied, " / ",
+          seen.tx_object, ", RPDO ", seen.rx_copied, " / ", seen.rx_object, "; mixed PDOs ",
+          seen.mixed, ", merged copies ", seen.merged, ", TPDOs all copied ", seen.sent_copied);
   CHECK(seen.frames > 1000U);
   CHECK(seen.received > 1000U);
   CHECK(seen.refused > 100U);
   CHECK(seen.too_short > 100U);
   CHECK(seen.remapped > 200U);
   CHECK(seen.off_byte > 100U);
+  CHECK(seen.tx_copied > 1000U);
+  CHECK(seen.rx_copied > 1000U);
+  CHECK(seen.tx_object > 500U);
+  CHECK(seen.rx_object > 500U);
+  CHECK(seen.mixed > 500U);
+  CHECK(seen.merged > 100U);
+  CHECK(seen.sent_copied > 100U);
 }
 
-TEST_CASE("pdo engine by position: remapping while operational uses the new mapping") {
-  side<true> s;
+TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the new mapping", Hook,
+                   refuse_42, sdo::accept_writes) {
+  side<path::copy, Hook> s;
   REQUIRE(s.engine.reload().has_value());
   s.engine.set_operational(true, 0);
   // TPDO 1 (type 1): BOOLEAN 1 bit, 2003h i8, 2005h i32
@@ -406,6 +500,13 @@ TEST_CASE("pdo engine by position: remapping while operational uses the new mapp
   REQUIRE(st.send.size() == 1);
   CHECK(st.send[0].dlc == 6);
   CHECK(st.send[0].data[0] == 0x22); // 0x11 << 1: the entries after the BOOLEAN are off by a bit
+  using plan = typename std::remove_cvref_t<decltype(s.engine)>::plan;
+  constexpr bool plain_rx = std::is_same_v<Hook, sdo::accept_writes>; // no hook to ask
+  // the BOOLEAN of 1 bit and the two entries it puts off byte boundaries: by position
+  CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{0, 0, 3});
+  // RPDO 1: 2001h u16 and 2002h u32, adjacent in storage and frame: one copy of 6 bytes
+  CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) ==
+        (plain_rx ? plan{2, 1, 0} : plan{0, 0, 2}));
   // remap it to 2000h u8, then 2003h i8: every SYNC after the write of sub 0 sends the new data
   const auto w = [&](od::address a, std::uint32_t v, std::size_t len) {
     const auto b = le32(v);
@@ -421,6 +522,14 @@ TEST_CASE("pdo engine by position: remapping while operational uses the new mapp
   st = s.engine.on_sync(std::nullopt, 3);
   REQUIRE(st.send.size() == 1);
   CHECK(st.send[0] == co::can_frame{0x181, false, 2, {0x77, 0x11}});
+  CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{2, 2, 0});
+  // a new value of a copied object is in the next TPDO
+  REQUIRE(s.store.set({0x2003, 0}, std::array<std::uint8_t, 1>{0x99}) == abort_code::none);
+  REQUIRE(s.store.write({0x2000, 0}, 0, std::array<std::uint8_t, 1>{0x55}, true) ==
+          abort_code::none); // as an SDO download does
+  st = s.engine.on_sync(std::nullopt, 3);
+  REQUIRE(st.send.size() == 1);
+  CHECK(st.send[0] == co::can_frame{0x181, false, 2, {0x55, 0x99}});
   // the RPDO 1 (2001h u16, 2002h u32) remapped to 2002h u32, 2001h u16 while operational
   co::can_frame in{0x201, false, 6, {1, 0, 2, 0, 0, 0}};
   (void)s.engine.on_frame(in, 4);
@@ -432,6 +541,9 @@ TEST_CASE("pdo engine by position: remapping while operational uses the new mapp
   REQUIRE(w({0x1600, 2}, 0x2001'0010U, 4) == abort_code::none);
   REQUIRE(w({0x1600, 0}, 2, 1) == abort_code::none);
   REQUIRE(w({0x1400, 1}, 0x201U, 4) == abort_code::none);
+  // in the other order neither storage nor frame bytes are adjacent: two copies
+  CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) ==
+        (plain_rx ? plan{2, 2, 0} : plan{0, 0, 2}));
   in = co::can_frame{0x201, false, 6, {5, 0, 0, 0, 6, 0}};
   (void)s.engine.on_frame(in, 5);
   CHECK(s.store.value({0x2002, 0}).value()[0] == 5);

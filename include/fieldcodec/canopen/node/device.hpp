@@ -197,6 +197,20 @@ public:
              bool last) noexcept requires sdo::positioned_store<Store> {
       return d_->write_object(d_->store_->address_at(at), offset, part, last, at);
     }
+    // plain values (the PDO engine then copies a TPDO's plain objects from the store's bytes):
+    // reads as the store shows them; never writable, since every write of the device, an
+    // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
+    // would skip
+    [[nodiscard]] constexpr std::span<std::uint8_t>
+    plain_storage() noexcept requires sdo::plain_store<Store> {
+      return d_->store_->plain_storage();
+    }
+    [[nodiscard]] constexpr sdo::plain_slot
+    plain_at(std::size_t at) const noexcept requires sdo::plain_store<Store> {
+      sdo::plain_slot p = d_->store_->plain_at(at);
+      p.writable = false;
+      return p;
+    }
 
   private:
     device *d_;

@@ -57,6 +57,7 @@
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -152,6 +153,22 @@ public:
   /// sdo::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
   /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
   static constexpr bool by_position = sdo::positioned_store<Store>;
+  /// Whether the engine compiles each mapping into copies (the store models sdo::plain_store):
+  /// when a mapping is loaded, every entry whose object the store keeps plain (plain_at:
+  /// readable for a TPDO, writable for an RPDO) on whole bytes becomes a copy between the
+  /// store's bytes and the frame's, adjacent ones merged into one; the others (1-bit BOOLEANs
+  /// and entries after them off byte boundaries, limits or a scale to check, a write hook,
+  /// byte strings, objects the store lacks) keep read_at / write_at, in mapping order.
+  static constexpr bool by_copy = sdo::plain_store<Store>;
+
+  /// How a PDO's mapping was compiled (by_copy): `copied` entries in `runs` copies, the other
+  /// `per_object` entries by read_at / write_at (dummies are neither).
+  struct plan {
+    std::uint8_t copied = 0;
+    std::uint8_t runs = 0;
+    std::uint8_t per_object = 0;
+    friend constexpr bool operator==(const plan &, const plan &) = default;
+  };
 
   /// An engine over `store` (borrowed; its reads give the TPDO data, its writes take the RPDO
   /// data and must reach the store the application reads) and `dict` (the dictionary the
@@ -413,6 +430,26 @@ public:
   [[nodiscard]] constexpr std::size_t tpdo_count() const noexcept { return tpdo_count_; }
   [[nodiscard]] constexpr const config &rpdo(std::size_t i) const noexcept { return rpdo_[i].c; }
   [[nodiscard]] constexpr const config &tpdo(std::size_t i) const noexcept { return tpdo_[i].c; }
+  /// How RPDO / TPDO `i`'s current mapping is served (by_copy engines).
+  [[nodiscard]] constexpr plan compiled_plan(pdo::direction d,
+                                             std::size_t i) const noexcept requires by_copy {
+    const resolved &p = d == pdo::direction::rpdo ? rpdo_[i].pos : tpdo_[i].pos;
+    plan n;
+    for (std::size_t k = 0; k < p.steps; ++k) {
+      if (p.step[k].size == 0U) {
+        ++n.per_object;
+        continue;
+      }
+      ++n.runs;
+    }
+    const config &c = d == pdo::direction::rpdo ? rpdo_[i].c : tpdo_[i].c;
+    std::uint8_t dummies = 0;
+    for (const auto &m : c.entries()) {
+      if (m.is_dummy()) ++dummies;
+    }
+    n.copied = static_cast<std::uint8_t>(c.count - dummies - n.per_object);
+    return n;
+  }
   /// An RPDO's last frame was too short / too long; an RPDO's deadline passed.
   [[nodiscard]] constexpr bool any_too_short() const noexcept {
     return any([](const rx_slot &r) { return r.short_error; });
@@ -443,7 +480,22 @@ private:
   /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
   /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
   /// load_mapping, the only place that changes a mapping, so it never goes stale.
-  struct resolved {
+  /// One step of a compiled mapping (by_copy): `size` bytes copied between the store's
+  /// plain_storage() at `storage` and the frame from bit `bit` (a byte boundary), or, size 0,
+  /// mapping entry `entry` (at bit `bit`) read or written by position.
+  struct step_op {
+    std::uint32_t storage = 0;
+    std::uint8_t bit = 0;
+    std::uint8_t entry = 0;
+    std::uint8_t size = 0;
+  };
+  struct no_steps {};
+  /// The steps of a mapping, in mapping order (by_copy; compile() sets them with the positions).
+  struct compiled {
+    std::array<step_op, MaxEntries> step{};
+    std::size_t steps = 0;
+  };
+  struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
     std::array<std::size_t, MaxEntries> at{};
     bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
   };
@@ -595,6 +647,7 @@ private:
   [[nodiscard]] constexpr bool load(config &c, positions &at, std::uint16_t comm,
                                     std::uint16_t number, pdo::direction d) noexcept {
     c = config{};
+    at = positions{}; // a PDO found unusable below keeps no steps of an earlier mapping
     c.number = number;
     c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
     c.type = static_cast<std::uint8_t>(read_u32(*store_, {comm, 2}).value_or(255U));
@@ -618,6 +671,9 @@ private:
         d == pdo::direction::rpdo ? pdo_index::rpdo_map : pdo_index::tpdo_map;
     const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
     c.bytes = 0;
+    if constexpr (by_copy) {
+      at.steps = 0; // the steps always describe c.map[0..count): none until it is checked
+    }
     if (c.count > MaxEntries || c.count > c.map_subs) {
       c.count = 0;
       return false;
@@ -643,17 +699,49 @@ private:
         at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
         if (m.bits % 8U != 0U) at.whole_bytes = false;
       }
+      if constexpr (by_copy) compile(c, at, d);
     } else {
       (void)at;
     }
     return true;
   }
 
+  /// Compile a checked mapping into steps (by_copy): a copy for each entry the store keeps
+  /// plain for this direction on whole bytes, merged with the step before it when both the
+  /// store's bytes and the frame's are adjacent; a per-object step for the others. Dummies get
+  /// none (a TPDO's data starts zeroed, an RPDO skips them).
+  constexpr void compile(const config &c, resolved &at, pdo::direction d) noexcept {
+    at.steps = 0;
+    std::size_t bit = 0;
+    for (std::size_t k = 0; k < c.count; ++k) {
+      const pdo::mapping_entry &m = c.map[k];
+      if (!m.is_dummy()) {
+        sdo::plain_slot s{};
+        if (at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
+          s = store_->plain_at(at.at[k]);
+        }
+        const bool plain = s.size != 0U && s.size * 8U == m.bits &&
+                           (d == pdo::direction::rpdo ? s.writable : s.readable);
+        step_op &last = at.step[at.steps == 0U ? 0U : at.steps - 1U];
+        if (plain && at.steps != 0U && last.size != 0U && last.storage + last.size == s.offset &&
+            last.bit / 8U + last.size == bit / 8U) {
+          last.size = static_cast<std::uint8_t>(last.size + s.size);
+        } else {
+          at.step[at.steps++] = {plain ? s.offset : 0U, static_cast<std::uint8_t>(bit),
+                                 static_cast<std::uint8_t>(k), plain ? s.size : std::uint8_t{0}};
+        }
+      }
+      bit += m.bits;
+    }
+  }
+
   // ----- data ------------------------------------------------------------------------------
 
   /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
   [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
-    if constexpr (by_position) {
+    if constexpr (by_copy) {
+      return build_by_copy(t);
+    } else if constexpr (by_position) {
       return build_at(t);
     } else {
       return build_by_address(t);
@@ -684,25 +772,54 @@ private:
     }
     std::size_t offset = 0;
     for (std::size_t k = 0; k < t.c.count; ++k) {
-      const pdo::mapping_entry &m = t.c.map[k];
-      if (!m.is_dummy()) {
-        if (p.at[k] == sdo::no_position) return false;
-        const std::size_t n = (m.bits + 7U) / 8U;
-        std::size_t total = 0;
-        if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
-          const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
-          if (store_->read_at(p.at[k], 0, out, total) != abort_code::none) return false;
-        } else {
-          std::array<std::uint8_t, 8> v{};
-          if (store_->read_at(p.at[k], 0, v, total) != abort_code::none) return false;
-          std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
-          if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
-          if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
-        }
-      }
-      offset += m.bits;
+      if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset)) return false;
+      offset += t.c.map[k].bits;
     }
     return true;
+  }
+  /// Read mapping entry k (not a dummy) of a TPDO by position into t.data from bit `offset`.
+  [[nodiscard]] constexpr bool read_entry(tx_slot &t, std::size_t k, std::size_t offset) noexcept {
+    const pdo::mapping_entry &m = t.c.map[k];
+    const std::size_t at = t.pos.at[k];
+    if (at == sdo::no_position) return false;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    std::size_t total = 0;
+    if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
+      const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
+      return store_->read_at(at, 0, out, total) == abort_code::none;
+    }
+    std::array<std::uint8_t, 8> v{};
+    if (store_->read_at(at, 0, v, total) != abort_code::none) return false;
+    std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+    if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+    return pdo::pack(t.data, offset, m.bits, raw).has_value();
+  }
+  /// build() by the compiled steps: copies from the store's bytes, the other entries by
+  /// position (in mapping order; the first that cannot be read stops the TPDO, as above).
+  [[nodiscard]] constexpr bool build_by_copy(tx_slot &t) noexcept {
+    t.data = {};
+    const std::uint8_t *from = store_->plain_storage().data();
+    for (std::size_t i = 0; i < t.pos.steps; ++i) {
+      const step_op &s = t.pos.step[i];
+      if (s.size != 0U) {
+        copy_run(t.data.data() + s.bit / 8U, from + s.storage, s.size);
+      } else if (!read_entry(t, s.entry, s.bit)) {
+        return false;
+      }
+    }
+    return true;
+  }
+  /// Copy n (1..8) bytes; the widths of numbers as constant-length copies, which the compiler
+  /// makes one load and one store.
+  static constexpr void copy_run(std::uint8_t *to, const std::uint8_t *from,
+                                 std::size_t n) noexcept {
+    switch (n) {
+    case 1: to[0] = from[0]; return;
+    case 2: std::copy_n(from, 2, to); return;
+    case 4: std::copy_n(from, 4, to); return;
+    case 8: std::copy_n(from, 8, to); return;
+    default: std::copy_n(from, n, to); return;
+    }
   }
   /// build() through the store's read by address (a store without positions).
   [[nodiscard]] constexpr bool build_by_address(tx_slot &t) noexcept {
@@ -746,7 +863,9 @@ private:
 
   /// Write an RPDO's data (at least c.bytes long) into the mapped objects.
   constexpr void apply(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
-    if constexpr (by_position) {
+    if constexpr (by_copy) {
+      apply_by_copy(r, data);
+    } else if constexpr (by_position) {
       apply_at(r, data);
     } else {
       apply_by_address(r.c, data);
@@ -757,30 +876,49 @@ private:
   /// that passed pdo::check_mapping has bits = 8 × width for fixed-size types, 1 or 8 for a
   /// BOOLEAN (width 1) and whole bytes for byte strings.
   constexpr void apply_at(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
-    const resolved &p = r.pos;
     std::size_t offset = 0;
     std::uint8_t refused = 0;
     for (std::size_t k = 0; k < r.c.count; ++k) {
-      const pdo::mapping_entry &m = r.c.map[k];
-      if (!m.is_dummy()) {
-        const std::size_t n = (m.bits + 7U) / 8U;
-        abort_code c = abort_code::general_error;
-        if (p.at[k] == sdo::no_position) {
-          // the store has no such object: refused, as its write would refuse it
-        } else if ((p.whole_bytes || ((offset | m.bits) % 8U) == 0U) &&
-                   offset / 8U + n <= data.size()) {
-          c = store_->write_at(p.at[k], 0, data.subspan(offset / 8U, n), true);
-        } else {
-          std::array<std::uint8_t, 8> v{};
-          const auto raw = pdo::unpack(data, offset, m.bits);
-          if (raw && store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
-                                    byte_order::little)) {
-            c = store_->write_at(p.at[k], 0, std::span<const std::uint8_t>(v).first(n), true);
-          }
-        }
-        if (c != abort_code::none) ++refused;
+      if (!r.c.map[k].is_dummy() && write_entry(r, k, offset, data) != abort_code::none) {
+        ++refused;
       }
-      offset += m.bits;
+      offset += r.c.map[k].bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+  }
+  /// Write mapping entry k (not a dummy) of an RPDO by position from bit `offset` of `data`.
+  [[nodiscard]] constexpr abort_code write_entry(const rx_slot &r, std::size_t k,
+                                                 std::size_t offset,
+                                                 std::span<const std::uint8_t> data) noexcept {
+    const pdo::mapping_entry &m = r.c.map[k];
+    const std::size_t at = r.pos.at[k];
+    // the store has no such object: refused, as its write would refuse it
+    if (at == sdo::no_position) return abort_code::general_error;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
+      return store_->write_at(at, 0, data.subspan(offset / 8U, n), true);
+    }
+    std::array<std::uint8_t, 8> v{};
+    const auto raw = pdo::unpack(data, offset, m.bits);
+    if (!raw ||
+        !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(), byte_order::little)) {
+      return abort_code::general_error;
+    }
+    return store_->write_at(at, 0, std::span<const std::uint8_t>(v).first(n), true);
+  }
+  /// apply() by the compiled steps: copies into the store's bytes (objects that take every
+  /// value without a hook: nothing to refuse), the other entries by position, in mapping
+  /// order.
+  constexpr void apply_by_copy(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    std::uint8_t *to = store_->plain_storage().data();
+    std::uint8_t refused = 0;
+    for (std::size_t i = 0; i < r.pos.steps; ++i) {
+      const step_op &s = r.pos.step[i];
+      if (s.size != 0U) {
+        copy_run(to + s.storage, data.data() + s.bit / 8U, s.size);
+      } else if (write_entry(r, s.entry, s.bit, data) != abort_code::none) {
+        ++refused;
+      }
     }
     events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
   }
