@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -243,18 +244,37 @@ struct coverage {
   std::size_t tx_object = 0;   ///< entries of sent TPDOs read by position
   std::size_t rx_object = 0;   ///< entries of received RPDOs written by position
   std::size_t mixed = 0;       ///< PDOs served with copies and per-object entries together
-  std::size_t merged = 0;      ///< PDOs served with adjacent copies merged into one
+  std::size_t merged = 0;      ///< PDOs served with adjacent plain entries (one run)
   std::size_t sent_copied = 0; ///< TPDOs sent whose every entry was copied
 };
 coverage seen;
 
-void count_plan(const auto &engine, pdo::direction d, std::size_t k, std::size_t &copied,
+/// Whether PDO k maps two plain entries one after the other, adjacent in the store's bytes:
+/// the engine copies them as one run (a model of compile(), for the coverage count only).
+bool has_run(const auto &side, pdo::direction d, std::size_t k) {
+  const auto &c = d == pdo::direction::rpdo ? side.engine.rpdo(k) : side.engine.tpdo(k);
+  std::size_t bit = 0;
+  std::optional<sdo::plain_slot> last;
+  for (const auto &m : c.entries()) {
+    const std::size_t at = side.store.position({m.index, m.sub});
+    const auto p = at == sdo::no_position ? sdo::plain_slot{} : side.store.plain_at(at);
+    const bool plain = !m.is_dummy() && bit % 8U == 0U && m.bits % 8U == 0U && p.size != 0U &&
+                       p.size * 8U == m.bits &&
+                       (d == pdo::direction::rpdo ? p.writable : p.readable);
+    if (plain && last && last->offset + last->size == p.offset) return true;
+    last = plain ? std::optional<sdo::plain_slot>(p) : std::nullopt;
+    bit += m.bits;
+  }
+  return false;
+}
+
+void count_plan(const auto &side, pdo::direction d, std::size_t k, std::size_t &copied,
                 std::size_t &object) {
-  const auto plan = engine.compiled_plan(d, k);
+  const auto plan = side.engine.compiled_plan(d, k);
   copied += plan.copied;
   object += plan.per_object;
   if (plan.copied != 0U && plan.per_object != 0U) ++seen.mixed;
-  if (plan.runs < plan.copied) ++seen.merged;
+  if (has_run(side, d, k)) ++seen.merged;
 }
 
 /// The engines did the same: frames, step state and deadline, events, stored bytes.
@@ -266,7 +286,7 @@ void compare(const auto &sc, const auto &sp, const auto &sa, const trio<Hook> &t
   for (const auto &f : sc.send) {
     for (std::size_t k = 0; k < 2; ++k) {
       if (e.tpdo(k).valid() && e.tpdo(k).id() == f.id) {
-        count_plan(e, pdo::direction::tpdo, k, seen.tx_copied, seen.tx_object);
+        count_plan(t.c, pdo::direction::tpdo, k, seen.tx_copied, seen.tx_object);
         const auto plan = e.compiled_plan(pdo::direction::tpdo, k);
         if (plan.per_object == 0U && plan.copied != 0U) ++seen.sent_copied;
       }
@@ -275,7 +295,7 @@ void compare(const auto &sc, const auto &sp, const auto &sa, const trio<Hook> &t
   for (const auto &ev : e.events()) {
     if (ev.what == node::pdo_event::kind::received) {
       ++(ev.refused == 0U ? seen.received : seen.refused);
-      count_plan(e, pdo::direction::rpdo, ev.number - 1U, seen.rx_copied, seen.rx_object);
+      count_plan(t.c, pdo::direction::rpdo, ev.number - 1U, seen.rx_copied, seen.rx_object);
     }
     if (ev.what == node::pdo_event::kind::too_short) ++seen.too_short;
   }
@@ -471,7 +491,8 @@ TEST_CASE("pdo engine compiled == by position == by address: random mappings, re
           ", too short ", seen.too_short, ", remapped ", seen.remapped, ", off byte boundaries ",
           seen.off_byte, "; entries copied / by position: TPDO ", seen.tx_copied, " / ",
           seen.tx_object, ", RPDO ", seen.rx_copied, " / ", seen.rx_object, "; mixed PDOs ",
-          seen.mixed, ", merged copies ", seen.merged, ", TPDOs all copied ", seen.sent_copied);
+          seen.mixed, ", with runs of adjacent entries ", seen.merged, ", TPDOs all copied ",
+          seen.sent_copied);
   CHECK(seen.frames > 1000U);
   CHECK(seen.received > 1000U);
   CHECK(seen.refused > 100U);
@@ -504,9 +525,10 @@ TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the ne
   constexpr bool plain_rx = std::is_same_v<Hook, sdo::accept_writes>; // no hook to ask
   // the BOOLEAN of 1 bit and the two entries it puts off byte boundaries: by position
   CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{0, 0, 3});
-  // RPDO 1: 2001h u16 and 2002h u32, adjacent in storage and frame: one copy of 6 bytes
+  // RPDO 1: 2001h u16 and 2002h u32, adjacent in storage and frame: a run of 6 bytes, copied
+  // as 4 + 2
   CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) ==
-        (plain_rx ? plan{2, 1, 0} : plan{0, 0, 2}));
+        (plain_rx ? plan{2, 2, 0} : plan{0, 0, 2}));
   // remap it to 2000h u8, then 2003h i8: every SYNC after the write of sub 0 sends the new data
   const auto w = [&](od::address a, std::uint32_t v, std::size_t len) {
     const auto b = le32(v);
@@ -541,7 +563,7 @@ TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the ne
   REQUIRE(w({0x1600, 2}, 0x2001'0010U, 4) == abort_code::none);
   REQUIRE(w({0x1600, 0}, 2, 1) == abort_code::none);
   REQUIRE(w({0x1400, 1}, 0x201U, 4) == abort_code::none);
-  // in the other order neither storage nor frame bytes are adjacent: two copies
+  // in the other order the storage is not in frame order: two runs, 4 and 2 bytes
   CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) ==
         (plain_rx ? plan{2, 2, 0} : plan{0, 0, 2}));
   in = co::can_frame{0x201, false, 6, {5, 0, 0, 0, 6, 0}};
@@ -593,4 +615,59 @@ TEST_CASE("pdo engine by position: an object the store lacks is refused / not se
     if (ev.what == node::pdo_event::kind::not_sent && ev.number == 2) not_sent = true;
   }
   CHECK(not_sent);
+}
+
+TEST_CASE("pdo engine compiled: adjacent objects are one copy, odd lengths are cut, an object "
+          "mapped twice into an RPDO is written entry by entry") {
+  side<path::copy, sdo::accept_writes> s;
+  using plan = decltype(s.engine)::plan;
+  REQUIRE(s.engine.reload().has_value());
+  s.engine.set_operational(true, 0);
+  const auto w = [&](od::address a, std::uint32_t v, std::size_t len) {
+    const auto b = le32(v);
+    return s.param(a, std::span<const std::uint8_t>(b).first(len), 1);
+  };
+  const auto map = [&](std::uint16_t comm, std::uint32_t id,
+                       std::initializer_list<std::uint32_t> entries) {
+    const auto m = static_cast<std::uint16_t>(comm + 0x200U);
+    REQUIRE(w({comm, 1}, id | 0x8000'0000U, 4) == abort_code::none);
+    REQUIRE(w({m, 0}, 0, 1) == abort_code::none);
+    std::uint8_t sub = 0;
+    for (const std::uint32_t e : entries) REQUIRE(w({m, ++sub}, e, 4) == abort_code::none);
+    REQUIRE(w({m, 0}, sub, 1) == abort_code::none);
+    REQUIRE(w({comm, 1}, id, 4) == abort_code::none);
+  };
+  // 2000h u8, 2001h u16, 2002h u32, 2003h i8 lie one after the other in the storage, as in the
+  // frame: one copy of 8 bytes
+  map(0x1800, 0x181, {0x2000'0008U, 0x2001'0010U, 0x2002'0020U, 0x2003'0008U});
+  CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{4, 1, 0});
+  REQUIRE(s.store.set({0x2000, 0}, std::array<std::uint8_t, 1>{0x10}) == abort_code::none);
+  REQUIRE(s.store.set({0x2001, 0}, std::array<std::uint8_t, 2>{0x21, 0x22}) == abort_code::none);
+  REQUIRE(s.store.set({0x2002, 0}, std::array<std::uint8_t, 4>{0x31, 0x32, 0x33, 0x34}) ==
+          abort_code::none);
+  REQUIRE(s.store.set({0x2003, 0}, std::array<std::uint8_t, 1>{0x40}) == abort_code::none);
+  auto st = s.engine.on_sync(std::nullopt, 2);
+  REQUIRE(st.send.size() == 1);
+  CHECK(st.send[0] ==
+        co::can_frame{0x181, false, 8, {0x10, 0x21, 0x22, 0x31, 0x32, 0x33, 0x34, 0x40}});
+  // INTEGER24 (3 bytes) after a dummy byte: a copy of 2 and one of 1
+  map(0x1800, 0x181, {0x0005'0008U, 0x2008'0018U});
+  CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{1, 2, 0});
+  REQUIRE(s.store.set({0x2008, 0}, std::array<std::uint8_t, 3>{0xA1, 0xA2, 0xA3}) ==
+          abort_code::none);
+  st = s.engine.on_sync(std::nullopt, 3);
+  REQUIRE(st.send.size() == 1);
+  CHECK(st.send[0] == co::can_frame{0x181, false, 4, {0, 0xA1, 0xA2, 0xA3}});
+  // RPDO 1 maps 2000h twice, around 2003h: written entry by entry, the later 2000h wins
+  map(0x1400, 0x201, {0x2000'0008U, 0x2003'0008U, 0x2000'0008U});
+  CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) == plan{0, 0, 3});
+  (void)s.engine.on_frame(co::can_frame{0x201, false, 3, {0x01, 0x02, 0x03}}, 4);
+  CHECK(s.store.value({0x2000, 0}).value()[0] == 0x03);
+  CHECK(s.store.value({0x2003, 0}).value()[0] == 0x02);
+  // without the second 2000h: two copies of one byte each
+  map(0x1400, 0x201, {0x2000'0008U, 0x2003'0008U});
+  CHECK(s.engine.compiled_plan(pdo::direction::rpdo, 0) == plan{2, 2, 0});
+  (void)s.engine.on_frame(co::can_frame{0x201, false, 2, {0x0A, 0x0B}}, 5);
+  CHECK(s.store.value({0x2000, 0}).value()[0] == 0x0A);
+  CHECK(s.store.value({0x2003, 0}).value()[0] == 0x0B);
 }

@@ -156,16 +156,18 @@ public:
   /// Whether the engine compiles each mapping into copies (the store models sdo::plain_store):
   /// when a mapping is loaded, every entry whose object the store keeps plain (plain_at:
   /// readable for a TPDO, writable for an RPDO) on whole bytes becomes a copy between the
-  /// store's bytes and the frame's, adjacent ones merged into one; the others (1-bit BOOLEANs
-  /// and entries after them off byte boundaries, limits or a scale to check, a write hook,
-  /// byte strings, objects the store lacks) keep read_at / write_at, in mapping order.
+  /// store's bytes and the frame's — adjacent ones merged, then cut into copies of 8, 4, 2 and
+  /// 1 bytes, kept in four lists so that each runs as a loop of constant-length copies; the
+  /// others (1-bit BOOLEANs and entries after them off byte boundaries, limits or a scale to
+  /// check, a write hook, byte strings, objects the store lacks, and every entry of an RPDO
+  /// that maps one object twice) keep read_at / write_at, in mapping order, after the copies.
   static constexpr bool by_copy = sdo::plain_store<Store>;
 
-  /// How a PDO's mapping was compiled (by_copy): `copied` entries in `runs` copies, the other
-  /// `per_object` entries by read_at / write_at (dummies are neither).
+  /// How a PDO's mapping was compiled (by_copy): `copied` entries in `copies` copies of 1, 2, 4
+  /// or 8 bytes, the other `per_object` entries by read_at / write_at (dummies are neither).
   struct plan {
     std::uint8_t copied = 0;
-    std::uint8_t runs = 0;
+    std::uint8_t copies = 0;
     std::uint8_t per_object = 0;
     friend constexpr bool operator==(const plan &, const plan &) = default;
   };
@@ -219,6 +221,7 @@ public:
     }
     for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(0, operational_);
     for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+    retime();
     return st;
   }
 
@@ -279,6 +282,7 @@ public:
     } else {
       rpdo_[where.slot].restart();
     }
+    retime();
   }
 
   // ----- traffic ---------------------------------------------------------------------------
@@ -289,12 +293,13 @@ public:
                                        std::uint32_t now) noexcept {
     begin();
     if (!operational_) return make(now);
-    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+    for (std::size_t i = 0; any_buffered_ && i < rpdo_count_; ++i) {
       rx_slot &r = rpdo_[i];
       if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
       r.buffered = false;
       apply(r, std::span<const std::uint8_t>(r.data).first(r.dlc));
     }
+    any_buffered_ = false;
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
       tx_slot &t = tpdo_[i];
       if (!t.c.valid()) continue;
@@ -363,6 +368,7 @@ public:
           continue;
         }
         r.buffered = true;
+        any_buffered_ = true;
         r.dlc = static_cast<std::uint8_t>(data.size());
         for (std::size_t k = 0; k < data.size(); ++k) r.data[k] = data[k];
       } else {
@@ -435,13 +441,8 @@ public:
                                              std::size_t i) const noexcept requires by_copy {
     const resolved &p = d == pdo::direction::rpdo ? rpdo_[i].pos : tpdo_[i].pos;
     plan n;
-    for (std::size_t k = 0; k < p.steps; ++k) {
-      if (p.step[k].size == 0U) {
-        ++n.per_object;
-        continue;
-      }
-      ++n.runs;
-    }
+    n.per_object = p.per_objects;
+    n.copies = p.first[4];
     const config &c = d == pdo::direction::rpdo ? rpdo_[i].c : tpdo_[i].c;
     std::uint8_t dummies = 0;
     for (const auto &m : c.entries()) {
@@ -480,20 +481,22 @@ private:
   /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
   /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
   /// load_mapping, the only place that changes a mapping, so it never goes stale.
-  /// One step of a compiled mapping (by_copy): `size` bytes copied between the store's
-  /// plain_storage() at `storage` and the frame from bit `bit` (a byte boundary), or, size 0,
-  /// mapping entry `entry` (at bit `bit`) read or written by position.
-  struct step_op {
-    std::uint32_t storage = 0;
+  /// Mapping entry `entry`, at bit `bit` of the frame, read or written by position.
+  struct object_step {
     std::uint8_t bit = 0;
     std::uint8_t entry = 0;
-    std::uint8_t size = 0;
   };
   struct no_steps {};
-  /// The steps of a mapping, in mapping order (by_copy; compile() sets them with the positions).
+  /// A compiled mapping (by_copy; compile() sets it with the positions, so it describes the
+  /// mapping in force): copy i moves 1 << c bytes between the store's plain_storage() at
+  /// storage[i] and frame byte frame[i], for i in first[c]..first[c + 1] (c = 0..3: 1, 2, 4, 8
+  /// bytes; a frame has 8 bytes, so there are at most 8 copies); then the per-object entries.
   struct compiled {
-    std::array<step_op, MaxEntries> step{};
-    std::size_t steps = 0;
+    std::array<std::uint32_t, 8> storage{};
+    std::array<std::uint8_t, 8> frame{};
+    std::array<std::uint8_t, 5> first{};
+    std::uint8_t per_objects = 0;
+    std::array<object_step, MaxEntries> object{};
   };
   struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
     std::array<std::size_t, MaxEntries> at{};
@@ -672,7 +675,8 @@ private:
     const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
     c.bytes = 0;
     if constexpr (by_copy) {
-      at.steps = 0; // the steps always describe c.map[0..count): none until it is checked
+      at.first = {}; // the steps always describe c.map[0..count): none until it is checked
+      at.per_objects = 0;
     }
     if (c.count > MaxEntries || c.count > c.map_subs) {
       c.count = 0;
@@ -706,33 +710,66 @@ private:
     return true;
   }
 
-  /// Compile a checked mapping into steps (by_copy): a copy for each entry the store keeps
-  /// plain for this direction on whole bytes, merged with the step before it when both the
-  /// store's bytes and the frame's are adjacent; a per-object step for the others. Dummies get
-  /// none (a TPDO's data starts zeroed, an RPDO skips them).
+  /// Compile a checked mapping (by_copy): the entries the store keeps plain for this direction
+  /// on whole bytes become runs of bytes — an entry joins the run before it when both the
+  /// store's bytes and the frame's are adjacent —, each run cut into copies of 8, 4, 2, 1 bytes
+  /// (largest first) and filed by length; the others are per-object steps, in mapping order.
+  /// Dummies get nothing (a TPDO's data starts zeroed, an RPDO skips them). An RPDO that maps
+  /// one object twice is written entry by entry, so that the later entry wins as it does by
+  /// position and by address.
   constexpr void compile(const config &c, resolved &at, pdo::direction d) noexcept {
-    at.steps = 0;
+    const bool rx = d == pdo::direction::rpdo;
+    bool twice = false;
+    for (std::size_t k = 0; rx && k < c.count; ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        if (at.at[k] != sdo::no_position && at.at[k] == at.at[j]) twice = true;
+      }
+    }
+    struct run {
+      std::uint32_t storage = 0;
+      std::size_t frame = 0;
+      std::size_t size = 0;
+    };
+    std::array<run, MaxEntries> runs{};
+    std::size_t n_runs = 0;
+    at.per_objects = 0;
     std::size_t bit = 0;
     for (std::size_t k = 0; k < c.count; ++k) {
       const pdo::mapping_entry &m = c.map[k];
       if (!m.is_dummy()) {
         sdo::plain_slot s{};
-        if (at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
+        if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
           s = store_->plain_at(at.at[k]);
         }
-        const bool plain = s.size != 0U && s.size * 8U == m.bits &&
-                           (d == pdo::direction::rpdo ? s.writable : s.readable);
-        step_op &last = at.step[at.steps == 0U ? 0U : at.steps - 1U];
-        if (plain && at.steps != 0U && last.size != 0U && last.storage + last.size == s.offset &&
-            last.bit / 8U + last.size == bit / 8U) {
-          last.size = static_cast<std::uint8_t>(last.size + s.size);
+        if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable)) {
+          at.object[at.per_objects++] = {static_cast<std::uint8_t>(bit),
+                                         static_cast<std::uint8_t>(k)};
+        } else if (n_runs != 0U && runs[n_runs - 1U].storage + runs[n_runs - 1U].size == s.offset &&
+                   runs[n_runs - 1U].frame + runs[n_runs - 1U].size == bit / 8U) {
+          runs[n_runs - 1U].size += s.size;
         } else {
-          at.step[at.steps++] = {plain ? s.offset : 0U, static_cast<std::uint8_t>(bit),
-                                 static_cast<std::uint8_t>(k), plain ? s.size : std::uint8_t{0}};
+          runs[n_runs++] = {s.offset, bit / 8U, s.size};
         }
       }
       bit += m.bits;
     }
+    std::size_t n = 0;
+    for (std::size_t cls = 0; cls < 4U; ++cls) {
+      at.first[cls] = static_cast<std::uint8_t>(n);
+      const std::size_t len = std::size_t{1} << cls;
+      for (std::size_t r = 0; r < n_runs; ++r) {
+        for (std::size_t o = 0; o < runs[r].size;) {
+          const std::size_t left = runs[r].size - o;
+          const std::size_t chunk = left >= 8U ? 8U : left >= 4U ? 4U : left >= 2U ? 2U : 1U;
+          if (chunk == len) {
+            at.storage[n] = runs[r].storage + static_cast<std::uint32_t>(o);
+            at.frame[n++] = static_cast<std::uint8_t>(runs[r].frame + o);
+          }
+          o += chunk;
+        }
+      }
+    }
+    at.first[4] = static_cast<std::uint8_t>(n);
   }
 
   // ----- data ------------------------------------------------------------------------------
@@ -778,7 +815,8 @@ private:
     return true;
   }
   /// Read mapping entry k (not a dummy) of a TPDO by position into t.data from bit `offset`.
-  [[nodiscard]] constexpr bool read_entry(tx_slot &t, std::size_t k, std::size_t offset) noexcept {
+  [[nodiscard, gnu::noinline]] constexpr bool read_entry(tx_slot &t, std::size_t k,
+                                                         std::size_t offset) noexcept {
     const pdo::mapping_entry &m = t.c.map[k];
     const std::size_t at = t.pos.at[k];
     if (at == sdo::no_position) return false;
@@ -794,31 +832,34 @@ private:
     if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
     return pdo::pack(t.data, offset, m.bits, raw).has_value();
   }
-  /// build() by the compiled steps: copies from the store's bytes, the other entries by
-  /// position (in mapping order; the first that cannot be read stops the TPDO, as above).
+  /// build() by the compiled mapping: the copies from the store's bytes, then the other
+  /// entries by position (the first that cannot be read stops the TPDO, as above; the frame's
+  /// bytes of different entries never overlap, so the order does not show).
   [[nodiscard]] constexpr bool build_by_copy(tx_slot &t) noexcept {
     t.data = {};
+    const resolved &p = t.pos;
     const std::uint8_t *from = store_->plain_storage().data();
-    for (std::size_t i = 0; i < t.pos.steps; ++i) {
-      const step_op &s = t.pos.step[i];
-      if (s.size != 0U) {
-        copy_run(t.data.data() + s.bit / 8U, from + s.storage, s.size);
-      } else if (!read_entry(t, s.entry, s.bit)) {
-        return false;
-      }
+    std::uint8_t *to = t.data.data();
+    copies<1, true>(p, 0, to, from);
+    copies<2, true>(p, 1, to, from);
+    copies<4, true>(p, 2, to, from);
+    copies<8, true>(p, 3, to, from);
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (!read_entry(t, p.object[i].entry, p.object[i].bit)) return false;
     }
     return true;
   }
-  /// Copy n (1..8) bytes; the widths of numbers as constant-length copies, which the compiler
-  /// makes one load and one store.
-  static constexpr void copy_run(std::uint8_t *to, const std::uint8_t *from,
-                                 std::size_t n) noexcept {
-    switch (n) {
-    case 1: to[0] = from[0]; return;
-    case 2: std::copy_n(from, 2, to); return;
-    case 4: std::copy_n(from, 4, to); return;
-    case 8: std::copy_n(from, 8, to); return;
-    default: std::copy_n(from, n, to); return;
+  /// The copies of N bytes (list `cls` of a compiled mapping): into the frame's bytes `to`
+  /// from the storage `from` (ToFrame), or into the storage `to` from the frame's bytes `from`.
+  template <std::size_t N, bool ToFrame>
+  static constexpr void copies(const resolved &p, std::size_t cls, std::uint8_t *to,
+                               const std::uint8_t *from) noexcept {
+    for (std::size_t i = p.first[cls]; i < p.first[cls + 1U]; ++i) {
+      if constexpr (ToFrame) {
+        std::copy_n(from + p.storage[i], N, to + p.frame[i]);
+      } else {
+        std::copy_n(from + p.frame[i], N, to + p.storage[i]);
+      }
     }
   }
   /// build() through the store's read by address (a store without positions).
@@ -887,9 +928,9 @@ private:
     events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
   }
   /// Write mapping entry k (not a dummy) of an RPDO by position from bit `offset` of `data`.
-  [[nodiscard]] constexpr abort_code write_entry(const rx_slot &r, std::size_t k,
-                                                 std::size_t offset,
-                                                 std::span<const std::uint8_t> data) noexcept {
+  [[nodiscard, gnu::noinline]] constexpr abort_code
+  write_entry(const rx_slot &r, std::size_t k, std::size_t offset,
+              std::span<const std::uint8_t> data) noexcept {
     const pdo::mapping_entry &m = r.c.map[k];
     const std::size_t at = r.pos.at[k];
     // the store has no such object: refused, as its write would refuse it
@@ -906,17 +947,22 @@ private:
     }
     return store_->write_at(at, 0, std::span<const std::uint8_t>(v).first(n), true);
   }
-  /// apply() by the compiled steps: copies into the store's bytes (objects that take every
-  /// value without a hook: nothing to refuse), the other entries by position, in mapping
-  /// order.
+  /// apply() by the compiled mapping: the copies into the store's bytes (objects that take
+  /// every value with no effect but being stored: nothing to refuse), then the other entries by
+  /// position, in mapping order. (The copies go first; no entry of another object sees the
+  /// difference, and an RPDO that maps an object twice has no copies.)
   constexpr void apply_by_copy(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    const resolved &p = r.pos;
     std::uint8_t *to = store_->plain_storage().data();
+    // data holds at least c.bytes bytes (see apply), within which every copy lies
+    const std::uint8_t *from = data.data();
+    copies<1, false>(p, 0, to, from);
+    copies<2, false>(p, 1, to, from);
+    copies<4, false>(p, 2, to, from);
+    copies<8, false>(p, 3, to, from);
     std::uint8_t refused = 0;
-    for (std::size_t i = 0; i < r.pos.steps; ++i) {
-      const step_op &s = r.pos.step[i];
-      if (s.size != 0U) {
-        copy_run(to + s.storage, data.data() + s.bit / 8U, s.size);
-      } else if (write_entry(r, s.entry, s.bit, data) != abort_code::none) {
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (write_entry(r, p.object[i].entry, p.object[i].bit, data) != abort_code::none) {
         ++refused;
       }
     }
@@ -961,8 +1007,23 @@ private:
     out_.clear();
     events_.clear();
   }
+  /// The step: the frames to send, the state, and deadline(now) — which is nullopt without a
+  /// scan when no PDO has timing (timed_).
   [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
-    return {out_.view(), operational_, deadline(now)};
+    return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
+  }
+  /// Set timed_: whether any PDO can have a deadline — a valid TPDO of type 254/255 (pending,
+  /// event timer), a valid RPDO with an event timer (deadline monitoring starts only with one,
+  /// and every change of it restarts the RPDO). Called wherever a COB-ID, transmission type,
+  /// event timer or the usability of a PDO changes: reload() and written().
+  constexpr void retime() noexcept {
+    timed_ = false;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (tpdo_[i].c.valid() && tpdo_[i].c.type >= 254U) timed_ = true;
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rpdo_[i].c.valid() && rpdo_[i].c.event_timer != 0U) timed_ = true;
+    }
   }
 
   static constexpr std::size_t out_capacity = MaxTpdo == 0U ? 1U : MaxTpdo;
@@ -978,6 +1039,8 @@ private:
   event_list<pdo_event, event_capacity> events_{};
   bool operational_ = false;
   bool report_long_ = true;
+  bool timed_ = false;        ///< see retime()
+  bool any_buffered_ = false; ///< an RPDO may be buffered for the next SYNC (set with buffered)
 };
 
 } // namespace fieldcodec::canopen::node
