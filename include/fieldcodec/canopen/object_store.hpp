@@ -47,7 +47,8 @@
 // answers none and copies exactly these bytes, which are therefore the value in CANopen order
 // (little-endian, whatever the host's order); `writable` — write_at(at, 0, v, true) with
 // v.size() == size answers none for every v and has no effect but storing v's bytes there as
-// they are (no check that could refuse, no conversion, no hook).
+// they are (no check that could refuse, no conversion, no hook). Slots of different positions
+// do not overlap.
 #pragma once
 
 #include <fieldcodec/canopen/sdo.hpp>

@@ -478,9 +478,6 @@ public:
   }
 
 private:
-  /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
-  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
-  /// load_mapping, the only place that changes a mapping, so it never goes stale.
   /// Mapping entry `entry`, at bit `bit` of the frame, read or written by position.
   struct object_step {
     std::uint8_t bit = 0;
@@ -488,7 +485,7 @@ private:
   };
   struct no_steps {};
   /// A compiled mapping (by_copy; compile() sets it with the positions, so it describes the
-  /// mapping in force): copy i moves 1 << c bytes between the store's plain_storage() at
+  /// mapping in force): copy i moves 2^c bytes between the store's plain_storage() at
   /// storage[i] and frame byte frame[i], for i in first[c]..first[c + 1] (c = 0..3: 1, 2, 4, 8
   /// bytes; a frame has 8 bytes, so there are at most 8 copies); then the per-object entries.
   struct compiled {
@@ -498,6 +495,10 @@ private:
     std::uint8_t per_objects = 0;
     std::array<object_step, MaxEntries> object{};
   };
+  /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
+  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks; and,
+  /// by_copy, the compiled mapping. Set by load_mapping, the only place that changes a mapping,
+  /// so it never goes stale.
   struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
     std::array<std::size_t, MaxEntries> at{};
     bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
