@@ -81,6 +81,22 @@ private:
   Store *p_;
 };
 
+/// A store over `Store` with positions that shows plain values (sdo::plain_store) where its
+/// storage is shorter than the store's: slots that reach past `room` bytes are broken promises,
+/// which an engine must not copy.
+template <class Store>
+class short_plain_store : public positions_only_store<Store> {
+public:
+  short_plain_store(Store &s, std::size_t room)
+      : positions_only_store<Store>(s), s_(&s), room_(room) {}
+  [[nodiscard]] std::span<std::uint8_t> plain_storage() { return s_->plain_storage().first(room_); }
+  [[nodiscard]] sdo::plain_slot plain_at(std::size_t at) const { return s_->plain_at(at); }
+
+private:
+  Store *s_;
+  std::size_t room_;
+};
+
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
 constexpr od::number I(std::int64_t v) {
   return {od::number_kind::signed_, 0, static_cast<std::uint64_t>(v)};

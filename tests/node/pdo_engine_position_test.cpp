@@ -704,3 +704,31 @@ static_assert(compiled_at_compile_time());
 } // namespace
 
 TEST_CASE("pdo engine compiled: the same at run time") { CHECK(compiled_at_compile_time()); }
+
+TEST_CASE("pdo engine compiled: a plain slot past the store's plain_storage is not copied") {
+  // a store whose plain_storage() ends after 2001h: 2002h's slot (4 bytes after it) lies
+  // beyond, so RPDO 1 (2001h, 2002h) copies 2001h and writes 2002h by position
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  plain_type store{dict, layout, storage};
+  REQUIRE(store.init_defaults(1).has_value());
+  const auto s2001 = store.plain_at(store.position({0x2001, 0}));
+  const auto s2002 = store.plain_at(store.position({0x2002, 0}));
+  REQUIRE(s2002.offset == s2001.offset + 2U);
+  using short_store = test_node::short_plain_store<plain_type>;
+  static_assert(sdo::plain_store<short_store>);
+  short_store view{store, s2001.offset + 2U + 3U}; // 2002h would need one byte more
+  node::pdo_engine<short_store, 2, 2, 8> e(view, dict);
+  REQUIRE(e.reload().has_value());
+  e.set_operational(true, 0);
+  CHECK(e.compiled_plan(pdo::direction::rpdo, 0) == decltype(e)::plan{1, 1, 1});
+  (void)e.on_frame(co::can_frame{0x201, false, 6, {0x11, 0x22, 0x33, 0x44, 0x55, 0x66}}, 1);
+  CHECK(store.value({0x2001, 0}).value()[1] == 0x22);
+  CHECK(store.value({0x2002, 0}).value()[3] == 0x66);
+  REQUIRE(e.events().size() == 1);
+  CHECK(e.events()[0].refused == 0);
+  // with room for it, one run
+  short_store enough{store, s2001.offset + 6U};
+  node::pdo_engine<short_store, 2, 2, 8> e2(enough, dict);
+  REQUIRE(e2.reload().has_value());
+  CHECK(e2.compiled_plan(pdo::direction::rpdo, 0) == decltype(e2)::plan{2, 2, 0});
+}

@@ -734,6 +734,7 @@ private:
     std::array<run, MaxEntries> runs{};
     std::size_t n_runs = 0;
     at.per_objects = 0;
+    const std::size_t room = store_->plain_storage().size();
     std::size_t bit = 0;
     for (std::size_t k = 0; k < c.count; ++k) {
       const pdo::mapping_entry &m = c.map[k];
@@ -742,7 +743,9 @@ private:
         if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
           s = store_->plain_at(at.at[k]);
         }
-        if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable)) {
+        // (a slot that would reach past the storage is a broken promise: not copied)
+        if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable) ||
+            s.offset > room || room - s.offset < s.size) {
           at.object[at.per_objects++] = {static_cast<std::uint8_t>(bit),
                                          static_cast<std::uint8_t>(k)};
         } else if (n_runs != 0U && runs[n_runs - 1U].storage + runs[n_runs - 1U].size == s.offset &&
