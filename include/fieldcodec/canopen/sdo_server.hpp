@@ -317,22 +317,22 @@ private:
     return send(block_download_initiate_response(m.address, n, crc).value_or(payload{}));
   }
 
-  /// A segment of a block download (on_frame's short path). The common case — a segment taken
-  /// in sequence that is not the last of its sub-block, with room for its 7 bytes in the
-  /// buffer — is finished here (what `append` would do: no flush is due) and answers nothing;
-  /// everything else goes on in block_download_segment_rest.
+  /// A segment of a block download (on_frame's short path). The common case — with room for 7
+  /// bytes in the buffer, a segment block_receiver::take_next takes (in sequence, not the last
+  /// of the transfer or its sub-block) — is finished here (what `append` would do: no flush is
+  /// due) and answers nothing; everything else goes through on_segment and
+  /// block_download_segment_rest, out of line.
   [[nodiscard]] constexpr step block_download_segment(const payload &p) noexcept {
-    const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
-    if (r.abort == abort_code::none && !r.acknowledge && r.bytes.size() == 7U &&
-        buf_.size() - used_ >= 7U) {
-      detail::copy_7(r.bytes.data(), buf_.data() + used_);
+    if (buf_.size() - used_ >= 7U && block_rx_.take_next(p)) {
+      detail::copy_7(p.data() + 1, buf_.data() + used_);
       used_ += 7U;
       return core_.make();
     }
-    return block_download_segment_rest(r);
+    return block_download_segment_rest(p);
   }
   FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr step
-  block_download_segment_rest(const block_receiver::segment_result &r) noexcept {
+  block_download_segment_rest(const payload &p) noexcept {
+    const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
     if (r.abort != abort_code::none) return local_abort(r.abort);
     if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
     if (!r.acknowledge) return core_.make();

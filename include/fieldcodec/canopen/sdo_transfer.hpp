@@ -236,6 +236,7 @@ public:
     final_ = false;
     previous_ = {};
     have_previous_ = false;
+    limit_ = announced && *announced < capacity ? std::size_t{*announced} : capacity;
   }
   [[nodiscard]] constexpr std::size_t count() const noexcept { return count_; }
   [[nodiscard]] constexpr bool final_received() const noexcept { return final_; }
@@ -299,6 +300,24 @@ public:
     r.acknowledge = sequence == block_size_ || last;
     return r;
   }
+  /// The common segment, taken by a short path (issue 18: it is nearly every frame of a block
+  /// transfer): the next sequence number, not the last segment of the transfer nor of the
+  /// sub-block, within the announced size and the capacity. Then it is taken exactly as
+  /// on_segment(raw) takes it — which would return no abort, no acknowledgement and the 7 bytes
+  /// raw[1..7] at the old count() — and the result is true. Otherwise nothing changes and the
+  /// result is false: call on_segment(raw).
+  [[nodiscard]] constexpr bool take_next(const payload &raw) noexcept {
+    // raw[0] < block_size_ (≤ 127): last flag clear; == sequence_ + 1: not 0, in sequence
+    if (raw[0] != sequence_ + 1U || raw[0] >= block_size_ || final_ || count_ + 7U > limit_) {
+      return false;
+    }
+    sequence_ = raw[0];
+    previous_ = raw;
+    have_previous_ = true;
+    if (crc_enabled_) crc_ = crc::ccitt16(std::span<const std::uint8_t>(raw).subspan<1, 7>(), crc_);
+    count_ += 7U;
+    return true;
+  }
   /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
   /// message is awaited, such a repeat is ignored instead of being read as a message.)
   [[nodiscard]] constexpr bool is_repeat(const payload &raw) const noexcept {
@@ -358,6 +377,7 @@ private:
   std::uint8_t block_size_ = 1;
   std::array<std::uint8_t, 7> last_{};
   payload previous_{};
+  std::size_t limit_ = 0; ///< min(capacity, announced size): take_next's one bound
 };
 
 // ---------------------------------------------------------------------------------------------
