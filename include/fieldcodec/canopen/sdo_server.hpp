@@ -23,6 +23,7 @@
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
@@ -89,7 +90,10 @@ template <class Flush>
 
 } // namespace detail
 
-template <object_store Store>
+/// The server; `Crc` computes the CRC of block transfers (crc::ccitt16_no_table, the default,
+/// or crc::ccitt16_with_table: a 512-byte table in flash for about half the instructions a
+/// byte; core/crc.hpp).
+template <object_store Store, class Crc = crc::ccitt16_no_table>
 class server {
 public:
   /// A server on `ch`. `store` and `buffer` are borrowed and must outlive the server.
@@ -455,7 +459,7 @@ private:
     if (m.type != message_type::block_ack) return unexpected();
     const auto r = block_tx_.on_ack(m, burst_);
     if (r.abort != abort_code::none) return local_abort(r.abort);
-    if (r.what == block_sender::next::burst) return next_burst();
+    if (r.what == basic_block_sender<Crc>::next::burst) return next_burst();
     phase_ = phase::block_upload_end;
     return send(block_tx_.end());
   }
@@ -480,8 +484,8 @@ private:
   std::span<const std::uint8_t> burst_{};
   segment_sender seg_tx_{};
   segment_receiver seg_rx_{};
-  block_sender block_tx_{};
-  block_receiver block_rx_{};
+  basic_block_sender<Crc> block_tx_{};
+  basic_block_receiver<Crc> block_rx_{};
 };
 
 } // namespace fieldcodec::canopen::sdo
