@@ -176,7 +176,7 @@ private:
   }
 
   // One of the three, as kind_ says (none: one_, unread). A union, so that a step is small
-  // (48 bytes instead of 96 on a 64-bit host): an empty step, the answer to most frames (every
+  // (48 bytes instead of 88 on a 64-bit host): an empty step, the answer to most frames (every
   // block segment but the last of a sub-block), writes the 12 bytes of one_, size_ and kind_.
   union {
     can_frame one_;
