@@ -44,19 +44,6 @@ struct server_options {
 
 namespace detail {
 
-/// Copy the 7 data bytes of a segment: at run time as one copy of constant length (a few
-/// moves; a loop of 7 byte moves cost 14 instructions, and GCC merged a `std::copy_n` of 7 with
-/// a copy of run-time length into a call of memcpy).
-constexpr void copy_7(const std::uint8_t *from, std::uint8_t *to) noexcept {
-#if defined(__GNUC__)
-  if (!std::is_constant_evaluated()) {
-    __builtin_memcpy(to, from, 7);
-    return;
-  }
-#endif
-  for (std::size_t i = 0; i < 7U; ++i) to[i] = from[i];
-}
-
 /// Append `bytes` to `buf`, whose first `used` bytes are taken: when `buf` is full and bytes
 /// remain, `flush()` (abort_code() noexcept) passes the full buffer on and `used` starts again
 /// from 0. Returns none, out_of_memory (an empty buffer) or what flush() returned; on an error

@@ -160,6 +160,9 @@ private:
     // encoder with what segment() would compute for them known in the loop
     std::size_t full = data.size() / 7U;
     if (self.burst_.ends_transfer && full >= self.size_ && self.size_ > 0U) full = self.size_ - 1U;
+    // sequence numbers above 127 are no segments (segment() makes them all zeros, as the
+    // encoder refuses them): the loop stops before them
+    if (full > sdo::max_block_size) full = sdo::max_block_size;
     std::size_t j = 0;
     for (; j < out.size() && first + j < full; ++j) {
       const std::size_t i = first + j;
@@ -167,10 +170,10 @@ private:
       f.id = self.burst_.id;
       f.rtr = false;
       f.dlc = 8;
-      // cannot fail: sequence 1..127 (zeros if it ever did)
-      f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U),
-                                         data.subspan(7U * i, 7U), false)
-                   .value_or(sdo::payload{});
+      // encode_block_segment's writer without its checks, which hold here: sequence i + 1 ≤
+      // 127 and 7 bytes
+      sdo::detail::write_block_segment(f.data, static_cast<std::uint8_t>(i + 1U),
+                                       data.subspan(7U * i, 7U), false);
     }
     for (; j < out.size(); ++j) out[j] = segment(self, first + j); // the rest as segment() does
   }
