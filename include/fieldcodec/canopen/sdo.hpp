@@ -827,7 +827,7 @@ constexpr void write_block_segment(payload &p, std::uint8_t sequence,
   if (sequence == 0U || sequence > max_block_size) return errc::out_of_range;
   // written directly (encode(message)'s bytes and errors): a burst makes up to 127 of these
   // per sub-block, and building a 28-byte message for each cost several times the copy
-  payload p;
+  payload p{};
   detail::write_block_segment(p, sequence, bytes, last);
   return p;
 }
