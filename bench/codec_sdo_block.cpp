@@ -197,11 +197,11 @@ void push_all(transfer_out &out, const co::frames &fs) {
 }
 
 /// fieldcodec: sdo::server answering a block upload of 889 bytes from the store.
-template <bool Crc>
+template <bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
 transfer_out server_block_upload(const transfer_in &in) {
   transfer_out out;
   const upload_requests &q = (Crc ? g_upload_crc : g_upload_plain)[in.object];
-  sdo::server<store_type> s(sdo_node, g_block_store, g_server_buffer);
+  sdo::server<store_type, CrcPolicy> s(sdo_node, g_block_store, g_server_buffer);
   push_all(out, s.on_frame(q.initiate, 0).send);
   push_all(out, s.on_frame(q.start, 0).send);
   push_all(out, s.on_frame(q.ack, 0).send);
@@ -263,11 +263,11 @@ transfer_out hand_block_upload(const transfer_in &in) {
 }
 
 /// fieldcodec: sdo::client downloading 889 bytes with block transfer.
-template <bool Crc>
+template <bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
 transfer_out client_block_download(const transfer_in &in) {
   transfer_out out;
   const download_responses &q = (Crc ? g_download_crc : g_download_plain)[in.object];
-  sdo::client c(sdo_node);
+  sdo::basic_client<CrcPolicy> c(sdo_node);
   sdo::block_options o;
   o.crc = Crc;
   auto s = c.block_download(object_address(in.object), g_download_data[in.object], 0, o);
@@ -335,11 +335,11 @@ struct download_out {
 };
 
 /// fieldcodec: sdo::server taking a block download of 889 bytes into the store.
-template <bool Crc>
+template <bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
 download_out server_block_download(const transfer_in &in) {
   download_out out;
   const download_requests &q = (Crc ? g_server_download_crc : g_server_download_plain)[in.object];
-  sdo::server<store_type> s(sdo_node, g_block_store, g_download_buffer);
+  sdo::server<store_type, CrcPolicy> s(sdo_node, g_block_store, g_download_buffer);
   push_all(out.frames, s.on_frame(q.initiate, 0).send);
   for (const co::can_frame &f : q.segments) push_all(out.frames, s.on_frame(f, 0).send);
   push_all(out.frames, s.on_frame(q.end, 0).send);
@@ -393,6 +393,8 @@ download_out hand_server_block_download(const transfer_in &in) {
   return out;
 }
 
+using with_table = fieldcodec::crc::ccitt16_with_table;
+
 void add_sdo(bench::registry &reg) {
   bench::add<g_transfers>(
       reg, "sdo/block upload 889 B, server, CRC",
@@ -418,12 +420,29 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/block download 889 B, server, no CRC",
       [](const transfer_in &in) { return server_block_download<false>(in); },
       [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  // the machines with the opt-in CRC table (crc::ccitt16_with_table), as the baselines compute it
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, server, CRC table",
+      [](const transfer_in &in) { return server_block_upload<true, with_table>(in); },
+      [](const transfer_in &in) { return hand_block_upload<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, client, CRC table",
+      [](const transfer_in &in) { return client_block_download<true, with_table>(in); },
+      [](const transfer_in &in) { return hand_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC table",
+      [](const transfer_in &in) { return server_block_download<true, with_table>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
 }
 
 bool complete_transfers() {
   const transfer_in in{};
-  const transfer_out outs[] = {server_block_upload<true>(in), server_block_upload<false>(in),
-                               client_block_download<true>(in), client_block_download<false>(in)};
+  const transfer_out outs[] = {server_block_upload<true>(in),
+                               server_block_upload<false>(in),
+                               server_block_upload<true, with_table>(in),
+                               client_block_download<true>(in),
+                               client_block_download<false>(in),
+                               client_block_download<true, with_table>(in)};
   for (const auto &o : outs) {
     if (!o.done || o.n != 129U) {
       std::fprintf(stderr, "codec_sdo_block: a block transfer did not complete (%zu frames)\n",
@@ -432,7 +451,8 @@ bool complete_transfers() {
     }
   }
   // the server download: initiate response, one acknowledgement, end response, and the value
-  for (const auto &d : {server_block_download<true>(in), server_block_download<false>(in)}) {
+  for (const auto &d : {server_block_download<true>(in), server_block_download<false>(in),
+                        server_block_download<true, with_table>(in)}) {
     if (!d.frames.done || d.frames.n != 3U || d.value != g_download_data[in.object]) {
       std::fprintf(stderr, "codec_sdo_block: a block download did not complete\n");
       return false;

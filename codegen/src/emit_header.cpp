@@ -94,6 +94,10 @@ public:
   void cpp_string(std::string_view t) {
     advance(write_cpp_string(room(cpp_string_capacity(t.size())), t));
   }
+  /// `"bytes"`, every byte outside printable ASCII escaped (write_cpp_bytes's literal).
+  void cpp_bytes(std::string_view t) {
+    advance(write_cpp_bytes(room(cpp_string_capacity(t.size())), t));
+  }
 
   [[nodiscard]] std::string finish() {
     s_.resize(static_cast<std::size_t>(p_ - s_.data()));
@@ -163,6 +167,14 @@ void append_number(writer &o, const od::number &n) {
 // The enumerators' C++ names come from od/data_type.hpp's tables (od::info(…).identifier: one
 // table per idea, shared by the readers, the EDS writer and this emitter).
 
+/// Appends '_' and `part` to the identifier `name`, one '_' only when `name` ends in one (a
+/// keyword's trailing '_', a symbol such as `speed_`): an identifier with "__" is reserved to the
+/// implementation in every scope (F19 in fuzz/FINDINGS.md).
+void append_part(std::string &name, std::string_view part) {
+  if (name.empty() || name.back() != '_') name += '_';
+  name += part;
+}
+
 /// Assigns unique identifiers in a deterministic order. The names live in blocks that never
 /// move; the set is open addressing over views of them (one look-up per generated name, the
 /// order of names plays no part).
@@ -189,13 +201,11 @@ public:
     if (const std::string_view s = insert(w); !s.empty()) return s;
     std::string &t = try_;
     t.assign(w);
-    t += '_';
-    t += suffix;
+    append_part(t, suffix);
     for (unsigned n = 2;; ++n) {
       if (const std::string_view s = insert(t); !s.empty()) return s;
       t.assign(w);
-      t += '_';
-      t += suffix;
+      append_part(t, suffix);
       t += '_';
       t += std::to_string(n);
     }
@@ -557,9 +567,26 @@ std::string stem_identifier(std::string_view stem) {
 
 namespace {
 
+/// Whether a file name is written as it is: UTF-8 text without control bytes. A file system
+/// allows any byte but '/' and NUL in a name, and a line break in the "Generated from" comment
+/// would end the comment, a byte that is not UTF-8 would make the header no UTF-8 text (F20 in
+/// fuzz/FINDINGS.md): such a name is shown as a literal with those bytes escaped.
+bool plain_name(std::string_view s) noexcept {
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20U || u == 0x7FU) return false;
+  }
+  return valid_utf8(s);
+}
+
 void emit(writer &o, const dictionary &d) {
+  const bool plain = plain_name(d.source_name);
   o.lit("// Generated from ");
-  o.put(d.source_name);
+  if (plain) {
+    o.put(d.source_name);
+  } else {
+    o.cpp_bytes(d.source_name);
+  }
   o.lit(" by fieldcodec-gen \xE2\x80\x94 do not edit.\n");
   o.lit("// Regenerate with codegen/regenerate.sh (or the fieldcodec_generate_dictionary CMake "
         "function).\n");
@@ -580,7 +607,11 @@ void emit(writer &o, const dictionary &d) {
   o.lit(" {\n\n");
   o.lit("using namespace std::string_view_literals;\n\n");
   o.lit("inline constexpr const char *source_file = ");
-  o.cpp_string(d.source_name);
+  if (plain) {
+    o.cpp_string(d.source_name);
+  } else {
+    o.cpp_bytes(d.source_name);
+  }
   o.lit(";\n\n");
   if (d.is_command_table) {
     emit_commands(o, d);
@@ -637,7 +668,7 @@ void emit(writer &o, const dictionary &d) {
       views.push_back({s, &info, i, n});
       // named sub-entries: every sub-object of a RECORD/DEFSTRUCT, explicit symbols of arrays
       std::string prefix(s);
-      prefix += '_';
+      if (prefix.back() != '_') prefix += '_'; // as append_part: never "__"
       for (std::size_t k = i; k < i + n; ++k) {
         const entry &e = d.entries[k];
         const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
@@ -659,8 +690,7 @@ void emit(writer &o, const dictionary &d) {
           sub_wanted = identifier(prefix, e.name);
           if (sub_wanted.size() == prefix.size()) { // the name has no identifier
             want.assign(s);
-            want += '_';
-            want += suffix_sub;
+            append_part(want, suffix_sub);
             sub_wanted = want;
           }
         }

@@ -37,9 +37,7 @@ bool iequals(std::string_view a, std::string_view b) noexcept {
   return true;
 }
 
-namespace {
-
-bool valid_utf8(std::string_view s) {
+bool valid_utf8(std::string_view s) noexcept {
   std::size_t i = 0;
   while (i < s.size()) {
     // ASCII (nearly every byte of a dictionary) eight bytes at a time
@@ -83,6 +81,8 @@ bool valid_utf8(std::string_view s) {
   }
   return true;
 }
+
+namespace {
 
 void append_utf8(std::string &out, std::uint32_t cp) {
   if (cp < 0x80U) {

@@ -24,6 +24,8 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::string to_lower(std::string_view s);
 [[nodiscard]] bool iequals(std::string_view a, std::string_view b) noexcept;
 
+/// Whether `s` is valid UTF-8 (no overlong forms, no surrogates, nothing beyond U+10FFFF).
+[[nodiscard]] bool valid_utf8(std::string_view s) noexcept;
 /// Text as UTF-8: a UTF-8 byte-order mark is dropped, valid UTF-8 is kept, anything else is
 /// taken as Windows-1252 / Latin-1 and converted (`converted` tells).
 [[nodiscard]] std::string to_utf8(std::string_view bytes, bool &converted);

@@ -11,6 +11,7 @@
 
 #include "xorshift.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -207,4 +208,92 @@ TEST_CASE("store: an 'any bits' entry takes every value od::decode takes, withou
   std::array<std::uint8_t, 4> out{};
   std::size_t total = 0;
   CHECK(store.read_at(2, 0, out, total) == abort_code::read_write_only);
+}
+
+namespace {
+/// A write hook that takes every value (but is not accept_writes: the store must ask it).
+struct counting_hook {
+  std::size_t *calls = nullptr;
+  [[nodiscard]] constexpr abort_code operator()(const od::entry &,
+                                                std::span<const std::uint8_t>) const noexcept {
+    ++*calls;
+    return abort_code::none;
+  }
+};
+} // namespace
+
+TEST_CASE("store plain_at: which values are plain, and that they are what read_at / write_at "
+          "copy") {
+  // (sdo::plain_store, round 5: the PDO engine copies plain values between storage and frames)
+  std::vector<std::uint8_t> storage(layout.storage_size());
+  sdo::dictionary_store<> store{dict, layout, storage};
+  REQUIRE(store.init_defaults(3).has_value());
+  std::size_t calls = 0;
+  std::vector<std::uint8_t> hooked_storage(layout.storage_size());
+  sdo::dictionary_store<counting_hook> hooked{
+      dict, layout, hooked_storage, {}, counting_hook{&calls}};
+  REQUIRE(hooked.init_defaults(3).has_value());
+  CHECK(store.plain_storage().data() == storage.data());
+  CHECK(store.plain_storage().size() == storage.size());
+  // {offset, size, readable, writable} for each entry of the table above
+  const std::array<sdo::plain_slot, std::size(entries)> expected{{
+      {0, 0, false, false},                 // VISIBLE_STRING: a length, not plain
+      {layout.offsets[1], 2, true, true},   // u16
+      {layout.offsets[2], 4, false, true},  // i32 write-only
+      {layout.offsets[3], 1, true, false},  // limits: written with a check
+      {layout.offsets[4], 1, true, false},  // BOOLEAN: 0 and 1 only
+      {layout.offsets[5], 4, true, false},  // REAL32: NaN refused
+      {layout.offsets[6], 1, true, false},  // read-only
+      {0, 0, false, false},                 // OCTET_STRING
+      {layout.offsets[8], 2, true, false},  // scaled
+      {layout.offsets[9], 3, true, true},   // INTEGER24
+      {layout.offsets[10], 8, true, true},  // u64
+      {layout.offsets[11], 6, true, false}, // TIME_OF_DAY
+  }};
+  for (std::size_t i = 0; i < std::size(entries); ++i) {
+    CAPTURE(i);
+    CHECK(store.plain_at(i) == expected[i]);
+    // with a write hook nothing is written by a copy: the hook must see every value
+    sdo::plain_slot h = expected[i];
+    h.writable = false;
+    CHECK(hooked.plain_at(i) == h);
+  }
+  CHECK(store.plain_at(sdo::no_position) == sdo::plain_slot{});
+  CHECK(store.plain_at(std::size(entries)) == sdo::plain_slot{});
+  std::vector<std::uint8_t> small(4);
+  sdo::dictionary_store<> broken{dict, layout, small};
+  CHECK(broken.plain_at(1) == sdo::plain_slot{});
+
+  // the promise: a readable slot holds the bytes read_at copies (CANopen order on every host);
+  // write_at of a writable slot's size stores the bytes there as they are and takes any value
+  rng r{0x5EED'0005ULL};
+  for (int round = 0; round < 2000; ++round) {
+    const std::size_t i = r.next() % std::size(entries);
+    const sdo::plain_slot p = store.plain_at(i);
+    if (p.size == 0U) continue;
+    std::array<std::uint8_t, 8> v{};
+    for (auto &b : v) b = static_cast<std::uint8_t>(r.next());
+    const auto value = std::span<const std::uint8_t>(v).first(p.size);
+    const auto slot = std::span<const std::uint8_t>(storage).subspan(p.offset, p.size);
+    if (p.writable) {
+      REQUIRE(store.write_at(i, 0, value, true) == abort_code::none);
+      CHECK(std::equal(slot.begin(), slot.end(), value.begin()));
+      const std::size_t before = calls;
+      CHECK(hooked.write_at(i, 0, value, true) == abort_code::none);
+      CHECK(calls == before + 1U); // the hooked store asked its hook
+    } else if (store.set(store.address_at(i), value) != abort_code::none) {
+      continue; // a value the entry refuses (limits, BOOLEAN, NaN)
+    }
+    if (p.readable) {
+      std::array<std::uint8_t, 8> out{};
+      std::size_t total = 0;
+      REQUIRE(store.read_at(i, 0, std::span<std::uint8_t>(out).first(p.size), total) ==
+              abort_code::none);
+      CHECK(total == p.size);
+      CHECK(std::equal(slot.begin(), slot.end(), out.begin()));
+      // and the number in it, read little-endian, is the value's
+      CHECK(fieldcodec::load_unsigned(slot, p.size, byte_order::little).value() ==
+            fieldcodec::load_unsigned(value, p.size, byte_order::little).value());
+    }
+  }
 }

@@ -15,6 +15,7 @@
 #include <functional>
 #include <vector>
 
+namespace fc = fieldcodec;
 namespace co = fieldcodec::canopen;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
@@ -51,14 +52,18 @@ std::vector<std::uint8_t> pattern(std::size_t n, std::uint32_t seed) {
 /// What a fault does to a burst on its way.
 enum class fault_kind { none, lose, repeat, swap };
 
-struct bus {
+/// A server and a client on one bus; ServerCrc and ClientCrc are how they compute the CRC of
+/// block transfers (core/crc.hpp).
+template <class ServerCrc = fc::crc::ccitt16_no_table, class ClientCrc = fc::crc::ccitt16_no_table>
+struct basic_bus {
   std::vector<std::uint8_t> storage =
       std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(block_dict));
   std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(5000);
   sdo::dictionary_store<> store{block_dict, block_layout, storage, staging};
   std::vector<std::uint8_t> server_buffer;
-  sdo::server<sdo::dictionary_store<>> server;
-  sdo::client client{5, 100};
+  sdo::server<sdo::dictionary_store<>, ServerCrc> server;
+  sdo::basic_client<ClientCrc> client{5, 100};
+  std::vector<co::can_frame> wire; ///< every frame either side sent, in order
   std::uint32_t now = 0;
   std::deque<co::can_frame> to_server, to_client;
   fault_kind fault = fault_kind::none;
@@ -66,7 +71,8 @@ struct bus {
   int faults_left = 0;
   std::size_t bursts = 0, segments = 0, faults = 0;
 
-  explicit bus(std::size_t buffer) : server_buffer(buffer), server(5, store, server_buffer, 100) {
+  explicit basic_bus(std::size_t buffer)
+      : server_buffer(buffer), server(5, store, server_buffer, 100) {
     REQUIRE(store.init_defaults(5).has_value());
   }
 
@@ -94,6 +100,7 @@ struct bus {
     for (const auto &f : out) {
       CHECK(f.is_valid());
       q.push_back(f);
+      wire.push_back(f);
     }
   }
   void run(const sdo::step &first) {
@@ -118,6 +125,8 @@ struct bus {
     FAIL("the machines never settled");
   }
 };
+
+using bus = basic_bus<>;
 
 /// Either the transfer completed on both sides with exactly the data, or both sides ended it
 /// with an abort; and the object holds either the old or the new value, never a part.
@@ -458,4 +467,67 @@ TEST_CASE("block upload: the protocol switch, block sizes and the end") {
     o.block_size = 128;
     CHECK(c.block_upload({0x2001, 0}, buf, 0, o) == errc::invalid_argument);
   }
+}
+
+TEST_CASE("block transfer with the CRC by table (crc::ccitt16_with_table) on either side") {
+  // The table is an option of the machines' code, not of the protocol: every combination of
+  // server and client sends the same frames as the pair without a table (the CRC in the end
+  // messages included), and a wrong CRC is found the same way.
+  using no_table = fc::crc::ccitt16_no_table;
+  using table = fc::crc::ccitt16_with_table;
+  const std::size_t sizes[] = {0, 1, 7, 8, 100, 889, 890, 2000};
+  std::size_t compared = 0;
+  for (const unsigned bs : {1U, 5U, 127U}) {
+    for (const auto n : sizes) {
+      for (const bool crc : {true, false}) {
+        CAPTURE(bs);
+        CAPTURE(n);
+        CAPTURE(crc);
+        const auto v = pattern(n, static_cast<std::uint32_t>(3 * n + bs));
+        sdo::block_options o;
+        o.block_size = static_cast<std::uint8_t>(bs);
+        o.crc = crc;
+        auto transcript = [&](auto &b) {
+          b.run(b.client.block_download({0x2000, 0}, v, b.now, o).value());
+          CHECK(b.client.state() == transfer_state::done);
+          CHECK(b.server.state() == transfer_state::done);
+          std::vector<std::uint8_t> buf(5000);
+          b.run(b.client.block_upload({0x2000, 0}, buf, b.now, o).value());
+          CHECK(b.client.state() == transfer_state::done);
+          CHECK(std::vector<std::uint8_t>(b.client.received().begin(), b.client.received().end()) ==
+                v);
+          return b.wire;
+        };
+        basic_bus<no_table, no_table> plain(7U * bs);
+        basic_bus<table, no_table> server_table(7U * bs);
+        basic_bus<no_table, table> client_table(7U * bs);
+        basic_bus<table, table> both(7U * bs);
+        const auto expected = transcript(plain);
+        CHECK(transcript(server_table) == expected);
+        CHECK(transcript(client_table) == expected);
+        CHECK(transcript(both) == expected);
+        compared += 3;
+      }
+    }
+  }
+  CHECK(compared == 3U * 3U * 8U * 2U);
+
+  // a segment changed on the way: the server with the table finds the CRC wrong (05040004)
+  basic_bus<table, table> b(7U * 127U);
+  const auto v = pattern(100, 77);
+  auto s = b.client.block_download({0x2000, 0}, v, b.now).value();
+  b.push(b.to_server, s);
+  REQUIRE(b.to_server.size() == 1U);
+  auto init = b.to_server.front();
+  b.to_server.pop_front();
+  b.push(b.to_client, b.server.on_frame(init, b.now));
+  auto answer = b.to_client.front();
+  b.to_client.pop_front();
+  b.push(b.to_server, b.client.on_frame(answer, b.now));
+  REQUIRE(b.to_server.size() == 15U); // 100 bytes: 15 segments
+  b.to_server[3].data[4] ^= 0x10U;
+  b.run(sdo::step{});
+  CHECK(b.server.state() == transfer_state::failed);
+  CHECK(b.server.error()->abort == sdo::abort_code::crc_error);
+  CHECK(b.client.state() == transfer_state::failed);
 }

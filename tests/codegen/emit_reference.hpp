@@ -170,10 +170,15 @@ public:
     if (wanted.empty()) wanted = "object_" + suffix;
     if (is_cpp_keyword(wanted)) wanted += '_';
     if (used_.insert(wanted).second) return wanted;
-    std::string s = wanted + "_" + suffix;
+    std::string s = join(wanted, suffix);
     for (int n = 2; !used_.insert(s).second; ++n)
-      s = wanted + "_" + suffix + "_" + std::to_string(n);
+      s = join(wanted, suffix) + "_" + std::to_string(n);
     return s;
+  }
+  /// name + '_' + part, one '_' only after a name that ends in '_' (fix of F19 in
+  /// fuzz/FINDINGS.md, applied to this reference too: a name with "__" is reserved).
+  static std::string join(const std::string &name, const std::string &part) {
+    return !name.empty() && name.back() == '_' ? name + part : name + "_" + part;
   }
 
 private:
@@ -491,9 +496,9 @@ inline std::string emit_header(const dictionary &d) {
         const entry &e = d.entries[k];
         const bool is_named = info.code != od::object_code::array || !e.symbol.empty();
         if (!is_named) continue;
-        std::string sub = !e.symbol.empty() ? e.symbol : s + "_" + make_identifier(e.name);
+        std::string sub = !e.symbol.empty() ? e.symbol : symbols::join(s, make_identifier(e.name));
         if (e.symbol.empty() && make_identifier(e.name).empty()) {
-          sub = s + "_sub" + std::to_string(e.sub);
+          sub = symbols::join(s, "sub" + std::to_string(e.sub));
         }
         named[k] = sym.take(sub, "sub" + std::to_string(e.sub));
       }

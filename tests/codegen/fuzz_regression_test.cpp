@@ -1,7 +1,9 @@
-// Regression tests for inputs found by fuzz/fuzz_codegen.cpp (see fuzz/FINDINGS.md).
+// Regression tests for inputs found by fuzz/fuzz_codegen.cpp and fuzz/fuzz_codegen_emit.cpp
+// (see fuzz/FINDINGS.md).
 // A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
 // suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
 #include "readers.hpp"
+#include "text.hpp"
 
 #include <doctest/doctest.h>
 
@@ -136,4 +138,60 @@ TEST_CASE("fuzz F15: a CSV value with a line break is refused, not written into 
   } else {
     CHECK(diag.error_count() == 2);
   }
+}
+
+// F19 (2026-11-25, fuzz_codegen_emit, EDS; the seeds written for the emitter harness): a name
+// that is a C++ keyword gets a trailing '_' ("Switch" -> switch_), and the emitter then joined
+// a sub-object's name or a collision suffix with a second '_': switch__mode, int__2101. An
+// identifier with "__" is reserved to the implementation in every scope. One '_' joins them now.
+TEST_CASE("fuzz F19: names after a keyword's trailing '_' have no double underscore") {
+  gen::diagnostics diag;
+  auto d = read("[2100]\nParameterName=Switch\nObjectType=0x9\nSubNumber=3\n\n"
+                "[2100sub0]\nParameterName=Count\nObjectType=0x7\nDataType=0x0005\n"
+                "AccessType=ro\n\n"
+                "[2100sub1]\nParameterName=Mode\nObjectType=0x7\nDataType=0x0005\n"
+                "AccessType=rw\n\n"
+                "[2100sub2]\nParameterName=\nObjectType=0x7\nDataType=0x0005\nAccessType=rw\n\n"
+                "[2101]\nParameterName=int\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n\n"
+                "[2102]\nParameterName=int\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n\n"
+                "[2103]\nParameterName=int\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n",
+                false, diag);
+  REQUIRE(d.has_value());
+  const std::string h = gen::emit_header(*d);
+  CHECK(h.find("__") == std::string::npos);
+  CHECK(h.find(" switch_{0x2100,") != std::string::npos);
+  CHECK(h.find(" switch_count{entries[0]") != std::string::npos);
+  CHECK(h.find(" switch_mode{entries[1]") != std::string::npos);
+  CHECK(h.find(" switch_sub2{entries[2]") != std::string::npos);
+  CHECK(h.find(" int_{entries[3]") != std::string::npos);
+  CHECK(h.find(" int_2102{entries[4]") != std::string::npos);
+  CHECK(h.find(" int_2103{entries[5]") != std::string::npos);
+}
+
+// F20 (2026-11-25, fuzz_codegen_emit, file names; found by a hand-written input while writing
+// the harness): the file name was written into the "Generated from" comment as it is, and a line
+// break in it (a file system allows any byte but '/' and NUL) ended the comment: the rest of the
+// name was read as code. A byte that is not UTF-8 went raw into the comment and into
+// `source_file`, and the header was no UTF-8 text. Such a name is written as a literal with
+// every byte outside printable ASCII escaped, in the comment and in source_file.
+TEST_CASE("fuzz F20: a file name with a line break or a non-UTF-8 byte keeps the header sound") {
+  gen::diagnostics diag;
+  auto d = read("[2000]\nParameterName=x\nObjectType=0x7\nDataType=0x0007\nAccessType=rw\n", false,
+                diag);
+  REQUIRE(d.has_value());
+  d->source_name = "a\nb.eds";
+  std::string h = gen::emit_header(*d);
+  CHECK(h.starts_with("// Generated from \"a\\012b.eds\" by fieldcodec-gen \xE2\x80\x94 do not "
+                      "edit.\n// Regenerate"));
+  CHECK(h.find("source_file = \"a\\012b.eds\";") != std::string::npos);
+  d->source_name = "caf\xE9.eds"; // Latin-1, as an old file system may hold it
+  h = gen::emit_header(*d);
+  CHECK(h.starts_with("// Generated from \"caf\\351.eds\" by"));
+  CHECK(h.find("source_file = \"caf\\351.eds\";") != std::string::npos);
+  CHECK(gen::valid_utf8(h));
+  // UTF-8 names stay as they are
+  d->source_name = "caf\xC3\xA9 \"1\".eds";
+  h = gen::emit_header(*d);
+  CHECK(h.starts_with("// Generated from caf\xC3\xA9 \"1\".eds by"));
+  CHECK(h.find("source_file = \"caf\xC3\xA9 \\\"1\\\".eds\";") != std::string::npos);
 }

@@ -59,6 +59,44 @@ private:
   Store *s_;
 };
 
+/// A store over `Store` that offers the address interface and positions
+/// (sdo::positioned_store) but does not show where values live (not sdo::plain_store): a
+/// user-written store with positions, which engines serve by read_at / write_at.
+template <class Store>
+class positions_only_store : public address_only_store<Store> {
+public:
+  explicit positions_only_store(Store &s) : address_only_store<Store>(s), p_(&s) {}
+  [[nodiscard]] std::size_t position(od::address a) const { return p_->position(a); }
+  [[nodiscard]] od::address address_at(std::size_t at) const { return p_->address_at(at); }
+  [[nodiscard]] abort_code read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
+                                   std::size_t &total) const {
+    return p_->read_at(at, offset, out, total);
+  }
+  [[nodiscard]] abort_code write_at(std::size_t at, std::size_t offset,
+                                    std::span<const std::uint8_t> part, bool last) {
+    return p_->write_at(at, offset, part, last);
+  }
+
+private:
+  Store *p_;
+};
+
+/// A store over `Store` with positions that shows plain values (sdo::plain_store) where its
+/// storage is shorter than the store's: slots that reach past `room` bytes are broken promises,
+/// which an engine must not copy.
+template <class Store>
+class short_plain_store : public positions_only_store<Store> {
+public:
+  short_plain_store(Store &s, std::size_t room)
+      : positions_only_store<Store>(s), s_(&s), room_(room) {}
+  [[nodiscard]] std::span<std::uint8_t> plain_storage() { return s_->plain_storage().first(room_); }
+  [[nodiscard]] sdo::plain_slot plain_at(std::size_t at) const { return s_->plain_at(at); }
+
+private:
+  Store *s_;
+  std::size_t room_;
+};
+
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
 constexpr od::number I(std::int64_t v) {
   return {od::number_kind::signed_, 0, static_cast<std::uint64_t>(v)};

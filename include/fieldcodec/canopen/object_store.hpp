@@ -34,6 +34,21 @@
 //
 // read_at / write_at with at = position(a) do exactly what read / write of `a` do (same checks,
 // same abort codes, same hook); a position stays valid as long as the store.
+//
+// A positioned store may also show where plain values live, so that the PDO engine compiles a
+// mapping into copies between its storage and the frame (sdo::plain_store; optional, detected
+// at compile time):
+//
+//   std::span<std::uint8_t> plain_storage();            // the bytes plain values live in
+//   sdo::plain_slot plain_at(std::size_t at) const;     // where the value at `at` lives there
+//
+// A plain_slot of `size` bytes (size 0: not plain) at `offset` in plain_storage() promises, for
+// as long as the store lives: `readable` — read_at(at, 0, out, total) with out.size() == size
+// answers none and copies exactly these bytes, which are therefore the value in CANopen order
+// (little-endian, whatever the host's order); `writable` — write_at(at, 0, v, true) with
+// v.size() == size answers none for every v and has no effect but storing v's bytes there as
+// they are (no check that could refuse, no conversion, no hook). Slots of different positions
+// do not overlap.
 #pragma once
 
 #include <fieldcodec/canopen/sdo.hpp>
@@ -51,6 +66,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::canopen::sdo {
 
@@ -77,6 +93,24 @@ concept positioned_store = object_store<S> &&
   { cs.address_at(at) } -> std::same_as<od::address>;
   { cs.read_at(at, offset, out, total) } -> std::same_as<abort_code>;
   { s.write_at(at, offset, in, last) } -> std::same_as<abort_code>;
+};
+
+/// Where a store keeps a plain value (sdo::plain_store; see above): `size` bytes at `offset` in
+/// plain_storage(), read and / or written there as they are. size 0: not plain (use read_at /
+/// write_at).
+struct plain_slot {
+  std::uint32_t offset = 0;
+  std::uint8_t size = 0;
+  bool readable = false; ///< read_at copies these bytes and cannot fail
+  bool writable = false; ///< write_at of `size` bytes stores them here, accepts every value
+  friend constexpr bool operator==(const plain_slot &, const plain_slot &) = default;
+};
+
+/// A positioned store that shows where its plain values live (see above).
+template <class S>
+concept plain_store = positioned_store<S> && requires(S &s, const S &cs, std::size_t at) {
+  { s.plain_storage() } -> std::same_as<std::span<std::uint8_t>>;
+  { cs.plain_at(at) } -> std::same_as<plain_slot>;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -274,6 +308,29 @@ public:
     const located l = locate_at(at);
     if (l.code != abort_code::none) return l.code;
     return write_located(l, {l.e->index, l.e->sub}, offset, part, last);
+  }
+
+  // ----- plain values (sdo::plain_store) ---------------------------------------------------
+
+  /// The caller-owned storage: fixed-size values are kept there little-endian (CANopen order)
+  /// on every host, as they arrive, so a plain_at slot is the value's bytes.
+  [[nodiscard]] constexpr std::span<std::uint8_t> plain_storage() noexcept { return storage_; }
+  /// Where the value at position `at` lives in plain_storage(), when read_at / write_at would
+  /// only copy it: a fixed-size value (byte strings carry a length; size 0 for them, for a
+  /// position that is not one and for a layout that does not fit), readable when the entry is,
+  /// writable when the entry is writable, takes any bits (an integer without limits or scale:
+  /// no od::decode check) and the store has no write hook (OnWrite is accept_writes).
+  [[nodiscard]] constexpr plain_slot plain_at(std::size_t at) const noexcept {
+    plain_slot p;
+    if (at >= dict_.size() || !layout_fits()) return p;
+    const std::uint8_t f = flags_[at];
+    if ((f & slot_flag::byte_string) != 0U) return p;
+    p.offset = offsets_[at];
+    p.size = static_cast<std::uint8_t>(offsets_[at + 1U] - offsets_[at]); // width(): 1..8
+    p.readable = (f & slot_flag::readable) != 0U;
+    p.writable = std::is_same_v<OnWrite, accept_writes> && (f & slot_flag::writable) != 0U &&
+                 (f & slot_flag::any_bits) != 0U;
+    return p;
   }
 
   /// The application's side: the current value of `a` (fixed-size: width() bytes; byte
@@ -515,5 +572,6 @@ private:
 
 static_assert(object_store<dictionary_store<>>);
 static_assert(positioned_store<dictionary_store<>>);
+static_assert(plain_store<dictionary_store<>>);
 
 } // namespace fieldcodec::canopen::sdo

@@ -23,6 +23,7 @@
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
@@ -41,14 +42,18 @@ struct block_options {
   bool crc = true;                          ///< ask for the CRC (used when the server supports it)
 };
 
-class client {
+/// The client; `Crc` computes the CRC of block transfers (crc::ccitt16_no_table, the default,
+/// or crc::ccitt16_with_table: a 512-byte table in flash for about half the instructions a
+/// byte; core/crc.hpp). `client` is the default.
+template <class Crc = crc::ccitt16_no_table>
+class basic_client {
 public:
   /// A client on `ch`.
-  constexpr explicit client(channel ch, std::uint32_t timeout_ms = 1000) noexcept
+  constexpr explicit basic_client(channel ch, std::uint32_t timeout_ms = 1000) noexcept
       : ch_(ch), core_(timeout_ms) {}
   /// A client for the server of `node` on the predefined channel (0x600/0x580 + node). With a
   /// node-ID outside 1..127 every transfer is refused with invalid_argument.
-  constexpr explicit client(std::uint8_t node, std::uint32_t timeout_ms = 1000) noexcept
+  constexpr explicit basic_client(std::uint8_t node, std::uint32_t timeout_ms = 1000) noexcept
       : ch_(channel::default_for(node).value_or(channel{})), core_(timeout_ms) {}
 
   /// Start writing `data` to `a`: 1..4 bytes go expedited, 0 or more than 4 bytes segmented
@@ -60,10 +65,10 @@ public:
     begin(a, now);
     tx_ = data;
     if (!data.empty() && data.size() <= 4U) {
-      expect(&client::download_expedited);
+      expect(&basic_client::download_expedited);
       return send(expedited_download(a, data).value());
     }
-    expect(&client::download_initiate);
+    expect(&basic_client::download_initiate);
     return send(initiate_download(a, static_cast<std::uint32_t>(data.size())));
   }
 
@@ -73,7 +78,7 @@ public:
     FIELDCODEC_TRY_STATUS(can_start(0));
     begin(a, now);
     rx_ = buffer;
-    expect(&client::upload_initiate);
+    expect(&basic_client::upload_initiate);
     return send(initiate_upload(a));
   }
 
@@ -87,7 +92,7 @@ public:
     begin(a, now);
     tx_ = data;
     options_ = o;
-    expect(&client::block_download_initiate);
+    expect(&basic_client::block_download_initiate);
     return send(
         sdo::block_download_initiate(a, static_cast<std::uint32_t>(data.size()), true, o.crc));
   }
@@ -104,7 +109,7 @@ public:
     begin(a, now);
     rx_ = buffer;
     options_ = o;
-    expect(&client::block_upload_initiate);
+    expect(&basic_client::block_upload_initiate);
     return send(p.value());
   }
 
@@ -179,8 +184,8 @@ private:
   // the next message (`handler_`), and for block segments, which carry no command specifier,
   // the function that sees the raw bytes first (`raw_`). Firmware that never starts a block
   // transfer never references the block functions, so the linker drops them.
-  using handler = step (client::*)(const message &);
-  using raw_handler = std::optional<step> (client::*)(const payload &);
+  using handler = step (basic_client::*)(const message &);
+  using raw_handler = std::optional<step> (basic_client::*)(const payload &);
   constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
     handler_ = h;
     raw_ = raw;
@@ -235,7 +240,7 @@ private:
     return next_download_segment();
   }
   [[nodiscard]] constexpr step next_download_segment() noexcept {
-    expect(&client::download_segment);
+    expect(&basic_client::download_segment);
     const auto chunk = tx_.subspan(seg_tx_.offset(), seg_tx_.next_length());
     return send(seg_tx_.next(message_type::download_segment_request, chunk));
   }
@@ -267,7 +272,7 @@ private:
     }
     seg_rx_.start(rx_.size(),
                   m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt);
-    expect(&client::upload_segment);
+    expect(&basic_client::upload_segment);
     return send(upload_segment_request(seg_rx_.toggle()));
   }
   [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
@@ -307,7 +312,7 @@ private:
     return tx_.subspan(block_tx_.offset(), block_tx_.burst_bytes());
   }
   [[nodiscard]] constexpr step next_burst() noexcept {
-    expect(&client::block_download_ack);
+    expect(&basic_client::block_download_ack);
     window_ = burst_window();
     return core_.make(block_tx_.burst(ch_.request_id, window_));
   }
@@ -316,8 +321,8 @@ private:
     const auto r = block_tx_.on_ack(m, window_);
     count_ = block_tx_.acknowledged();
     if (r.abort != abort_code::none) return local_abort(r.abort);
-    if (r.what == block_sender::next::burst) return next_burst();
-    expect(&client::block_download_end);
+    if (r.what == basic_block_sender<Crc>::next::burst) return next_burst();
+    expect(&basic_client::block_download_end);
     return send(block_tx_.end());
   }
   [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
@@ -331,7 +336,7 @@ private:
     if (m.type == message_type::initiate_upload_response) {
       // protocol switch: the server answers with a normal upload (only if we allowed it)
       if (options_.switch_threshold == 0U) return unexpected();
-      expect(&client::upload_initiate);
+      expect(&basic_client::upload_initiate);
       return upload_initiate(m);
     }
     if (auto s = check_initiate(m, message_type::block_upload_initiate_response)) return *s;
@@ -341,7 +346,7 @@ private:
     block_rx_.start(rx_.size(),
                     m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt,
                     options_.crc && m.crc, options_.block_size);
-    expect(&client::unexpected_message, &client::block_upload_segment);
+    expect(&basic_client::unexpected_message, &basic_client::block_upload_segment);
     return send(block_upload_start());
   }
   [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
@@ -354,7 +359,7 @@ private:
     count_ = block_rx_.count();
     if (!r.acknowledge) return core_.make();
     if (block_rx_.final_received()) {
-      expect(&client::block_upload_end, &client::block_upload_repeat);
+      expect(&basic_client::block_upload_end, &basic_client::block_upload_repeat);
     }
     return send(block_rx_.acknowledge(options_.block_size));
   }
@@ -375,7 +380,7 @@ private:
 
   channel ch_;
   machine_core core_;
-  handler handler_ = &client::unexpected_message;
+  handler handler_ = &basic_client::unexpected_message;
   raw_handler raw_ = nullptr;
   block_options options_{};
   std::size_t count_ = 0;
@@ -384,8 +389,11 @@ private:
   std::span<const std::uint8_t> window_{};
   segment_sender seg_tx_{};
   segment_receiver seg_rx_{};
-  block_sender block_tx_{};
-  block_receiver block_rx_{};
+  basic_block_sender<Crc> block_tx_{};
+  basic_block_receiver<Crc> block_rx_{};
 };
+
+/// The client with the CRC of block transfers computed without a table.
+using client = basic_client<>;
 
 } // namespace fieldcodec::canopen::sdo

@@ -1,5 +1,6 @@
 // fieldcodec — SDO messages for dictionary entries: typed, limit-checked expedited download,
-// upload request, and the value of an expedited upload response.
+// upload request, and the value of an expedited upload response (as an od::number or as a
+// C++ type: upload_value<std::int16_t>(entry, response)).
 //
 //   auto f = canopen::sdo::download(1, xenax_canopen::modes_of_operation_requested, -1);
 //   // 0x601: 2F 60 60 00 FF 00 00 00
@@ -100,6 +101,27 @@ requires std::derived_from<E, od::entry>
   auto p = payload_of(f);
   if (!p) return p.error();
   return upload_value(e, p.value());
+}
+
+/// The value in an expedited upload response for entry `e` as a T (bool, any integer type,
+/// float, double or an enumeration), never narrowed: od::number_as<T> of upload_value(e, p), so
+/// `upload_value<std::uint8_t>(unsigned16_entry, p)` of 0x0100 is overflow, not 0, and
+/// `upload_value<std::uint32_t>(integer32_entry, p)` of −1 is overflow, not 0xFFFFFFFF.
+/// Errors: those of upload_value, overflow (the value is outside T's range, a negative value
+/// for an unsigned T), not_representable (a REAL32 value for an integer T, an integer beyond
+/// 24 significant bits for a float).
+template <od::value_type T>
+[[nodiscard]] constexpr result<T> upload_value(const od::entry &e, const payload &p) noexcept {
+  auto n = upload_value(e, p);
+  if (!n) return n.error();
+  return od::number_as<T>(n.value());
+}
+/// The same from a frame (the COB-ID is not checked).
+template <od::value_type T>
+[[nodiscard]] constexpr result<T> upload_value(const od::entry &e, const can_frame &f) noexcept {
+  auto n = upload_value(e, f);
+  if (!n) return n.error();
+  return od::number_as<T>(n.value());
 }
 
 } // namespace fieldcodec::canopen::sdo

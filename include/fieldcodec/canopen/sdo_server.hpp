@@ -23,6 +23,7 @@
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
@@ -42,19 +43,6 @@ struct server_options {
 };
 
 namespace detail {
-
-/// Copy the 7 data bytes of a segment: at run time as one copy of constant length (a few
-/// moves; a loop of 7 byte moves cost 14 instructions, and GCC merged a `std::copy_n` of 7 with
-/// a copy of run-time length into a call of memcpy).
-constexpr void copy_7(const std::uint8_t *from, std::uint8_t *to) noexcept {
-#if defined(__GNUC__)
-  if (!std::is_constant_evaluated()) {
-    __builtin_memcpy(to, from, 7);
-    return;
-  }
-#endif
-  for (std::size_t i = 0; i < 7U; ++i) to[i] = from[i];
-}
 
 /// Append `bytes` to `buf`, whose first `used` bytes are taken: when `buf` is full and bytes
 /// remain, `flush()` (abort_code() noexcept) passes the full buffer on and `used` starts again
@@ -89,7 +77,10 @@ template <class Flush>
 
 } // namespace detail
 
-template <object_store Store>
+/// The server; `Crc` computes the CRC of block transfers (crc::ccitt16_no_table, the default,
+/// or crc::ccitt16_with_table: a 512-byte table in flash for about half the instructions a
+/// byte; core/crc.hpp).
+template <object_store Store, class Crc = crc::ccitt16_no_table>
 class server {
 public:
   /// A server on `ch`. `store` and `buffer` are borrowed and must outlive the server.
@@ -317,22 +308,22 @@ private:
     return send(block_download_initiate_response(m.address, n, crc).value_or(payload{}));
   }
 
-  /// A segment of a block download (on_frame's short path). The common case — a segment taken
-  /// in sequence that is not the last of its sub-block, with room for its 7 bytes in the
-  /// buffer — is finished here (what `append` would do: no flush is due) and answers nothing;
-  /// everything else goes on in block_download_segment_rest.
+  /// A segment of a block download (on_frame's short path). The common case — with room for 7
+  /// bytes in the buffer, a segment block_receiver::take_next takes (in sequence, not the last
+  /// of the transfer or its sub-block) — is finished here (what `append` would do: no flush is
+  /// due) and answers nothing; everything else goes through on_segment and
+  /// block_download_segment_rest, out of line.
   [[nodiscard]] constexpr step block_download_segment(const payload &p) noexcept {
-    const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
-    if (r.abort == abort_code::none && !r.acknowledge && r.bytes.size() == 7U &&
-        buf_.size() - used_ >= 7U) {
-      detail::copy_7(r.bytes.data(), buf_.data() + used_);
+    if (buf_.size() - used_ >= 7U && block_rx_.take_next(p)) {
+      detail::copy_7(p.data() + 1, buf_.data() + used_);
       used_ += 7U;
       return core_.make();
     }
-    return block_download_segment_rest(r);
+    return block_download_segment_rest(p);
   }
   FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr step
-  block_download_segment_rest(const block_receiver::segment_result &r) noexcept {
+  block_download_segment_rest(const payload &p) noexcept {
+    const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
     if (r.abort != abort_code::none) return local_abort(r.abort);
     if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
     if (!r.acknowledge) return core_.make();
@@ -455,7 +446,7 @@ private:
     if (m.type != message_type::block_ack) return unexpected();
     const auto r = block_tx_.on_ack(m, burst_);
     if (r.abort != abort_code::none) return local_abort(r.abort);
-    if (r.what == block_sender::next::burst) return next_burst();
+    if (r.what == basic_block_sender<Crc>::next::burst) return next_burst();
     phase_ = phase::block_upload_end;
     return send(block_tx_.end());
   }
@@ -480,8 +471,8 @@ private:
   std::span<const std::uint8_t> burst_{};
   segment_sender seg_tx_{};
   segment_receiver seg_rx_{};
-  block_sender block_tx_{};
-  block_receiver block_rx_{};
+  basic_block_sender<Crc> block_tx_{};
+  basic_block_receiver<Crc> block_rx_{};
 };
 
 } // namespace fieldcodec::canopen::sdo

@@ -142,8 +142,10 @@ private:
 
 /// The sending side of a block transfer of `size` bytes: sub-blocks of block_size() segments,
 /// retransmission from the first segment the receiver did not acknowledge, and the end message
-/// with the unused bytes of the last segment and the CRC of the data.
-class block_sender {
+/// with the unused bytes of the last segment and the CRC of the data, computed by `Crc`
+/// (crc::ccitt16_no_table or crc::ccitt16_with_table, core/crc.hpp).
+template <class Crc = crc::ccitt16_no_table>
+class basic_block_sender {
 public:
   constexpr void start(std::uint32_t size, bool crc, std::uint8_t block_size) noexcept {
     size_ = size;
@@ -193,7 +195,7 @@ public:
     const bool ended = burst_ends_transfer() && m.sequence == in_flight_;
     std::uint32_t n = 7U * m.sequence;
     if (n > window.size()) n = static_cast<std::uint32_t>(window.size());
-    if (crc_enabled_) crc_ = crc::ccitt16(window.first(n), crc_);
+    if (crc_enabled_) crc_ = Crc::update(window.first(n), crc_);
     acked_ += n;
     in_flight_ = 0;
     if (ended) return {abort_code::none, next::end};
@@ -221,8 +223,9 @@ private:
 /// The receiving side of a block transfer: takes segments in sequence, ignores duplicates and
 /// segments after a gap, says when to acknowledge, and checks the end (size, CRC). The last
 /// segment of the transfer is held back until the end message says how many of its bytes are
-/// data.
-class block_receiver {
+/// data. `Crc` computes the CRC, as for basic_block_sender.
+template <class Crc = crc::ccitt16_no_table>
+class basic_block_receiver {
 public:
   constexpr void start(std::size_t capacity, std::optional<std::uint32_t> announced, bool crc,
                        std::uint8_t block_size) noexcept {
@@ -236,6 +239,7 @@ public:
     final_ = false;
     previous_ = {};
     have_previous_ = false;
+    limit_ = announced && *announced < capacity ? std::size_t{*announced} : capacity;
   }
   [[nodiscard]] constexpr std::size_t count() const noexcept { return count_; }
   [[nodiscard]] constexpr bool final_received() const noexcept { return final_; }
@@ -293,11 +297,29 @@ public:
       }
       r.bytes = std::span<const std::uint8_t>(raw).subspan(1, 7);
       r.offset = count_;
-      if (crc_enabled_) crc_ = crc::ccitt16(r.bytes, crc_);
+      if (crc_enabled_) crc_ = Crc::update(r.bytes, crc_);
       count_ += 7U;
     }
     r.acknowledge = sequence == block_size_ || last;
     return r;
+  }
+  /// The common segment, taken by a short path (issue 18: it is nearly every frame of a block
+  /// transfer): the next sequence number, not the last segment of the transfer nor of the
+  /// sub-block, within the announced size and the capacity. Then it is taken exactly as
+  /// on_segment(raw) takes it — which would return no abort, no acknowledgement and the 7 bytes
+  /// raw[1..7] at the old count() — and the result is true. Otherwise nothing changes and the
+  /// result is false: call on_segment(raw).
+  [[nodiscard]] constexpr bool take_next(const payload &raw) noexcept {
+    // raw[0] < block_size_ (≤ 127): last flag clear; == sequence_ + 1: not 0, in sequence
+    if (raw[0] != sequence_ + 1U || raw[0] >= block_size_ || final_ || count_ + 7U > limit_) {
+      return false;
+    }
+    sequence_ = raw[0];
+    previous_ = raw;
+    have_previous_ = true;
+    if (crc_enabled_) crc_ = Crc::update(std::span<const std::uint8_t>(raw).subspan<1, 7>(), crc_);
+    count_ += 7U;
+    return true;
   }
   /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
   /// message is awaited, such a repeat is ignored instead of being read as a message.)
@@ -338,7 +360,7 @@ public:
     if (r.abort != abort_code::none) return r;
     r.bytes = std::span<const std::uint8_t>(last_).first(n);
     r.offset = count_;
-    if (crc_enabled_ && crc::ccitt16(r.bytes, crc_) != m.checksum) {
+    if (crc_enabled_ && Crc::update(r.bytes, crc_) != m.checksum) {
       r.abort = abort_code::crc_error;
       return r;
     }
@@ -358,7 +380,13 @@ private:
   std::uint8_t block_size_ = 1;
   std::array<std::uint8_t, 7> last_{};
   payload previous_{};
+  std::size_t limit_ = 0; ///< min(capacity, announced size): take_next's one bound
 };
+
+/// The block transfer roles with the CRC computed without a table (what the machines use by
+/// default).
+using block_sender = basic_block_sender<>;
+using block_receiver = basic_block_receiver<>;
 
 // ---------------------------------------------------------------------------------------------
 // What client and server share: state, error, deadline

@@ -37,7 +37,7 @@ namespace fieldcodec::canopen {
 /// The frames one step asks the caller to send.
 class frames {
 public:
-  constexpr frames() noexcept = default;
+  constexpr frames() noexcept : one_() {}
   /// One frame.
   constexpr frames(const can_frame &one) noexcept : one_(one), size_(1), kind_(kind::one) {}
   /// Frames the machine owns.
@@ -51,13 +51,8 @@ public:
                                                        std::span<const std::uint8_t> data,
                                                        std::uint8_t count,
                                                        bool ends_transfer) noexcept {
-    frames f;
-    f.burst_ = {id, data, ends_transfer};
-    f.size_ = count;
-    f.kind_ = kind::burst;
     // only code that builds a burst, or calls copy_to, links the segment encoder
-    f.make_ = &frames::segment;
-    return f;
+    return frames(burst{data, &frames::segment, id, ends_transfer}, count);
   }
 
   [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
@@ -70,7 +65,7 @@ public:
     switch (kind_) {
     case kind::one: return one_;
     case kind::list: return list_[i];
-    case kind::burst: return make_(*this, i);
+    case kind::burst: return burst_.make(*this, i);
     case kind::none: break;
     }
     return {};
@@ -131,10 +126,13 @@ public:
 private:
   enum class kind : std::uint8_t { none, one, list, burst };
   struct burst {
-    std::uint16_t id = 0;
-    std::span<const std::uint8_t> data{};
-    bool ends_transfer = false;
+    std::span<const std::uint8_t> data;
+    can_frame (*make)(const frames &, std::size_t); ///< segment(), for operator[]
+    std::uint16_t id;
+    bool ends_transfer;
   };
+  constexpr frames(const burst &b, std::uint8_t count) noexcept
+      : burst_(b), size_(count), kind_(kind::burst) {}
 
   /// Segment i (from 0) of the burst: sequence number i + 1, bytes [7 i, 7 i + 7) of the data,
   /// zero-padded; the last flag on the burst's last frame if it ends the transfer.
@@ -162,6 +160,9 @@ private:
     // encoder with what segment() would compute for them known in the loop
     std::size_t full = data.size() / 7U;
     if (self.burst_.ends_transfer && full >= self.size_ && self.size_ > 0U) full = self.size_ - 1U;
+    // sequence numbers above 127 are no segments (segment() makes them all zeros, as the
+    // encoder refuses them): the loop stops before them
+    if (full > sdo::max_block_size) full = sdo::max_block_size;
     std::size_t j = 0;
     for (; j < out.size() && first + j < full; ++j) {
       const std::size_t i = first + j;
@@ -169,20 +170,24 @@ private:
       f.id = self.burst_.id;
       f.rtr = false;
       f.dlc = 8;
-      // cannot fail: sequence 1..127 (zeros if it ever did)
-      f.data = sdo::encode_block_segment(static_cast<std::uint8_t>(i + 1U),
-                                         data.subspan(7U * i, 7U), false)
-                   .value_or(sdo::payload{});
+      // encode_block_segment's writer without its checks, which hold here: sequence i + 1 ≤
+      // 127 and 7 bytes
+      sdo::detail::write_block_segment(f.data, static_cast<std::uint8_t>(i + 1U),
+                                       data.subspan(7U * i, 7U), false);
     }
     for (; j < out.size(); ++j) out[j] = segment(self, first + j); // the rest as segment() does
   }
 
-  can_frame one_{};
-  std::span<const can_frame> list_{};
-  burst burst_{};
+  // One of the three, as kind_ says (none: one_, unread). A union, so that a step is small
+  // (48 bytes instead of 88 on a 64-bit host): an empty step, the answer to most frames (every
+  // block segment but the last of a sub-block), writes the 12 bytes of one_, size_ and kind_.
+  union {
+    can_frame one_;
+    std::span<const can_frame> list_;
+    burst burst_;
+  };
   std::size_t size_ = 0;
   kind kind_ = kind::none;
-  can_frame (*make_)(const frames &, std::size_t) = nullptr;
 };
 
 /// What one call into a machine produced: the frames to send, the state after the call, and

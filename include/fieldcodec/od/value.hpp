@@ -432,50 +432,81 @@ encode(const descriptor &d, T v, std::span<std::uint8_t> out, byte_order order =
   return detail::encode(d, detail::maybe_scale{&d.scale, true}, n.value(), out, order, node);
 }
 
-namespace detail {
-/// A decoded number as T. Errors: overflow when the value does not fit T, not_representable when
-/// a real value is asked for as an integer.
+/// The number `v` as a T (value_type), never narrowed: an integer T takes an integer that fits
+/// it, a floating-point T an integer it holds exactly (24 / 53 significant bits, as encode
+/// requires of an integer for a REAL entry) or a real it holds exactly (a REAL32 value into
+/// float or double, a REAL64 value into double; a REAL64 value into float only when it is a
+/// float value), an enumeration its underlying type's. A decimal (decode never gives one) into a
+/// floating-point T is its nearest value: decimal digits have no exact binary form in general.
+/// decode<T> and canopen::sdo::upload_value<T> use it.
+/// Errors: unknown_object (no value), overflow (an integer outside T's range, a real beyond
+/// float's finite range), not_representable (a real or a fraction for an integer T, an integer
+/// or real a floating-point T cannot hold exactly, NaN).
 template <value_type T>
 [[nodiscard]] constexpr result<T> number_as(number v) noexcept {
+  if (v.kind == number_kind::none) return errc::unknown_object;
   if constexpr (std::is_enum_v<T>) {
     auto u = number_as<std::underlying_type_t<T>>(v);
     if (!u) return u.error();
     return static_cast<T>(u.value());
   } else if constexpr (std::floating_point<T>) {
-    return static_cast<T>(v.to_double());
+    constexpr bool single = std::same_as<T, float>;
+    auto d = detail::real_value(v, single); // integers exactly or not at all; range; NaN
+    if (!d) return d.error();
+    if (v.kind == number_kind::signed_ || v.kind == number_kind::unsigned_) {
+      return static_cast<T>(d.value());
+    }
+    if (v.kind == number_kind::decimal_) return static_cast<T>(d.value()); // nearest, see above
+    if constexpr (single) {
+      const auto f = static_cast<float>(d.value()); // within float's range: real_value checked
+      if (static_cast<double>(f) != d.value()) return errc::not_representable;
+      return f;
+    } else {
+      return d.value();
+    }
   } else {
     if (v.kind == number_kind::real) return errc::not_representable;
+    detail::wide_int x;
     if (v.kind == number_kind::unsigned_) {
-      if (v.bits > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) {
-        return errc::overflow;
+      x = {false, v.bits};
+    } else if (v.kind == number_kind::signed_) {
+      x = detail::from_int64(static_cast<std::int64_t>(v.bits));
+    } else { // a decimal: an integer only. Its digits are divided off here: number::to_int64
+             // and to_fixed would link the conversion of reals or the powers of ten into every
+             // decode<integer> (+1.4 kB on a Cortex-M), the loop costs 64 bytes.
+      auto m = static_cast<std::int64_t>(v.bits);
+      for (unsigned p = v.places; p > 0U && m != 0; --p) {
+        if (m % 10 != 0) return errc::not_representable;
+        m /= 10;
       }
-      return static_cast<T>(v.bits);
+      x = detail::from_int64(m);
     }
-    const auto i = static_cast<std::int64_t>(v.bits);
-    if constexpr (std::is_signed_v<T>) {
-      if (i < static_cast<std::int64_t>(std::numeric_limits<T>::min()) ||
-          i > static_cast<std::int64_t>(std::numeric_limits<T>::max())) {
-        return errc::overflow;
-      }
-    } else {
-      if (i < 0 || static_cast<std::uint64_t>(i) > std::numeric_limits<T>::max()) {
-        return errc::overflow;
+    if (x.negative) {
+      if constexpr (std::is_signed_v<T>) {
+        constexpr auto min_mag =
+            std::uint64_t{0} -
+            static_cast<std::uint64_t>(std::int64_t{std::numeric_limits<T>::min()});
+        if (x.mag > min_mag) return errc::overflow;
+        return static_cast<T>(static_cast<std::int64_t>(std::uint64_t{0} - x.mag));
+      } else {
+        return errc::overflow; // a negative value is never an unsigned T's
       }
     }
-    return static_cast<T>(i);
+    if (x.mag > static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return errc::overflow;
+    return static_cast<T>(x.mag);
   }
 }
-} // namespace detail
 
-/// Typed form of decode. Errors: those of decode, overflow when the value does not fit T,
-/// not_representable when a real value is asked for as an integer.
+/// Typed form of decode (the number as number_as<T> gives it). Errors: those of decode and of
+/// number_as: overflow when the value does not fit T, not_representable when a real value is
+/// asked for as an integer or T cannot hold the value exactly.
 template <value_type T>
 [[nodiscard]] constexpr result<T>
 decode(const entry &e, std::span<const std::uint8_t> in, byte_order order = byte_order::little,
        limits lim = limits::check, std::uint8_t node = any_node) noexcept {
   auto n = detail::decode(e, detail::maybe_scale{}, in, order, lim, node);
   if (!n) return n.error();
-  return detail::number_as<T>(n.value());
+  return number_as<T>(n.value());
 }
 template <value_type T>
 [[nodiscard]] constexpr result<T>
@@ -483,7 +514,7 @@ decode(const descriptor &d, std::span<const std::uint8_t> in, byte_order order =
        limits lim = limits::check, std::uint8_t node = any_node) noexcept {
   auto n = detail::decode(d, detail::maybe_scale{&d.scale, true}, in, order, lim, node);
   if (!n) return n.error();
-  return detail::number_as<T>(n.value());
+  return number_as<T>(n.value());
 }
 
 // --- object + sub-index ------------------------------------------------------------------------

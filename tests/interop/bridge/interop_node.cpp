@@ -4,6 +4,8 @@
 // (python canopen, tests/interop/interop_peer.py) can carry them.
 //
 // usage: interop_node DICTIONARY NODE      DICTIONARY: xenax | corpus
+// (interop_node_crc_table: the same program, its SDO servers computing the block transfer CRC by
+// table, node::capacity::sdo_crc_table)
 //
 // Standard input, one line each:
 //   ID#DATA, ID#R, ID#R<dlc>                      a frame from the bus
@@ -418,6 +420,17 @@ int run(Store &store, std::uint8_t node) {
   }
 }
 
+/// The capacity the dictionary needs; built with FIELDCODEC_INTEROP_CRC_TABLE (the executable
+/// interop_node_crc_table), the SDO servers compute the block transfer CRC by table.
+template <const od::dictionary &Dict>
+constexpr co::node::capacity capacity() {
+  co::node::capacity c = co::node::capacity_for(Dict);
+#ifdef FIELDCODEC_INTEROP_CRC_TABLE
+  c.sdo_crc_table = true;
+#endif
+  return c;
+}
+
 template <const od::dictionary &Dict, std::size_t N>
 int serve(std::uint8_t node) {
   static constexpr auto layout = sdo::make_layout<N>(Dict);
@@ -429,7 +442,7 @@ int serve(std::uint8_t node) {
                  std::string(fieldcodec::to_string(s.error())).c_str());
     return 2;
   }
-  return run<node_glue<decltype(store), co::node::capacity_for(Dict)>>(store, node);
+  return run<node_glue<decltype(store), capacity<Dict>()>>(store, node);
 }
 
 } // namespace

@@ -51,6 +51,7 @@
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
@@ -60,6 +61,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::canopen::node {
 
@@ -76,6 +78,10 @@ struct capacity {
   /// a smaller buffer serves block uploads of at most sdo_buffer / 7 segments per sub-block
   /// and aborts larger ones with 0x05040002. At least 8.
   std::size_t sdo_buffer = 889;
+  /// The SDO servers compute the CRC of block transfers by a 256-entry table
+  /// (crc::ccitt16_with_table: 512 bytes of flash, about half the instructions a byte) instead
+  /// of without one (the default). The SDO clients compute it without a table either way.
+  bool sdo_crc_table = false;
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
@@ -197,13 +203,29 @@ public:
              bool last) noexcept requires sdo::positioned_store<Store> {
       return d_->write_object(d_->store_->address_at(at), offset, part, last, at);
     }
+    // plain values (the PDO engine then copies a TPDO's plain objects from the store's bytes):
+    // reads as the store shows them; never writable, since every write of the device, an
+    // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
+    // would skip
+    [[nodiscard]] constexpr std::span<std::uint8_t>
+    plain_storage() noexcept requires sdo::plain_store<Store> {
+      return d_->store_->plain_storage();
+    }
+    [[nodiscard]] constexpr sdo::plain_slot
+    plain_at(std::size_t at) const noexcept requires sdo::plain_store<Store> {
+      sdo::plain_slot p = d_->store_->plain_at(at);
+      p.writable = false;
+      return p;
+    }
 
   private:
     device *d_;
   };
 
   using pdo_type = pdo_engine<access, C.rpdos, C.tpdos, C.mapped>;
-  using sdo_type = sdo_channels<access, C.sdo_servers, C.sdo_clients, C.sdo_buffer>;
+  using sdo_type = sdo_channels<
+      access, C.sdo_servers, C.sdo_clients, C.sdo_buffer,
+      std::conditional_t<C.sdo_crc_table, crc::ccitt16_with_table, crc::ccitt16_no_table>>;
   using emcy_type = emcy_producer<C.active_errors, C.error_history, C.emcy_queue>;
   using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
 

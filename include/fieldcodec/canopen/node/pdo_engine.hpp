@@ -57,6 +57,7 @@
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -152,6 +153,24 @@ public:
   /// sdo::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
   /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
   static constexpr bool by_position = sdo::positioned_store<Store>;
+  /// Whether the engine compiles each mapping into copies (the store models sdo::plain_store):
+  /// when a mapping is loaded, every entry whose object the store keeps plain (plain_at:
+  /// readable for a TPDO, writable for an RPDO) on whole bytes becomes a copy between the
+  /// store's bytes and the frame's — adjacent ones merged, then cut into copies of 8, 4, 2 and
+  /// 1 bytes, kept in four lists so that each runs as a loop of constant-length copies; the
+  /// others (1-bit BOOLEANs and entries after them off byte boundaries, limits or a scale to
+  /// check, a write hook, byte strings, objects the store lacks, and every entry of an RPDO
+  /// that maps one object twice) keep read_at / write_at, in mapping order, after the copies.
+  static constexpr bool by_copy = sdo::plain_store<Store>;
+
+  /// How a PDO's mapping was compiled (by_copy): `copied` entries in `copies` copies of 1, 2, 4
+  /// or 8 bytes, the other `per_object` entries by read_at / write_at (dummies are neither).
+  struct plan {
+    std::uint8_t copied = 0;
+    std::uint8_t copies = 0;
+    std::uint8_t per_object = 0;
+    friend constexpr bool operator==(const plan &, const plan &) = default;
+  };
 
   /// An engine over `store` (borrowed; its reads give the TPDO data, its writes take the RPDO
   /// data and must reach the store the application reads) and `dict` (the dictionary the
@@ -202,6 +221,7 @@ public:
     }
     for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(0, operational_);
     for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+    retime();
     return st;
   }
 
@@ -262,6 +282,7 @@ public:
     } else {
       rpdo_[where.slot].restart();
     }
+    retime();
   }
 
   // ----- traffic ---------------------------------------------------------------------------
@@ -272,12 +293,13 @@ public:
                                        std::uint32_t now) noexcept {
     begin();
     if (!operational_) return make(now);
-    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+    for (std::size_t i = 0; any_buffered_ && i < rpdo_count_; ++i) {
       rx_slot &r = rpdo_[i];
       if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
       r.buffered = false;
       apply(r, std::span<const std::uint8_t>(r.data).first(r.dlc));
     }
+    any_buffered_ = false;
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
       tx_slot &t = tpdo_[i];
       if (!t.c.valid()) continue;
@@ -346,6 +368,7 @@ public:
           continue;
         }
         r.buffered = true;
+        any_buffered_ = true;
         r.dlc = static_cast<std::uint8_t>(data.size());
         for (std::size_t k = 0; k < data.size(); ++k) r.data[k] = data[k];
       } else {
@@ -413,6 +436,21 @@ public:
   [[nodiscard]] constexpr std::size_t tpdo_count() const noexcept { return tpdo_count_; }
   [[nodiscard]] constexpr const config &rpdo(std::size_t i) const noexcept { return rpdo_[i].c; }
   [[nodiscard]] constexpr const config &tpdo(std::size_t i) const noexcept { return tpdo_[i].c; }
+  /// How RPDO / TPDO `i`'s current mapping is served (by_copy engines).
+  [[nodiscard]] constexpr plan compiled_plan(pdo::direction d,
+                                             std::size_t i) const noexcept requires by_copy {
+    const resolved &p = d == pdo::direction::rpdo ? rpdo_[i].pos : tpdo_[i].pos;
+    plan n;
+    n.per_object = p.per_objects;
+    n.copies = p.first[4];
+    const config &c = d == pdo::direction::rpdo ? rpdo_[i].c : tpdo_[i].c;
+    std::uint8_t dummies = 0;
+    for (const auto &m : c.entries()) {
+      if (m.is_dummy()) ++dummies;
+    }
+    n.copied = static_cast<std::uint8_t>(c.count - dummies - n.per_object);
+    return n;
+  }
   /// An RPDO's last frame was too short / too long; an RPDO's deadline passed.
   [[nodiscard]] constexpr bool any_too_short() const noexcept {
     return any([](const rx_slot &r) { return r.short_error; });
@@ -440,10 +478,28 @@ public:
   }
 
 private:
+  /// Mapping entry `entry`, at bit `bit` of the frame, read or written by position.
+  struct object_step {
+    std::uint8_t bit = 0;
+    std::uint8_t entry = 0;
+  };
+  struct no_steps {};
+  /// A compiled mapping (by_copy; compile() sets it with the positions, so it describes the
+  /// mapping in force): copy i moves 2^c bytes between the store's plain_storage() at
+  /// storage[i] and frame byte frame[i], for i in first[c]..first[c + 1] (c = 0..3: 1, 2, 4, 8
+  /// bytes; a frame has 8 bytes, so there are at most 8 copies); then the per-object entries.
+  struct compiled {
+    std::array<std::uint32_t, 8> storage{};
+    std::array<std::uint8_t, 8> frame{};
+    std::array<std::uint8_t, 5> first{};
+    std::uint8_t per_objects = 0;
+    std::array<object_step, MaxEntries> object{};
+  };
   /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
-  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks. Set by
-  /// load_mapping, the only place that changes a mapping, so it never goes stale.
-  struct resolved {
+  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks; and,
+  /// by_copy, the compiled mapping. Set by load_mapping, the only place that changes a mapping,
+  /// so it never goes stale.
+  struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
     std::array<std::size_t, MaxEntries> at{};
     bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
   };
@@ -595,6 +651,7 @@ private:
   [[nodiscard]] constexpr bool load(config &c, positions &at, std::uint16_t comm,
                                     std::uint16_t number, pdo::direction d) noexcept {
     c = config{};
+    at = positions{}; // a PDO found unusable below keeps no steps of an earlier mapping
     c.number = number;
     c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
     c.type = static_cast<std::uint8_t>(read_u32(*store_, {comm, 2}).value_or(255U));
@@ -618,6 +675,10 @@ private:
         d == pdo::direction::rpdo ? pdo_index::rpdo_map : pdo_index::tpdo_map;
     const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
     c.bytes = 0;
+    if constexpr (by_copy) {
+      at.first = {}; // the steps always describe c.map[0..count): none until it is checked
+      at.per_objects = 0;
+    }
     if (c.count > MaxEntries || c.count > c.map_subs) {
       c.count = 0;
       return false;
@@ -643,17 +704,85 @@ private:
         at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
         if (m.bits % 8U != 0U) at.whole_bytes = false;
       }
+      if constexpr (by_copy) compile(c, at, d);
     } else {
       (void)at;
     }
     return true;
   }
 
+  /// Compile a checked mapping (by_copy): the entries the store keeps plain for this direction
+  /// on whole bytes become runs of bytes — an entry joins the run before it when both the
+  /// store's bytes and the frame's are adjacent —, each run cut into copies of 8, 4, 2, 1 bytes
+  /// (largest first) and filed by length; the others are per-object steps, in mapping order.
+  /// Dummies get nothing (a TPDO's data starts zeroed, an RPDO skips them). An RPDO that maps
+  /// one object twice is written entry by entry, so that the later entry wins as it does by
+  /// position and by address.
+  constexpr void compile(const config &c, resolved &at, pdo::direction d) noexcept {
+    const bool rx = d == pdo::direction::rpdo;
+    bool twice = false;
+    for (std::size_t k = 0; rx && k < c.count; ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        if (at.at[k] != sdo::no_position && at.at[k] == at.at[j]) twice = true;
+      }
+    }
+    struct run {
+      std::uint32_t storage = 0;
+      std::size_t frame = 0;
+      std::size_t size = 0;
+    };
+    std::array<run, MaxEntries> runs{};
+    std::size_t n_runs = 0;
+    at.per_objects = 0;
+    const std::size_t room = store_->plain_storage().size();
+    std::size_t bit = 0;
+    for (std::size_t k = 0; k < c.count; ++k) {
+      const pdo::mapping_entry &m = c.map[k];
+      if (!m.is_dummy()) {
+        sdo::plain_slot s{};
+        if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
+          s = store_->plain_at(at.at[k]);
+        }
+        // (a slot that would reach past the storage is a broken promise: not copied)
+        if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable) ||
+            s.offset > room || room - s.offset < s.size) {
+          at.object[at.per_objects++] = {static_cast<std::uint8_t>(bit),
+                                         static_cast<std::uint8_t>(k)};
+        } else if (n_runs != 0U && runs[n_runs - 1U].storage + runs[n_runs - 1U].size == s.offset &&
+                   runs[n_runs - 1U].frame + runs[n_runs - 1U].size == bit / 8U) {
+          runs[n_runs - 1U].size += s.size;
+        } else {
+          runs[n_runs++] = {s.offset, bit / 8U, s.size};
+        }
+      }
+      bit += m.bits;
+    }
+    std::size_t n = 0;
+    for (std::size_t cls = 0; cls < 4U; ++cls) {
+      at.first[cls] = static_cast<std::uint8_t>(n);
+      const std::size_t len = std::size_t{1} << cls;
+      for (std::size_t r = 0; r < n_runs; ++r) {
+        for (std::size_t o = 0; o < runs[r].size;) {
+          const std::size_t left = runs[r].size - o;
+          const std::size_t chunk = left >= 8U ? 8U : left >= 4U ? 4U : left >= 2U ? 2U : 1U;
+          if (chunk == len) {
+            at.storage[n] = runs[r].storage + static_cast<std::uint32_t>(o);
+            at.frame[n++] = static_cast<std::uint8_t>(runs[r].frame + o);
+          }
+          o += chunk;
+        }
+      }
+    }
+    at.first[4] = static_cast<std::uint8_t>(n);
+  }
+
   // ----- data ------------------------------------------------------------------------------
 
   /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
   [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
-    if constexpr (by_position) {
+    if constexpr (by_copy) {
+      return build_by_copy(t);
+    } else if constexpr (by_position) {
       return build_at(t);
     } else {
       return build_by_address(t);
@@ -684,25 +813,58 @@ private:
     }
     std::size_t offset = 0;
     for (std::size_t k = 0; k < t.c.count; ++k) {
-      const pdo::mapping_entry &m = t.c.map[k];
-      if (!m.is_dummy()) {
-        if (p.at[k] == sdo::no_position) return false;
-        const std::size_t n = (m.bits + 7U) / 8U;
-        std::size_t total = 0;
-        if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
-          const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
-          if (store_->read_at(p.at[k], 0, out, total) != abort_code::none) return false;
-        } else {
-          std::array<std::uint8_t, 8> v{};
-          if (store_->read_at(p.at[k], 0, v, total) != abort_code::none) return false;
-          std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
-          if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
-          if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
-        }
-      }
-      offset += m.bits;
+      if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset)) return false;
+      offset += t.c.map[k].bits;
     }
     return true;
+  }
+  /// Read mapping entry k (not a dummy) of a TPDO by position into t.data from bit `offset`.
+  [[nodiscard, gnu::noinline]] constexpr bool read_entry(tx_slot &t, std::size_t k,
+                                                         std::size_t offset) noexcept {
+    const pdo::mapping_entry &m = t.c.map[k];
+    const std::size_t at = t.pos.at[k];
+    if (at == sdo::no_position) return false;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    std::size_t total = 0;
+    if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
+      const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
+      return store_->read_at(at, 0, out, total) == abort_code::none;
+    }
+    std::array<std::uint8_t, 8> v{};
+    if (store_->read_at(at, 0, v, total) != abort_code::none) return false;
+    std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+    if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+    return pdo::pack(t.data, offset, m.bits, raw).has_value();
+  }
+  /// build() by the compiled mapping: the copies from the store's bytes, then the other
+  /// entries by position (the first that cannot be read stops the TPDO, as above; the frame's
+  /// bytes of different entries never overlap, so the order does not show).
+  [[nodiscard]] constexpr bool build_by_copy(tx_slot &t) noexcept {
+    t.data = {};
+    const resolved &p = t.pos;
+    const std::uint8_t *from = store_->plain_storage().data();
+    std::uint8_t *to = t.data.data();
+    copies<1, true>(p, 0, to, from);
+    copies<2, true>(p, 1, to, from);
+    copies<4, true>(p, 2, to, from);
+    copies<8, true>(p, 3, to, from);
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (!read_entry(t, p.object[i].entry, p.object[i].bit)) return false;
+    }
+    return true;
+  }
+  /// The copies of N bytes (list `cls` of a compiled mapping): into the frame's bytes `to`
+  /// from the storage `from` (ToFrame), or into the storage `to` from the frame's bytes `from`.
+  template <std::size_t N, bool ToFrame>
+  static constexpr void copies(const resolved &p, std::size_t cls, std::uint8_t *to,
+                               const std::uint8_t *from) noexcept {
+    for (std::size_t i = p.first[cls]; i < p.first[cls + 1U]; ++i) {
+      if constexpr (ToFrame) {
+        std::copy_n(from + p.storage[i], N, to + p.frame[i]);
+      } else {
+        std::copy_n(from + p.frame[i], N, to + p.storage[i]);
+      }
+    }
   }
   /// build() through the store's read by address (a store without positions).
   [[nodiscard]] constexpr bool build_by_address(tx_slot &t) noexcept {
@@ -746,7 +908,9 @@ private:
 
   /// Write an RPDO's data (at least c.bytes long) into the mapped objects.
   constexpr void apply(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
-    if constexpr (by_position) {
+    if constexpr (by_copy) {
+      apply_by_copy(r, data);
+    } else if constexpr (by_position) {
       apply_at(r, data);
     } else {
       apply_by_address(r.c, data);
@@ -757,30 +921,54 @@ private:
   /// that passed pdo::check_mapping has bits = 8 × width for fixed-size types, 1 or 8 for a
   /// BOOLEAN (width 1) and whole bytes for byte strings.
   constexpr void apply_at(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
-    const resolved &p = r.pos;
     std::size_t offset = 0;
     std::uint8_t refused = 0;
     for (std::size_t k = 0; k < r.c.count; ++k) {
-      const pdo::mapping_entry &m = r.c.map[k];
-      if (!m.is_dummy()) {
-        const std::size_t n = (m.bits + 7U) / 8U;
-        abort_code c = abort_code::general_error;
-        if (p.at[k] == sdo::no_position) {
-          // the store has no such object: refused, as its write would refuse it
-        } else if ((p.whole_bytes || ((offset | m.bits) % 8U) == 0U) &&
-                   offset / 8U + n <= data.size()) {
-          c = store_->write_at(p.at[k], 0, data.subspan(offset / 8U, n), true);
-        } else {
-          std::array<std::uint8_t, 8> v{};
-          const auto raw = pdo::unpack(data, offset, m.bits);
-          if (raw && store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
-                                    byte_order::little)) {
-            c = store_->write_at(p.at[k], 0, std::span<const std::uint8_t>(v).first(n), true);
-          }
-        }
-        if (c != abort_code::none) ++refused;
+      if (!r.c.map[k].is_dummy() && write_entry(r, k, offset, data) != abort_code::none) {
+        ++refused;
       }
-      offset += m.bits;
+      offset += r.c.map[k].bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+  }
+  /// Write mapping entry k (not a dummy) of an RPDO by position from bit `offset` of `data`.
+  [[nodiscard, gnu::noinline]] constexpr abort_code
+  write_entry(const rx_slot &r, std::size_t k, std::size_t offset,
+              std::span<const std::uint8_t> data) noexcept {
+    const pdo::mapping_entry &m = r.c.map[k];
+    const std::size_t at = r.pos.at[k];
+    // the store has no such object: refused, as its write would refuse it
+    if (at == sdo::no_position) return abort_code::general_error;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
+      return store_->write_at(at, 0, data.subspan(offset / 8U, n), true);
+    }
+    std::array<std::uint8_t, 8> v{};
+    const auto raw = pdo::unpack(data, offset, m.bits);
+    if (!raw ||
+        !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(), byte_order::little)) {
+      return abort_code::general_error;
+    }
+    return store_->write_at(at, 0, std::span<const std::uint8_t>(v).first(n), true);
+  }
+  /// apply() by the compiled mapping: the copies into the store's bytes (objects that take
+  /// every value with no effect but being stored: nothing to refuse), then the other entries by
+  /// position, in mapping order. (The copies go first; no entry of another object sees the
+  /// difference, and an RPDO that maps an object twice has no copies.)
+  constexpr void apply_by_copy(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    const resolved &p = r.pos;
+    std::uint8_t *to = store_->plain_storage().data();
+    // data holds at least c.bytes bytes (see apply), within which every copy lies
+    const std::uint8_t *from = data.data();
+    copies<1, false>(p, 0, to, from);
+    copies<2, false>(p, 1, to, from);
+    copies<4, false>(p, 2, to, from);
+    copies<8, false>(p, 3, to, from);
+    std::uint8_t refused = 0;
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (write_entry(r, p.object[i].entry, p.object[i].bit, data) != abort_code::none) {
+        ++refused;
+      }
     }
     events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
   }
@@ -823,8 +1011,23 @@ private:
     out_.clear();
     events_.clear();
   }
+  /// The step: the frames to send, the state, and deadline(now) — which is nullopt without a
+  /// scan when no PDO has timing (timed_).
   [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
-    return {out_.view(), operational_, deadline(now)};
+    return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
+  }
+  /// Set timed_: whether any PDO can have a deadline — a valid TPDO of type 254/255 (pending,
+  /// event timer), a valid RPDO with an event timer (deadline monitoring starts only with one,
+  /// and every change of it restarts the RPDO). Called wherever a COB-ID, transmission type,
+  /// event timer or the usability of a PDO changes: reload() and written().
+  constexpr void retime() noexcept {
+    timed_ = false;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (tpdo_[i].c.valid() && tpdo_[i].c.type >= 254U) timed_ = true;
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rpdo_[i].c.valid() && rpdo_[i].c.event_timer != 0U) timed_ = true;
+    }
   }
 
   static constexpr std::size_t out_capacity = MaxTpdo == 0U ? 1U : MaxTpdo;
@@ -840,6 +1043,8 @@ private:
   event_list<pdo_event, event_capacity> events_{};
   bool operational_ = false;
   bool report_long_ = true;
+  bool timed_ = false;        ///< see retime()
+  bool any_buffered_ = false; ///< an RPDO may be buffered for the next SYNC (set with buffered)
 };
 
 } // namespace fieldcodec::canopen::node

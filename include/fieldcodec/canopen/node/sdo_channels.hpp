@@ -25,6 +25,7 @@
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
@@ -44,7 +45,10 @@ inline constexpr std::uint16_t client = 0x1280U; ///< 1280h–12FFh
 inline constexpr std::uint16_t count = 0x80U;
 } // namespace sdo_index
 
-template <sdo::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer>
+/// `Crc`: how the servers compute the CRC of block transfers (core/crc.hpp; the clients always
+/// compute it without a table, so that they stay `sdo::client`).
+template <sdo::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer,
+          class Crc = crc::ccitt16_no_table>
 class sdo_channels {
   static_assert(Servers >= 1U, "a node has at least its default SDO server");
   static_assert(Buffer >= 8U, "an SDO server buffer holds at least one segment and a u32");
@@ -159,7 +163,7 @@ public:
   [[nodiscard]] constexpr const sdo::client &client(std::size_t i) const noexcept {
     return clients_[i];
   }
-  [[nodiscard]] constexpr const sdo::server<Store> &server(std::size_t i) const noexcept {
+  [[nodiscard]] constexpr const sdo::server<Store, Crc> &server(std::size_t i) const noexcept {
     return servers_[i];
   }
   /// Does server / client i exist (valid COB-IDs)?
@@ -194,14 +198,14 @@ public:
 
 private:
   template <std::size_t... S>
-  [[nodiscard]] static constexpr std::array<sdo::server<Store>, Servers>
+  [[nodiscard]] static constexpr std::array<sdo::server<Store, Crc>, Servers>
   make_servers(Store &store, std::uint8_t node, std::uint32_t timeout_ms, sdo::server_options o,
                std::array<std::array<std::uint8_t, Buffer>, Servers> &buffers,
                std::index_sequence<S...>) noexcept {
     // server 0 starts on the predefined connection, the others without one (until reload)
-    return {{sdo::server<Store>(S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{})
-                                        : sdo::channel{},
-                                store, std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
+    return {{sdo::server<Store, Crc>(
+        S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{}) : sdo::channel{}, store,
+        std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
   }
   template <std::size_t... C>
   [[nodiscard]] static constexpr std::array<sdo::client, Clients>
@@ -252,7 +256,7 @@ private:
   Store *store_;
   std::uint8_t node_;
   std::array<std::array<std::uint8_t, Buffer>, Servers> buffers_{};
-  std::array<sdo::server<Store>, Servers> servers_;
+  std::array<sdo::server<Store, Crc>, Servers> servers_;
   std::array<sdo::client, Clients> clients_;
   std::array<std::uint16_t, Servers> server_index_{};
   std::array<std::uint16_t, client_slots> client_index_{};
