@@ -357,7 +357,9 @@ struct reader {
       ++i;
     } while (depth > 0);
   }
-  /// Moves to just after `inline constexpr std::array<type, N> name{{`; returns N.
+  /// Moves to just after `inline constexpr std::array<type, N> name{{` (a command table) or
+  /// `inline constexpr type name[N]{` (an object dictionary's C-array table, in namespace
+  /// detail); returns N. `table_braces` is then the number of braces that close the table.
   std::size_t find_table(std::string_view name) {
     for (; i + 2U < t.size(); ++i) {
       if (t[i].kind == tok::ident && t[i].text == name && t[i + 1U].text == "{" &&
@@ -367,12 +369,22 @@ struct reader {
         reader r{t, k};
         const std::uint64_t n = r.unsigned_number();
         i += 3U;
+        table_braces = 2;
+        return n;
+      }
+      if (t[i].kind == tok::ident && t[i].text == name && i + 4U < t.size() &&
+          t[i + 1U].text == "[" && t[i + 3U].text == "]" && t[i + 4U].text == "{") {
+        reader r{t, i + 2U};
+        const std::uint64_t n = r.unsigned_number();
+        i += 5U;
+        table_braces = 1;
         return n;
       }
     }
     FUZZ_CHECK(false && "table not found");
     return 0;
   }
+  int table_braces = 0;
 };
 
 bool same_number(const od::number &a, const od::number &b) {
@@ -448,7 +460,7 @@ void check_entries(reader &r, const gen::dictionary &d) {
     FUZZ_CHECK(def_text == e.default_text.str());
     r.expect(",");
   }
-  r.expect("}");
+  FUZZ_CHECK(r.table_braces == 1); // object tables are C arrays
   r.expect("}");
 }
 
@@ -489,7 +501,7 @@ void check_infos(reader &r, const gen::dictionary &d) {
     FUZZ_CHECK(same_number(parameter, e.parameter_value));
     r.expect(",");
   }
-  r.expect("}");
+  FUZZ_CHECK(r.table_braces == 1); // object tables are C arrays
   r.expect("}");
 }
 
@@ -540,11 +552,24 @@ bool good_identifier(std::string_view s) {
   return true;
 }
 
-/// Every declaration of the namespace: `inline constexpr <type> NAME{` / `= ...`.
+/// Every declaration of the namespace: `inline constexpr <type> NAME{` / `= ...`, and of its
+/// namespace detail (the C-array tables `inline constexpr <type> NAME[N]{`).
 void check_names(const std::vector<token> &t, const gen::dictionary &d) {
   std::set<std::string> names;
+  std::set<std::string> detail_names;
   std::size_t descriptors = 0, objects = 0, commands = 0;
+  int detail_depth = -1; // brace depth inside `namespace detail {`, -1 outside
   for (std::size_t i = 0; i + 1U < t.size(); ++i) {
+    if (detail_depth < 0 && t[i].kind == tok::ident && t[i].text == "namespace" &&
+        t[i + 1U].text == "detail") {
+      FUZZ_CHECK(i + 2U < t.size() && t[i + 2U].text == "{");
+      detail_depth = 0;
+      continue;
+    }
+    if (detail_depth >= 0 && t[i].kind == tok::punct) {
+      if (t[i].text == "{") ++detail_depth;
+      if (t[i].text == "}" && --detail_depth == 0) detail_depth = -1;
+    }
     if (t[i].kind == tok::ident && t[i].text == "namespace" && t[i + 1U].text == "fieldcodec") {
       // namespace fieldcodec::dictionaries::<stem> {
       FUZZ_CHECK(i + 5U < t.size() && t[i + 3U].text == "dictionaries");
@@ -565,21 +590,31 @@ void check_names(const std::vector<token> &t, const gen::dictionary &d) {
       if (angle == 0 && t[k].kind == tok::ident) type += t[k].text + " ";
       ++k;
     }
+    if (detail_depth >= 0) { // namespace detail: `type name[N]{` only
+      FUZZ_CHECK(k >= 4U && k < t.size() && t[k].text == "{" && t[k - 1U].text == "]" &&
+                 t[k - 3U].text == "[" && t[k - 4U].kind == tok::ident);
+      FUZZ_CHECK(detail_names.insert(t[k - 4U].text).second);
+      continue;
+    }
     FUZZ_CHECK(k < t.size() && t[k - 1U].kind == tok::ident);
     const std::string &name = t[k - 1U].text;
     FUZZ_CHECK(good_identifier(name));
     FUZZ_CHECK(names.insert(name).second); // unique in the namespace
     if (type == "od descriptor " + name + " ") {
       ++descriptors;
-      // {entries[k], infos[k] ...}; // 0xIIII [sub S]
+      // {detail::entries[k], detail::infos[k] ...}; // 0xIIII [sub S]
       reader r{t, k};
       r.expect("{");
+      r.expect("detail");
+      r.expect("::");
       r.expect("entries");
       r.expect("[");
       const std::uint64_t row = r.unsigned_number();
       FUZZ_CHECK(row < d.entries.size());
       r.expect("]");
       r.expect(",");
+      r.expect("detail");
+      r.expect("::");
       r.expect("infos");
       r.expect("[");
       FUZZ_CHECK(r.unsigned_number() == row);
@@ -617,6 +652,9 @@ void check_names(const std::vector<token> &t, const gen::dictionary &d) {
     FUZZ_CHECK(descriptors + objects > 0U || d.entries.empty());
     FUZZ_CHECK(names.contains("entries") && names.contains("infos") &&
                names.contains("dictionary"));
+    // the tables in namespace detail, published under the same names as spans
+    FUZZ_CHECK(detail_names.contains("entries") && detail_names.contains("infos"));
+    FUZZ_CHECK(detail_names.size() == (names.contains("scales") ? 3U : 2U));
   }
   FUZZ_CHECK(names.contains("source_file"));
   FUZZ_CHECK(names.contains("node_id") == (!d.is_command_table && d.node_id > 0));
@@ -628,7 +666,7 @@ void check_descriptor_comments(std::string_view h, const gen::dictionary &d) {
   while ((p = h.find("inline constexpr od::descriptor ", p)) != std::string_view::npos) {
     const std::size_t eol = h.find('\n', p);
     const std::string_view line = h.substr(p, eol - p);
-    const std::size_t row_at = line.find("{entries[") + 9U;
+    const std::size_t row_at = line.find("{detail::entries[") + 17U;
     std::size_t row = 0;
     (void)std::from_chars(line.data() + row_at, line.data() + line.size(), row);
     FUZZ_CHECK(row < d.entries.size());
