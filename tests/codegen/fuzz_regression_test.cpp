@@ -160,12 +160,12 @@ TEST_CASE("fuzz F19: names after a keyword's trailing '_' have no double undersc
   const std::string h = gen::emit_header(*d);
   CHECK(h.find("__") == std::string::npos);
   CHECK(h.find(" switch_{0x2100,") != std::string::npos);
-  CHECK(h.find(" switch_count{entries[0]") != std::string::npos);
-  CHECK(h.find(" switch_mode{entries[1]") != std::string::npos);
-  CHECK(h.find(" switch_sub2{entries[2]") != std::string::npos);
-  CHECK(h.find(" int_{entries[3]") != std::string::npos);
-  CHECK(h.find(" int_2102{entries[4]") != std::string::npos);
-  CHECK(h.find(" int_2103{entries[5]") != std::string::npos);
+  CHECK(h.find(" switch_count{detail::entries[0]") != std::string::npos);
+  CHECK(h.find(" switch_mode{detail::entries[1]") != std::string::npos);
+  CHECK(h.find(" switch_sub2{detail::entries[2]") != std::string::npos);
+  CHECK(h.find(" int_{detail::entries[3]") != std::string::npos);
+  CHECK(h.find(" int_2102{detail::entries[4]") != std::string::npos);
+  CHECK(h.find(" int_2103{detail::entries[5]") != std::string::npos);
 }
 
 // F20 (2026-11-25, fuzz_codegen_emit, file names; found by a hand-written input while writing
