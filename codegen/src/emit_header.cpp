@@ -722,6 +722,8 @@ void emit(writer &o, const dictionary &d) {
     }
     o.lit("};\n");
   };
+  // (no entries: no C arrays, a C array of length 0 is ill-formed; empty spans)
+  const bool empty = d.entries.empty();
   auto span = [&](std::string_view type, std::string_view name) {
     o.lit("inline constexpr std::span<const ");
     o.put(type);
@@ -729,19 +731,25 @@ void emit(writer &o, const dictionary &d) {
     o.uint(d.entries.size());
     o.lit("> ");
     o.put(name);
+    if (empty) {
+      o.lit("{};\n");
+      return;
+    }
     o.lit("{detail::");
     o.put(name);
     o.lit("};\n");
   };
-  o.lit("namespace detail {\n");
-  table("od::entry", "entries", emit_core);
-  o.put('\n');
-  table("od::entry_info", "infos", emit_info);
-  if (scales) {
+  if (!empty) {
+    o.lit("namespace detail {\n");
+    table("od::entry", "entries", emit_core);
     o.put('\n');
-    table("scaling::linear", "scales", emit_scale);
+    table("od::entry_info", "infos", emit_info);
+    if (scales) {
+      o.put('\n');
+      table("scaling::linear", "scales", emit_scale);
+    }
+    o.lit("} // namespace detail\n\n");
   }
-  o.lit("} // namespace detail\n\n");
   span("od::entry", "entries");
   span("od::entry_info", "infos");
   if (scales) span("scaling::linear", "scales");

@@ -97,6 +97,19 @@ TEST_CASE("emit_header: --no-sub-descriptors leaves out exactly the sub-object d
   CHECK_FALSE(has(views_only, "server_sdo_parameter_cob_id_client_to_server"));
 }
 
+TEST_CASE("emit_header: no entries, no C arrays (a C array of length 0 is ill-formed)") {
+  gen::diagnostics d;
+  auto dict = gen::read_csv("index,subindex,name,data_type,access\n", "t.csv", d);
+  REQUIRE(dict.has_value());
+  REQUIRE(dict->entries.empty());
+  dict->stem = "t";
+  const std::string h = gen::emit_header(*dict);
+  CHECK_FALSE(has(h, "namespace detail"));
+  CHECK(has(h, "inline constexpr std::span<const od::entry, 0> entries{};\n"
+               "inline constexpr std::span<const od::entry_info, 0> infos{};\n"));
+  CHECK(has(h, "inline constexpr od::dictionary dictionary{entries, infos};"));
+}
+
 TEST_CASE("emit_header: scaled CSV rows get a scale table and the scaled flag") {
   gen::diagnostics d;
   auto dict = gen::read_csv("index,subindex,name,data_type,access,low,high,scale,unit\n"

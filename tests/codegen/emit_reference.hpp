@@ -520,19 +520,22 @@ inline std::string emit_header(const dictionary &d) {
     }
     o += "};\n";
   };
+  const bool empty = d.entries.empty(); // no C array of length 0: empty spans
   auto span = [&](const char *type, const char *name) {
     o += std::string("inline constexpr std::span<const ") + type + ", " + size + "> " + name +
-         "{detail::" + name + "};\n";
+         (empty ? std::string("{};\n") : "{detail::" + std::string(name) + "};\n");
   };
-  o += "namespace detail {\n";
-  table("od::entry", "entries", emit_core);
-  o += "\n";
-  table("od::entry_info", "infos", emit_info);
-  if (scales) {
+  if (!empty) {
+    o += "namespace detail {\n";
+    table("od::entry", "entries", emit_core);
     o += "\n";
-    table("scaling::linear", "scales", emit_scale);
+    table("od::entry_info", "infos", emit_info);
+    if (scales) {
+      o += "\n";
+      table("scaling::linear", "scales", emit_scale);
+    }
+    o += "} // namespace detail\n\n";
   }
-  o += "} // namespace detail\n\n";
   span("od::entry", "entries");
   span("od::entry_info", "infos");
   if (scales) span("scaling::linear", "scales");

@@ -1,4 +1,5 @@
 #include <fieldcodec/dictionaries/my_drive.hpp>
+#include <fieldcodec/dictionaries/my_drive_empty.hpp>
 #include <fieldcodec/dictionaries/my_drive_views.hpp>
 
 namespace drive = fieldcodec::dictionaries::my_drive;
@@ -16,6 +17,10 @@ static_assert(vendor_id.index == drive::identity_object_vendor_id.index &&
               vendor_id.sub == drive::identity_object_vendor_id.sub &&
               vendor_id.info.name == drive::identity_object_vendor_id.info.name);
 static_assert(views::device_type.index == 0x1000); // VAR objects keep their descriptors
+
+// no entries: empty spans and an empty, valid dictionary
+static_assert(fieldcodec::dictionaries::my_drive_empty::entries.size() == 0 &&
+              fieldcodec::dictionaries::my_drive_empty::dictionary.empty());
 
 int main() {
   return drive::dictionary.find(0x1014, 0)->default_for(3).value().bits == 0x83U ? 0 : 1;
