@@ -158,3 +158,47 @@ TEST_CASE("byte_writer reports a full buffer and does not move on failure") {
   CHECK(w2.write_unsigned(1, 256, byte_order::big).is(errc::overflow)); // value checked first
   CHECK(w2.write_unsigned(1, 255, byte_order::big).is(errc::buffer_too_small));
 }
+
+// copy_bytes: exactly n bytes, in order, nothing past them; the same in constant evaluation.
+namespace {
+template <std::size_t N>
+constexpr std::array<std::uint8_t, 10> copied_fixed() {
+  std::array<std::uint8_t, 10> to{};
+  to.fill(0xEE);
+  fc::copy_bytes<N>(seq.data(), to.data());
+  return to;
+}
+constexpr std::array<std::uint8_t, 10> copied_n(std::size_t n) {
+  std::array<std::uint8_t, 10> to{};
+  to.fill(0xEE);
+  fc::copy_bytes(seq.data(), to.data(), n);
+  return to;
+}
+constexpr bool copies_exactly(const std::array<std::uint8_t, 10> &to, std::size_t n) {
+  for (std::size_t i = 0; i < to.size(); ++i) {
+    if (to[i] != (i < n ? seq[i] : 0xEE)) return false;
+  }
+  return true;
+}
+} // namespace
+static_assert(copies_exactly(copied_fixed<7>(), 7));
+static_assert(copies_exactly(copied_fixed<1>(), 1));
+static_assert(copies_exactly(copied_n(0), 0));
+static_assert(copies_exactly(copied_n(3), 3));
+static_assert(copies_exactly(copied_n(8), 8));
+
+TEST_CASE("copy_bytes copies exactly the bytes asked for, at every length, at run time") {
+  CHECK(copies_exactly(copied_fixed<0>(), 0));
+  CHECK(copies_exactly(copied_fixed<1>(), 1));
+  CHECK(copies_exactly(copied_fixed<2>(), 2));
+  CHECK(copies_exactly(copied_fixed<3>(), 3));
+  CHECK(copies_exactly(copied_fixed<4>(), 4));
+  CHECK(copies_exactly(copied_fixed<5>(), 5));
+  CHECK(copies_exactly(copied_fixed<6>(), 6));
+  CHECK(copies_exactly(copied_fixed<7>(), 7));
+  CHECK(copies_exactly(copied_fixed<8>(), 8));
+  for (std::size_t n = 0; n <= seq.size(); ++n) {
+    CAPTURE(n);
+    CHECK(copies_exactly(copied_n(n), n));
+  }
+}

@@ -372,7 +372,7 @@ private:
     const auto v = current(l);
     if (offset > v.size()) return abort_code::general_error;
     const std::size_t n = v.size() - offset < out.size() ? v.size() - offset : out.size();
-    copy_bytes(out.data(), v.data() + offset, n);
+    fieldcodec::copy_bytes(v.data() + offset, out.data(), n);
     total = v.size();
     return abort_code::none;
   }
@@ -522,22 +522,8 @@ private:
     if (ask_hook) {
       if (const auto c = on_write_(e, data); c != abort_code::none) return c;
     }
-    copy_bytes(l.slot.data(), data.data(), l.slot.size());
+    fieldcodec::copy_bytes(data.data(), l.slot.data(), l.slot.size());
     return abort_code::none;
-  }
-
-  /// Copy n bytes: the widths of numbers (a PDO's values) as constant-length copies, which the
-  /// compiler turns into one load and one store; other lengths (SDO parts, strings) as one
-  /// memmove.
-  static constexpr void copy_bytes(std::uint8_t *to, const std::uint8_t *from,
-                                   std::size_t n) noexcept {
-    switch (n) {
-    case 1: to[0] = from[0]; return;
-    case 2: std::copy_n(from, 2, to); return;
-    case 4: std::copy_n(from, 4, to); return;
-    case 8: std::copy_n(from, 8, to); return;
-    default: std::copy_n(from, n, to); return;
-    }
   }
 
   [[nodiscard]] static constexpr abort_code out_of_range_code(const od::entry &e,

@@ -789,19 +789,6 @@ block_download_initiate_response(od::address a, std::uint8_t block_size, bool cr
 }
 namespace detail {
 
-/// Copy 7 bytes (a block segment's data): at run time as one copy of constant length (a few
-/// moves; a loop of 7 byte moves cost 14 instructions, and GCC merged a `std::copy_n` of 7 with
-/// a copy of run-time length into a call of memcpy).
-constexpr void copy_7(const std::uint8_t *from, std::uint8_t *to) noexcept {
-#if defined(__GNUC__)
-  if (!std::is_constant_evaluated()) {
-    __builtin_memcpy(to, from, 7);
-    return;
-  }
-#endif
-  for (std::size_t i = 0; i < 7U; ++i) to[i] = from[i];
-}
-
 /// The one writer of a block segment's 8 bytes (encode_block_segment checks its arguments and
 /// calls it; a burst's loop of full segments, whose arguments hold by construction, calls it
 /// directly): byte 0 = last << 7 | sequence, then `bytes`, then zeros. Requires sequence
@@ -810,7 +797,7 @@ constexpr void write_block_segment(payload &p, std::uint8_t sequence,
                                    std::span<const std::uint8_t> bytes, bool last) noexcept {
   p[0] = static_cast<std::uint8_t>((last ? 0x80U : 0U) | sequence);
   if (bytes.size() == 7U) { // every segment but the last: a copy of constant length
-    copy_7(bytes.data(), p.data() + 1);
+    fieldcodec::copy_bytes<7>(bytes.data(), p.data() + 1);
     return;
   }
   for (std::size_t i = 0; i < 7U; ++i) p[1U + i] = i < bytes.size() ? bytes[i] : std::uint8_t{0};

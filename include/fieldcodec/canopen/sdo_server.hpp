@@ -64,7 +64,7 @@ template <class Flush>
     const std::size_t left = bytes.size() - at;
     const std::size_t n = room < left ? room : left;
     if (n == 7U) { // a whole segment: a copy of constant length, inlined as a few moves
-      copy_7(bytes.data() + at, buf.data() + used);
+      fieldcodec::copy_bytes<7>(bytes.data() + at, buf.data() + used);
     } else {
       std::copy_n(bytes.begin() + static_cast<std::ptrdiff_t>(at), n,
                   buf.begin() + static_cast<std::ptrdiff_t>(used));
@@ -315,7 +315,7 @@ private:
   /// block_download_segment_rest, out of line.
   [[nodiscard]] constexpr step block_download_segment(const payload &p) noexcept {
     if (buf_.size() - used_ >= 7U && block_rx_.take_next(p)) {
-      detail::copy_7(p.data() + 1, buf_.data() + used_);
+      fieldcodec::copy_bytes<7>(p.data() + 1, buf_.data() + used_);
       used_ += 7U;
       return core_.make();
     }

@@ -860,9 +860,9 @@ private:
                                const std::uint8_t *from) noexcept {
     for (std::size_t i = p.first[cls]; i < p.first[cls + 1U]; ++i) {
       if constexpr (ToFrame) {
-        std::copy_n(from + p.storage[i], N, to + p.frame[i]);
+        fieldcodec::copy_bytes<N>(from + p.storage[i], to + p.frame[i]);
       } else {
-        std::copy_n(from + p.frame[i], N, to + p.storage[i]);
+        fieldcodec::copy_bytes<N>(from + p.frame[i], to + p.storage[i]);
       }
     }
   }
