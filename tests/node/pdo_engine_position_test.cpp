@@ -5,7 +5,11 @@
 // address, as before. The differential test runs both on the same random configurations,
 // remappings, values and traffic and compares every frame, event, answer and stored byte: the
 // address path is the reference (it is the engine's code before the change, kept for such
-// stores).
+// stores). Since round 6 it runs a fourth engine, the round-5 engine as it was
+// (pdo_engine_r5_reference.hpp), which scans every PDO's parameters on every SYNC and frame where
+// the engine now tests what reindex() derived from them; random writes of every communication
+// parameter between the steps would show a stale derivation as a difference, and every engine's
+// derived_current() is checked after every step.
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
@@ -13,6 +17,7 @@
 #include <doctest/doctest.h>
 
 #include "node_test_util.hpp"
+#include "pdo_engine_r5_reference.hpp"
 
 #include "xorshift.hpp"
 
@@ -192,12 +197,15 @@ std::array<std::uint8_t, 4> le32(std::uint32_t v) {
 enum class path { copy, position, address };
 
 /// One store and one engine over it, reaching the store by path P; the store's write hook Hook.
-template <path P, class Hook = refuse_42>
+/// Round5: the round-5 engine (the reference for what the engine derives from its parameters).
+template <path P, class Hook = refuse_42, bool Round5 = false>
 struct side {
   using store_t = sdo::dictionary_store<Hook>;
   using view_t = std::conditional_t<P == path::address, test_node::address_only_store<store_t>,
                                     test_node::positions_only_store<store_t>>;
-  using engine_t = node::pdo_engine<std::conditional_t<P == path::copy, store_t, view_t>, 2, 2, 8>;
+  using reached_t = std::conditional_t<P == path::copy, store_t, view_t>;
+  using engine_t = std::conditional_t<Round5, node::r5::pdo_engine<reached_t, 2, 2, 8>,
+                                      node::pdo_engine<reached_t, 2, 2, 8>>;
   static_assert(engine_t::by_copy == (P == path::copy));
   static_assert(engine_t::by_position == (P != path::address));
 
@@ -223,12 +231,13 @@ struct side {
   }
 };
 
-/// The three engines over three stores that start alike.
+/// The three engines over three stores that start alike, and the round-5 engine (compiled).
 template <class Hook>
 struct trio {
   side<path::copy, Hook> c;
   side<path::position, Hook> p;
   side<path::address, Hook> a;
+  side<path::copy, Hook, true> r5;
 };
 
 /// What the random runs exercised (checked at the end: the inputs must keep reaching every path).
@@ -279,7 +288,7 @@ void count_plan(const auto &side, pdo::direction d, std::size_t k, std::size_t &
 
 /// The engines did the same: frames, step state and deadline, events, stored bytes.
 template <class Hook>
-void compare(const auto &sc, const auto &sp, const auto &sa, const trio<Hook> &t,
+void compare(const auto &sc, const auto &sp, const auto &sa, const auto &sr, const trio<Hook> &t,
              std::uint32_t now) {
   const auto &e = t.c.engine;
   seen.frames += sc.send.size();
@@ -308,19 +317,20 @@ void compare(const auto &sc, const auto &sp, const auto &sa, const trio<Hook> &t
   }
   // the step's deadline is the engine's (a step need not scan for it when nothing is timed)
   CHECK(sc.deadline == e.deadline(now));
-  for (const auto *other : {&sp, &sa}) {
+  for (const auto *other : {&sp, &sa, &sr}) {
     REQUIRE(sc.send.size() == other->send.size());
     for (std::size_t i = 0; i < sc.send.size(); ++i) CHECK(sc.send[i] == other->send[i]);
     CHECK(sc.state == other->state);
     CHECK(sc.deadline == other->deadline);
   }
   const auto ce = e.events();
-  for (const auto ref : {t.p.engine.events(), t.a.engine.events()}) {
+  for (const auto ref : {t.p.engine.events(), t.a.engine.events(), t.r5.engine.events()}) {
     REQUIRE(ce.size() == ref.size());
     for (std::size_t i = 0; i < ce.size(); ++i) CHECK(ce[i] == ref[i]);
   }
   CHECK(t.c.storage == t.p.storage);
   CHECK(t.c.storage == t.a.storage);
+  CHECK(t.c.storage == t.r5.storage);
 }
 
 /// A random mapping entry: mostly valid ones, some of a wrong length, unknown or not mappable
@@ -348,6 +358,85 @@ void all(trio<Hook> &t, F f) {
   const auto a = f(t.c);
   CHECK(a == f(t.p));
   CHECK(a == f(t.a));
+  CHECK(a == f(t.r5));
+}
+
+/// One step on every engine, compared; the compiled engine's step.
+template <class Hook, class F>
+auto step_all(trio<Hook> &t, std::uint32_t now, F f) {
+  const auto sc = f(t.c.engine);
+  const auto sp = f(t.p.engine);
+  const auto sa = f(t.a.engine);
+  const auto sr = f(t.r5.engine);
+  compare(sc, sp, sa, sr, t, now);
+  return sc;
+}
+
+/// What the random runs did to the communication parameters (checked at the end).
+struct param_coverage {
+  std::size_t taken = 0;      ///< writes accepted
+  std::size_t refused = 0;    ///< writes refused (CiA 301 rules)
+  std::size_t shared_id = 0;  ///< RPDO frames that two valid RPDOs took (the same COB-ID)
+  std::size_t sync_start = 0; ///< TPDOs that waited for their SYNC start value and were sent
+};
+param_coverage params_seen;
+
+/// A random write of one communication parameter of one PDO, outside the remapping sequence:
+/// COB-IDs (valid or not, RTR bit, another PDO's identifier, bits the rules refuse),
+/// transmission types (0, 1..240, the reserved 241..251, 252..255), SYNC start values (and
+/// ones above 240), inhibit times and event timers — while operational or not.
+template <class Hook>
+void write_param(rng &r, trio<Hook> &t, std::uint32_t now) {
+  const bool rx = r.one_in(2);
+  const auto k = static_cast<std::uint16_t>(r.below(2));
+  const auto comm = static_cast<std::uint16_t>((rx ? 0x1400U : 0x1800U) + k);
+  std::uint8_t sub = 1;
+  std::uint32_t v = 0;
+  std::size_t len = 4;
+  switch (r.below(6)) {
+  case 0:
+  case 1: {
+    // the PDO's own identifier, the other PDO's, or the other direction's
+    const std::uint32_t ids[] = {(rx ? 0x201U : 0x181U) + k, (rx ? 0x201U : 0x181U) + (1U - k),
+                                 (rx ? 0x181U : 0x201U) + k, 0x300U + r.below(4)};
+    v = ids[r.below(4)];
+    if (r.one_in(2)) v |= 0x8000'0000U;                 // invalid
+    if (!rx && r.one_in(4)) v |= 0x4000'0000U;          // no RTR
+    if (r.one_in(25)) v |= 0x0000'1000U << r.below(17); // bits 11..29 / 28: refused
+    break;
+  }
+  case 2: {
+    sub = 2;
+    len = 1;
+    const std::uint32_t pick = r.below(6);
+    v = pick == 0U   ? 0U
+        : pick == 1U ? 1U + r.below(4)
+        : pick == 2U ? 1U + r.below(240)
+        : pick == 3U ? 241U + r.below(11)
+                     : 252U + r.below(4);
+    break;
+  }
+  case 3:
+    sub = 3;
+    len = 2;
+    v = r.below(30);
+    break;
+  case 4:
+    sub = 5;
+    len = 2;
+    v = r.below(3) == 0U ? 0U : r.below(25);
+    break;
+  default:
+    sub = 6; // RPDOs have none: the store refuses
+    len = 1;
+    v = r.one_in(10) ? 241U + r.below(15) : r.below(5);
+    break;
+  }
+  const auto b = le32(v);
+  const auto s = std::span<const std::uint8_t>(b).first(len);
+  abort_code answer = abort_code::none;
+  all(t, [&](auto &side) { return answer = side.param({comm, sub}, s, now); });
+  ++(answer == abort_code::none ? params_seen.taken : params_seen.refused);
 }
 
 /// Remap PDO `k` (0, 1) of direction `rx` in the CiA 301 sequence (with random deviations) on
@@ -417,45 +506,50 @@ void run(std::uint64_t seed, std::size_t steps) {
   for (std::size_t i = 0; i < steps; ++i) {
     now += r.below(4);
     const std::uint32_t op = r.below(100);
-    if (op < 12) {
+    if (op < 10) {
       // one draw after the other: the order in which a call's arguments are evaluated is
       // unspecified (g++ on x86-64 and on s390x differ), which made the stream host-dependent
       const auto k = static_cast<std::uint16_t>(r.below(2));
       const bool rx = r.one_in(2);
       remap(r, t, rx, k, now);
+    } else if (op < 16) {
+      write_param(r, t, now);
     } else if (op < 30) {
       set_values(r, t);
     } else if (op < 50) {
       std::optional<std::uint8_t> counter;
       if (r.one_in(2)) counter = static_cast<std::uint8_t>(1U + r.below(4));
-      const auto sc = t.c.engine.on_sync(counter, now);
-      const auto sp = t.p.engine.on_sync(counter, now);
-      const auto sa = t.a.engine.on_sync(counter, now);
-      compare(sc, sp, sa, t, now);
+      const auto sc = step_all(t, now, [&](auto &e) { return e.on_sync(counter, now); });
+      for (std::size_t k = 0; counter && k < 2; ++k) {
+        const auto &c = t.c.engine.tpdo(k);
+        if (!c.valid() || c.type == 0U || c.type > 240U || c.sync_start != *counter) continue;
+        for (const auto &f : sc.send) {
+          if (f.id == c.id()) ++params_seen.sync_start;
+        }
+      }
     } else if (op < 80) {
       co::can_frame f;
-      f.id = static_cast<std::uint16_t>(r.one_in(10) ? r.below(0x800) : 0x201U + r.below(2));
+      // mostly the RPDOs' own identifiers, some that write_param gives them, some anything
+      const std::uint32_t pick = r.below(10);
+      f.id = static_cast<std::uint16_t>(pick == 0U   ? r.below(0x800)
+                                        : pick == 1U ? 0x300U + r.below(4)
+                                        : pick == 2U ? 0x181U + r.below(2)
+                                                     : 0x201U + r.below(2));
       f.dlc = static_cast<std::uint8_t>(r.one_in(4) ? r.below(9) : 8U);
       for (std::size_t k = 0; k < f.dlc; ++k) f.data[k] = static_cast<std::uint8_t>(r.next());
       if (r.one_in(8)) f.data[0] = 0x42; // the hook refuses 2001h = 0x..42
       const bool window = !r.one_in(8);
-      const auto sc = t.c.engine.on_frame(f, now, window);
-      const auto sp = t.p.engine.on_frame(f, now, window);
-      const auto sa = t.a.engine.on_frame(f, now, window);
-      compare(sc, sp, sa, t, now);
+      step_all(t, now, [&](auto &e) { return e.on_frame(f, now, window); });
+      const auto &r0 = t.c.engine.rpdo(0);
+      const auto &r1 = t.c.engine.rpdo(1);
+      if (r0.valid() && r1.valid() && r0.id() == f.id && r1.id() == f.id) ++params_seen.shared_id;
     } else if (op < 86) {
       co::can_frame f;
       f.id = static_cast<std::uint16_t>(0x181U + r.below(2));
       f.rtr = true;
-      const auto sc = t.c.engine.on_frame(f, now);
-      const auto sp = t.p.engine.on_frame(f, now);
-      const auto sa = t.a.engine.on_frame(f, now);
-      compare(sc, sp, sa, t, now);
+      step_all(t, now, [&](auto &e) { return e.on_frame(f, now); });
     } else if (op < 96) {
-      const auto sc = t.c.engine.poll(now);
-      const auto sp = t.p.engine.poll(now);
-      const auto sa = t.a.engine.poll(now);
-      compare(sc, sp, sa, t, now);
+      step_all(t, now, [&](auto &e) { return e.poll(now); });
     } else if (op < 98) {
       const bool on = !r.one_in(4);
       all(t, [&](auto &side) {
@@ -467,14 +561,23 @@ void run(std::uint64_t seed, std::size_t steps) {
     }
     CHECK(t.c.storage == t.p.storage);
     CHECK(t.c.storage == t.a.storage);
+    CHECK(t.c.storage == t.r5.storage);
+    // what each engine derived from the parameters is what the parameters say now
+    CHECK(t.c.engine.derived_current());
+    CHECK(t.p.engine.derived_current());
+    CHECK(t.a.engine.derived_current());
     for (std::size_t k = 0; k < 2; ++k) {
-      for (const auto *o : {&t.p.engine.rpdo(k), &t.a.engine.rpdo(k)}) {
+      for (const auto *o : {&t.p.engine.rpdo(k), &t.a.engine.rpdo(k), &t.r5.engine.rpdo(k)}) {
         CHECK(t.c.engine.rpdo(k).count == o->count);
         CHECK(t.c.engine.rpdo(k).valid() == o->valid());
+        CHECK(t.c.engine.rpdo(k).cob == o->cob);
+        CHECK(t.c.engine.rpdo(k).type == o->type);
       }
-      for (const auto *o : {&t.p.engine.tpdo(k), &t.a.engine.tpdo(k)}) {
+      for (const auto *o : {&t.p.engine.tpdo(k), &t.a.engine.tpdo(k), &t.r5.engine.tpdo(k)}) {
         CHECK(t.c.engine.tpdo(k).count == o->count);
         CHECK(t.c.engine.tpdo(k).valid() == o->valid());
+        CHECK(t.c.engine.tpdo(k).cob == o->cob);
+        CHECK(t.c.engine.tpdo(k).type == o->type);
       }
     }
   }
@@ -488,8 +591,8 @@ TEST_CASE("pdo engine compiled == by position == by address: random mappings, re
   // objects that take any bits copied too)
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     CAPTURE(seed);
-    run<refuse_42>(seed * 0x9E3779B97F4A7C15ULL, 1500);
-    run<sdo::accept_writes>(seed * 0xD1B54A32D192ED03ULL, 1500);
+    run<refuse_42>(seed * 0x9E3779B97F4A7C15ULL, 2500);
+    run<sdo::accept_writes>(seed * 0xD1B54A32D192ED03ULL, 2500);
   }
   MESSAGE("frames ", seen.frames, ", received ", seen.received, ", with refusals ", seen.refused,
           ", too short ", seen.too_short, ", remapped ", seen.remapped, ", off byte boundaries ",
@@ -510,6 +613,13 @@ TEST_CASE("pdo engine compiled == by position == by address: random mappings, re
   CHECK(seen.mixed > 500U);
   CHECK(seen.merged > 50U);
   CHECK(seen.sent_copied > 100U);
+  MESSAGE("parameter writes taken ", params_seen.taken, ", refused ", params_seen.refused,
+          "; RPDO frames taken by two RPDOs ", params_seen.shared_id,
+          "; TPDOs sent at their SYNC start value ", params_seen.sync_start);
+  CHECK(params_seen.taken > 1000U);
+  CHECK(params_seen.refused > 1000U);
+  CHECK(params_seen.shared_id > 20U);
+  CHECK(params_seen.sync_start > 20U);
 }
 
 TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the new mapping", Hook,

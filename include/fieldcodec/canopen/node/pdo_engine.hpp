@@ -221,7 +221,7 @@ public:
     }
     for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(0, operational_);
     for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
-    retime();
+    reindex();
     return st;
   }
 
@@ -264,6 +264,7 @@ public:
       if (a.sub == 0U) {
         c.count = static_cast<std::uint8_t>(*v);
         (void)load_mapping(c, positions_of(where), where.dir);
+        reindex();
       }
       return;
     }
@@ -282,7 +283,7 @@ public:
     } else {
       rpdo_[where.slot].restart();
     }
-    retime();
+    reindex();
   }
 
   // ----- traffic ---------------------------------------------------------------------------
@@ -295,14 +296,14 @@ public:
     if (!operational_) return make(now);
     for (std::size_t i = 0; any_buffered_ && i < rpdo_count_; ++i) {
       rx_slot &r = rpdo_[i];
-      if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
+      if (!sync_rx_[i] || !r.buffered) continue;
       r.buffered = false;
       apply(r, std::span<const std::uint8_t>(r.data).first(r.dlc));
     }
     any_buffered_ = false;
-    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+    for (std::size_t i = 0; i < tpdo_count_; ++i) { // valid, types 0..240 and 252
+      if (!sync_tx_[i]) continue;
       tx_slot &t = tpdo_[i];
-      if (!t.c.valid()) continue;
       if (t.c.type == 0U) {
         if (t.pending) send(t, now);
       } else if (t.c.type <= 240U) {
@@ -318,8 +319,8 @@ public:
           t.sync_count = 0;
           send(t, now);
         }
-      } else if (t.c.type == 252U) {
-        t.sampled = build(t);
+      } else {
+        t.sampled = build(t, t.data);
       }
     }
     return make(now);
@@ -343,9 +344,10 @@ public:
       }
       return make(now);
     }
+    // the valid RPDOs with this COB-ID, in the order of their numbers
     for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rx_id_[i] != f.id) continue;
       rx_slot &r = rpdo_[i];
-      if (!r.c.valid() || r.c.id() != f.id) continue;
       if (f.dlc < r.c.bytes) {
         r.short_error = true;
         events_.push({pdo_event::kind::too_short, pdo::direction::rpdo, r.c.number, 0});
@@ -475,6 +477,24 @@ public:
       if (r.c.valid() && r.monitored && !r.timed_out) d = earliest(d, r.due, now);
     }
     return d;
+  }
+
+  /// Whether what the engine derives from the parameters to save work on every SYNC and frame
+  /// (see reindex()) matches the parameters now: always true — the tests check it after every
+  /// step and parameter write.
+  [[nodiscard]] constexpr bool derived_current() const noexcept {
+    bool any_timed = false;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (sync_tx_[i] != sync_acts(tpdo_[i].c)) return false;
+      any_timed = any_timed || timed(tpdo_[i].c, pdo::direction::tpdo);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (sync_rx_[i] != sync_buffers(rpdo_[i].c) || rx_id_[i] != match_id(rpdo_[i].c)) {
+        return false;
+      }
+      any_timed = any_timed || timed(rpdo_[i].c, pdo::direction::rpdo);
+    }
+    return any_timed == timed_;
   }
 
 private:
@@ -778,30 +798,34 @@ private:
 
   // ----- data ------------------------------------------------------------------------------
 
-  /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
-  [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
+  /// The 8 data bytes of a frame.
+  using frame_bytes = std::array<std::uint8_t, 8>;
+  /// Sample a TPDO's mapped objects into `data` (zero past the mapping's bits: the frame's
+  /// bytes when it is sent now, t.data when sampled for later). False when an object could not
+  /// be read.
+  [[nodiscard]] constexpr bool build(tx_slot &t, frame_bytes &data) noexcept {
     if constexpr (by_copy) {
-      return build_by_copy(t);
+      return build_by_copy(t, data);
     } else if constexpr (by_position) {
-      return build_at(t);
+      return build_at(t, data);
     } else {
-      return build_by_address(t);
+      return build_by_address(t, data);
     }
   }
   /// build() by position: a mapping of whole bytes (every one without a BOOLEAN of 1 bit) is
   /// read straight into the frame's bytes, value by value.
-  [[nodiscard]] constexpr bool build_at(tx_slot &t) noexcept {
-    t.data = {};
+  [[nodiscard]] constexpr bool build_at(tx_slot &t, frame_bytes &data) noexcept {
+    data = {};
     const resolved &p = t.pos;
-    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits t.data
+    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits data
       std::size_t byte = 0;
       for (std::size_t k = 0; k < t.c.count; ++k) {
         const pdo::mapping_entry &m = t.c.map[k];
         const std::size_t n = m.bits / 8U;
         if (p.at[k] != sdo::no_position) {
           std::size_t total = 0;
-          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(t.data.data() + byte, n),
-                              total) != abort_code::none) {
+          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(data.data() + byte, n), total) !=
+              abort_code::none) {
             return false;
           }
         } else if (!m.is_dummy()) {
@@ -813,43 +837,47 @@ private:
     }
     std::size_t offset = 0;
     for (std::size_t k = 0; k < t.c.count; ++k) {
-      if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset)) return false;
+      if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset, data)) return false;
       offset += t.c.map[k].bits;
     }
     return true;
   }
-  /// Read mapping entry k (not a dummy) of a TPDO by position into t.data from bit `offset`.
-  [[nodiscard, gnu::noinline]] constexpr bool read_entry(tx_slot &t, std::size_t k,
-                                                         std::size_t offset) noexcept {
+  /// Read mapping entry k (not a dummy) of a TPDO by position into `data` from bit `offset`.
+  [[nodiscard, gnu::noinline]] constexpr bool
+  read_entry(const tx_slot &t, std::size_t k, std::size_t offset, frame_bytes &data) noexcept {
     const pdo::mapping_entry &m = t.c.map[k];
     const std::size_t at = t.pos.at[k];
     if (at == sdo::no_position) return false;
     const std::size_t n = (m.bits + 7U) / 8U;
     std::size_t total = 0;
     if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
-      const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
+      const auto out = std::span<std::uint8_t>(data).subspan(offset / 8U, n);
       return store_->read_at(at, 0, out, total) == abort_code::none;
     }
     std::array<std::uint8_t, 8> v{};
     if (store_->read_at(at, 0, v, total) != abort_code::none) return false;
     std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
     if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
-    return pdo::pack(t.data, offset, m.bits, raw).has_value();
+    return pdo::pack(data, offset, m.bits, raw).has_value();
   }
   /// build() by the compiled mapping: the copies from the store's bytes, then the other
   /// entries by position (the first that cannot be read stops the TPDO, as above; the frame's
   /// bytes of different entries never overlap, so the order does not show).
-  [[nodiscard]] constexpr bool build_by_copy(tx_slot &t) noexcept {
-    t.data = {};
+  /// (The copies go to a local frame first: stores into the engine's frames could, for all the
+  /// compiler knows, change the compiled mapping, whose bounds it would then reload after every
+  /// copy.)
+  [[nodiscard]] constexpr bool build_by_copy(tx_slot &t, frame_bytes &data) noexcept {
     const resolved &p = t.pos;
     const std::uint8_t *from = store_->plain_storage().data();
-    std::uint8_t *to = t.data.data();
+    frame_bytes local{};
+    std::uint8_t *to = local.data();
     copies<1, true>(p, 0, to, from);
     copies<2, true>(p, 1, to, from);
     copies<4, true>(p, 2, to, from);
     copies<8, true>(p, 3, to, from);
+    data = local;
     for (std::size_t i = 0; i < p.per_objects; ++i) {
-      if (!read_entry(t, p.object[i].entry, p.object[i].bit)) return false;
+      if (!read_entry(t, p.object[i].entry, p.object[i].bit, data)) return false;
     }
     return true;
   }
@@ -858,7 +886,8 @@ private:
   template <std::size_t N, bool ToFrame>
   static constexpr void copies(const resolved &p, std::size_t cls, std::uint8_t *to,
                                const std::uint8_t *from) noexcept {
-    for (std::size_t i = p.first[cls]; i < p.first[cls + 1U]; ++i) {
+    const std::size_t end = p.first[cls + 1U]; // (once: a copy into the store could alias p)
+    for (std::size_t i = p.first[cls]; i < end; ++i) {
       if constexpr (ToFrame) {
         fieldcodec::copy_bytes<N>(from + p.storage[i], to + p.frame[i]);
       } else {
@@ -867,8 +896,8 @@ private:
     }
   }
   /// build() through the store's read by address (a store without positions).
-  [[nodiscard]] constexpr bool build_by_address(tx_slot &t) noexcept {
-    t.data = {};
+  [[nodiscard]] constexpr bool build_by_address(const tx_slot &t, frame_bytes &data) noexcept {
+    data = {};
     std::size_t offset = 0;
     for (const auto &m : t.c.entries()) {
       if (!m.is_dummy()) {
@@ -878,12 +907,13 @@ private:
         const std::size_t n = (m.bits + 7U) / 8U;
         std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
         if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
-        if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
+        if (!pdo::pack(data, offset, m.bits, raw)) return false;
       }
       offset += m.bits;
     }
     return true;
   }
+  /// Send the data a type-252 TPDO sampled at the last SYNC.
   constexpr void emit(const tx_slot &t) noexcept {
     can_frame f;
     f.id = t.c.id();
@@ -891,14 +921,24 @@ private:
     f.data = t.data; // zero past c.bytes: build writes only the mapping's bits
     out_.push(f);
   }
-  /// Sample and send a TPDO now; restarts its inhibit time and event timer.
+  /// Sample and send a TPDO now; restarts its inhibit time and event timer. The frame is built
+  /// in place, in the list's next frame. (The list holds a frame per TPDO, and a call sends a
+  /// TPDO at most once: it is never full; if it were, add() counts the frame as lost.)
   constexpr void send(tx_slot &t, std::uint32_t now) noexcept {
     t.pending = false;
-    if (!build(t)) {
+    if (out_.full()) {
+      (void)out_.add();
+      return;
+    }
+    can_frame &f = out_.next();
+    if (!build(t, f.data)) {
       events_.push({pdo_event::kind::not_sent, pdo::direction::tpdo, t.c.number, 0});
       return;
     }
-    emit(t);
+    f.id = t.c.id();
+    f.rtr = false;
+    f.dlc = t.c.bytes;
+    (void)out_.add();
     if (t.c.type >= 254U) {
       t.inhibited = t.c.inhibit != 0U;
       t.inhibit_until = now + ms_from_100us(t.c.inhibit);
@@ -1016,18 +1056,42 @@ private:
   [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
     return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
   }
-  /// Set timed_: whether any PDO can have a deadline — a valid TPDO of type 254/255 (pending,
-  /// event timer), a valid RPDO with an event timer (deadline monitoring starts only with one,
-  /// and every change of it restarts the RPDO). Called wherever a COB-ID, transmission type,
-  /// event timer or the usability of a PDO changes: reload() and written().
-  constexpr void retime() noexcept {
+  /// Rebuild what the engine derives from the PDOs' parameters, for the paths every SYNC and
+  /// every frame take: per PDO one byte or two, tested there instead of the parameters
+  /// themselves — sync_tx_ (a valid TPDO a SYNC acts on: types 0..240 and 252), sync_rx_ (a
+  /// valid synchronous RPDO, buffered until a SYNC), rx_id_ (an RPDO's COB-ID when it is valid,
+  /// no_rx_id otherwise) — and timed_ (whether any PDO can have a deadline: a valid TPDO of type
+  /// 254/255, a valid RPDO with an event timer; deadline monitoring starts only with one, and
+  /// every change of it restarts the RPDO). The one place that sets them, from the rules below
+  /// (derived_current() checks them against the same rules); called wherever a parameter
+  /// changes: at the end of reload() and of every written() that stored a PDO parameter.
+  constexpr void reindex() noexcept {
     timed_ = false;
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
-      if (tpdo_[i].c.valid() && tpdo_[i].c.type >= 254U) timed_ = true;
+      sync_tx_[i] = sync_acts(tpdo_[i].c);
+      if (timed(tpdo_[i].c, pdo::direction::tpdo)) timed_ = true;
     }
     for (std::size_t i = 0; i < rpdo_count_; ++i) {
-      if (rpdo_[i].c.valid() && rpdo_[i].c.event_timer != 0U) timed_ = true;
+      sync_rx_[i] = sync_buffers(rpdo_[i].c);
+      rx_id_[i] = match_id(rpdo_[i].c);
+      if (timed(rpdo_[i].c, pdo::direction::rpdo)) timed_ = true;
     }
+  }
+  /// A SYNC acts on this TPDO: valid, type 0..240 (sent) or 252 (sampled).
+  [[nodiscard]] static constexpr bool sync_acts(const config &c) noexcept {
+    return c.valid() && (c.type <= 240U || c.type == 252U);
+  }
+  /// This RPDO's data waits for a SYNC: valid, type 0..240.
+  [[nodiscard]] static constexpr bool sync_buffers(const config &c) noexcept {
+    return c.valid() && c.synchronous();
+  }
+  /// The identifier a frame must carry to be this RPDO (no_rx_id: none).
+  [[nodiscard]] static constexpr std::uint16_t match_id(const config &c) noexcept {
+    return c.valid() ? c.id() : no_rx_id;
+  }
+  /// This PDO can have a deadline.
+  [[nodiscard]] static constexpr bool timed(const config &c, pdo::direction d) noexcept {
+    return c.valid() && (d == pdo::direction::tpdo ? c.type >= 254U : c.event_timer != 0U);
   }
 
   static constexpr std::size_t out_capacity = MaxTpdo == 0U ? 1U : MaxTpdo;
@@ -1039,11 +1103,17 @@ private:
   std::array<tx_slot, (MaxTpdo == 0U ? 1U : MaxTpdo)> tpdo_{};
   std::size_t rpdo_count_ = 0;
   std::size_t tpdo_count_ = 0;
+  /// rx_id_ of an RPDO that is not valid: no frame has this identifier.
+  static constexpr std::uint16_t no_rx_id = 0xFFFFU;
+  // derived from the parameters by reindex() (see there), per PDO
+  std::array<bool, (MaxTpdo == 0U ? 1U : MaxTpdo)> sync_tx_{};
+  std::array<bool, (MaxRpdo == 0U ? 1U : MaxRpdo)> sync_rx_{};
+  std::array<std::uint16_t, (MaxRpdo == 0U ? 1U : MaxRpdo)> rx_id_{};
   frame_list<out_capacity> out_{};
   event_list<pdo_event, event_capacity> events_{};
   bool operational_ = false;
   bool report_long_ = true;
-  bool timed_ = false;        ///< see retime()
+  bool timed_ = false;        ///< see reindex()
   bool any_buffered_ = false; ///< an RPDO may be buffered for the next SYNC (set with buffered)
 };
 

@@ -1,0 +1,921 @@
+// The PDO engine as it was at the end of round 5 (main 9f92284, include/fieldcodec/canopen/node/
+// pdo_engine.hpp), kept as the reference for tests/node/pdo_engine_position_test.cpp: round 6
+// replaced its scans of every PDO on every SYNC and frame by per-PDO bytes derived from the
+// parameters (reindex()), and built TPDO frames in place; this copy has neither, so a derived
+// byte that went stale shows as a different frame, event, deadline or stored byte. Only the
+// namespace changed (node::r5), and the types the two engines share (pdo_event, pdo_config,
+// mapping_abort, pdo_index) are node's. Not to be edited: it is what the engine did.
+#pragma once
+
+#include <fieldcodec/canopen/node/pdo_engine.hpp>
+
+namespace fieldcodec::canopen::node::r5 {
+
+template <sdo::object_store Store, std::size_t MaxRpdo, std::size_t MaxTpdo,
+          std::size_t MaxEntries = 8>
+class pdo_engine {
+  static_assert(MaxEntries >= 1U && MaxEntries <= pdo::max_entries);
+
+public:
+  using config = pdo_config<MaxEntries>;
+  /// State in the steps: whether PDOs are exchanged (NMT operational).
+  using step = canopen::step<bool>;
+  /// Whether the engine reaches the mapped objects by position (the store models
+  /// sdo::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
+  /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
+  static constexpr bool by_position = sdo::positioned_store<Store>;
+  /// Whether the engine compiles each mapping into copies (the store models sdo::plain_store):
+  /// when a mapping is loaded, every entry whose object the store keeps plain (plain_at:
+  /// readable for a TPDO, writable for an RPDO) on whole bytes becomes a copy between the
+  /// store's bytes and the frame's — adjacent ones merged, then cut into copies of 8, 4, 2 and
+  /// 1 bytes, kept in four lists so that each runs as a loop of constant-length copies; the
+  /// others (1-bit BOOLEANs and entries after them off byte boundaries, limits or a scale to
+  /// check, a write hook, byte strings, objects the store lacks, and every entry of an RPDO
+  /// that maps one object twice) keep read_at / write_at, in mapping order, after the copies.
+  static constexpr bool by_copy = sdo::plain_store<Store>;
+
+  /// How a PDO's mapping was compiled (by_copy): `copied` entries in `copies` copies of 1, 2, 4
+  /// or 8 bytes, the other `per_object` entries by read_at / write_at (dummies are neither).
+  struct plan {
+    std::uint8_t copied = 0;
+    std::uint8_t copies = 0;
+    std::uint8_t per_object = 0;
+    friend constexpr bool operator==(const plan &, const plan &) = default;
+  };
+
+  /// An engine over `store` (borrowed; its reads give the TPDO data, its writes take the RPDO
+  /// data and must reach the store the application reads) and `dict` (the dictionary the
+  /// mappings are checked against).
+  constexpr pdo_engine(Store &store, od::dictionary dict) noexcept : store_(&store), dict_(dict) {}
+
+  /// Read every PDO's parameters from the store (at boot and after an NMT reset). PDOs whose
+  /// stored configuration cannot be served (a mapping the dictionary does not allow, more
+  /// entries than MaxEntries, a reserved transmission type) are marked unusable: never sent or
+  /// received. Errors: too_long (the dictionary has more PDOs than MaxRpdo / MaxTpdo: the first
+  /// ones are served), bad_length (a stored configuration was unusable).
+  [[nodiscard]] constexpr status reload() noexcept {
+    status st{};
+    rpdo_count_ = 0;
+    tpdo_count_ = 0;
+    std::uint16_t last = 0;
+    for (const od::entry &e : dict_) {
+      if (e.sub != 1U || e.index == last) continue;
+      const bool is_rx =
+          e.index >= pdo_index::rpdo_comm && e.index < pdo_index::rpdo_comm + pdo_index::count;
+      const bool is_tx =
+          e.index >= pdo_index::tpdo_comm && e.index < pdo_index::tpdo_comm + pdo_index::count;
+      if (!is_rx && !is_tx) continue;
+      last = e.index;
+      config *cfg = nullptr;
+      positions *at = nullptr;
+      if (is_rx) {
+        if (rpdo_count_ == MaxRpdo) {
+          st = errc::too_long;
+          continue;
+        }
+        cfg = &rpdo_[rpdo_count_].c;
+        at = &rpdo_[rpdo_count_++].pos;
+      } else {
+        if (tpdo_count_ == MaxTpdo) {
+          st = errc::too_long;
+          continue;
+        }
+        cfg = &tpdo_[tpdo_count_].c;
+        at = &tpdo_[tpdo_count_++].pos;
+      }
+      const std::uint16_t base = is_rx ? pdo_index::rpdo_comm : pdo_index::tpdo_comm;
+      if (!load(*cfg, *at, e.index, static_cast<std::uint16_t>(e.index - base + 1U),
+                is_rx ? pdo::direction::rpdo : pdo::direction::tpdo) &&
+          st) {
+        st = errc::bad_length;
+      }
+    }
+    for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(0, operational_);
+    for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+    retime();
+    return st;
+  }
+
+  /// PDOs on (operational) or off. Entering operational restarts every PDO: event-driven
+  /// TPDOs are due at once, SYNC counting and event timers start from `now`.
+  constexpr void set_operational(bool on, std::uint32_t now) noexcept {
+    operational_ = on;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) tpdo_[i].restart(now, on);
+    for (std::size_t i = 0; i < rpdo_count_; ++i) rpdo_[i].restart();
+  }
+  [[nodiscard]] constexpr bool operational() const noexcept { return operational_; }
+  /// Process an RPDO longer than its mapping with a too_long event (true, the default) or
+  /// silently.
+  constexpr void report_long_rpdo(bool on) noexcept { report_long_ = on; }
+
+  // ----- parameter writes ------------------------------------------------------------------
+
+  /// Would writing `value` to `a` be accepted (CiA 301 rules above)? abort_code::none for
+  /// objects outside 1400h–1BFFh, for PDOs the engine does not serve, and for values of a
+  /// length the store will refuse itself.
+  [[nodiscard]] constexpr abort_code
+  check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    const place where = locate(a.index);
+    if (!where.found) return abort_code::none;
+    const auto v = u32_of(value);
+    if (!v) return abort_code::none;
+    return where.mapping ? check_mapping(slot(where), where.dir, a, *v)
+                         : check_comm(slot(where), where.dir, a.sub, *v);
+  }
+
+  /// `value` was stored at `a`: follow it.
+  constexpr void written(od::address a, std::span<const std::uint8_t> value,
+                         std::uint32_t now) noexcept {
+    const place where = locate(a.index);
+    if (!where.found) return;
+    const auto v = u32_of(value);
+    if (!v) return;
+    config &c = slot(where);
+    if (where.mapping) {
+      if (a.sub == 0U) {
+        c.count = static_cast<std::uint8_t>(*v);
+        (void)load_mapping(c, positions_of(where), where.dir);
+      }
+      return;
+    }
+    const bool was_valid = c.valid();
+    switch (a.sub) {
+    case 1: c.cob = *v; break;
+    case 2: c.type = static_cast<std::uint8_t>(*v); break;
+    case 3: c.inhibit = static_cast<std::uint16_t>(*v); break;
+    case 5: c.event_timer = static_cast<std::uint16_t>(*v); break;
+    case 6: c.sync_start = static_cast<std::uint8_t>(*v); break;
+    default: return;
+    }
+    // a new COB-ID, type or timer: the PDO starts afresh (a TPDO that became valid is due)
+    if (where.dir == pdo::direction::tpdo) {
+      if (a.sub != 1U || !was_valid) tpdo_[where.slot].restart(now, operational_);
+    } else {
+      rpdo_[where.slot].restart();
+    }
+    retime();
+  }
+
+  // ----- traffic ---------------------------------------------------------------------------
+
+  /// A SYNC (with its counter when it carried one): apply the synchronous RPDOs received since
+  /// the last SYNC, then send the synchronous TPDOs that are due.
+  [[nodiscard]] constexpr step on_sync(std::optional<std::uint8_t> counter,
+                                       std::uint32_t now) noexcept {
+    begin();
+    if (!operational_) return make(now);
+    for (std::size_t i = 0; any_buffered_ && i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || !r.c.synchronous() || !r.buffered) continue;
+      r.buffered = false;
+      apply(r, std::span<const std::uint8_t>(r.data).first(r.dlc));
+    }
+    any_buffered_ = false;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.valid()) continue;
+      if (t.c.type == 0U) {
+        if (t.pending) send(t, now);
+      } else if (t.c.type <= 240U) {
+        if (t.waiting_start && counter) {
+          if (*counter != t.c.sync_start) continue;
+          t.waiting_start = false;
+          t.sync_count = 0;
+          send(t, now);
+          continue;
+        }
+        t.waiting_start = false;
+        if (++t.sync_count >= t.c.type) {
+          t.sync_count = 0;
+          send(t, now);
+        }
+      } else if (t.c.type == 252U) {
+        t.sampled = build(t);
+      }
+    }
+    return make(now);
+  }
+
+  /// An RPDO, or an RTR for a TPDO. `sync_window_open`: false when a synchronous window is set
+  /// and has passed since the last SYNC (synchronous RPDOs are then discarded).
+  [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now,
+                                        bool sync_window_open = true) noexcept {
+    begin();
+    if (!operational_ || f.id > max_can_id) return make(now);
+    if (f.rtr) {
+      for (std::size_t i = 0; i < tpdo_count_; ++i) {
+        tx_slot &t = tpdo_[i];
+        if (!t.c.valid() || t.c.id() != f.id || !t.c.rtr_allowed()) continue;
+        if (t.c.type == 252U && t.sampled) {
+          emit(t);
+        } else {
+          send(t, now);
+        }
+      }
+      return make(now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || r.c.id() != f.id) continue;
+      if (f.dlc < r.c.bytes) {
+        r.short_error = true;
+        events_.push({pdo_event::kind::too_short, pdo::direction::rpdo, r.c.number, 0});
+        continue;
+      }
+      r.short_error = false;
+      r.long_error = report_long_ && f.dlc > r.c.bytes;
+      if (r.long_error) {
+        events_.push({pdo_event::kind::too_long, pdo::direction::rpdo, r.c.number, 0});
+      }
+      if (r.c.event_timer != 0U) {
+        r.monitored = true;
+        r.timed_out = false;
+        r.due = now + r.c.event_timer;
+      }
+      const auto data = f.payload().first(r.c.bytes);
+      if (r.c.synchronous()) {
+        if (!sync_window_open) {
+          events_.push({pdo_event::kind::outside_window, pdo::direction::rpdo, r.c.number, 0});
+          continue;
+        }
+        r.buffered = true;
+        any_buffered_ = true;
+        r.dlc = static_cast<std::uint8_t>(data.size());
+        for (std::size_t k = 0; k < data.size(); ++k) r.data[k] = data[k];
+      } else {
+        apply(r, data);
+      }
+    }
+    return make(now);
+  }
+
+  /// Event timers and inhibit times of TPDOs, deadline monitoring of RPDOs.
+  [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    begin();
+    if (!operational_) return make(now);
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.valid() || t.c.type < 254U) continue;
+      if (t.c.event_timer != 0U && reached(t.event_due, now)) {
+        t.pending = true;
+        t.event_due = now + t.c.event_timer;
+      }
+      if (!t.pending) continue;
+      if (t.inhibited && !reached(t.inhibit_until, now)) continue;
+      send(t, now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      rx_slot &r = rpdo_[i];
+      if (!r.c.valid() || !r.monitored || r.timed_out || !reached(r.due, now)) continue;
+      r.timed_out = true;
+      events_.push({pdo_event::kind::timeout, pdo::direction::rpdo, r.c.number, 0});
+    }
+    return make(now);
+  }
+
+  /// The object `a` changed: every event-driven TPDO (types 0, 254, 255) that maps it is due.
+  constexpr void mark(od::address a) noexcept {
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      tx_slot &t = tpdo_[i];
+      if (!t.c.event_driven()) continue;
+      for (const auto &m : t.c.entries()) {
+        if (m.index == a.index && m.sub == a.sub) {
+          t.pending = true;
+          break;
+        }
+      }
+    }
+  }
+  /// The application's event for TPDO `number` (1..512). Errors: unknown_object (no such TPDO),
+  /// bad_state (its transmission type is not event-driven: 1..240, 252, 253).
+  [[nodiscard]] constexpr status request(std::uint16_t number) noexcept {
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (tpdo_[i].c.number != number) continue;
+      if (!tpdo_[i].c.event_driven()) return errc::bad_state;
+      tpdo_[i].pending = true;
+      return {};
+    }
+    return errc::unknown_object;
+  }
+
+  // ----- state -----------------------------------------------------------------------------
+
+  [[nodiscard]] constexpr std::span<const pdo_event> events() const noexcept {
+    return events_.span();
+  }
+  [[nodiscard]] constexpr std::size_t rpdo_count() const noexcept { return rpdo_count_; }
+  [[nodiscard]] constexpr std::size_t tpdo_count() const noexcept { return tpdo_count_; }
+  [[nodiscard]] constexpr const config &rpdo(std::size_t i) const noexcept { return rpdo_[i].c; }
+  [[nodiscard]] constexpr const config &tpdo(std::size_t i) const noexcept { return tpdo_[i].c; }
+  /// How RPDO / TPDO `i`'s current mapping is served (by_copy engines).
+  [[nodiscard]] constexpr plan compiled_plan(pdo::direction d,
+                                             std::size_t i) const noexcept requires by_copy {
+    const resolved &p = d == pdo::direction::rpdo ? rpdo_[i].pos : tpdo_[i].pos;
+    plan n;
+    n.per_object = p.per_objects;
+    n.copies = p.first[4];
+    const config &c = d == pdo::direction::rpdo ? rpdo_[i].c : tpdo_[i].c;
+    std::uint8_t dummies = 0;
+    for (const auto &m : c.entries()) {
+      if (m.is_dummy()) ++dummies;
+    }
+    n.copied = static_cast<std::uint8_t>(c.count - dummies - n.per_object);
+    return n;
+  }
+  /// An RPDO's last frame was too short / too long; an RPDO's deadline passed.
+  [[nodiscard]] constexpr bool any_too_short() const noexcept {
+    return any([](const rx_slot &r) { return r.short_error; });
+  }
+  [[nodiscard]] constexpr bool any_too_long() const noexcept {
+    return any([](const rx_slot &r) { return r.long_error; });
+  }
+  [[nodiscard]] constexpr bool any_timed_out() const noexcept {
+    return any([](const rx_slot &r) { return r.timed_out; });
+  }
+  [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
+    if (!operational_) return std::nullopt;
+    std::optional<std::uint32_t> d;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      const tx_slot &t = tpdo_[i];
+      if (!t.c.valid() || t.c.type < 254U) continue;
+      if (t.pending) d = earliest(d, t.inhibited ? t.inhibit_until : now, now);
+      if (t.c.event_timer != 0U) d = earliest(d, t.event_due, now);
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      const rx_slot &r = rpdo_[i];
+      if (r.c.valid() && r.monitored && !r.timed_out) d = earliest(d, r.due, now);
+    }
+    return d;
+  }
+
+private:
+  /// Mapping entry `entry`, at bit `bit` of the frame, read or written by position.
+  struct object_step {
+    std::uint8_t bit = 0;
+    std::uint8_t entry = 0;
+  };
+  struct no_steps {};
+  /// A compiled mapping (by_copy; compile() sets it with the positions, so it describes the
+  /// mapping in force): copy i moves 2^c bytes between the store's plain_storage() at
+  /// storage[i] and frame byte frame[i], for i in first[c]..first[c + 1] (c = 0..3: 1, 2, 4, 8
+  /// bytes; a frame has 8 bytes, so there are at most 8 copies); then the per-object entries.
+  struct compiled {
+    std::array<std::uint32_t, 8> storage{};
+    std::array<std::uint8_t, 8> frame{};
+    std::array<std::uint8_t, 5> first{};
+    std::uint8_t per_objects = 0;
+    std::array<object_step, MaxEntries> object{};
+  };
+  /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
+  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks; and,
+  /// by_copy, the compiled mapping. Set by load_mapping, the only place that changes a mapping,
+  /// so it never goes stale.
+  struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
+    std::array<std::size_t, MaxEntries> at{};
+    bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
+  };
+  struct no_positions {};
+  using positions = std::conditional_t<by_position, resolved, no_positions>;
+
+  struct tx_slot {
+    config c{};
+    [[no_unique_address]] positions pos{};
+    std::array<std::uint8_t, 8> data{};
+    std::uint32_t inhibit_until = 0;
+    std::uint32_t event_due = 0;
+    std::uint8_t sync_count = 0;
+    bool pending = false;
+    bool inhibited = false;
+    bool waiting_start = false;
+    bool sampled = false;
+
+    constexpr void restart(std::uint32_t now, bool operational) noexcept {
+      pending = operational && c.event_driven();
+      inhibited = false;
+      sync_count = 0;
+      waiting_start = c.sync_start != 0U;
+      sampled = false;
+      event_due = now + c.event_timer;
+    }
+  };
+  struct rx_slot {
+    config c{};
+    [[no_unique_address]] positions pos{};
+    std::array<std::uint8_t, 8> data{};
+    std::uint32_t due = 0;
+    std::uint8_t dlc = 0;
+    bool buffered = false;
+    bool monitored = false;
+    bool timed_out = false;
+    bool short_error = false;
+    bool long_error = false;
+
+    constexpr void restart() noexcept {
+      buffered = false;
+      monitored = false;
+      timed_out = false;
+      short_error = false;
+      long_error = false;
+    }
+  };
+  /// Where a parameter index belongs: which PDO (slot), which direction, comm or mapping.
+  struct place {
+    bool found = false;
+    pdo::direction dir = pdo::direction::rpdo;
+    bool mapping = false;
+    std::size_t slot = 0;
+  };
+
+  // ----- where a parameter lives -----------------------------------------------------------
+
+  [[nodiscard]] constexpr place locate(std::uint16_t index) const noexcept {
+    place l;
+    std::uint16_t base = 0;
+    if (index >= pdo_index::rpdo_comm && index < pdo_index::tpdo_comm) {
+      l.dir = pdo::direction::rpdo;
+      base = pdo_index::rpdo_comm;
+    } else if (index >= pdo_index::tpdo_comm && index < pdo_index::tpdo_map + pdo_index::count) {
+      l.dir = pdo::direction::tpdo;
+      base = pdo_index::tpdo_comm;
+    } else {
+      return l;
+    }
+    auto offset = static_cast<std::uint16_t>(index - base);
+    if (offset >= pdo_index::count) {
+      l.mapping = true;
+      offset = static_cast<std::uint16_t>(offset - pdo_index::count);
+    }
+    const auto number = static_cast<std::uint16_t>(offset + 1U);
+    const bool is_rx = l.dir == pdo::direction::rpdo;
+    const std::size_t n = is_rx ? rpdo_count_ : tpdo_count_;
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((is_rx ? rpdo_[i].c.number : tpdo_[i].c.number) == number) {
+        l.found = true;
+        l.slot = i;
+        return l;
+      }
+    }
+    return l;
+  }
+  [[nodiscard]] constexpr config &slot(place p) noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
+  }
+  [[nodiscard]] constexpr const config &slot(place p) const noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].c : tpdo_[p.slot].c;
+  }
+  [[nodiscard]] constexpr positions &positions_of(place p) noexcept {
+    return p.dir == pdo::direction::rpdo ? rpdo_[p.slot].pos : tpdo_[p.slot].pos;
+  }
+
+  // ----- parameter checks ------------------------------------------------------------------
+
+  [[nodiscard]] static constexpr abort_code check_comm(const config &c, pdo::direction d,
+                                                       std::uint8_t sub, std::uint32_t v) noexcept {
+    const bool tpdo = d == pdo::direction::tpdo;
+    switch (sub) {
+    case 1: return check_cob_id(v, c.cob, true);
+    case 2:
+      if (v >= 241U && v <= 251U) return abort_code::invalid_value;
+      if (!tpdo && (v == 252U || v == 253U)) return abort_code::invalid_value;
+      return abort_code::none;
+    case 3:
+      return tpdo && c.valid() && v != c.inhibit ? abort_code::invalid_value : abort_code::none;
+    case 6:
+      if (v > 240U) return abort_code::invalid_value;
+      return tpdo && c.valid() && v != c.sync_start ? abort_code::invalid_value : abort_code::none;
+    default: return abort_code::none;
+    }
+  }
+
+  [[nodiscard]] constexpr abort_code check_mapping(const config &c, pdo::direction d, od::address a,
+                                                   std::uint32_t v) const noexcept {
+    if (a.sub == 0U) {
+      if (v == c.count) return abort_code::none;
+      if ((c.cob & cob_bits::invalid) == 0U) return abort_code::parameter_incompatible;
+      if (v == 0U) return abort_code::none;
+      if (v > MaxEntries || v > c.map_subs) return abort_code::pdo_too_long;
+      std::array<pdo::mapping_entry, MaxEntries> e{};
+      for (std::size_t k = 0; k < v; ++k) {
+        const auto m = read_u32(*store_, {a.index, static_cast<std::uint8_t>(k + 1U)});
+        if (!m) return abort_code::no_sub_index;
+        e[k] = pdo::mapping_entry::from_u32(*m);
+      }
+      const auto r = pdo::check_mapping(dict_, d, std::span<const pdo::mapping_entry>(e.data(), v),
+                                        pdo::can_max_bits);
+      return mapping_abort(r.problem);
+    }
+    if (const auto cur = read_u32(*store_, a); cur && *cur == v) return abort_code::none;
+    if ((c.cob & cob_bits::invalid) == 0U || c.count != 0U) {
+      return abort_code::parameter_incompatible;
+    }
+    if (v == 0U) return abort_code::none;
+    const auto m = pdo::mapping_entry::from_u32(v);
+    if (const auto p = pdo::check_entry(dict_, d, m); p != pdo::mapping_problem::none) {
+      return mapping_abort(p);
+    }
+    return m.bits > pdo::can_max_bits ? abort_code::pdo_too_long : abort_code::none;
+  }
+
+  // ----- loading ---------------------------------------------------------------------------
+
+  /// Read one PDO's parameters; false when they cannot be served (the PDO is then unusable).
+  [[nodiscard]] constexpr bool load(config &c, positions &at, std::uint16_t comm,
+                                    std::uint16_t number, pdo::direction d) noexcept {
+    c = config{};
+    at = positions{}; // a PDO found unusable below keeps no steps of an earlier mapping
+    c.number = number;
+    c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
+    c.type = static_cast<std::uint8_t>(read_u32(*store_, {comm, 2}).value_or(255U));
+    c.inhibit = static_cast<std::uint16_t>(read_u32(*store_, {comm, 3}).value_or(0U));
+    c.event_timer = static_cast<std::uint16_t>(read_u32(*store_, {comm, 5}).value_or(0U));
+    c.sync_start = static_cast<std::uint8_t>(read_u32(*store_, {comm, 6}).value_or(0U));
+    const auto map = static_cast<std::uint16_t>(comm + pdo_index::count);
+    for (const od::entry &e : dict_.object(map)) {
+      if (e.sub > c.map_subs) c.map_subs = e.sub;
+    }
+    c.count = static_cast<std::uint8_t>(read_u32(*store_, {map, 0}).value_or(0U));
+    c.usable = check_comm(config{}, d, 2, c.type) == abort_code::none &&
+               (c.cob & 0x3FFF'F800U) == 0U && load_mapping(c, at, d);
+    return c.usable;
+  }
+
+  /// Read mapping entries 1..count from the store and check them; false (and count 0) when
+  /// they cannot be served. A positioned store: look each mapped object up (at[k]).
+  constexpr bool load_mapping(config &c, positions &at, pdo::direction d) noexcept {
+    const std::uint32_t first =
+        d == pdo::direction::rpdo ? pdo_index::rpdo_map : pdo_index::tpdo_map;
+    const auto map = static_cast<std::uint16_t>(first + c.number - 1U);
+    c.bytes = 0;
+    if constexpr (by_copy) {
+      at.first = {}; // the steps always describe c.map[0..count): none until it is checked
+      at.per_objects = 0;
+    }
+    if (c.count > MaxEntries || c.count > c.map_subs) {
+      c.count = 0;
+      return false;
+    }
+    for (std::size_t k = 0; k < c.count; ++k) {
+      const auto v = read_u32(*store_, {map, static_cast<std::uint8_t>(k + 1U)});
+      if (!v) {
+        c.count = 0;
+        return false;
+      }
+      c.map[k] = pdo::mapping_entry::from_u32(*v);
+    }
+    const auto r = pdo::check_mapping(dict_, d, c.entries(), pdo::can_max_bits);
+    if (!r.ok()) {
+      c.count = 0;
+      return false;
+    }
+    c.bytes = static_cast<std::uint8_t>((r.total_bits + 7U) / 8U);
+    if constexpr (by_position) {
+      at.whole_bytes = true;
+      for (std::size_t k = 0; k < c.count; ++k) {
+        const pdo::mapping_entry &m = c.map[k];
+        at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
+        if (m.bits % 8U != 0U) at.whole_bytes = false;
+      }
+      if constexpr (by_copy) compile(c, at, d);
+    } else {
+      (void)at;
+    }
+    return true;
+  }
+
+  /// Compile a checked mapping (by_copy): the entries the store keeps plain for this direction
+  /// on whole bytes become runs of bytes — an entry joins the run before it when both the
+  /// store's bytes and the frame's are adjacent —, each run cut into copies of 8, 4, 2, 1 bytes
+  /// (largest first) and filed by length; the others are per-object steps, in mapping order.
+  /// Dummies get nothing (a TPDO's data starts zeroed, an RPDO skips them). An RPDO that maps
+  /// one object twice is written entry by entry, so that the later entry wins as it does by
+  /// position and by address.
+  constexpr void compile(const config &c, resolved &at, pdo::direction d) noexcept {
+    const bool rx = d == pdo::direction::rpdo;
+    bool twice = false;
+    for (std::size_t k = 0; rx && k < c.count; ++k) {
+      for (std::size_t j = 0; j < k; ++j) {
+        if (at.at[k] != sdo::no_position && at.at[k] == at.at[j]) twice = true;
+      }
+    }
+    struct run {
+      std::uint32_t storage = 0;
+      std::size_t frame = 0;
+      std::size_t size = 0;
+    };
+    std::array<run, MaxEntries> runs{};
+    std::size_t n_runs = 0;
+    at.per_objects = 0;
+    const std::size_t room = store_->plain_storage().size();
+    std::size_t bit = 0;
+    for (std::size_t k = 0; k < c.count; ++k) {
+      const pdo::mapping_entry &m = c.map[k];
+      if (!m.is_dummy()) {
+        sdo::plain_slot s{};
+        if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
+          s = store_->plain_at(at.at[k]);
+        }
+        // (a slot that would reach past the storage is a broken promise: not copied)
+        if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable) ||
+            s.offset > room || room - s.offset < s.size) {
+          at.object[at.per_objects++] = {static_cast<std::uint8_t>(bit),
+                                         static_cast<std::uint8_t>(k)};
+        } else if (n_runs != 0U && runs[n_runs - 1U].storage + runs[n_runs - 1U].size == s.offset &&
+                   runs[n_runs - 1U].frame + runs[n_runs - 1U].size == bit / 8U) {
+          runs[n_runs - 1U].size += s.size;
+        } else {
+          runs[n_runs++] = {s.offset, bit / 8U, s.size};
+        }
+      }
+      bit += m.bits;
+    }
+    std::size_t n = 0;
+    for (std::size_t cls = 0; cls < 4U; ++cls) {
+      at.first[cls] = static_cast<std::uint8_t>(n);
+      const std::size_t len = std::size_t{1} << cls;
+      for (std::size_t r = 0; r < n_runs; ++r) {
+        for (std::size_t o = 0; o < runs[r].size;) {
+          const std::size_t left = runs[r].size - o;
+          const std::size_t chunk = left >= 8U ? 8U : left >= 4U ? 4U : left >= 2U ? 2U : 1U;
+          if (chunk == len) {
+            at.storage[n] = runs[r].storage + static_cast<std::uint32_t>(o);
+            at.frame[n++] = static_cast<std::uint8_t>(runs[r].frame + o);
+          }
+          o += chunk;
+        }
+      }
+    }
+    at.first[4] = static_cast<std::uint8_t>(n);
+  }
+
+  // ----- data ------------------------------------------------------------------------------
+
+  /// Sample a TPDO's mapped objects into t.data. False when an object could not be read.
+  [[nodiscard]] constexpr bool build(tx_slot &t) noexcept {
+    if constexpr (by_copy) {
+      return build_by_copy(t);
+    } else if constexpr (by_position) {
+      return build_at(t);
+    } else {
+      return build_by_address(t);
+    }
+  }
+  /// build() by position: a mapping of whole bytes (every one without a BOOLEAN of 1 bit) is
+  /// read straight into the frame's bytes, value by value.
+  [[nodiscard]] constexpr bool build_at(tx_slot &t) noexcept {
+    t.data = {};
+    const resolved &p = t.pos;
+    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits t.data
+      std::size_t byte = 0;
+      for (std::size_t k = 0; k < t.c.count; ++k) {
+        const pdo::mapping_entry &m = t.c.map[k];
+        const std::size_t n = m.bits / 8U;
+        if (p.at[k] != sdo::no_position) {
+          std::size_t total = 0;
+          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(t.data.data() + byte, n),
+                              total) != abort_code::none) {
+            return false;
+          }
+        } else if (!m.is_dummy()) {
+          return false; // the store has no such object
+        }
+        byte += n;
+      }
+      return true;
+    }
+    std::size_t offset = 0;
+    for (std::size_t k = 0; k < t.c.count; ++k) {
+      if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset)) return false;
+      offset += t.c.map[k].bits;
+    }
+    return true;
+  }
+  /// Read mapping entry k (not a dummy) of a TPDO by position into t.data from bit `offset`.
+  [[nodiscard, gnu::noinline]] constexpr bool read_entry(tx_slot &t, std::size_t k,
+                                                         std::size_t offset) noexcept {
+    const pdo::mapping_entry &m = t.c.map[k];
+    const std::size_t at = t.pos.at[k];
+    if (at == sdo::no_position) return false;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    std::size_t total = 0;
+    if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
+      const auto out = std::span<std::uint8_t>(t.data).subspan(offset / 8U, n);
+      return store_->read_at(at, 0, out, total) == abort_code::none;
+    }
+    std::array<std::uint8_t, 8> v{};
+    if (store_->read_at(at, 0, v, total) != abort_code::none) return false;
+    std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+    if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+    return pdo::pack(t.data, offset, m.bits, raw).has_value();
+  }
+  /// build() by the compiled mapping: the copies from the store's bytes, then the other
+  /// entries by position (the first that cannot be read stops the TPDO, as above; the frame's
+  /// bytes of different entries never overlap, so the order does not show).
+  [[nodiscard]] constexpr bool build_by_copy(tx_slot &t) noexcept {
+    t.data = {};
+    const resolved &p = t.pos;
+    const std::uint8_t *from = store_->plain_storage().data();
+    std::uint8_t *to = t.data.data();
+    copies<1, true>(p, 0, to, from);
+    copies<2, true>(p, 1, to, from);
+    copies<4, true>(p, 2, to, from);
+    copies<8, true>(p, 3, to, from);
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (!read_entry(t, p.object[i].entry, p.object[i].bit)) return false;
+    }
+    return true;
+  }
+  /// The copies of N bytes (list `cls` of a compiled mapping): into the frame's bytes `to`
+  /// from the storage `from` (ToFrame), or into the storage `to` from the frame's bytes `from`.
+  template <std::size_t N, bool ToFrame>
+  static constexpr void copies(const resolved &p, std::size_t cls, std::uint8_t *to,
+                               const std::uint8_t *from) noexcept {
+    for (std::size_t i = p.first[cls]; i < p.first[cls + 1U]; ++i) {
+      if constexpr (ToFrame) {
+        fieldcodec::copy_bytes<N>(from + p.storage[i], to + p.frame[i]);
+      } else {
+        fieldcodec::copy_bytes<N>(from + p.frame[i], to + p.storage[i]);
+      }
+    }
+  }
+  /// build() through the store's read by address (a store without positions).
+  [[nodiscard]] constexpr bool build_by_address(tx_slot &t) noexcept {
+    t.data = {};
+    std::size_t offset = 0;
+    for (const auto &m : t.c.entries()) {
+      if (!m.is_dummy()) {
+        std::array<std::uint8_t, 8> v{};
+        std::size_t total = 0;
+        if (store_->read({m.index, m.sub}, 0, v, total) != abort_code::none) return false;
+        const std::size_t n = (m.bits + 7U) / 8U;
+        std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
+        if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
+        if (!pdo::pack(t.data, offset, m.bits, raw)) return false;
+      }
+      offset += m.bits;
+    }
+    return true;
+  }
+  constexpr void emit(const tx_slot &t) noexcept {
+    can_frame f;
+    f.id = t.c.id();
+    f.dlc = t.c.bytes;
+    f.data = t.data; // zero past c.bytes: build writes only the mapping's bits
+    out_.push(f);
+  }
+  /// Sample and send a TPDO now; restarts its inhibit time and event timer.
+  constexpr void send(tx_slot &t, std::uint32_t now) noexcept {
+    t.pending = false;
+    if (!build(t)) {
+      events_.push({pdo_event::kind::not_sent, pdo::direction::tpdo, t.c.number, 0});
+      return;
+    }
+    emit(t);
+    if (t.c.type >= 254U) {
+      t.inhibited = t.c.inhibit != 0U;
+      t.inhibit_until = now + ms_from_100us(t.c.inhibit);
+      t.event_due = now + t.c.event_timer;
+    }
+  }
+
+  /// Write an RPDO's data (at least c.bytes long) into the mapped objects.
+  constexpr void apply(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    if constexpr (by_copy) {
+      apply_by_copy(r, data);
+    } else if constexpr (by_position) {
+      apply_at(r, data);
+    } else {
+      apply_by_address(r.c, data);
+    }
+  }
+  /// apply() by position: an object on whole bytes is written straight from the frame's bytes.
+  /// Its length, (bits + 7) / 8, is what apply_by_address takes from the dictionary: a mapping
+  /// that passed pdo::check_mapping has bits = 8 × width for fixed-size types, 1 or 8 for a
+  /// BOOLEAN (width 1) and whole bytes for byte strings.
+  constexpr void apply_at(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    std::size_t offset = 0;
+    std::uint8_t refused = 0;
+    for (std::size_t k = 0; k < r.c.count; ++k) {
+      if (!r.c.map[k].is_dummy() && write_entry(r, k, offset, data) != abort_code::none) {
+        ++refused;
+      }
+      offset += r.c.map[k].bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+  }
+  /// Write mapping entry k (not a dummy) of an RPDO by position from bit `offset` of `data`.
+  [[nodiscard, gnu::noinline]] constexpr abort_code
+  write_entry(const rx_slot &r, std::size_t k, std::size_t offset,
+              std::span<const std::uint8_t> data) noexcept {
+    const pdo::mapping_entry &m = r.c.map[k];
+    const std::size_t at = r.pos.at[k];
+    // the store has no such object: refused, as its write would refuse it
+    if (at == sdo::no_position) return abort_code::general_error;
+    const std::size_t n = (m.bits + 7U) / 8U;
+    if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
+      return store_->write_at(at, 0, data.subspan(offset / 8U, n), true);
+    }
+    std::array<std::uint8_t, 8> v{};
+    const auto raw = pdo::unpack(data, offset, m.bits);
+    if (!raw ||
+        !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(), byte_order::little)) {
+      return abort_code::general_error;
+    }
+    return store_->write_at(at, 0, std::span<const std::uint8_t>(v).first(n), true);
+  }
+  /// apply() by the compiled mapping: the copies into the store's bytes (objects that take
+  /// every value with no effect but being stored: nothing to refuse), then the other entries by
+  /// position, in mapping order. (The copies go first; no entry of another object sees the
+  /// difference, and an RPDO that maps an object twice has no copies.)
+  constexpr void apply_by_copy(const rx_slot &r, std::span<const std::uint8_t> data) noexcept {
+    const resolved &p = r.pos;
+    std::uint8_t *to = store_->plain_storage().data();
+    // data holds at least c.bytes bytes (see apply), within which every copy lies
+    const std::uint8_t *from = data.data();
+    copies<1, false>(p, 0, to, from);
+    copies<2, false>(p, 1, to, from);
+    copies<4, false>(p, 2, to, from);
+    copies<8, false>(p, 3, to, from);
+    std::uint8_t refused = 0;
+    for (std::size_t i = 0; i < p.per_objects; ++i) {
+      if (write_entry(r, p.object[i].entry, p.object[i].bit, data) != abort_code::none) {
+        ++refused;
+      }
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+  }
+  /// apply() through the store's write by address (a store without positions).
+  constexpr void apply_by_address(const config &c, std::span<const std::uint8_t> data) noexcept {
+    std::size_t offset = 0;
+    std::uint8_t refused = 0;
+    for (const auto &m : c.entries()) {
+      if (!m.is_dummy()) {
+        const od::entry *e = dict_.find(m.index, m.sub);
+        std::array<std::uint8_t, 8> v{};
+        std::size_t n = 0;
+        if (e != nullptr) {
+          n = od::is_byte_string(e->type) ? m.bits / 8U : e->width();
+          const auto raw = pdo::unpack(data, offset, m.bits);
+          if (n > v.size() || !raw ||
+              !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(),
+                              byte_order::little)) {
+            n = 0;
+          }
+        }
+        if (n == 0U || store_->write({m.index, m.sub}, 0, std::span<const std::uint8_t>(v).first(n),
+                                     true) != abort_code::none) {
+          ++refused;
+        }
+      }
+      offset += m.bits;
+    }
+    events_.push({pdo_event::kind::received, pdo::direction::rpdo, c.number, refused});
+  }
+
+  template <class F>
+  [[nodiscard]] constexpr bool any(F f) const noexcept {
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rpdo_[i].c.valid() && f(rpdo_[i])) return true;
+    }
+    return false;
+  }
+  constexpr void begin() noexcept {
+    out_.clear();
+    events_.clear();
+  }
+  /// The step: the frames to send, the state, and deadline(now) — which is nullopt without a
+  /// scan when no PDO has timing (timed_).
+  [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
+    return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
+  }
+  /// Set timed_: whether any PDO can have a deadline — a valid TPDO of type 254/255 (pending,
+  /// event timer), a valid RPDO with an event timer (deadline monitoring starts only with one,
+  /// and every change of it restarts the RPDO). Called wherever a COB-ID, transmission type,
+  /// event timer or the usability of a PDO changes: reload() and written().
+  constexpr void retime() noexcept {
+    timed_ = false;
+    for (std::size_t i = 0; i < tpdo_count_; ++i) {
+      if (tpdo_[i].c.valid() && tpdo_[i].c.type >= 254U) timed_ = true;
+    }
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      if (rpdo_[i].c.valid() && rpdo_[i].c.event_timer != 0U) timed_ = true;
+    }
+  }
+
+  static constexpr std::size_t out_capacity = MaxTpdo == 0U ? 1U : MaxTpdo;
+  static constexpr std::size_t event_capacity = 2U * MaxRpdo + MaxTpdo + 1U;
+
+  Store *store_;
+  od::dictionary dict_;
+  std::array<rx_slot, (MaxRpdo == 0U ? 1U : MaxRpdo)> rpdo_{};
+  std::array<tx_slot, (MaxTpdo == 0U ? 1U : MaxTpdo)> tpdo_{};
+  std::size_t rpdo_count_ = 0;
+  std::size_t tpdo_count_ = 0;
+  frame_list<out_capacity> out_{};
+  event_list<pdo_event, event_capacity> events_{};
+  bool operational_ = false;
+  bool report_long_ = true;
+  bool timed_ = false;        ///< see retime()
+  bool any_buffered_ = false; ///< an RPDO may be buffered for the next SYNC (set with buffered)
+};
+
+} // namespace fieldcodec::canopen::node::r5
