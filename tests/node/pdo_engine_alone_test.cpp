@@ -72,27 +72,3 @@ TEST_CASE("pdo engine alone: a stored configuration it cannot serve") {
   CHECK(small.reload() == errc::too_long);
   CHECK(small.rpdo_count() == 1);
 }
-
-// node::frame_list's in-place frames (round 6: the PDO engine builds a TPDO in the list's next
-// frame instead of building it aside and copying it in with push()).
-TEST_CASE("frame_list: next() / add() build a frame in place; a full list refuses and counts") {
-  node::frame_list<2> l;
-  CHECK(!l.full());
-  co::can_frame &a = l.next();
-  a = co::can_frame{0x181, false, 2, {1, 2}};
-  CHECK(l.empty()); // not part of the list until add()
-  CHECK(l.add());
-  co::can_frame &b = l.next();
-  b = co::can_frame{0x182, false, 1, {3}};
-  CHECK(l.add());
-  CHECK(l.full());
-  CHECK(!l.add()); // refused, as push() refuses
-  CHECK(!l.push(co::can_frame{0x183, false, 0, {}}));
-  CHECK(l.lost() == 2U);
-  REQUIRE(l.size() == 2U);
-  CHECK(l.span()[0] == co::can_frame{0x181, false, 2, {1, 2}});
-  CHECK(l.span()[1] == co::can_frame{0x182, false, 1, {3}});
-  l.clear();
-  CHECK(!l.full());
-  CHECK(l.empty());
-}

@@ -45,20 +45,6 @@ public:
     f_[n_++] = f;
     return true;
   }
-  /// Whether push() / add() would refuse a frame.
-  [[nodiscard]] constexpr bool full() const noexcept { return n_ == N; }
-  /// A frame built in place: the slot after the last frame (not yet part of the list; precondition:
-  /// !full()), to be filled — every field — and then taken with add().
-  [[nodiscard]] constexpr can_frame &next() noexcept { return f_[n_]; }
-  /// Take the frame built in next() (refused and counted as lost() when full, as push()).
-  constexpr bool add() noexcept {
-    if (n_ == N) {
-      ++lost_;
-      return false;
-    }
-    ++n_;
-    return true;
-  }
   [[nodiscard]] constexpr std::size_t size() const noexcept { return n_; }
   [[nodiscard]] constexpr bool empty() const noexcept { return n_ == 0U; }
   [[nodiscard]] constexpr std::span<const can_frame> span() const noexcept {

@@ -800,9 +800,8 @@ private:
 
   /// The 8 data bytes of a frame.
   using frame_bytes = std::array<std::uint8_t, 8>;
-  /// Sample a TPDO's mapped objects into `data` (zero past the mapping's bits: the frame's
-  /// bytes when it is sent now, t.data when sampled for later). False when an object could not
-  /// be read.
+  /// Sample a TPDO's mapped objects into `data` (t.data; zero past the mapping's bits). False
+  /// when an object could not be read.
   [[nodiscard]] constexpr bool build(tx_slot &t, frame_bytes &data) noexcept {
     if constexpr (by_copy) {
       return build_by_copy(t, data);
@@ -913,7 +912,7 @@ private:
     }
     return true;
   }
-  /// Send the data a type-252 TPDO sampled at the last SYNC.
+  /// Send t.data (built by send(), or sampled at the last SYNC for a type-252 TPDO).
   constexpr void emit(const tx_slot &t) noexcept {
     can_frame f;
     f.id = t.c.id();
@@ -921,24 +920,14 @@ private:
     f.data = t.data; // zero past c.bytes: build writes only the mapping's bits
     out_.push(f);
   }
-  /// Sample and send a TPDO now; restarts its inhibit time and event timer. The frame is built
-  /// in place, in the list's next frame. (The list holds a frame per TPDO, and a call sends a
-  /// TPDO at most once: it is never full; if it were, add() counts the frame as lost.)
+  /// Sample and send a TPDO now; restarts its inhibit time and event timer.
   constexpr void send(tx_slot &t, std::uint32_t now) noexcept {
     t.pending = false;
-    if (out_.full()) {
-      (void)out_.add();
-      return;
-    }
-    can_frame &f = out_.next();
-    if (!build(t, f.data)) {
+    if (!build(t, t.data)) {
       events_.push({pdo_event::kind::not_sent, pdo::direction::tpdo, t.c.number, 0});
       return;
     }
-    f.id = t.c.id();
-    f.rtr = false;
-    f.dlc = t.c.bytes;
-    (void)out_.add();
+    emit(t);
     if (t.c.type >= 254U) {
       t.inhibited = t.c.inhibit != 0U;
       t.inhibit_until = now + ms_from_100us(t.c.inhibit);
