@@ -34,6 +34,7 @@
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -677,8 +678,18 @@ constexpr std::size_t put_u16(record &r, std::size_t at, std::uint16_t v) noexce
   r[at + 1U] = static_cast<std::uint8_t>(v);
   return at + 2U;
 }
-constexpr std::size_t put_dsp(record &r, std::size_t at, std::int64_t raw) noexcept {
+FIELDCODEC_NX_INLINE constexpr std::size_t put_dsp(record &r, std::size_t at,
+                                                   std::int64_t raw) noexcept {
   const auto u = static_cast<std::uint64_t>(raw); // NL NM NH VL VM VH: least significant first
+  // On a little-endian host the six bytes are the first six of u in memory: copied from a
+  // bit_cast they become one 4-byte and one 2-byte store; the shift loop below (any host, the
+  // same bytes) left the two high bytes to a shift and a store each (issue 18, round 6: 6 Ir
+  // of the combined positioning record).
+  if constexpr (std::endian::native == std::endian::little) {
+    const auto b = std::bit_cast<std::array<std::uint8_t, sizeof u>>(u);
+    for (std::size_t i = 0; i < dsp_format::size; ++i) r[at + i] = b[i];
+    return at + dsp_format::size;
+  }
   for (std::size_t i = 0; i < dsp_format::size; ++i) {
     r[at + i] = static_cast<std::uint8_t>(u >> (8U * i));
   }
@@ -709,7 +720,11 @@ write_simple(record &r, std::size_t at, op o, arg a) noexcept {
         code | (a.kind == arg_kind::parameter ? parameter_flag : variable_flag));
   }
   if (a.kind == arg_kind::special && !f.has_special) return errc::type_mismatch;
-  if ((f.s == shape::none || f.s == shape::zero) && a != arg{}) return errc::invalid_argument;
+  // a == arg{} member by member (a is not dsp_raw here: the comparison need not normalize)
+  if ((f.s == shape::none || f.s == shape::zero) &&
+      (a.kind != arg_kind::value || a.places != 0U || a.number != 0)) {
+    return errc::invalid_argument;
+  }
   // numbers are checked before anything is written
   if (numbered && (a.number < 0 || a.number > 0xFFFF)) return errc::out_of_range;
   switch (f.s) {
@@ -745,7 +760,8 @@ write_simple(record &r, std::size_t at, op o, arg a) noexcept {
         if (!n) return n.error();
         v = n.value();
         // value 0 of WAIT / GOTO / GOSUB would read back as START / EXT
-        if (v == 0 && f.has_special) return errc::out_of_range;
+        // (the family's constant first: tested after v, GCC 12 kept a test of v == 0 for ACCEL)
+        if (f.has_special && v == 0) return errc::out_of_range;
       } else {
         v = a.number;
       }
