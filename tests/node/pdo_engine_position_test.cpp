@@ -842,3 +842,66 @@ TEST_CASE("pdo engine compiled: a plain slot past the store's plain_storage is n
   REQUIRE(e2.reload().has_value());
   CHECK(e2.compiled_plan(pdo::direction::rpdo, 0) == decltype(e2)::plan{2, 2, 0});
 }
+
+namespace {
+
+/// A dictionary whose store puts 2001h (UNSIGNED16) in the last two bytes a compiled mapping's
+/// 16-bit offsets reach and 2002h (UNSIGNED32) just past them: a 1F00h octet string fills the
+/// bytes before.
+constexpr std::array<od::entry, 13> far_entries(std::uint32_t big) {
+  const auto u8 = data_type::unsigned8;
+  const auto u32 = data_type::unsigned32;
+  std::array<od::entry, 13> e{
+      {var(0x1400, 0, u8, od::access::ro, 2), var(0x1400, 1, u32, rw, 0x201U),
+       var(0x1400, 2, u8, rw, 255), var(0x1600, 0, u8, rw, 2),
+       var(0x1600, 1, u32, rw, 0x2001'0010U), var(0x1600, 2, u32, rw, 0x2002'0020U),
+       var(0x1800, 0, u8, od::access::ro, 2), var(0x1800, 1, u32, rw, 0x181U),
+       var(0x1800, 2, u8, rw, 1), var(0x1A00, 0, u8, rw, 2), var(0x1A00, 1, u32, rw, 0x2002'0020U),
+       var(0x1A00, 2, u32, rw, 0x2001'0010U), bytes(0x1F00, data_type::octet_string, big)}};
+  return e;
+}
+constexpr auto far_probe = far_entries(1);
+constexpr std::uint32_t far_big = [] {
+  // 2001h follows 1F00h: with 1F00h of 1 byte it would start at offsets[13] (the total)
+  const auto l = sdo::make_layout<13>(od::dictionary{far_probe});
+  return 0xFFFEU - (l.offsets[13] - 1U);
+}();
+constexpr auto far_base = far_entries(far_big);
+constexpr std::array<od::entry, 15> far_list = [] {
+  std::array<od::entry, 15> e{};
+  for (std::size_t i = 0; i < 13; ++i) e[i] = far_base[i];
+  e[13] = var(0x2001, 0, data_type::unsigned16, rw, 0, yes);
+  e[14] = var(0x2002, 0, data_type::unsigned32, rw, 0, yes);
+  return e;
+}();
+constexpr od::dictionary far_dict{far_list};
+static_assert(far_dict.is_valid());
+constexpr auto far_layout = sdo::make_layout<15>(far_dict);
+static_assert(far_layout.offsets[13] == 0xFFFEU && far_layout.offsets[14] == 0x10000U);
+
+} // namespace
+
+TEST_CASE("pdo engine compiled: a value past the first 64 kB of the store goes by position") {
+  // the compiled mapping keeps 16-bit storage offsets: 2001h (0xFFFE..0xFFFF) is copied, 2002h
+  // (from 0x10000) is read and written by position; the frames and values are the same
+  std::vector<std::uint8_t> storage(far_layout.storage_size());
+  sdo::dictionary_store<> store{far_dict, far_layout, storage};
+  REQUIRE(store.init_defaults(1).has_value());
+  REQUIRE(store.plain_at(store.position({0x2002, 0})).offset == 0x10000U);
+  node::pdo_engine<sdo::dictionary_store<>, 1, 1, 8> e(store, far_dict);
+  REQUIRE(e.reload().has_value());
+  e.set_operational(true, 0);
+  using plan = decltype(e)::plan;
+  CHECK(e.compiled_plan(pdo::direction::rpdo, 0) == plan{1, 1, 1});
+  CHECK(e.compiled_plan(pdo::direction::tpdo, 0) == plan{1, 1, 1});
+  (void)e.on_frame(co::can_frame{0x201, false, 6, {0x11, 0x22, 0x33, 0x44, 0x55, 0x66}}, 1);
+  REQUIRE(e.events().size() == 1);
+  CHECK(e.events()[0].refused == 0);
+  CHECK(storage[0xFFFE] == 0x11);
+  CHECK(storage[0xFFFF] == 0x22);
+  CHECK(storage[0x10000] == 0x33);
+  CHECK(storage[0x10003] == 0x66);
+  const auto s = e.on_sync(std::nullopt, 2);
+  REQUIRE(s.send.size() == 1U);
+  CHECK(s.send[0] == co::can_frame{0x181, false, 6, {0x33, 0x44, 0x55, 0x66, 0x11, 0x22}});
+}

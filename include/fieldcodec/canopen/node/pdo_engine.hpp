@@ -504,12 +504,16 @@ private:
     std::uint8_t entry = 0;
   };
   struct no_steps {};
+  /// The bytes of plain_storage() a compiled mapping reaches: offsets of 16 bits.
+  static constexpr std::uint32_t copy_reach = 0x10000U;
   /// A compiled mapping (by_copy; compile() sets it with the positions, so it describes the
   /// mapping in force): copy i moves 2^c bytes between the store's plain_storage() at
   /// storage[i] and frame byte frame[i], for i in first[c]..first[c + 1] (c = 0..3: 1, 2, 4, 8
   /// bytes; a frame has 8 bytes, so there are at most 8 copies); then the per-object entries.
+  /// Storage offsets have 16 bits: a value whose bytes do not all lie in the first 64 kB of
+  /// the store's plain_storage() is read or written by position instead (copy_reach).
   struct compiled {
-    std::array<std::uint32_t, 8> storage{};
+    std::array<std::uint16_t, 8> storage{};
     std::array<std::uint8_t, 8> frame{};
     std::array<std::uint8_t, 5> first{};
     std::uint8_t per_objects = 0;
@@ -763,9 +767,10 @@ private:
         if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
           s = store_->plain_at(at.at[k]);
         }
-        // (a slot that would reach past the storage is a broken promise: not copied)
+        // (a slot that would reach past the storage is a broken promise: not copied; one past
+        // the 16-bit offsets of a compiled mapping goes by position)
         if (s.size == 0U || s.size * 8U != m.bits || !(rx ? s.writable : s.readable) ||
-            s.offset > room || room - s.offset < s.size) {
+            s.offset > room || room - s.offset < s.size || s.offset > copy_reach - s.size) {
           at.object[at.per_objects++] = {static_cast<std::uint8_t>(bit),
                                          static_cast<std::uint8_t>(k)};
         } else if (n_runs != 0U && runs[n_runs - 1U].storage + runs[n_runs - 1U].size == s.offset &&
@@ -786,7 +791,7 @@ private:
           const std::size_t left = runs[r].size - o;
           const std::size_t chunk = left >= 8U ? 8U : left >= 4U ? 4U : left >= 2U ? 2U : 1U;
           if (chunk == len) {
-            at.storage[n] = runs[r].storage + static_cast<std::uint32_t>(o);
+            at.storage[n] = static_cast<std::uint16_t>(runs[r].storage + o);
             at.frame[n++] = static_cast<std::uint8_t>(runs[r].frame + o);
           }
           o += chunk;
