@@ -349,6 +349,33 @@ download_out server_block_download(const transfer_in &in) {
   return out;
 }
 
+/// fieldcodec: the same download with the segments handed over the way a CAN driver drains its
+/// receive FIFO: `Batch` frames at a time (127: the whole sub-block), each batch through
+/// server::on_frames until it is used up (it stops at a frame that answers: the caller sends
+/// the answer and goes on with the rest). The initiate and the end come alone (the client
+/// waits for the answer before it sends on), through on_frame.
+template <std::size_t Batch, bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
+download_out server_block_download_batch(const transfer_in &in) {
+  download_out out;
+  const download_requests &q = (Crc ? g_server_download_crc : g_server_download_plain)[in.object];
+  sdo::server<store_type, CrcPolicy> s(sdo_node, g_block_store, g_download_buffer);
+  push_all(out.frames, s.on_frame(q.initiate, 0).send);
+  for (std::span<const co::can_frame> fifo(q.segments); !fifo.empty();) {
+    std::span<const co::can_frame> rx = fifo.first(fifo.size() < Batch ? fifo.size() : Batch);
+    fifo = fifo.subspan(rx.size());
+    while (!rx.empty()) {
+      const sdo::batch_step b = s.on_frames(rx, 0);
+      push_all(out.frames, b.last.send);
+      rx = rx.subspan(b.consumed);
+    }
+  }
+  push_all(out.frames, s.on_frame(q.end, 0).send);
+  out.frames.done = s.state() == sdo::transfer_state::done;
+  std::memcpy(out.value.data(), stored_value(static_cast<std::uint8_t>(value_count + in.object)),
+              block_bytes);
+  return out;
+}
+
 /// Hand-written: the server side of the same download into a value it knows (CRC by table).
 template <bool Crc>
 download_out hand_server_block_download(const transfer_in &in) {
@@ -433,6 +460,32 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/block download 889 B, server, CRC table",
       [](const transfer_in &in) { return server_block_download<true, with_table>(in); },
       [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  // the server download with the segments in batches (server::on_frames): the whole sub-block
+  // of 127 frames in one call, and 8 at a time (a small receive FIFO)
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, no CRC, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, false>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, true>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC table, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, no CRC, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, false>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, true>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC table, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
 }
 
 bool complete_transfers() {
@@ -451,8 +504,13 @@ bool complete_transfers() {
     }
   }
   // the server download: initiate response, one acknowledgement, end response, and the value
-  for (const auto &d : {server_block_download<true>(in), server_block_download<false>(in),
-                        server_block_download<true, with_table>(in)}) {
+  for (const auto &d :
+       {server_block_download<true>(in), server_block_download<false>(in),
+        server_block_download<true, with_table>(in), server_block_download_batch<127, false>(in),
+        server_block_download_batch<127, true>(in),
+        server_block_download_batch<127, true, with_table>(in),
+        server_block_download_batch<8, false>(in), server_block_download_batch<8, true>(in),
+        server_block_download_batch<8, true, with_table>(in)}) {
     if (!d.frames.done || d.frames.n != 3U || d.value != g_download_data[in.object]) {
       std::fprintf(stderr, "codec_sdo_block: a block download did not complete\n");
       return false;

@@ -359,3 +359,131 @@ TEST_CASE("sdo::server::on_frames: the contract on hand-made frames") {
   CHECK(total == 21U);
   CHECK(std::equal(value.begin(), value.end(), stored.begin()));
 }
+
+namespace {
+
+co::can_frame segment_frame(std::uint8_t first_byte, fc::test::xorshift &r) {
+  co::can_frame f{request_id, false, 8, {}};
+  f.data[0] = first_byte;
+  for (std::size_t i = 1; i < 8U; ++i) f.data[i] = static_cast<std::uint8_t>(r.next());
+  return f;
+}
+
+/// take_run in a constant expression (the byte loop there): three segments taken, the fourth
+/// is the last of the transfer and left for on_segment; the CRC of the run is the CRC of the
+/// bytes.
+constexpr bool take_run_in_constant_evaluation() {
+  sdo::block_receiver rx;
+  rx.start(100, 28, true, 127);
+  std::array<co::can_frame, 4> fs{};
+  std::array<std::uint8_t, 28> value{};
+  for (std::size_t k = 0; k < 4U; ++k) {
+    fs[k] = {request_id, false, 8, {}};
+    fs[k].data[0] = static_cast<std::uint8_t>((k + 1U) | (k == 3U ? 0x80U : 0U));
+    for (std::size_t i = 0; i < 7U; ++i) {
+      value[7U * k + i] = static_cast<std::uint8_t>(3U * k + i);
+      fs[k].data[1U + i] = value[7U * k + i];
+    }
+  }
+  std::array<std::uint8_t, 28> out{};
+  if (rx.take_run(fs, request_id, out) != 3U || rx.count() != 21U) return false;
+  for (std::size_t i = 0; i < 21U; ++i) {
+    if (out[i] != value[i]) return false;
+  }
+  if (!rx.on_segment(fs[3].data).acknowledge || !rx.final_received()) return false;
+  sdo::message end{};
+  end.checksum = fc::crc::ccitt16(value);
+  return rx.on_end(end).abort == sdo::abort_code::none && rx.count() == 28U;
+}
+static_assert(take_run_in_constant_evaluation());
+
+} // namespace
+
+TEST_CASE("block_receiver::take_run: where take_next, frame by frame, leaves the receiver") {
+  fc::test::xorshift r(61);
+  const auto below = [&r](std::uint64_t n) { return static_cast<std::size_t>(r.next() % n); };
+  std::size_t taken = 0, completed = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const std::size_t capacity = below(1200);
+    const std::optional<std::uint32_t> announced =
+        below(3) == 0 ? std::nullopt : std::optional<std::uint32_t>(below(1200));
+    const bool crc = below(2) == 0;
+    const auto block_size = static_cast<std::uint8_t>(1U + below(127));
+    sdo::block_receiver one, run;    // take_next frame by frame, take_run
+    std::vector<std::uint8_t> bytes; // what `one` took, for the right CRC
+    one.start(capacity, announced, crc, block_size);
+    run.start(capacity, announced, crc, block_size);
+    // both somewhere in the sub-block first
+    for (std::size_t k = below(4) == 0 ? below(block_size) : 0; k > 0U; --k) {
+      const auto s = segment_frame(static_cast<std::uint8_t>(block_size - k), r);
+      if (!one.take_next(s.data)) break;
+      REQUIRE(run.take_next(s.data));
+      bytes.insert(bytes.end(), s.data.begin() + 1, s.data.end());
+    }
+    // a run: mostly the next segments, sometimes another identifier, a remote frame, another
+    // DLC, a sequence number out of line or the last flag
+    std::vector<co::can_frame> fs;
+    // (the next sequence number: the one take_next accepts, tried on a copy)
+    std::uint8_t next = 1;
+    for (std::uint8_t s = 1; s < 128U; ++s) {
+      auto probe = one;
+      if (probe.take_next(segment_frame(s, r).data)) {
+        next = s;
+        break;
+      }
+    }
+    for (std::size_t k = 1U + below(140); k > 0U; --k) {
+      co::can_frame f = segment_frame(next++, r);
+      switch (below(40)) {
+      case 0: f.id = static_cast<std::uint16_t>(request_id + 1U); break;
+      case 1: f.rtr = true; break;
+      case 2: f.dlc = 7; break;
+      case 3: f.data[0] = static_cast<std::uint8_t>(r.next()); break;
+      case 4: f.data[0] |= 0x80U; break;
+      default: break;
+      }
+      fs.push_back(f);
+    }
+    std::vector<std::uint8_t> out_one(below(1000)), out_run(out_one.size());
+    std::size_t j = 0;
+    while (j < fs.size() && 7U * (j + 1U) <= out_one.size() && fs[j].id == request_id &&
+           !fs[j].rtr && fs[j].dlc == 8U && one.take_next(fs[j].data)) {
+      std::copy_n(fs[j].data.begin() + 1, 7, out_one.begin() + static_cast<std::ptrdiff_t>(7U * j));
+      ++j;
+    }
+    const std::size_t k = run.take_run(fs, request_id, out_run);
+    CHECK(k == j);
+    CHECK(out_one == out_run);
+    CHECK(one.count() == run.count());
+    CHECK(one.final_received() == run.final_received());
+    if (!fs.empty())
+      CHECK(one.is_repeat(fs[j == 0U ? 0U : j - 1U].data) ==
+            run.is_repeat(fs[j == 0U ? 0U : j - 1U].data));
+    taken += k;
+    // what follows: the next frame through on_segment, then an end with a random or the
+    // right CRC: the same results (the CRC of the run is the CRC of its bytes)
+    bytes.insert(bytes.end(), out_one.begin(),
+                 out_one.begin() + static_cast<std::ptrdiff_t>(7U * j));
+    sdo::message end{};
+    end.unused = static_cast<std::uint8_t>(below(7));
+    if (j < fs.size()) {
+      const bool was_final = one.final_received();
+      const auto a = one.on_segment(fs[j].data);
+      const auto b = run.on_segment(fs[j].data);
+      CHECK(a.abort == b.abort);
+      CHECK(a.acknowledge == b.acknowledge);
+      CHECK(std::equal(a.bytes.begin(), a.bytes.end(), b.bytes.begin(), b.bytes.end()));
+      bytes.insert(bytes.end(), a.bytes.begin(), a.bytes.end());
+      if (!was_final && one.final_received()) { // the last segment: its bytes come with the end
+        bytes.insert(bytes.end(), fs[j].data.begin() + 1, fs[j].data.end() - end.unused);
+      }
+    }
+    end.checksum = below(2) == 0 ? fc::crc::ccitt16(bytes) : static_cast<std::uint16_t>(r.next());
+    const auto end_one = one.on_end(end);
+    CHECK(end_one.abort == run.on_end(end).abort);
+    CHECK(one.count() == run.count());
+    if (end_one.abort == sdo::abort_code::none) ++completed;
+  }
+  CHECK(taken > 10000U);
+  CHECK(completed > 100U); // ends with the right CRC were taken by both
+}

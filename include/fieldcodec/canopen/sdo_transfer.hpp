@@ -22,10 +22,12 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 
 namespace fieldcodec::canopen::sdo {
 
@@ -341,11 +343,30 @@ public:
     if (const std::size_t n = fs.size(); n < most) most = n;
     std::size_t k = 0;
     auto next = static_cast<std::uint8_t>(sequence_ + 1U);
-    for (; k < most; ++k) {
-      const can_frame &f = fs[k];
-      if (f.id != id || f.rtr || f.dlc != 8U || f.data[0] != next) break;
-      fieldcodec::copy_bytes<7>(f.data.data() + 1, out.data() + 7U * k);
-      ++next;
+#if defined(__GNUC__)
+    if (!std::is_constant_evaluated() && std::endian::native == std::endian::little) {
+      // the same four checks as one: id, rtr, dlc and data[0] are the first 5 bytes of a
+      // frame (asserted below), read as one little-endian word and compared under a mask
+      static_assert(sizeof(can_frame) == 12U && offsetof(can_frame, rtr) == 2U &&
+                    offsetof(can_frame, dlc) == 3U && offsetof(can_frame, data) == 4U);
+      // the expected word of the next frame: its sequence number counts up in bits 32..39
+      std::uint64_t want =
+          std::uint64_t{id} | (std::uint64_t{8} << 24U) | (std::uint64_t{next} << 32U);
+      for (; k < most; ++k, want += std::uint64_t{1} << 32U) {
+        std::uint64_t w = 0;
+        __builtin_memcpy(&w, &fs[k], 8);
+        if ((w & 0xFF'FFFF'FFFFU) != want) break;
+        fieldcodec::copy_bytes<7>(fs[k].data.data() + 1, out.data() + 7U * k);
+      }
+    } else
+#endif
+    {
+      for (; k < most; ++k) {
+        const can_frame &f = fs[k];
+        if (f.id != id || f.rtr || f.dlc != 8U || f.data[0] != next) break;
+        fieldcodec::copy_bytes<7>(f.data.data() + 1, out.data() + 7U * k);
+        ++next;
+      }
     }
     if (k == 0U) return 0;
     sequence_ = static_cast<std::uint8_t>(sequence_ + k);
