@@ -263,7 +263,7 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     (void)s.on_frame(F(0x605, {0x81, 'x', 'y', 0, 0, 0, 0, 0}), 0);
     r = s.on_frame(F(0x605, {0xC1 | (5 << 2), 0x00, 0x00, 0, 0, 0, 0, 0}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x00, 0x20, 0x00, 0x04, 0x00, 0x04, 0x05}));
-    CHECK(s.error()->error == errc::bad_checksum);
+    CHECK(s.error()->code == errc::bad_checksum);
     const auto kept = store.value({0x2000, 0}).value();
     CHECK(kept.size() == 9); // the old value stays
   }
@@ -294,7 +294,7 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 20, 0, 0, 0}), 0);
     r = s.on_frame(F(0x605, {0x00, 1, 2, 3, 4, 5, 6, 7}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x00, 0x20, 0x00, 0x03, 0x00, 0x04, 0x05}));
-    CHECK(s.error()->error == errc::unexpected_frame);
+    CHECK(s.error()->code == errc::unexpected_frame);
     CHECK(s.state() == transfer_state::failed);
   }
   // the frames around a segment, which the segment path of on_frame (issue 18) must leave to
@@ -311,11 +311,11 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     (void)s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 9, 0, 0, 0}), 0);
     r = s.on_frame(F(0x605, {0x01, 1, 2, 3, 4, 5, 6}), 10);
     CHECK(r.send.empty());
-    CHECK(s.error()->error == errc::bad_length);
+    CHECK(s.error()->code == errc::bad_length);
     CHECK(r.deadline == 1000U);                                  // a refused frame is no activity
     r = s.on_frame(co::make_remote_frame(0x605, 8).value(), 10); // not for the server
     CHECK(r.send.empty());
-    CHECK(s.error()->error == errc::bad_length);
+    CHECK(s.error()->code == errc::bad_length);
     CHECK(s.on_frame(F(0x606, {0x01, 1, 2, 3, 4, 5, 6, 7}), 10).send.empty()); // not ours
     CHECK(s.on_frame(F(0x605, {0x01, '1', '2', '3', '4', '5', '6', '7'}), 10).send.empty());
     r = s.on_frame(F(0x605, {0x82, '8', '9', 0, 0, 0, 0, 0}), 11);
@@ -330,7 +330,7 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     r = s.on_frame(F(0x605, {0x80, 0x00, 0x20, 0x00, 0x00, 0x00, 0x00, 0x08}), 0);
     CHECK(r.send.empty());
     CHECK(s.state() == transfer_state::failed);
-    CHECK(s.error()->error == errc::aborted);
+    CHECK(s.error()->code == errc::aborted);
     CHECK(s.error()->abort == sdo::abort_code::general_error);
   }
   SUBCASE("the client goes silent: timeout 0x05040000") {
@@ -338,7 +338,7 @@ TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
     CHECK(s.poll(999).send.empty());
     r = s.poll(1000);
     CHECK(r.send[0] == F(0x585, {0x80, 0x00, 0x20, 0x00, 0x00, 0x00, 0x04, 0x05}));
-    CHECK(s.error()->error == errc::timeout);
+    CHECK(s.error()->code == errc::timeout);
   }
 }
 
@@ -373,12 +373,12 @@ TEST_CASE("block download, client side: the sub-block burst and its acknowledgem
   SUBCASE("more segments acknowledged than sent: 0x05040003") {
     s = c.on_frame(F(0x585, {0xA2, 5, 4, 0, 0, 0, 0, 0}), 3);
     CHECK(s.send[0] == F(0x605, {0x80, 0x00, 0x20, 0x00, 0x03, 0x00, 0x04, 0x05}));
-    CHECK(c.error()->error == errc::unexpected_frame);
+    CHECK(c.error()->code == errc::unexpected_frame);
   }
   SUBCASE("a block size of 0 or over 127: 0x05040002") {
     s = c.on_frame(F(0x585, {0xA2, 1, 0, 0, 0, 0, 0, 0}), 3);
     CHECK(s.send[0] == F(0x605, {0x80, 0x00, 0x20, 0x00, 0x02, 0x00, 0x04, 0x05}));
-    CHECK(c.error()->error == errc::out_of_range);
+    CHECK(c.error()->code == errc::out_of_range);
   }
   SUBCASE("the server aborts") {
     s = c.on_frame(F(0x585, {0x80, 0x00, 0x20, 0x00, 0x04, 0x00, 0x04, 0x05}), 3);
@@ -389,7 +389,7 @@ TEST_CASE("block download, client side: the sub-block burst and its acknowledgem
     CHECK(s.deadline == 1002U);
     s = c.poll(1002);
     CHECK(s.send[0].data[0] == 0x80);
-    CHECK(c.error()->error == errc::timeout);
+    CHECK(c.error()->code == errc::timeout);
   }
 }
 
@@ -429,7 +429,7 @@ TEST_CASE("block upload: the protocol switch, block sizes and the end") {
     (void)c.block_upload({0x2001, 0}, buf, 0).value();
     auto st = c.on_frame(F(0x585, {0x41, 0x01, 0x20, 0x00, 9, 0, 0, 0}), 0);
     CHECK(st.state == transfer_state::failed);
-    CHECK(c.error()->error == errc::unexpected_frame);
+    CHECK(c.error()->code == errc::unexpected_frame);
   }
   SUBCASE("a block size the server's buffer cannot hold") {
     (void)store.set({0x2000, 0}, pattern(500, 3));
@@ -450,14 +450,14 @@ TEST_CASE("block upload: the protocol switch, block sizes and the end") {
     CHECK(st.send[0] == F(0x605, {0xA2, 2, 127, 0, 0, 0, 0, 0}));
     st = c.on_frame(F(0x585, {0xC1 | (5 << 2), 0x00, 0x00, 0, 0, 0, 0, 0}), 0);
     CHECK(st.send[0] == F(0x605, {0x80, 0x01, 0x20, 0x00, 0x04, 0x00, 0x04, 0x05}));
-    CHECK(c.error()->error == errc::bad_checksum);
+    CHECK(c.error()->code == errc::bad_checksum);
   }
   SUBCASE("the client refuses an upload larger than its buffer") {
     sdo::client c(5);
     (void)c.block_upload({0x2001, 0}, std::span(buf).first(4), 0).value();
     auto st = c.on_frame(F(0x585, {0xC6, 0x01, 0x20, 0x00, 9, 0, 0, 0}), 0);
     CHECK(st.send[0] == F(0x605, {0x80, 0x01, 0x20, 0x00, 0x05, 0x00, 0x04, 0x05}));
-    CHECK(c.error()->error == errc::buffer_too_small);
+    CHECK(c.error()->code == errc::buffer_too_small);
   }
   SUBCASE("block sizes the client cannot ask for") {
     sdo::client c(5);

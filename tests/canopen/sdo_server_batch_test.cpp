@@ -320,7 +320,7 @@ TEST_CASE("sdo::server::on_frames: the contract on hand-made frames") {
   CHECK(b.consumed == 1U);
   CHECK(b.last.send.empty());
   REQUIRE(server.error().has_value());
-  CHECK(server.error()->error == fc::errc::bad_length);
+  CHECK(server.error()->code == fc::errc::bad_length);
 
   // a block download in one call up to the acknowledgement, then the end in a second one
   std::array<std::uint8_t, 21> value{};

@@ -161,7 +161,7 @@ struct bus {
   }
   [[nodiscard]] fieldcodec::errc err() const {
     REQUIRE(client.error().has_value());
-    return client.error()->error;
+    return client.error()->code;
   }
 };
 
@@ -171,6 +171,20 @@ std::vector<std::uint8_t> pattern(std::size_t n, std::uint8_t seed) {
   return v;
 }
 } // namespace
+
+// transfer_error is the one SDO error with context (dpq::sdo_error is the same type): `code`
+// as docs/contributing.md "Errors" asks, the abort's CiA 301 text and the errc it maps to.
+static_assert(sdo::transfer_error{errc::aborted, sdo::abort_code::value_too_high, {0x2000, 1}} ==
+              errc::aborted);
+static_assert(sdo::transfer_error{errc::aborted, sdo::abort_code::value_too_high, {}}.cause() ==
+              errc::out_of_range);
+static_assert(sdo::transfer_error{errc::timeout, sdo::abort_code::none, {}}.cause() ==
+              errc::timeout);
+static_assert(sdo::transfer_error{errc::timeout, sdo::abort_code::none, {}}.is(errc::timeout));
+static_assert(sdo::transfer_error{}.text() == "no abort");
+static_assert(sdo::transfer_error{errc::bad_length, sdo::abort_code::unknown_command, {}}.text() ==
+              sdo::to_string(sdo::abort_code::unknown_command));
+static_assert(!(sdo::transfer_error{errc::bad_length, sdo::abort_code::none, {}} == errc::aborted));
 
 TEST_CASE("client and server transfer every fixed-size type") {
   bus b;
@@ -270,7 +284,7 @@ TEST_CASE("server answers bad accesses with the precise abort code") {
       continue;
     }
     CHECK(st == sdo::transfer_state::failed);
-    CHECK(b.client.error()->error == errc::aborted);
+    CHECK(b.client.error()->code == errc::aborted);
     CHECK(b.code() == A(r.code));
   }
   const std::array<std::uint8_t, 1> bool2{2};
@@ -298,7 +312,7 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     CHECK(o.send[0] == F(0x605, {0x70, 0, 0, 0, 0, 0, 0, 0}));
     o = c.on_frame(F(0x585, {0x00 | 0x05, 8, 9, 10, 0, 0, 0, 0}), 3); // toggle 0 again
     CHECK(o.state == sdo::transfer_state::failed);
-    CHECK(c.error()->error == errc::bad_toggle);
+    CHECK(c.error()->code == errc::bad_toggle);
     CHECK(o.send[0] == F(0x605, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x03, 0x05}));
   }
   SUBCASE("segments disagree with the announced size") {
@@ -309,7 +323,7 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     // t=1, n=5 (2 bytes), c=1: 7 + 2 = 9 bytes, 10 announced
     auto o = c.on_frame(F(0x585, {0x1B, 8, 9, 0, 0, 0, 0, 0}), 3);
     CHECK(o.state == sdo::transfer_state::failed);
-    CHECK(c.error()->error == errc::bad_length);
+    CHECK(c.error()->code == errc::bad_length);
     CHECK(c.error()->abort == A(0x06070013U));
   }
   SUBCASE("more data than announced") {
@@ -317,7 +331,7 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     (void)c.upload({0x1008, 0}, buf, 0);
     (void)c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 5, 0, 0, 0}), 1);
     auto o = c.on_frame(F(0x585, {0x01, 1, 2, 3, 4, 5, 6, 7}), 2);
-    CHECK(c.error()->error == errc::bad_length);
+    CHECK(c.error()->code == errc::bad_length);
     CHECK(c.error()->abort == A(0x06070012U));
     CHECK(!o.send.empty());
   }
@@ -325,12 +339,12 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     sdo::client c(5);
     (void)c.upload({0x1008, 0}, std::span(buf).first(4), 0);
     auto o = c.on_frame(F(0x585, {0x41, 0x08, 0x10, 0x00, 10, 0, 0, 0}), 1);
-    CHECK(c.error()->error == errc::buffer_too_small);
+    CHECK(c.error()->code == errc::buffer_too_small);
     CHECK(o.send[0] == F(0x605, {0x80, 0x08, 0x10, 0x00, 0x05, 0x00, 0x04, 0x05}));
     sdo::client d(5);
     (void)d.upload({0x1008, 0}, std::span(buf).first(1), 0);
     (void)d.on_frame(F(0x585, {0x4B, 0x08, 0x10, 0x00, 1, 2, 0, 0}), 1);
-    CHECK(d.error()->error == errc::buffer_too_small);
+    CHECK(d.error()->code == errc::buffer_too_small);
   }
   SUBCASE("unexpected frames") {
     sdo::client c(5);
@@ -341,24 +355,24 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     CHECK(c.busy());
     // a response for another object
     auto o = c.on_frame(F(0x585, {0x60, 0x41, 0x60, 0, 0, 0, 0, 0}), 1);
-    CHECK(c.error()->error == errc::unexpected_frame);
+    CHECK(c.error()->code == errc::unexpected_frame);
     CHECK(!o.send.empty());
     // an upload response to a download
     sdo::client d(5);
     (void)d.download({0x6040, 0}, v, 0);
     o = d.on_frame(F(0x585, {0x4B, 0x40, 0x60, 0, 1, 2, 0, 0}), 1);
-    CHECK(d.error()->error == errc::unexpected_frame);
+    CHECK(d.error()->code == errc::unexpected_frame);
     CHECK(d.error()->abort == A(0x05040001U));
     // an unknown command specifier
     sdo::client e(5);
     (void)e.download({0x6040, 0}, v, 0);
     o = e.on_frame(F(0x585, {0xE0, 0x40, 0x60, 0, 0, 0, 0, 0}), 1);
-    CHECK(e.error()->error == errc::unknown_command);
+    CHECK(e.error()->code == errc::unknown_command);
     // a short frame
     sdo::client g(5);
     (void)g.download({0x6040, 0}, v, 0);
     o = g.on_frame(F(0x585, {0x60, 0x40, 0x60}), 1);
-    CHECK(g.error()->error == errc::bad_length);
+    CHECK(g.error()->code == errc::bad_length);
     // frames when idle are ignored
     sdo::client h(5);
     CHECK(h.on_frame(F(0x585, {0x60, 0x40, 0x60, 0, 0, 0, 0, 0}), 1).state ==
@@ -371,12 +385,12 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     auto o = c.on_frame(F(0x585, {0x60, 0x09, 0x20, 0, 0, 0, 0, 0}), 1);
     CHECK(o.send[0].data[0] == 0x00);                         // first segment, toggle 0, 7 bytes
     o = c.on_frame(F(0x585, {0x30, 0, 0, 0, 0, 0, 0, 0}), 2); // toggle 1: wrong
-    CHECK(c.error()->error == errc::bad_toggle);
+    CHECK(c.error()->code == errc::bad_toggle);
     sdo::client d(5);
     (void)d.download({0x2009, 0}, v, 0);
     o = d.on_frame(F(0x585, {0x80, 0x09, 0x20, 0, 0x00, 0x00, 0x04, 0x05}), 1);
     CHECK(o.send.empty());
-    CHECK(d.error()->error == errc::aborted);
+    CHECK(d.error()->code == errc::aborted);
     CHECK(d.error()->abort == A(0x05040000U));
   }
   SUBCASE("timeout and cancel, busy") {
@@ -385,11 +399,11 @@ TEST_CASE("client: toggle errors, unexpected frames, timeouts, size disagreement
     CHECK(c.upload({0x1000, 0}, buf, 0) == errc::bad_state);
     CHECK(c.poll(0x0000'0050U).send.empty()); // 96 ms
     auto o = c.poll(0x0000'0054U);            // 100 ms
-    CHECK(c.error()->error == errc::timeout);
+    CHECK(c.error()->code == errc::timeout);
     CHECK(o.send[0] == F(0x605, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05}));
     (void)c.upload({0x1000, 0}, buf, 0);
     o = c.cancel();
-    CHECK(c.error()->error == errc::aborted);
+    CHECK(c.error()->code == errc::aborted);
     CHECK(o.send[0].data[0] == 0x80);
     sdo::client bad(0);
     CHECK(bad.upload({0x1000, 0}, buf, 0) == errc::invalid_argument);
@@ -411,14 +425,14 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
     sdo::server<sdo::dictionary_store<>> plain(5, b.store, buf, 1000, {.block = false});
     auto r = plain.on_frame(F(0x605, {0xC6, 0x09, 0x20, 0x00, 20, 0, 0, 0}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
-    CHECK(plain.error()->error == errc::unknown_command);
+    CHECK(plain.error()->code == errc::unknown_command);
     r = plain.on_frame(F(0x605, {0xA4, 0x09, 0x20, 0x00, 0x7F, 0, 0, 0}), 0);
     CHECK(code_of(r) == A(0x05040001U));
   }
   SUBCASE("command specifier 7 and block messages out of place") {
     auto r = s.on_frame(F(0x605, {0xE0, 0x09, 0x20, 0x00, 0, 0, 0, 0}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
-    CHECK(s.error()->error == errc::unknown_command);
+    CHECK(s.error()->code == errc::unknown_command);
     CHECK(s.error()->address == fieldcodec::od::address{0x2009, 0});
     for (std::uint8_t cmd :
          {std::uint8_t{0xA1}, std::uint8_t{0xA2}, std::uint8_t{0xA3}, std::uint8_t{0xC1}}) {
@@ -433,7 +447,7 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
           0x20);
     auto r = s.on_frame(F(0x605, {0x01, 'a', 'b', 'c', 'd', 'e', 'f', 'g'}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x00, 0x00, 0x03, 0x05}));
-    CHECK(s.error()->error == errc::bad_toggle);
+    CHECK(s.error()->code == errc::bad_toggle);
   }
   SUBCASE("segments disagree with the announced size") {
     (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
@@ -458,7 +472,7 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
   SUBCASE("frames it does not answer") {
     CHECK(s.on_frame(F(0x606, {0x40, 0, 0x10, 0, 0, 0, 0, 0}), 0).send.empty()); // other node
     CHECK(s.on_frame(F(0x605, {0x40, 0, 0x10}), 0).send.empty());                // short
-    CHECK(s.error()->error == errc::bad_length);
+    CHECK(s.error()->code == errc::bad_length);
     CHECK(
         s.on_frame(F(0x605, {0x80, 0, 0x10, 0, 0, 0, 0, 0}), 0).send.empty()); // abort from client
   }
@@ -466,6 +480,6 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
     (void)s.on_frame(F(0x605, {0x21, 0x09, 0x20, 0x00, 10, 0, 0, 0}), 0);
     CHECK(s.on_frame(F(0x605, {0x80, 0x09, 0x20, 0x00, 0, 0, 0, 8}), 0).send.empty());
     CHECK(s.state() == sdo::transfer_state::failed);
-    CHECK(s.error()->error == errc::aborted);
+    CHECK(s.error()->code == errc::aborted);
   }
 }

@@ -194,7 +194,7 @@ TEST_CASE("device: bad and foreign frames are ignored") {
   CHECK(r.feed(F(0x186, {1})).empty());                            // another node's TPDO
   CHECK(r.feed(F(0x606, {0x40, 0, 0x10, 0, 0, 0, 0, 0})).empty()); // SDO for node 6
   CHECK(r.feed(F(0x605, {0x40, 0, 0x10, 0})).empty());             // SDO with DLC 4
-  CHECK(r.dev.sdo().server(0).error()->error == errc::bad_length);
+  CHECK(r.dev.sdo().server(0).error()->code == errc::bad_length);
   CHECK(r.feed(F(0x705, {0x05})).empty()); // our own heartbeat id: not a request
   CHECK(r.read_u(0x2000, 0) == 0);
   CHECK(r.dev.lost() == 0);

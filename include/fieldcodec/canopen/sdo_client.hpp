@@ -115,7 +115,7 @@ public:
 
   /// Consume a received frame. Frames on other identifiers and frames while no transfer runs
   /// are ignored (nothing to send, state unchanged). A frame that does not fit the transfer
-  /// makes the client abort (the abort frame is sent) and fail with (error().error):
+  /// makes the client abort (the abort frame is sent) and fail with (error().code):
   /// aborted (the server sent an abort; error().abort holds its code), bad_toggle,
   /// unexpected_frame (wrong command specifier, index or sub-index, sequence number),
   /// unknown_command, bad_length (DLC; the data disagree with the announced size),

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 namespace fieldcodec::canopen::sdo {
@@ -35,17 +36,28 @@ namespace fieldcodec::canopen::sdo {
 enum class transfer_state : std::uint8_t { idle, busy, done, failed };
 
 /// Why a transfer failed: the error, the abort code sent or received (none when no abort
-/// message was involved, e.g. a refused frame), and the object.
-///   error == errc::aborted: the peer sent `abort`;
-///   otherwise the machine detected the problem itself and sent `abort` (if not none).
+/// message was involved, e.g. a refused frame), and the object. The one SDO error with context
+/// of the library: the machines, the master and dpq/sdo.hpp (`dpq::sdo_error`) return it.
+///   code == errc::aborted: the peer sent `abort`; `text()` is its CiA 301 description from the
+///     one abort table `abort_codes`, `cause()` the errc that table maps it to;
+///   otherwise the problem was detected here (a refused frame, a timeout, …) and `abort` is the
+///     code sent to the peer, or none.
 struct transfer_error {
-  errc error = errc::aborted;
+  errc code = errc::aborted;
   abort_code abort = abort_code::none;
   od::address address{};
 
-  [[nodiscard]] constexpr bool is(errc e) const noexcept { return error == e; }
+  [[nodiscard]] constexpr bool is(errc e) const noexcept { return code == e; }
+  /// The CiA 301 text of `abort` ("no abort" for none, empty for a code CiA 301 lacks).
+  [[nodiscard]] constexpr std::string_view text() const noexcept { return to_string(abort); }
+  /// The errc the abort table maps `abort` to (e.g. out_of_range for 0609 0031h); `code` when
+  /// there is no abort code.
+  [[nodiscard]] constexpr errc cause() const noexcept {
+    return abort == abort_code::none ? code : to_errc(abort);
+  }
   friend constexpr bool operator==(const transfer_error &,
                                    const transfer_error &) noexcept = default;
+  friend constexpr bool operator==(const transfer_error &a, errc e) noexcept { return a.code == e; }
 };
 
 /// What every call into an SDO machine returns.

@@ -15,6 +15,7 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
@@ -27,35 +28,15 @@
 
 namespace fieldcodec::dpq {
 
-/// Why the card's answer was not the expected one: an error with context (docs/contributing.md,
-/// "Errors"; `r.is(errc)` and `r == errc` work on a result carrying it).
+/// Why the card's answer was not the expected one: canopen::sdo::transfer_error, the library's
+/// one SDO error with context (docs/contributing.md, "Errors"; `r.is(errc)` and `r == errc` work
+/// on a result carrying it).
 ///   code == aborted: the card sent an SDO abort, `abort` is its code (bytes 4–7), `text()` the
 ///     CiA 301 description from the one abort table `canopen::sdo::abort_codes`, `cause()` the
 ///     errc that table maps it to, dpq::describe_sdo_abort(abort) the DPQ manual's wording;
 ///   otherwise the frame itself was wrong (unexpected_frame, bad_length, …) and `abort` is none.
 /// `address` is the object of the request.
-struct sdo_error {
-  errc code = errc::aborted;
-  canopen::sdo::abort_code abort = canopen::sdo::abort_code::none;
-  od::address address{};
-
-  constexpr sdo_error() noexcept = default;
-  constexpr sdo_error(errc e, od::address a = {},
-                      canopen::sdo::abort_code ab = canopen::sdo::abort_code::none) noexcept
-      : code(e), abort(ab), address(a) {}
-
-  /// The CiA 301 text of `abort` ("no abort" for none, empty for a code CiA 301 lacks).
-  [[nodiscard]] constexpr std::string_view text() const noexcept {
-    return canopen::sdo::to_string(abort);
-  }
-  /// The errc the abort table maps `abort` to (e.g. out_of_range for 0609 0031h); `code` for an
-  /// error that is not an abort.
-  [[nodiscard]] constexpr errc cause() const noexcept {
-    return abort == canopen::sdo::abort_code::none ? code : canopen::sdo::to_errc(abort);
-  }
-  friend constexpr bool operator==(const sdo_error &, const sdo_error &) noexcept = default;
-  friend constexpr bool operator==(const sdo_error &a, errc e) noexcept { return a.code == e; }
-};
+using sdo_error = canopen::sdo::transfer_error;
 
 /// What write_response returns.
 using sdo_status = result<void, sdo_error>;
@@ -110,13 +91,13 @@ namespace detail {
 response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f) noexcept {
   const od::address at{e.index, e.sub};
   auto ch = canopen::sdo::channel::default_for(node);
-  if (!ch) return sdo_error{ch.error(), at};
-  if (!ch.value().is_response(f)) return sdo_error{errc::unexpected_frame, at};
+  if (!ch) return sdo_error{ch.error(), {}, at};
+  if (!ch.value().is_response(f)) return sdo_error{errc::unexpected_frame, {}, at};
   auto m = canopen::sdo::decode(f, canopen::sdo::direction::to_client);
-  if (!m) return sdo_error{m.error(), at};
-  if (m.value().address != at) return sdo_error{errc::unexpected_frame, at};
+  if (!m) return sdo_error{m.error(), {}, at};
+  if (m.value().address != at) return sdo_error{errc::unexpected_frame, {}, at};
   if (m.value().type == canopen::sdo::message_type::abort) {
-    return sdo_error{errc::aborted, at, m.value().abort};
+    return sdo_error{errc::aborted, m.value().abort, at};
   }
   return m.value();
 }
@@ -131,7 +112,7 @@ response_for(std::uint8_t node, const od::entry &e, const canopen::can_frame &f)
   auto m = detail::response_for(node, e, f);
   if (!m) return m.error();
   if (m.value().type != canopen::sdo::message_type::initiate_download_response) {
-    return sdo_error{errc::unexpected_frame, m.value().address};
+    return sdo_error{errc::unexpected_frame, {}, m.value().address};
   }
   return {};
 }
@@ -147,14 +128,14 @@ read_raw_response(std::uint8_t node, const od::entry &e, const canopen::can_fram
   if (!m) return m.error();
   const canopen::sdo::message &msg = m.value();
   if (msg.type != canopen::sdo::message_type::initiate_upload_response || !msg.expedited) {
-    return sdo_error{errc::unexpected_frame, msg.address};
+    return sdo_error{errc::unexpected_frame, {}, msg.address};
   }
   const std::uint32_t w = e.width();
-  if (w == 0U || w > 4U) return sdo_error{errc::type_mismatch, msg.address};
-  if (msg.size_indicated && msg.size != w) return sdo_error{errc::bad_length, msg.address};
+  if (w == 0U || w > 4U) return sdo_error{errc::type_mismatch, {}, msg.address};
+  if (msg.size_indicated && msg.size != w) return sdo_error{errc::bad_length, {}, msg.address};
   const auto bytes = msg.value_bytes();
   auto raw = raw_from_bytes(e, std::span<const std::uint8_t>(bytes).first(w));
-  if (!raw) return sdo_error{raw.error(), msg.address};
+  if (!raw) return sdo_error{raw.error(), {}, msg.address};
   return raw.value();
 }
 
@@ -165,7 +146,7 @@ read_response(std::uint8_t node, const od::descriptor &e, const canopen::can_fra
   auto raw = read_raw_response(node, e, f);
   if (!raw) return raw.error();
   auto eu = to_eu_decimal(e, raw.value());
-  if (!eu) return sdo_error{eu.error(), od::address{e.index, e.sub}};
+  if (!eu) return sdo_error{eu.error(), {}, od::address{e.index, e.sub}};
   return eu.value();
 }
 

@@ -152,14 +152,14 @@ private:
     }
     if (client_.state() == canopen::sdo::transfer_state::done) return true;
     const auto e = client_.error().value_or(canopen::sdo::transfer_error{});
-    error_.code = e.error;
+    error_.code = e.code;
     error_.abort = e.abort;
     error_.address = a;
     error_.what = prefix(a);
-    if (e.error == errc::aborted) {
+    if (e.code == errc::aborted) {
       error_.what += describe_abort(e.abort);
     } else {
-      error_.what += std::string(to_string(e.error));
+      error_.what += std::string(to_string(e.code));
       if (e.abort != canopen::sdo::abort_code::none) {
         error_.what += " (sent " + describe_abort(e.abort) + ")";
       }

@@ -241,7 +241,7 @@ private:
     if (client_->state() == canopen::sdo::transfer_state::busy) return make(s.send);
     if (client_->state() == canopen::sdo::transfer_state::failed) {
       const auto e = client_->error();
-      boot_error b{boot_failure::identity_read_failed, e ? e->error : errc::aborted, field_};
+      boot_error b{boot_failure::identity_read_failed, e ? e->code : errc::aborted, field_};
       b.sdo = e;
       auto r = fail(b);
       r.send = s.send; // the client's abort, if it sent one

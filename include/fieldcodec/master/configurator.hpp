@@ -197,7 +197,7 @@ private:
     case canopen::sdo::transfer_state::busy: return make();
     case canopen::sdo::transfer_state::failed: {
       const auto e = client_->error();
-      return retry_or_fail(e ? e->error : errc::aborted,
+      return retry_or_fail(e ? e->code : errc::aborted,
                            e ? e->abort : canopen::sdo::abort_code::none, now);
     }
     case canopen::sdo::transfer_state::done: break;

@@ -437,7 +437,7 @@ public:
     outstanding_ = false;
     if (outstanding_purpose_ == purpose::read_error_code) return; // the fault stays reported
     if (state_ == drive_state::fault) return;
-    fail(drive_failure::sdo_failed, e.error);
+    fail(drive_failure::sdo_failed, e.code);
     error_->sdo = e;
   }
   /// An EMCY of this axis: kept and attached to the next fault (error code 0 = error reset

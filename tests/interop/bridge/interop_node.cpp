@@ -188,7 +188,7 @@ private:
       client_.reset();
     } else if (st == sdo::transfer_state::failed) {
       const auto e = client_->error().value_or(sdo::transfer_error{});
-      answer_error(e.error, e.abort);
+      answer_error(e.code, e.abort);
       client_.reset();
     }
   }
