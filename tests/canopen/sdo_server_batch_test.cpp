@@ -173,7 +173,9 @@ stream_counts run_stream(const stream_options &o) {
     }
     if (below(100) < o.junk_percent) {
       for (std::size_t k = 1U + below(3); k > 0U; --k) {
-        chunk.insert(chunk.begin() + static_cast<std::ptrdiff_t>(below(chunk.size() + 1U)), junk());
+        // (drawn one after the other: the order of a call's arguments is unspecified)
+        const std::size_t where = below(chunk.size() + 1U);
+        chunk.insert(chunk.begin() + static_cast<std::ptrdiff_t>(where), junk());
       }
     }
     if (!chunk.empty() && below(10) == 0) { // two neighbours swapped
@@ -238,7 +240,12 @@ void run_streams() {
       {.seed = 3, .buffer = 100, .fault_per_mille = 10, .junk_percent = 10},
       {.seed = 4, .buffer = 889, .fault_per_mille = 30, .junk_percent = 30, .pause_percent = 10},
       {.seed = 5, .buffer = 3200, .fault_per_mille = 5, .junk_percent = 5, .pause_percent = 20},
-      {.seed = 6, .buffer = 7, .fault_per_mille = 20, .junk_percent = 20, .pause_percent = 5},
+      {.seed = 6,
+       .buffer = 7,
+       .fault_per_mille = 10,
+       .junk_percent = 10,
+       .pause_percent = 5,
+       .chunks = 1500},
       {.seed = 7,
        .buffer = 64,
        .server_crc = false,
