@@ -186,7 +186,9 @@ void check_nx_record(bytes in) {
   auto len = nx::format_command(c.value(), text);
   if (!len) {
     // only a raw DSP value off the 0.001 grid has no program text
-    const auto raw = [](const nx::arg &a) { return a.kind == nx::arg_kind::dsp_raw; };
+    const auto raw = [](const nx::arg &a) {
+      return nx::normalized(a).kind == nx::arg_kind::dsp_raw;
+    };
     const auto &v = c.value();
     FUZZ_CHECK(len.is(errc::not_representable) &&
                (raw(v.argument) || raw(v.second_argument) || raw(v.third_argument) || v.left.raw ||

@@ -4,9 +4,17 @@
 // nx_reference.hpp as the reference, over every op and code byte, every argument kind (and
 // values outside the enums), random numbers in and out of range, truncated, overlong and damaged
 // records.
+//
+// Round 6 changed one contract: nx::dsp_raw(raw) keeps the raw value raw (kind dsp_raw) where
+// the reference's dsp_raw turned a raw value on the 0.001 grid into the decimal it stands for.
+// An argument of kind dsp_raw therefore means what the reference's dsp_raw of its number meant
+// (to_ref); the encoded bytes, the errors, the comparisons and the text must be the same as the
+// reference's for that normalized argument. Decoded commands are compared member by member
+// (to_ref_exact): the decoder still gives the decimal form for a value on the grid.
 #include "nx_reference.hpp"
 
 #include <fieldcodec/compax/nx.hpp>
+#include <fieldcodec/compax/nx_text.hpp>
 
 #include <doctest/doctest.h>
 
@@ -16,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace fc = fieldcodec;
@@ -32,11 +41,19 @@ constexpr To as(From e) {
   return static_cast<To>(static_cast<std::uint8_t>(e));
 }
 
-ref::arg to_ref(const nx::arg &a) { return {as<ref::arg_kind>(a.kind), a.places, a.number}; }
+/// The argument member by member.
+ref::arg to_ref_exact(const nx::arg &a) { return {as<ref::arg_kind>(a.kind), a.places, a.number}; }
+/// What the argument stands for in the reference: a raw value is what the reference's dsp_raw
+/// built for it (the decimal on the grid), anything else member by member.
+ref::arg to_ref(const nx::arg &a) {
+  if (a.kind == nx::arg_kind::dsp_raw) return ref::dsp_raw(a.number);
+  return to_ref_exact(a);
+}
 ref::operand to_ref(const nx::operand &o) {
   return {as<ref::operand_type>(o.type), o.places, o.raw, o.number};
 }
-ref::command to_ref(const nx::command &c) {
+template <class ArgToRef>
+ref::command to_ref(const nx::command &c, ArgToRef arg_to_ref) {
   ref::command r;
   r.operation = as<ref::op>(c.operation);
   r.second_operation = as<ref::op>(c.second_operation);
@@ -45,9 +62,9 @@ ref::command to_ref(const nx::command &c) {
   r.comparison_op = as<ref::comparison>(c.comparison_op);
   r.arithmetic_op = as<ref::arithmetic>(c.arithmetic_op);
   r.valid_letter = c.valid_letter;
-  r.argument = to_ref(c.argument);
-  r.second_argument = to_ref(c.second_argument);
-  r.third_argument = to_ref(c.third_argument);
+  r.argument = arg_to_ref(c.argument);
+  r.second_argument = arg_to_ref(c.second_argument);
+  r.third_argument = arg_to_ref(c.third_argument);
   r.number = c.number;
   r.target = c.target;
   r.io_pattern.count = c.io_pattern.count;
@@ -55,6 +72,38 @@ ref::command to_ref(const nx::command &c) {
   r.left = to_ref(c.left);
   r.right = to_ref(c.right);
   return r;
+}
+ref::command to_ref(const nx::command &c) {
+  return to_ref(c, [](const nx::arg &a) { return to_ref(a); });
+}
+ref::command to_ref_exact(const nx::command &c) {
+  return to_ref(c, [](const nx::arg &a) { return to_ref_exact(a); });
+}
+
+/// The reference's command as a command of the codec, member by member.
+nx::arg from_ref(const ref::arg &a) { return {as<nx::arg_kind>(a.kind), a.places, a.number}; }
+nx::operand from_ref(const ref::operand &o) {
+  return {as<nx::operand_type>(o.type), o.places, o.raw, o.number};
+}
+nx::command from_ref(const ref::command &r) {
+  nx::command c;
+  c.operation = as<nx::op>(r.operation);
+  c.second_operation = as<nx::op>(r.second_operation);
+  c.third_operation = as<nx::op>(r.third_operation);
+  c.jump_kind = as<nx::jump>(r.jump_kind);
+  c.comparison_op = as<nx::comparison>(r.comparison_op);
+  c.arithmetic_op = as<nx::arithmetic>(r.arithmetic_op);
+  c.valid_letter = r.valid_letter;
+  c.argument = from_ref(r.argument);
+  c.second_argument = from_ref(r.second_argument);
+  c.third_argument = from_ref(r.third_argument);
+  c.number = r.number;
+  c.target = r.target;
+  c.io_pattern.count = r.io_pattern.count;
+  c.io_pattern.digits = r.io_pattern.digits;
+  c.left = from_ref(r.left);
+  c.right = from_ref(r.right);
+  return c;
 }
 
 // ------------------------------------------------------------ random commands
@@ -207,6 +256,24 @@ nx::command pick_command(rng &g) {
 
 // ------------------------------------------------------------ comparisons
 
+/// `c` and the reference's form of it brought back (raw arguments on the grid as decimals,
+/// as the round-5 dsp_raw built them) compare equal and give the same text or error.
+void check_same_meaning(const nx::command &c) {
+  const nx::command old_form = from_ref(to_ref(c));
+  CHECK(c == old_form);
+  CHECK(old_form == c);
+  std::array<char, nx::text_max> t{};
+  std::array<char, nx::text_max> rt{};
+  const auto n = nx::format_command(c, t);
+  const auto rn = nx::format_command(old_form, rt);
+  REQUIRE(n.has_value() == rn.has_value());
+  if (!n) {
+    CHECK(n.error() == rn.error());
+  } else {
+    CHECK(std::string_view(t.data(), n.value()) == std::string_view(rt.data(), rn.value()));
+  }
+}
+
 void check_encode(const nx::command &c) {
   const auto got = nx::encode_record(c);
   const auto want = ref::encode_record(to_ref(c));
@@ -237,6 +304,7 @@ void check_encode(const nx::command &c) {
     CHECK(rs.error() == errc::buffer_too_small);
     CHECK(small == std::array<std::uint8_t, nx::content_max>{});
   }
+  check_same_meaning(c);
 }
 
 void check_decode(std::span<const std::uint8_t> in) {
@@ -246,7 +314,7 @@ void check_decode(std::span<const std::uint8_t> in) {
   if (!got) {
     CHECK(got.error() == want.error());
   } else {
-    CHECK(to_ref(got.value()) == want.value());
+    CHECK(to_ref_exact(got.value()) == want.value());
   }
   if (in.size() > 1U) {
     const auto content = in.subspan(1);
@@ -256,7 +324,7 @@ void check_decode(std::span<const std::uint8_t> in) {
     if (!gc) {
       CHECK(gc.error() == wc.error());
     } else {
-      CHECK(to_ref(gc.value()) == wc.value());
+      CHECK(to_ref_exact(gc.value()) == wc.value());
     }
   }
 }
@@ -268,7 +336,10 @@ TEST_CASE("nx: dsp_raw, constant_raw, dsp_of and scaled_to give the reference's 
   for (int i = 0; i < 300'000; ++i) {
     const std::int64_t raw = pick_number(g);
     INFO("raw ", raw);
-    REQUIRE(to_ref(nx::dsp_raw(raw)) == ref::dsp_raw(raw));
+    // round 6: dsp_raw keeps the raw value; its normalized form is the reference's dsp_raw
+    REQUIRE(to_ref_exact(nx::dsp_raw(raw)) == ref::arg{ref::arg_kind::dsp_raw, 0, raw});
+    REQUIRE(to_ref_exact(nx::normalized(nx::dsp_raw(raw))) == ref::dsp_raw(raw));
+    REQUIRE(nx::dsp_raw(raw) == from_ref(ref::dsp_raw(raw)));
     REQUIRE(to_ref(nx::constant_raw(fc::compax::dsp_number{raw})) ==
             ref::constant_raw(fc::compax::dsp_number{raw}));
     const auto places = static_cast<std::uint8_t>(g.below(g.chance(5) ? 256 : 24));
@@ -297,13 +368,14 @@ TEST_CASE("nx: dsp_raw, constant_raw, dsp_of and scaled_to give the reference's 
   for (std::int64_t t = -5000; t <= 5000; ++t) {
     const auto raw = fc::compax::dsp_number::from_thousandths(t).value().raw;
     REQUIRE(nx::detail::may_be_on_grid(raw));
-    REQUIRE(nx::dsp_raw(raw).kind == nx::arg_kind::value);
+    REQUIRE(nx::dsp_raw(raw).kind == nx::arg_kind::dsp_raw);
+    REQUIRE(nx::normalized(nx::dsp_raw(raw)).kind == nx::arg_kind::value);
   }
   for (const auto t :
        {fc::compax::dsp_number::max_thousandths, fc::compax::dsp_number::min_thousandths}) {
     const auto raw = fc::compax::dsp_number::from_thousandths(t).value().raw;
     CHECK(nx::detail::may_be_on_grid(raw));
-    CHECK(to_ref(nx::dsp_raw(raw)) == ref::dsp_raw(raw));
+    CHECK(to_ref_exact(nx::normalized(nx::dsp_raw(raw))) == ref::dsp_raw(raw));
   }
 }
 
@@ -317,6 +389,72 @@ TEST_CASE("nx: encode_record / encode_content give the reference's result for ra
     ok += nx::encode_record(c).has_value() ? 1 : 0;
   }
   CHECK(ok > 20'000); // the valid ones are not rare
+}
+
+/// An argument whose number comes from a few values near one another, in every form, so that
+/// equal pairs are frequent: whole numbers, decimals, raw values on the grid and next to it,
+/// members set by hand (decimals not normalized, raw values with places, kinds outside the enum).
+nx::arg pick_close_arg(rng &g) {
+  static constexpr std::array<std::int64_t, 9> thousandths{0,
+                                                           1,
+                                                           -1,
+                                                           500,
+                                                           1500,
+                                                           250'000,
+                                                           -250'000,
+                                                           (std::int64_t{1} << 23) * 1000 - 1,
+                                                           -(std::int64_t{1} << 23) * 1000};
+  const std::int64_t t = thousandths[g.below(thousandths.size())];
+  const std::int64_t raw = fc::compax::dsp_number::from_thousandths(t).value().raw +
+                           (g.chance(20) ? static_cast<std::int64_t>(g.below(3)) - 1 : 0);
+  const auto places = static_cast<std::uint8_t>(g.below(4));
+  switch (g.below(9)) {
+  case 0: return nx::integer(t / 1000);
+  case 1: return nx::value(fc::decimal{t, 3});
+  case 2: return nx::dsp_raw(raw);
+  case 3: return nx::dsp_raw(fc::compax::dsp_number{raw});
+  case 4: return nx::arg{nx::arg_kind::dsp_raw, places, raw};
+  case 5: return nx::arg{nx::arg_kind::value, places, t % 1000 == 0 ? t / 1000 : t};
+  case 6: return g.chance(50) ? nx::parameter(t % 3) : nx::variable(t % 3);
+  case 7: return nx::special();
+  default:
+    return nx::arg{static_cast<nx::arg_kind>(g.below(7)), places,
+                   g.chance(50) ? t % 3 : raw}; // also kinds outside the enum
+  }
+}
+
+TEST_CASE("nx: arguments and commands compare as the reference's normalized ones") {
+  rng g(0x3D3D);
+  int equal = 0;
+  int equal_across_kinds = 0;
+  for (int i = 0; i < 300'000; ++i) {
+    const nx::arg a = pick_close_arg(g);
+    const nx::arg b = pick_close_arg(g);
+    INFO("a ", static_cast<unsigned>(a.kind), " ", static_cast<unsigned>(a.places), " ", a.number,
+         " b ", static_cast<unsigned>(b.kind), " ", static_cast<unsigned>(b.places), " ", b.number);
+    const bool eq = a == b;
+    REQUIRE(eq == (to_ref(a) == to_ref(b)));
+    REQUIRE(eq == (b == a));
+    REQUIRE(eq != (a != b));
+    REQUIRE(a == a);
+    REQUIRE(eq == (nx::normalized(a) == nx::normalized(b)));
+    equal += eq ? 1 : 0;
+    equal_across_kinds += eq && a.kind != b.kind ? 1 : 0;
+    // in a command, alone and in the combined positioning record
+    const nx::command ca = nx::make(nx::op::posa, a);
+    const nx::command cb = nx::make(nx::op::posa, b);
+    REQUIRE((ca == cb) == (to_ref(ca) == to_ref(cb)));
+    const auto posr = [](nx::arg x, nx::arg y) {
+      return nx::then(nx::then(nx::make(nx::op::posr, x), nx::op::speed, y), nx::op::accel,
+                      nx::integer(200));
+    };
+    REQUIRE((posr(a, b) == posr(b, a)) == eq);
+    check_encode(ca);
+    check_encode(nx::make(nx::op::accel, a));
+    check_encode(posr(a, b));
+  }
+  CHECK(equal > 10'000);
+  CHECK(equal_across_kinds > 1'000); // a raw value equal to a decimal, not only to itself
 }
 
 TEST_CASE("nx: every op with every argument kind, alone and as the second and third command") {

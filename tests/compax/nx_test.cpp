@@ -499,6 +499,79 @@ TEST_CASE("Nx operands carry their unit; the raw DSP form is explicit") {
   CHECK(nx::format_command(raw_constant, t).error() == errc::not_representable);
 }
 
+// Issue 18, round 6: nx::dsp_raw keeps a raw value raw (kind dsp_raw, as its name says), also
+// on the 0.001 grid; until round 5 an on-grid raw value became a decimal (kind value) when it
+// was built. What it stands for did not change: it compares equal to that decimal and to what
+// decode_record gives for its bytes, prints as that decimal and encodes to the same bytes.
+static_assert(nx::dsp_raw(250 * cx::dsp_format::one).kind == nx::arg_kind::dsp_raw);
+static_assert(nx::dsp_raw(250 * cx::dsp_format::one).number == 250 * cx::dsp_format::one);
+static_assert(nx::dsp_raw(cx::dsp_number{3}) == nx::arg{nx::arg_kind::dsp_raw, 0, 3});
+static_assert(nx::dsp_raw(~std::uint64_t{0}).number == INT64_MAX); // saturated, never wrapped
+static_assert(nx::dsp_raw(250 * cx::dsp_format::one) == nx::integer(250));
+static_assert(nx::integer(250) == nx::dsp_raw(250 * cx::dsp_format::one));
+static_assert(nx::normalized(nx::dsp_raw(250 * cx::dsp_format::one)) ==
+              nx::arg{nx::arg_kind::value, 0, 250});
+static_assert(nx::normalized(nx::dsp_raw(mm(1'500))) == nx::arg{nx::arg_kind::value, 1, 15});
+static_assert(nx::normalized(nx::dsp_raw(3)) == nx::arg{nx::arg_kind::dsp_raw, 0, 3});
+static_assert(nx::normalized(nx::parameter(3)) == nx::arg{nx::arg_kind::parameter, 0, 3});
+static_assert(nx::dsp_raw(mm(1'500)) != nx::value(decimal{15, 2}));
+static_assert(nx::dsp_raw(mm(1'500).raw + 1) != nx::value(decimal{15, 1})); // next to the grid
+static_assert(nx::dsp_raw(3) != nx::parameter(3) && nx::dsp_raw(0) != nx::special());
+// places of a raw argument are not part of it (dsp_of and the encoder ignore them)
+static_assert(nx::arg{nx::arg_kind::dsp_raw, 2, 3} == nx::dsp_raw(3));
+static_assert(nx::arg{nx::arg_kind::dsp_raw, 2, 250 * cx::dsp_format::one} == nx::integer(250));
+// a decimal set by hand and not normalized stays what it was: compared member by member
+static_assert(nx::arg{nx::arg_kind::value, 1, 2500} != nx::integer(250));
+
+TEST_CASE("Nx: dsp_raw keeps a raw value raw and stands for the decimal on the grid") {
+  using nx::op;
+  const auto raw = nx::make(op::posr, nx::dsp_raw(mm(250'500)));
+  const auto dec = nx::make(op::posr, nx::value(decimal{2505, 1}));
+  CHECK(raw.argument.kind == nx::arg_kind::dsp_raw);
+  CHECK(raw == dec);
+  CHECK(content(raw) == content(dec));
+  CHECK(content(raw) == cat({{0x52}, dsp_bytes(mm(250'500))}));
+  CHECK(text(raw) == "POSR 250.5");
+  // the decoder gives the decimal form, equal to the raw argument the record was built from
+  const auto back = nx::decode_content(content(raw));
+  REQUIRE(back.has_value());
+  CHECK(back.value().argument.kind == nx::arg_kind::value);
+  CHECK(back.value() == raw);
+  CHECK(back.value().argument == nx::normalized(raw.argument));
+  // the combined positioning record: the same bytes as with decimals, read back equal
+  const auto posr = nx::then(
+      nx::then(nx::make(op::posr, nx::dsp_raw(mm(-12'345))), op::speed, nx::dsp_raw(mm(50'000))),
+      op::accel, nx::integer(200));
+  const auto posr_dec = nx::then(
+      nx::then(nx::make(op::posr, nx::value(decimal{-12345, 3})), op::speed, nx::integer(50)),
+      op::accel, nx::integer(200));
+  CHECK(nx::encode_record(posr).value() == nx::encode_record(posr_dec).value());
+  CHECK(nx::decode_record(nx::encode_record(posr).value()).value() == posr);
+  CHECK(text(posr) == "POSR -12.345 SPEED 50 ACCEL 200");
+  CHECK(nx::parse_command("POSR -12.345 SPEED 50 ACCEL 200").value() == posr);
+  // a 2-byte field takes a raw value on the grid as the number it stands for, as before
+  CHECK(content(nx::make(op::accel, nx::dsp_raw(200 * cx::dsp_format::one))) ==
+        bytes{0x4C, 0x00, 0xC8});
+  CHECK(text(nx::make(op::accel, nx::dsp_raw(200 * cx::dsp_format::one))) == "ACCEL 200");
+  std::array<std::uint8_t, nx::content_max> b{};
+  CHECK(nx::encode_content(nx::make(op::accel, nx::dsp_raw(mm(1'500))), b).error() ==
+        errc::not_representable);
+  CHECK(nx::encode_content(nx::make(op::wait, nx::dsp_raw(0)), b).error() == errc::out_of_range);
+  CHECK(nx::encode_content(nx::make(op::nop, nx::dsp_raw(0)), b).value() == 1U); // NOP 0 = NOP
+  CHECK(nx::encode_content(nx::make(op::nop, nx::dsp_raw(1)), b).error() == errc::type_mismatch);
+  CHECK(nx::encode_content(nx::make(op::end, nx::dsp_raw(mm(1'000))), b).error() ==
+        errc::invalid_argument);
+  // off the grid: raw everywhere, no program text
+  const auto off = nx::make(op::posr, nx::dsp_raw(mm(250'500).raw + 1));
+  CHECK(nx::normalized(off.argument).kind == nx::arg_kind::dsp_raw);
+  CHECK(nx::decode_content(content(off)).value() == off);
+  std::array<char, nx::text_max> t{};
+  CHECK(nx::format_command(off, t).error() == errc::not_representable);
+  // the DSP number is the raw value either way
+  CHECK(nx::dsp_of(raw.argument).value() == mm(250'500));
+  CHECK(nx::dsp_of(raw.argument).value() == nx::dsp_of(dec.argument).value());
+}
+
 // Issue 13 "Nothing narrows silently": every number argument takes any integer type and the
 // encoder checks it against its field; nothing wraps.
 TEST_CASE("Nx numbers of any integer type are checked, not wrapped") {

@@ -34,6 +34,7 @@
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -90,25 +91,27 @@ enum class op : std::uint8_t {
 /// Form of a command's argument.
 enum class arg_kind : std::uint8_t {
   value,     ///< a number in the command's unit, as the program text writes it
-  dsp_raw,   ///< a raw DSP value off the 0.001 grid (POSA/POSR/SPEED/SETM only): raw / 2^24
+  dsp_raw,   ///< a raw DSP value (POSA/POSR/SPEED/SETM): raw / 2^24 of the command's unit
   parameter, ///< P<number>
   variable,  ///< V<number>
   special,   ///< POSA HOME, POSR CAM, SPEED SYNC, WAIT START, GOTO EXT, GOSUB EXT
 };
 
 /// The argument of a single-argument command. `number` is, by kind: the number in the
-/// command's unit times 10^places (value()), the raw DSP integer, the parameter or variable
-/// number, or 0 for a special; `places` is 0 except for a value. Build it with the functions
-/// below; they keep one representation per argument (a normalized decimal) so that equal
-/// arguments compare equal.
+/// command's unit times 10^places (value()), the raw DSP integer (`places` is ignored), the
+/// parameter or variable number, or 0 for a special; `places` is 0 except for a value. Build it
+/// with the functions below (value() keeps a normalized decimal). Arguments compare by what
+/// they stand for: a raw DSP value on the 0.001 grid equals the decimal it encodes
+/// (nx::dsp_raw(250 * 2^24) == nx::integer(250)); nx::normalized() gives that decimal form.
 struct arg {
   arg_kind kind = arg_kind::value;
   std::uint8_t places = 0;
   std::int64_t number = 0;
 
-  /// The number as a decimal (kind value: in the command's unit).
+  /// `number` × 10^-places: for kind value the number in the command's unit, for a parameter or
+  /// variable its number; for dsp_raw the raw integer (normalized(a).value() is the decimal of a
+  /// raw value on the grid).
   [[nodiscard]] constexpr decimal value() const noexcept { return {number, places}; }
-  friend constexpr bool operator==(const arg &, const arg &) = default;
 };
 
 namespace detail {
@@ -171,6 +174,26 @@ scaled_to(std::int64_t number, std::uint8_t places, std::uint8_t target) noexcep
 }
 } // namespace detail
 
+/// The one form of an argument, the form decode_record gives: a raw DSP value (kind dsp_raw)
+/// on the 0.001 grid becomes the decimal it stands for (kind value, normalized), one off the
+/// grid stays dsp_raw (places 0); every other argument is returned as it is. A raw value is
+/// kept raw by dsp_raw() (issue 18, round 6); this is where it is read as a decimal.
+[[nodiscard]] constexpr arg normalized(const arg &a) noexcept {
+  if (a.kind != arg_kind::dsp_raw) return a;
+  return detail::from_dsp(dsp_number{a.number});
+}
+
+/// Equal when they stand for the same argument: compared in their normalized() forms, so a raw
+/// DSP value on the grid equals the decimal it encodes and the argument decode_record gives
+/// for its bytes. (For any other pair this is the comparison of the three members.)
+[[nodiscard]] constexpr bool operator==(const arg &a, const arg &b) noexcept {
+  if (a.kind == b.kind && a.places == b.places && a.number == b.number) return true;
+  if (a.kind != arg_kind::dsp_raw && b.kind != arg_kind::dsp_raw) return false;
+  const arg x = normalized(a);
+  const arg y = normalized(b);
+  return x.kind == y.kind && x.places == y.places && x.number == y.number;
+}
+
 /// The whole number `v` in the command's unit: nx::make(op::posa, nx::integer(250)) is
 /// POSA 250 (mm), nx::make(op::accel, nx::integer(200)) is ACCEL 200 (ms). Any integer type; a
 /// value the field cannot hold is refused by the encoder (out_of_range / overflow), never
@@ -186,12 +209,15 @@ template <integer_argument T>
   const decimal n = normalize(d);
   return {arg_kind::value, n.places, n.mantissa};
 }
-/// A raw DSP value (value = raw / 2^24 of the unit), for the 6-byte fields only. A raw value on
-/// the 0.001 grid is kept as the decimal it stands for (kind value).
-[[nodiscard]] constexpr arg dsp_raw(dsp_number n) noexcept { return detail::from_dsp(n); }
+/// A raw DSP value (value = raw / 2^24 of the unit), for the 6-byte fields only; any integer
+/// type (a value outside int64 saturates, the encoder says overflow). The argument is kept raw
+/// (kind dsp_raw), also on the 0.001 grid: it still compares equal to the decimal it stands
+/// for, prints as that decimal and encodes to the same bytes; normalized() gives the decimal
+/// form (what decode_record returns). Until round 6 an on-grid raw value had kind value.
+[[nodiscard]] constexpr arg dsp_raw(dsp_number n) noexcept { return {arg_kind::dsp_raw, 0, n.raw}; }
 template <integer_argument T>
 [[nodiscard]] constexpr arg dsp_raw(T raw) noexcept {
-  return detail::from_dsp(dsp_number{compax::detail::saturate_i64(raw)});
+  return {arg_kind::dsp_raw, 0, compax::detail::saturate_i64(raw)};
 }
 /// P<n> / V<n>, n = 0..65535 (checked by the encoder).
 template <integer_argument T>
@@ -652,8 +678,18 @@ constexpr std::size_t put_u16(record &r, std::size_t at, std::uint16_t v) noexce
   r[at + 1U] = static_cast<std::uint8_t>(v);
   return at + 2U;
 }
-constexpr std::size_t put_dsp(record &r, std::size_t at, std::int64_t raw) noexcept {
+FIELDCODEC_NX_INLINE constexpr std::size_t put_dsp(record &r, std::size_t at,
+                                                   std::int64_t raw) noexcept {
   const auto u = static_cast<std::uint64_t>(raw); // NL NM NH VL VM VH: least significant first
+  // On a little-endian host the six bytes are the first six of u in memory: copied from a
+  // bit_cast they become one 4-byte and one 2-byte store; the shift loop below (any host, the
+  // same bytes) left the two high bytes to a shift and a store each (issue 18, round 6: 6 Ir
+  // of the combined positioning record).
+  if constexpr (std::endian::native == std::endian::little) {
+    const auto b = std::bit_cast<std::array<std::uint8_t, sizeof u>>(u);
+    for (std::size_t i = 0; i < dsp_format::size; ++i) r[at + i] = b[i];
+    return at + dsp_format::size;
+  }
   for (std::size_t i = 0; i < dsp_format::size; ++i) {
     r[at + i] = static_cast<std::uint8_t>(u >> (8U * i));
   }
@@ -670,6 +706,12 @@ write_simple(record &r, std::size_t at, op o, arg a) noexcept {
   const std::uint8_t i = family_position(o);
   if (i == no_family) return errc::unknown_command;
   const family &f = families[i];
+  if (a.kind == arg_kind::dsp_raw && f.s != shape::dsp) {
+    // a raw value on the grid is the decimal it stands for (ACCEL dsp_raw(250 * 2^24) is
+    // ACCEL 250); the 6-byte fields write a raw value as it is
+    a = normalized(a);
+    if (a.kind == arg_kind::dsp_raw) return errc::type_mismatch;
+  }
   std::uint8_t code = f.code;
   const bool numbered = a.kind == arg_kind::parameter || a.kind == arg_kind::variable;
   if (numbered) {
@@ -678,8 +720,11 @@ write_simple(record &r, std::size_t at, op o, arg a) noexcept {
         code | (a.kind == arg_kind::parameter ? parameter_flag : variable_flag));
   }
   if (a.kind == arg_kind::special && !f.has_special) return errc::type_mismatch;
-  if (a.kind == arg_kind::dsp_raw && f.s != shape::dsp) return errc::type_mismatch;
-  if ((f.s == shape::none || f.s == shape::zero) && a != arg{}) return errc::invalid_argument;
+  // a == arg{} member by member (a is not dsp_raw here: the comparison need not normalize)
+  if ((f.s == shape::none || f.s == shape::zero) &&
+      (a.kind != arg_kind::value || a.places != 0U || a.number != 0)) {
+    return errc::invalid_argument;
+  }
   // numbers are checked before anything is written
   if (numbered && (a.number < 0 || a.number > 0xFFFF)) return errc::out_of_range;
   switch (f.s) {
@@ -715,7 +760,8 @@ write_simple(record &r, std::size_t at, op o, arg a) noexcept {
         if (!n) return n.error();
         v = n.value();
         // value 0 of WAIT / GOTO / GOSUB would read back as START / EXT
-        if (v == 0 && f.has_special) return errc::out_of_range;
+        // (the family's constant first: tested after v, GCC 12 kept a test of v == 0 for ACCEL)
+        if (f.has_special && v == 0) return errc::out_of_range;
       } else {
         v = a.number;
       }

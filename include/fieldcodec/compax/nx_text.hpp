@@ -12,9 +12,9 @@
 //   POSA x WAIT y   POSR x SPEED y [ACCEL z]   POSR x WAIT y   POSR x OUTPUT Ax=y…
 //   SPEED x WAIT y   WAIT POSA x   WAIT POSR x
 // Operands: Pn, Sn, Vn or a decimal constant; comparisons = < > <= >= <>; arithmetic
-// + - * / \ %. DSP values print with the fewest decimals (at most 3) that show them; a raw DSP
-// value off the 0.001 grid (nx::dsp_raw) has no program text: format_command says
-// not_representable instead of printing a rounded number.
+// + - * / \ %. DSP values print with the fewest decimals (at most 3) that show them, a raw DSP
+// value on the 0.001 grid (nx::dsp_raw) as the decimal it stands for; one off the grid has no
+// program text: format_command says not_representable instead of printing a rounded number.
 #pragma once
 
 #include <fieldcodec/compax/dsp_number.hpp>
@@ -117,7 +117,8 @@ inline constexpr names no_names{op::none, "", ""};
 
 /// The argument as text (the command was validated by encode_content first, so numbers are in
 /// range and values have the places their field allows).
-constexpr void put_arg(text_writer &w, op o, const arg &a) noexcept {
+constexpr void put_arg(text_writer &w, op o, const arg &given) noexcept {
+  const arg a = normalized(given); // a raw value on the 0.001 grid prints as its decimal
   switch (a.kind) {
   case arg_kind::special: w.put(find_names(o).special); return;
   case arg_kind::parameter:
