@@ -148,6 +148,17 @@ struct download_requests {
 };
 std::array<download_requests, value_count> g_server_download_crc{};
 std::array<download_requests, value_count> g_server_download_plain{};
+/// The frames of a server that sends object `o` (g_block_store's value of 3000h + o) with block
+/// upload: initiate response (size indicated), 127 segments, end (unused bytes, CRC).
+struct upload_responses {
+  co::can_frame initiate;
+  std::array<co::can_frame, 127> segments;
+  co::can_frame end;
+};
+std::array<upload_responses, value_count> g_client_upload_crc{};
+std::array<upload_responses, value_count> g_client_upload_plain{};
+/// The client's receive buffer (the client and the hand-written one copy it into the result).
+std::array<std::uint8_t, block_bytes> g_upload_buffer{};
 /// The values the hand-written server stores (the fieldcodec server writes g_block_store).
 std::array<std::array<std::uint8_t, block_bytes>, value_count> g_hand_values{};
 
@@ -183,6 +194,18 @@ void fill_sdo_inputs() {
       }
       w.end = request(
           sdo::block_end(0, crc ? fieldcodec::crc::ccitt16(data) : std::uint16_t{0}).value());
+      auto &y = (crc ? g_client_upload_crc : g_client_upload_plain)[i];
+      y.initiate =
+          response(sdo::block_upload_initiate_response(object_address(o), block_bytes, true, crc));
+      for (std::size_t k = 0; k < 127U; ++k) {
+        y.segments[k] =
+            response(sdo::encode_block_segment(static_cast<std::uint8_t>(k + 1U),
+                                               std::span<const std::uint8_t>(v).subspan(7U * k, 7U),
+                                               k == 126U)
+                         .value());
+      }
+      y.end =
+          response(sdo::block_end(0, crc ? fieldcodec::crc::ccitt16(v) : std::uint16_t{0}).value());
     }
   }
   for (std::size_t i = 0; i < bench::input_count; ++i) {
@@ -349,6 +372,106 @@ download_out server_block_download(const transfer_in &in) {
   return out;
 }
 
+/// fieldcodec: the same download with the segments handed over the way a CAN driver drains its
+/// receive FIFO: `Batch` frames at a time (127: the whole sub-block), each batch through
+/// server::on_frames until it is used up (it stops at a frame that answers: the caller sends
+/// the answer and goes on with the rest). The initiate and the end come alone (the client
+/// waits for the answer before it sends on), through on_frame.
+template <std::size_t Batch, bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
+download_out server_block_download_batch(const transfer_in &in) {
+  download_out out;
+  const download_requests &q = (Crc ? g_server_download_crc : g_server_download_plain)[in.object];
+  sdo::server<store_type, CrcPolicy> s(sdo_node, g_block_store, g_download_buffer);
+  push_all(out.frames, s.on_frame(q.initiate, 0).send);
+  for (std::span<const co::can_frame> fifo(q.segments); !fifo.empty();) {
+    std::span<const co::can_frame> rx = fifo.first(fifo.size() < Batch ? fifo.size() : Batch);
+    fifo = fifo.subspan(rx.size());
+    while (!rx.empty()) {
+      const sdo::batch_step b = s.on_frames(rx, 0);
+      push_all(out.frames, b.last.send);
+      rx = rx.subspan(b.consumed);
+    }
+  }
+  push_all(out.frames, s.on_frame(q.end, 0).send);
+  out.frames.done = s.state() == sdo::transfer_state::done;
+  std::memcpy(out.value.data(), stored_value(static_cast<std::uint8_t>(value_count + in.object)),
+              block_bytes);
+  return out;
+}
+
+/// What a block upload left behind: the frames the client sent and the value it received.
+struct upload_out {
+  transfer_out frames;
+  std::array<std::uint8_t, block_bytes> value{};
+  bool operator==(const upload_out &) const = default;
+};
+
+/// fieldcodec: sdo::client reading 889 bytes with block upload (sub-blocks of 127), each
+/// received frame through on_frame.
+template <bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
+upload_out client_block_upload(const transfer_in &in) {
+  upload_out out;
+  const upload_responses &q = (Crc ? g_client_upload_crc : g_client_upload_plain)[in.object];
+  sdo::basic_client<CrcPolicy> c(sdo_node);
+  sdo::block_options o;
+  o.crc = Crc;
+  auto s = c.block_upload(object_address(in.object), g_upload_buffer, 0, o);
+  if (!s) return out;
+  push_all(out.frames, s.value().send);
+  push_all(out.frames, c.on_frame(q.initiate, 0).send);
+  for (const co::can_frame &f : q.segments) push_all(out.frames, c.on_frame(f, 0).send);
+  push_all(out.frames, c.on_frame(q.end, 0).send);
+  out.frames.done = c.state() == sdo::transfer_state::done;
+  const auto v = c.received();
+  std::memcpy(out.value.data(), v.data(), v.size() < block_bytes ? v.size() : block_bytes);
+  return out;
+}
+
+/// Hand-written: the client side of the same upload into a buffer (CRC by table).
+template <bool Crc>
+upload_out hand_block_upload_client(const transfer_in &in) {
+  upload_out out;
+  const upload_responses &q = (Crc ? g_client_upload_crc : g_client_upload_plain)[in.object];
+  std::uint8_t *v = g_upload_buffer.data();
+  const auto rid = static_cast<std::uint16_t>(0x600U + sdo_node);
+  const od::address a = object_address(in.object);
+  // initiate: 0xA0 | crc << 2, index, sub, block size 127
+  out.frames.push(
+      {rid,
+       false,
+       8,
+       {static_cast<std::uint8_t>(0xA0U | (Crc ? 0x04U : 0U)), static_cast<std::uint8_t>(a.index),
+        static_cast<std::uint8_t>(a.index >> 8U), a.sub, 127, 0, 0, 0}});
+  // initiate response: 0xC2 | crc << 2 (size indicated), the address, the size
+  const auto &d0 = q.initiate.data;
+  if (q.initiate.dlc != 8U || (d0[0] & 0xFBU) != 0xC2U || (d0[1] | (d0[2] << 8U)) != a.index ||
+      d0[3] != a.sub) {
+    return out;
+  }
+  const std::uint32_t size =
+      static_cast<std::uint32_t>(d0[4]) | (static_cast<std::uint32_t>(d0[5]) << 8U) |
+      (static_cast<std::uint32_t>(d0[6]) << 16U) | (static_cast<std::uint32_t>(d0[7]) << 24U);
+  if (size != block_bytes) return out;
+  const bool crc = Crc && (d0[0] & 0x04U) != 0U;
+  out.frames.push({rid, false, 8, {0xA3, 0, 0, 0, 0, 0, 0, 0}}); // start
+  // 127 segments in sequence, the last one flagged
+  std::uint8_t seq = 0;
+  for (const co::can_frame &f : q.segments) {
+    if (f.dlc != 8U || (f.data[0] & 0x7FU) != seq + 1U) return out;
+    seq = static_cast<std::uint8_t>(seq + 1U);
+    std::memcpy(v + 7U * (seq - 1U), &f.data[1], 7);
+  }
+  out.frames.push({rid, false, 8, {0xA2, seq, 127, 0, 0, 0, 0, 0}});
+  // end: 0xC1 | unused << 2, CRC
+  const auto &e = q.end.data;
+  if (q.end.dlc != 8U || (e[0] & 0xE3U) != 0xC1U || ((e[0] >> 2U) & 7U) != 0U) return out;
+  if (crc && hand_crc(v, size, 0) != (e[1] | (e[2] << 8U))) return out;
+  out.frames.push({rid, false, 8, {0xA1, 0, 0, 0, 0, 0, 0, 0}});
+  out.frames.done = true;
+  std::memcpy(out.value.data(), v, block_bytes);
+  return out;
+}
+
 /// Hand-written: the server side of the same download into a value it knows (CRC by table).
 template <bool Crc>
 download_out hand_server_block_download(const transfer_in &in) {
@@ -433,6 +556,45 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/block download 889 B, server, CRC table",
       [](const transfer_in &in) { return server_block_download<true, with_table>(in); },
       [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  // the client's block upload (round 6): 127 segments into the client's buffer
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, no CRC",
+      [](const transfer_in &in) { return client_block_upload<false>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC",
+      [](const transfer_in &in) { return client_block_upload<true>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC table",
+      [](const transfer_in &in) { return client_block_upload<true, with_table>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  // the server download with the segments in batches (server::on_frames): the whole sub-block
+  // of 127 frames in one call, and 8 at a time (a small receive FIFO)
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, no CRC, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, false>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, true>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC table, on_frames 127",
+      [](const transfer_in &in) { return server_block_download_batch<127, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, no CRC, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, false>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, true>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, server, CRC table, on_frames 8",
+      [](const transfer_in &in) { return server_block_download_batch<8, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<true>(in); });
 }
 
 bool complete_transfers() {
@@ -451,10 +613,24 @@ bool complete_transfers() {
     }
   }
   // the server download: initiate response, one acknowledgement, end response, and the value
-  for (const auto &d : {server_block_download<true>(in), server_block_download<false>(in),
-                        server_block_download<true, with_table>(in)}) {
+  for (const auto &d :
+       {server_block_download<true>(in), server_block_download<false>(in),
+        server_block_download<true, with_table>(in), server_block_download_batch<127, false>(in),
+        server_block_download_batch<127, true>(in),
+        server_block_download_batch<127, true, with_table>(in),
+        server_block_download_batch<8, false>(in), server_block_download_batch<8, true>(in),
+        server_block_download_batch<8, true, with_table>(in)}) {
     if (!d.frames.done || d.frames.n != 3U || d.value != g_download_data[in.object]) {
       std::fprintf(stderr, "codec_sdo_block: a block download did not complete\n");
+      return false;
+    }
+  }
+  // the client upload: initiate, start, acknowledgement, end response, and the value
+  for (const auto &u : {client_block_upload<true>(in), client_block_upload<false>(in),
+                        client_block_upload<true, with_table>(in)}) {
+    if (!u.frames.done || u.frames.n != 4U ||
+        std::memcmp(u.value.data(), stored_value(in.object), block_bytes) != 0) {
+      std::fprintf(stderr, "codec_sdo_block: a block upload (client) did not complete\n");
       return false;
     }
   }

@@ -5,7 +5,9 @@
 //   mode 0  client fed arbitrary frames: transfer setup (see client_mode), then 11-byte frames
 //           (id low byte, flags, 8 data bytes, 1 spare: id = 0x585 unless the flags' bit 7 is
 //           set, then 0x500 + low byte) and timer ticks; the setup also picks block transfer;
-//   mode 1  server fed arbitrary frames: the same frame format towards 0x605;
+//   mode 1  server fed arbitrary frames: the same frame format towards 0x605; a second server
+//           over a copy of the store gets the same frames through on_frames, the frames of
+//           one `now` as one batch;
 //   mode 2  loopback: a client and a server talk to each other (download, then upload) with
 //           fuzzed data, buffer sizes and object; frames may be dropped or corrupted;
 //   mode 3  the same with block transfer (fuzzed block size, CRC on or off, protocol switch
@@ -18,6 +20,8 @@
 // * The client never reports more bytes than its buffer holds; an upload that completes with a
 //   size indicated has exactly that size; after done/failed, frames change nothing; every abort
 //   it sends carries the transfer's index/sub and the code error()->abort reports.
+// * on_frames is on_frame frame by frame: the frames before the one it stops at answered
+//   nothing, that one's step is on_frame's, and both servers and stores agree after each call.
 // * The store's visible value changes only with the last part of a write (a value is never
 //   half-visible); expedited upload responses carry exactly the stored bytes.
 // * Loopback without corruption: a download stores exactly the data (or fails because the
@@ -225,13 +229,58 @@ void server_mode(reader &r) {
   for (auto &b : s.value) b = r.byte();
   std::vector<std::uint8_t> buffer(r.byte() % 64U);
   sdo::server<store> srv(node, s, buffer, 100);
+  // the same frames through on_frames: the frames of one `now` (up to a poll) as one batch
+  store s2 = s;
+  std::vector<std::uint8_t> buffer2(buffer.size());
+  sdo::server<store> batch(node, s2, buffer2, 100);
+  struct seen {
+    co::can_frame f;
+    std::vector<co::can_frame> sent;
+    bool answered;
+    sdo::transfer_state state;
+    std::optional<std::uint32_t> deadline;
+  };
+  std::vector<seen> pending;
+  std::vector<co::can_frame> frames;
+  std::uint32_t pending_now = 0;
+  const auto flush = [&] {
+    frames.clear();
+    for (const auto &p : pending) frames.push_back(p.f);
+    for (std::size_t at = 0; at < frames.size();) {
+      const sdo::batch_step b = batch.on_frames(std::span(frames).subspan(at), pending_now);
+      FUZZ_CHECK(b.consumed >= 1U && b.consumed <= frames.size() - at);
+      for (std::size_t j = at; j + 1U < at + b.consumed; ++j) FUZZ_CHECK(!pending[j].answered);
+      const seen &last = pending[at + b.consumed - 1U];
+      FUZZ_CHECK(last.answered || at + b.consumed == frames.size());
+      FUZZ_CHECK(std::vector<co::can_frame>(b.last.send.begin(), b.last.send.end()) == last.sent);
+      FUZZ_CHECK(b.last.state == last.state && b.last.deadline == last.deadline);
+      at += b.consumed;
+    }
+    pending.clear();
+    FUZZ_CHECK(batch.state() == srv.state() && batch.error() == srv.error());
+    FUZZ_CHECK(batch.deadline() == srv.deadline());
+    FUZZ_CHECK(s2.value == s.value && s2.word == s.word && s2.completed == s.completed);
+  };
   std::uint32_t now = 0;
   while (!r.empty()) {
     const auto f = frame_from(r, channel.request_id);
     now += r.byte();
     const auto value_before = s.value;
     const auto completed_before = s.completed;
+    if (!pending.empty() && (f.data[7] == 0xEEU || now != pending_now)) flush();
+    const auto state_before = srv.state();
     auto out = (f.data[7] == 0xEEU) ? srv.poll(now) : srv.on_frame(f, now);
+    if (f.data[7] == 0xEEU) {
+      const auto b = batch.poll(now);
+      FUZZ_CHECK(std::vector<co::can_frame>(b.send.begin(), b.send.end()) ==
+                 std::vector<co::can_frame>(out.send.begin(), out.send.end()));
+    } else {
+      seen x{f, {out.send.begin(), out.send.end()}, false, out.state, out.deadline};
+      x.answered = !x.sent.empty() || out.state != state_before ||
+                   (f.id == channel.request_id && !f.rtr && f.dlc != 8U);
+      pending.push_back(x);
+      pending_now = now;
+    }
     if (s.value != value_before) FUZZ_CHECK(s.completed == completed_before + 1);
     FUZZ_CHECK(out.deadline.has_value() == srv.busy());
     check_server_step(out);
@@ -245,6 +294,7 @@ void server_mode(reader &r) {
           std::equal(b.begin(), b.begin() + m.size, value_before.begin(), value_before.end()));
     }
   }
+  flush();
 }
 
 /// Runs a client/server exchange; `corrupt` may drop or change frames. Returns the client's

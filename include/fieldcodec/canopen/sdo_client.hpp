@@ -23,6 +23,7 @@
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
@@ -350,9 +351,18 @@ private:
     return send(block_upload_start());
   }
   [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
-  /// During the segments of a sub-block every frame but an abort is a segment.
+  /// During the segments of a sub-block every frame but an abort is a segment. The common one
+  /// (in sequence, not the last of the transfer or of its sub-block, within the announced size
+  /// and the buffer: block_receiver::take_next) is taken without a segment_result — as
+  /// on_segment would take it, its 7 bytes at the old count —, the rest by on_segment.
   [[nodiscard]] constexpr std::optional<step> block_upload_segment(const payload &p) noexcept {
     if (p[0] == 0x80U) return std::nullopt; // an abort
+    if (const std::size_t at = block_rx_.count(); block_rx_.take_next(p)) {
+      // take_next's bound is min(announced size, rx_.size()): the 7 bytes fit
+      fieldcodec::copy_bytes<7>(p.data() + 1, rx_.data() + at);
+      count_ = block_rx_.count();
+      return core_.make();
+    }
     const auto r = block_rx_.on_segment(p); // sequence 0: invalid_sequence_number
     if (r.abort != abort_code::none) return local_abort(r.abort);
     for (std::size_t i = 0; i < r.bytes.size(); ++i) rx_[r.offset + i] = r.bytes[i];

@@ -12,6 +12,14 @@
 //   for every received frame: for (const auto &f : s.on_frame(frame, now).send) transmit(f);
 //   when the deadline passes: for (const auto &f : s.poll(now).send) transmit(f);
 //
+// or, with the frames a CAN driver took from its receive FIFO (several at once):
+//
+//   for (auto rx = fifo_frames; !rx.empty();) {
+//     const auto r = s.on_frames(rx, now);      // stops at the first frame that answers
+//     for (const auto &f : r.last.send) transmit(f);
+//     rx = rx.subspan(r.consumed);
+//   }
+//
 // Block transfer: the server offers CRC when asked, takes sub-blocks of up to min(127,
 // buffer / 7) segments, and sends sub-blocks of the size the client asks for when that many
 // segments fit its buffer (otherwise it aborts with 0x05040002). It answers a block upload of
@@ -77,6 +85,12 @@ template <class Flush>
 
 } // namespace detail
 
+/// What server::on_frames did with a run of received frames.
+struct batch_step {
+  std::size_t consumed = 0; ///< frames taken from the front of the span (≥ 1 unless it is empty)
+  step last{};              ///< the step to act on: on_frame's step for the last frame taken
+};
+
 /// The server; `Crc` computes the CRC of block transfers (crc::ccitt16_no_table, the default,
 /// or crc::ccitt16_with_table: a 512-byte table in flash for about half the instructions a
 /// byte; core/crc.hpp).
@@ -105,6 +119,46 @@ public:
       return block_download_segment(f.data);
     }
     return on_any_frame(f, now);
+  }
+
+  /// Consume several received frames in order (what a CAN driver took from its receive FIFO),
+  /// each exactly as on_frame(frame, now) takes it, all at the same `now`. It stops after the
+  /// first frame that answers — its step has frames to send, or the state after it differs
+  /// from the state before it (a transfer done or failed), or it was refused (a frame on the
+  /// request identifier with a DLC other than 8: error() says bad_length) — and returns
+  /// {frames taken including that one, its step}: act on the step, then call again with the
+  /// rest. When no frame answers, every frame is taken and `last` is the step on_frame gave
+  /// for the last of them (nothing to send, the state and deadline after them); for an empty
+  /// span, consumed is 0 and `last` the state and deadline as they are. Frames on other
+  /// identifiers and remote frames are taken and change nothing, as on_frame ignores them.
+  /// Like on_frame it does not look at the deadline: call poll(now) for that. So the frames
+  /// sent, the states, error() and the stored bytes are those of on_frame called for each
+  /// frame (tests/canopen/sdo_server_batch_test.cpp). The segments of a block download are
+  /// taken in runs (block_receiver::take_run: no step per segment, one CRC update per run).
+  [[nodiscard]] constexpr batch_step on_frames(std::span<const can_frame> fs,
+                                               std::uint32_t now) noexcept {
+    std::size_t i = 0;
+    while (i < fs.size()) {
+      if (phase_ == phase::block_download_segments && ch_.request_id != 0U &&
+          ch_.request_id <= max_can_id) {
+        // the run of segments in front that take_next would take one by one
+        const std::size_t k = block_rx_.take_run(fs.subspan(i), ch_.request_id,
+                                                 std::span<std::uint8_t>(buf_).subspan(used_));
+        if (k != 0U) {
+          if (core_.busy()) core_.touch(now);
+          used_ += 7U * k;
+          i += k;
+          continue;
+        }
+      }
+      const can_frame &f = fs[i++];
+      if (!ch_.is_request(f)) continue; // not for the server: on_frame changes nothing
+      const transfer_state before = core_.state();
+      const bool refused = !expect_data(f, 8);
+      step s = on_frame(f, now);
+      if (refused || !s.send.empty() || s.state != before) return {i, s};
+    }
+    return {i, core_.make()};
   }
 
   /// Abort a transfer whose client went silent (0x05040000, error timeout).

@@ -17,15 +17,18 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/step.hpp>
+#include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace fieldcodec::canopen::sdo {
 
@@ -332,6 +335,58 @@ public:
     if (crc_enabled_) crc_ = Crc::update(std::span<const std::uint8_t>(raw).subspan<1, 7>(), crc_);
     count_ += 7U;
     return true;
+  }
+  /// take_next over a run of received frames (round 6: a CAN driver hands over its receive
+  /// FIFO): takes frames from the front of `fs` while each is a data frame on `id` with DLC 8
+  /// whose payload take_next(payload) would take, and copies the 7 data bytes of the k-th one
+  /// to out[7 k, 7 k + 7), at most out.size() / 7 frames. Returns how many it took, k; the
+  /// receiver is then where k calls of take_next would have left it (the CRC over the k × 7
+  /// bytes in one update, the same value). Frame k, if any, is the one to look at next.
+  /// `id` must be a valid 11-bit identifier (the check of expect_data(f, 8) then reduces to
+  /// the ones made here).
+  [[nodiscard]] constexpr std::size_t take_run(std::span<const can_frame> fs, std::uint16_t id,
+                                               std::span<std::uint8_t> out) noexcept {
+    if (final_ || sequence_ >= block_size_ || count_ > limit_) return 0;
+    // the bounds of take_next for the whole run: sequence numbers up to block_size_ − 1, the
+    // count up to limit_, and the room in `out`
+    std::size_t most = static_cast<std::size_t>(block_size_ - 1U - sequence_);
+    if (const std::size_t n = (limit_ - count_) / 7U; n < most) most = n;
+    if (const std::size_t n = out.size() / 7U; n < most) most = n;
+    if (const std::size_t n = fs.size(); n < most) most = n;
+    std::size_t k = 0;
+    auto next = static_cast<std::uint8_t>(sequence_ + 1U);
+#if defined(__GNUC__)
+    if (!std::is_constant_evaluated() && std::endian::native == std::endian::little) {
+      // the same four checks as one: id, rtr, dlc and data[0] are the first 5 bytes of a
+      // frame (asserted below), read as one little-endian word and compared under a mask
+      static_assert(sizeof(can_frame) == 12U && offsetof(can_frame, rtr) == 2U &&
+                    offsetof(can_frame, dlc) == 3U && offsetof(can_frame, data) == 4U);
+      // the expected word of the next frame: its sequence number counts up in bits 32..39
+      std::uint64_t want =
+          std::uint64_t{id} | (std::uint64_t{8} << 24U) | (std::uint64_t{next} << 32U);
+      for (; k < most; ++k, want += std::uint64_t{1} << 32U) {
+        std::uint64_t w = 0;
+        __builtin_memcpy(&w, &fs[k], 8);
+        if ((w & 0xFF'FFFF'FFFFU) != want) break;
+        fieldcodec::copy_bytes<7>(fs[k].data.data() + 1, out.data() + 7U * k);
+      }
+    } else
+#endif
+    {
+      for (; k < most; ++k) {
+        const can_frame &f = fs[k];
+        if (f.id != id || f.rtr || f.dlc != 8U || f.data[0] != next) break;
+        fieldcodec::copy_bytes<7>(f.data.data() + 1, out.data() + 7U * k);
+        ++next;
+      }
+    }
+    if (k == 0U) return 0;
+    sequence_ = static_cast<std::uint8_t>(sequence_ + k);
+    previous_ = fs[k - 1U].data;
+    have_previous_ = true;
+    if (crc_enabled_) crc_ = Crc::update(std::span<const std::uint8_t>(out).first(7U * k), crc_);
+    count_ += 7U * k;
+    return k;
   }
   /// Is `raw` a repeat of the segment taken last? (After the last segment, while the end
   /// message is awaited, such a repeat is ignored instead of being read as a message.)
