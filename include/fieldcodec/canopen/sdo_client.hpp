@@ -17,6 +17,14 @@
 //
 //   // c.state() == sdo::transfer_state::done: c.received() holds the value;
 //   // failed: c.error() says why ({errc, abort code, address}).
+//
+// or, with the frames a CAN driver took from its receive FIFO (several at once):
+//
+//   for (auto rx = fifo_frames; !rx.empty();) {
+//     const auto r = c.on_frames(rx, now);      // stops at the first frame that answers
+//     for (const auto &f : r.last.send) transmit(f);
+//     rx = rx.subspan(r.consumed);
+//   }
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -142,6 +150,42 @@ public:
     return (this->*handler_)(m);
   }
 
+  /// Consume several received frames in order (what a CAN driver took from its receive FIFO),
+  /// each exactly as on_frame(frame, now) takes it, all at the same `now`. It stops after the
+  /// first frame that answers — its step has frames to send (the next request, an
+  /// acknowledgement, an abort), or the state after it differs from the state before it (the
+  /// transfer done or failed) — and returns {frames taken including that one, its step}: act
+  /// on the step, then call again with the rest. When no frame answers, every frame is taken
+  /// and `last` is the step on_frame gave for the last of them (nothing to send, the state and
+  /// deadline after them); for an empty span, consumed is 0 and `last` the state and deadline
+  /// as they are. Frames on other identifiers, remote frames on the response identifier and
+  /// every frame while no transfer runs are taken and change nothing, as on_frame ignores them
+  /// (a data frame on the response identifier with a DLC other than 8 fails the transfer, as
+  /// on_frame does: it answers). Like on_frame it does not look at the deadline: call
+  /// poll(now) for that. So the frames sent, the states, error() and the received bytes are
+  /// those of on_frame called for each frame (tests/canopen/sdo_client_batch_test.cpp). The
+  /// segments of a block upload are taken in runs (block_receiver::take_run: no step per
+  /// segment, one CRC update per run); a program that never starts a block upload links none
+  /// of it.
+  [[nodiscard]] constexpr batch_step on_frames(std::span<const can_frame> fs,
+                                               std::uint32_t now) noexcept {
+    std::size_t i = 0;
+    while (i < fs.size()) {
+      if (run_ != nullptr && core_.busy()) {
+        // the run of block upload segments in front that take_next would take one by one
+        if (const std::size_t k = (this->*run_)(fs.subspan(i), now); k != 0U) {
+          i += k;
+          continue;
+        }
+      }
+      const can_frame &f = fs[i++];
+      if (!core_.busy() || !ch_.is_response(f)) continue; // on_frame changes nothing
+      step s = on_frame(f, now);
+      if (!s.send.empty() || s.state != transfer_state::busy) return {i, s};
+    }
+    return {i, core_.make()};
+  }
+
   /// Check the timeout: abort 0x05040000, error timeout.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
     if (core_.timed_out(now)) return abort_with(errc::timeout, abort_code::timeout);
@@ -161,9 +205,11 @@ public:
   [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept {
     return core_.error();
   }
-  /// The bytes uploaded so far (the value once state() == done).
+  /// The bytes uploaded so far (the value once state() == done); empty for a download (whose
+  /// bytes transferred() counts).
   [[nodiscard]] constexpr std::span<const std::uint8_t> received() const noexcept {
-    return std::span<const std::uint8_t>(rx_).first(count_);
+    // an upload's count never passes its buffer; a download has none (rx_ is empty)
+    return std::span<const std::uint8_t>(rx_).first(count_ < rx_.size() ? count_ : rx_.size());
   }
   /// Bytes transferred so far (a block download counts acknowledged bytes).
   [[nodiscard]] constexpr std::size_t transferred() const noexcept { return count_; }
@@ -183,13 +229,16 @@ public:
 private:
   // Per-state transition functions: the running transfer's state is the function that takes
   // the next message (`handler_`), and for block segments, which carry no command specifier,
-  // the function that sees the raw bytes first (`raw_`). Firmware that never starts a block
-  // transfer never references the block functions, so the linker drops them.
+  // the function that sees the raw bytes first (`raw_`), and for on_frames the function that
+  // takes a run of them (`run_`). Firmware that never starts a block transfer never references
+  // the block functions, so the linker drops them.
   using handler = step (basic_client::*)(const message &);
   using raw_handler = std::optional<step> (basic_client::*)(const payload &);
-  constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
+  using run_handler = std::size_t (basic_client::*)(std::span<const can_frame>, std::uint32_t);
+  constexpr void expect(handler h, raw_handler raw = nullptr, run_handler run = nullptr) noexcept {
     handler_ = h;
     raw_ = raw;
+    run_ = run;
   }
 
   [[nodiscard]] constexpr status can_start(std::size_t size) const noexcept {
@@ -347,7 +396,8 @@ private:
     block_rx_.start(rx_.size(),
                     m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt,
                     options_.crc && m.crc, options_.block_size);
-    expect(&basic_client::unexpected_message, &basic_client::block_upload_segment);
+    expect(&basic_client::unexpected_message, &basic_client::block_upload_segment,
+           &basic_client::block_upload_run);
     return send(block_upload_start());
   }
   [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
@@ -373,6 +423,23 @@ private:
     }
     return send(block_rx_.acknowledge(options_.block_size));
   }
+  /// on_frames during the segments of a sub-block: the run of frames in front that
+  /// block_upload_segment would take by take_next one by one (block_receiver::take_run: the
+  /// same checks — on the response identifier, no remote frame, DLC 8 —, the same bytes at the
+  /// same places, one CRC update), each touching the deadline as on_frame does. Returns how
+  /// many it took (0: the next frame goes through on_frame).
+  [[nodiscard]] constexpr std::size_t block_upload_run(std::span<const can_frame> fs,
+                                                       std::uint32_t now) noexcept {
+    // take_run wants a valid 11-bit identifier; with another one on_frame takes every frame
+    if (ch_.response_id == 0U || ch_.response_id > max_can_id) return 0;
+    // count_ == block_rx_.count() ≤ rx_.size() (take_next's bound is within the buffer)
+    const std::size_t k = block_rx_.take_run(fs, ch_.response_id, rx_.subspan(count_));
+    if (k != 0U) {
+      core_.touch(now);
+      count_ = block_rx_.count();
+    }
+    return k;
+  }
   /// While the end is awaited: the last segment once more is ignored.
   [[nodiscard]] constexpr std::optional<step> block_upload_repeat(const payload &p) noexcept {
     if (block_rx_.is_repeat(p)) return core_.make();
@@ -392,6 +459,7 @@ private:
   machine_core core_;
   handler handler_ = &basic_client::unexpected_message;
   raw_handler raw_ = nullptr;
+  run_handler run_ = nullptr;
   block_options options_{};
   std::size_t count_ = 0;
   std::span<const std::uint8_t> tx_{};

@@ -85,12 +85,6 @@ template <class Flush>
 
 } // namespace detail
 
-/// What server::on_frames did with a run of received frames.
-struct batch_step {
-  std::size_t consumed = 0; ///< frames taken from the front of the span (≥ 1 unless it is empty)
-  step last{};              ///< the step to act on: on_frame's step for the last frame taken
-};
-
 /// The server; `Crc` computes the CRC of block transfers (crc::ccitt16_no_table, the default,
 /// or crc::ccitt16_with_table: a 512-byte table in flash for about half the instructions a
 /// byte; core/crc.hpp).

@@ -458,6 +458,12 @@ using block_receiver = basic_block_receiver<>;
 // ---------------------------------------------------------------------------------------------
 // What client and server share: state, error, deadline
 
+/// What server::on_frames or client::on_frames did with a run of received frames.
+struct batch_step {
+  std::size_t consumed = 0; ///< frames taken from the front of the span (≥ 1 unless it is empty)
+  step last{};              ///< the step to act on: on_frame's step for the last frame taken
+};
+
 /// The bookkeeping every SDO machine has: state, the object, the error of the last failure, the
 /// time of the last activity and the timeout.
 class machine_core {
