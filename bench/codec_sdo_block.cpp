@@ -427,6 +427,38 @@ upload_out client_block_upload(const transfer_in &in) {
   return out;
 }
 
+/// fieldcodec: the same upload with the segments handed over the way a CAN driver drains its
+/// receive FIFO: `Batch` frames at a time (127: the whole sub-block), each batch through
+/// client::on_frames until it is used up (it stops at a frame that answers: the caller sends
+/// the answer and goes on with the rest). The initiate response and the end come alone (the
+/// server waits for the client's answer before it sends on), through on_frame.
+template <std::size_t Batch, bool Crc, class CrcPolicy = fieldcodec::crc::ccitt16_no_table>
+upload_out client_block_upload_batch(const transfer_in &in) {
+  upload_out out;
+  const upload_responses &q = (Crc ? g_client_upload_crc : g_client_upload_plain)[in.object];
+  sdo::basic_client<CrcPolicy> c(sdo_node);
+  sdo::block_options o;
+  o.crc = Crc;
+  auto s = c.block_upload(object_address(in.object), g_upload_buffer, 0, o);
+  if (!s) return out;
+  push_all(out.frames, s.value().send);
+  push_all(out.frames, c.on_frame(q.initiate, 0).send);
+  for (std::span<const co::can_frame> fifo(q.segments); !fifo.empty();) {
+    std::span<const co::can_frame> rx = fifo.first(fifo.size() < Batch ? fifo.size() : Batch);
+    fifo = fifo.subspan(rx.size());
+    while (!rx.empty()) {
+      const sdo::batch_step b = c.on_frames(rx, 0);
+      push_all(out.frames, b.last.send);
+      rx = rx.subspan(b.consumed);
+    }
+  }
+  push_all(out.frames, c.on_frame(q.end, 0).send);
+  out.frames.done = c.state() == sdo::transfer_state::done;
+  const auto v = c.received();
+  std::memcpy(out.value.data(), v.data(), v.size() < block_bytes ? v.size() : block_bytes);
+  return out;
+}
+
 /// Hand-written: the client side of the same upload into a buffer (CRC by table).
 template <bool Crc>
 upload_out hand_block_upload_client(const transfer_in &in) {
@@ -569,6 +601,32 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/block upload 889 B, client, CRC table",
       [](const transfer_in &in) { return client_block_upload<true, with_table>(in); },
       [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  // the client's upload with the segments in batches (client::on_frames), as the server's
+  // download below
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, no CRC, on_frames 127",
+      [](const transfer_in &in) { return client_block_upload_batch<127, false>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC, on_frames 127",
+      [](const transfer_in &in) { return client_block_upload_batch<127, true>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC table, on_frames 127",
+      [](const transfer_in &in) { return client_block_upload_batch<127, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, no CRC, on_frames 8",
+      [](const transfer_in &in) { return client_block_upload_batch<8, false>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC, on_frames 8",
+      [](const transfer_in &in) { return client_block_upload_batch<8, true>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block upload 889 B, client, CRC table, on_frames 8",
+      [](const transfer_in &in) { return client_block_upload_batch<8, true, with_table>(in); },
+      [](const transfer_in &in) { return hand_block_upload_client<true>(in); });
   // the server download with the segments in batches (server::on_frames): the whole sub-block
   // of 127 frames in one call, and 8 at a time (a small receive FIFO)
   bench::add<g_transfers>(
@@ -626,8 +684,13 @@ bool complete_transfers() {
     }
   }
   // the client upload: initiate, start, acknowledgement, end response, and the value
-  for (const auto &u : {client_block_upload<true>(in), client_block_upload<false>(in),
-                        client_block_upload<true, with_table>(in)}) {
+  for (const auto &u :
+       {client_block_upload<true>(in), client_block_upload<false>(in),
+        client_block_upload<true, with_table>(in), client_block_upload_batch<127, false>(in),
+        client_block_upload_batch<127, true>(in),
+        client_block_upload_batch<127, true, with_table>(in),
+        client_block_upload_batch<8, false>(in), client_block_upload_batch<8, true>(in),
+        client_block_upload_batch<8, true, with_table>(in)}) {
     if (!u.frames.done || u.frames.n != 4U ||
         std::memcmp(u.value.data(), stored_value(in.object), block_bytes) != 0) {
       std::fprintf(stderr, "codec_sdo_block: a block upload (client) did not complete\n");
