@@ -5,6 +5,8 @@
 //   mode 0  client fed arbitrary frames: transfer setup (see client_mode), then 11-byte frames
 //           (id low byte, flags, 8 data bytes, 1 spare: id = 0x585 unless the flags' bit 7 is
 //           set, then 0x500 + low byte) and timer ticks; the setup also picks block transfer;
+//           a second client gets the same frames through on_frames, the frames of one `now`
+//           as one batch;
 //   mode 1  server fed arbitrary frames: the same frame format towards 0x605; a second server
 //           over a copy of the store gets the same frames through on_frames, the frames of
 //           one `now` as one batch;
@@ -21,7 +23,8 @@
 //   size indicated has exactly that size; after done/failed, frames change nothing; every abort
 //   it sends carries the transfer's index/sub and the code error()->abort reports.
 // * on_frames is on_frame frame by frame: the frames before the one it stops at answered
-//   nothing, that one's step is on_frame's, and both servers and stores agree after each call.
+//   nothing, that one's step is on_frame's, and both servers and stores (both clients and
+//   their received bytes) agree after each call.
 // * The store's visible value changes only with the last part of a write (a value is never
 //   half-visible); expedited upload responses carry exactly the stored bytes.
 // * Loopback without corruption: a download stores exactly the data (or fails because the
@@ -170,12 +173,50 @@ void client_mode(reader &r) {
   sdo::block_options o;
   o.block_size = static_cast<std::uint8_t>(1U + data.size() % 127U);
   o.switch_threshold = static_cast<std::uint8_t>(setup & 0x07U);
-  auto start = [&] {
-    if (block) return upload ? c.block_upload(a, buffer, now, o) : c.block_download(a, data, now);
-    return upload ? c.upload(a, buffer, now) : c.download(a, data, now);
+  // the same frames through on_frames: the frames of one `now` (up to a poll) as one batch
+  sdo::client batch(node, 100);
+  std::vector<std::uint8_t> buffer2(buffer.size());
+  auto start_on = [&](sdo::client &m, std::vector<std::uint8_t> &b) {
+    if (block) return upload ? m.block_upload(a, b, now, o) : m.block_download(a, data, now);
+    return upload ? m.upload(a, b, now) : m.download(a, data, now);
   };
+  auto start = [&] { return start_on(c, buffer); };
   auto first = start();
   FUZZ_CHECK(first.has_value());
+  {
+    const auto first2 = start_on(batch, buffer2);
+    FUZZ_CHECK(first2.has_value());
+    FUZZ_CHECK(std::vector<co::can_frame>(first2.value().send.begin(), first2.value().send.end()) ==
+               std::vector<co::can_frame>(first.value().send.begin(), first.value().send.end()));
+  }
+  struct seen {
+    co::can_frame f;
+    std::vector<co::can_frame> sent;
+    bool answered;
+    sdo::transfer_state state;
+    std::optional<std::uint32_t> deadline;
+  };
+  std::vector<seen> pending;
+  std::vector<co::can_frame> frames;
+  std::uint32_t pending_now = 0;
+  const auto flush = [&] {
+    frames.clear();
+    for (const auto &p : pending) frames.push_back(p.f);
+    for (std::size_t at = 0; at < frames.size();) {
+      const sdo::batch_step b = batch.on_frames(std::span(frames).subspan(at), pending_now);
+      FUZZ_CHECK(b.consumed >= 1U && b.consumed <= frames.size() - at);
+      for (std::size_t j = at; j + 1U < at + b.consumed; ++j) FUZZ_CHECK(!pending[j].answered);
+      const seen &last = pending[at + b.consumed - 1U];
+      FUZZ_CHECK(last.answered || at + b.consumed == frames.size());
+      FUZZ_CHECK(std::vector<co::can_frame>(b.last.send.begin(), b.last.send.end()) == last.sent);
+      FUZZ_CHECK(b.last.state == last.state && b.last.deadline == last.deadline);
+      at += b.consumed;
+    }
+    pending.clear();
+    FUZZ_CHECK(batch.state() == c.state() && batch.error() == c.error());
+    FUZZ_CHECK(batch.deadline() == c.deadline() && batch.transferred() == c.transferred());
+    FUZZ_CHECK(std::ranges::equal(batch.received(), c.received()));
+  };
   check_client_step(first.value());
   FUZZ_CHECK(c.busy());
   FUZZ_CHECK(first.value().deadline.has_value());
@@ -185,7 +226,18 @@ void client_mode(reader &r) {
     const auto before = c.state();
     const auto f = frame_from(r, channel.response_id);
     now += r.byte();
+    if (!pending.empty() && (f.data[7] == 0xEEU || now != pending_now)) flush();
     const sdo::step out = (f.data[7] == 0xEEU) ? c.poll(now) : c.on_frame(f, now);
+    if (f.data[7] == 0xEEU) {
+      const auto b = batch.poll(now);
+      FUZZ_CHECK(std::vector<co::can_frame>(b.send.begin(), b.send.end()) ==
+                 std::vector<co::can_frame>(out.send.begin(), out.send.end()));
+    } else {
+      seen x{f, {out.send.begin(), out.send.end()}, false, out.state, out.deadline};
+      x.answered = !x.sent.empty() || out.state != before;
+      pending.push_back(x);
+      pending_now = now;
+    }
     if (before != sdo::transfer_state::busy) {
       FUZZ_CHECK(out.send.empty() && out.state == before && c.state() == before);
       continue;
@@ -220,6 +272,7 @@ void client_mode(reader &r) {
       }
     }
   }
+  flush();
 }
 
 void server_mode(reader &r) {
