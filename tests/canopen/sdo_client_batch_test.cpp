@@ -312,7 +312,38 @@ void run_streams() {
           " (block uploads ", total.block_uploads_done, "), failed ", total.failed);
 }
 
-co::can_frame response(const sdo::payload &p) { return {response_id, false, 8, p}; }
+constexpr co::can_frame response(const sdo::payload &p) { return {response_id, false, 8, p}; }
+
+/// on_frames in a constant expression: a segmented upload of 10 bytes, the initiate response,
+/// both segments and a frame of another COB-ID in one span (the first segment answers with the
+/// next request, the second ends the transfer). (A block upload's segments go through
+/// on_frame's `raw_ != nullptr`, which g++ 12 with -fsanitize=undefined cannot evaluate in a
+/// constant expression; the run itself, take_run, is tested so in
+/// sdo_server_batch_test.cpp.)
+constexpr bool segmented_upload_in_constant_evaluation() {
+  std::array<std::uint8_t, 10> bytes{};
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<std::uint8_t>(3U * i + 1U);
+  std::array<std::uint8_t, 16> buffer{};
+  sdo::client c(node, timeout_ms);
+  if (!c.upload({0x2000, 0}, buffer, 0).has_value()) return false;
+  const auto first =
+      sdo::upload_segment(false, std::span<const std::uint8_t>(bytes).first(7), false);
+  const auto second =
+      sdo::upload_segment(true, std::span<const std::uint8_t>(bytes).subspan(7), true);
+  if (!first || !second) return false;
+  const std::array<co::can_frame, 4> rx{response(sdo::upload_response({0x2000, 0}, 10)),
+                                        co::can_frame{0x181, false, 8, {}}, response(first.value()),
+                                        response(second.value())};
+  auto b = c.on_frames(rx, 1); // the initiate response answers with the first request
+  if (b.consumed != 1U || b.last.send.size() != 1U) return false;
+  b = c.on_frames(std::span<const co::can_frame>(rx).subspan(1), 2);
+  if (b.consumed != 2U || b.last.send.size() != 1U) return false; // the next request
+  b = c.on_frames(std::span<const co::can_frame>(rx).subspan(3), 3);
+  if (b.consumed != 1U || b.last.state != transfer_state::done) return false;
+  const auto got = c.received();
+  return got.size() == 10U && std::equal(got.begin(), got.end(), bytes.begin());
+}
+static_assert(segmented_upload_in_constant_evaluation());
 
 } // namespace
 

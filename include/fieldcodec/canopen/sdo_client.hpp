@@ -171,7 +171,7 @@ public:
                                                std::uint32_t now) noexcept {
     std::size_t i = 0;
     while (i < fs.size()) {
-      if (run_ != nullptr && core_.busy()) {
+      if (runs_ && core_.busy()) {
         // the run of block upload segments in front that take_next would take one by one
         if (const std::size_t k = (this->*run_)(fs.subspan(i), now); k != 0U) {
           i += k;
@@ -230,15 +230,24 @@ private:
   // Per-state transition functions: the running transfer's state is the function that takes
   // the next message (`handler_`), and for block segments, which carry no command specifier,
   // the function that sees the raw bytes first (`raw_`), and for on_frames the function that
-  // takes a run of them (`run_`). Firmware that never starts a block transfer never references
-  // the block functions, so the linker drops them.
+  // takes a run of them (`run_`, when `runs_`). Firmware that never starts a block
+  // transfer never references the block functions, so the linker drops them.
   using handler = step (basic_client::*)(const message &);
   using raw_handler = std::optional<step> (basic_client::*)(const payload &);
   using run_handler = std::size_t (basic_client::*)(std::span<const can_frame>, std::uint32_t);
-  constexpr void expect(handler h, raw_handler raw = nullptr, run_handler run = nullptr) noexcept {
+  constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
+    handler_ = h;
+    raw_ = raw;
+    runs_ = false;
+  }
+  /// A state with a run handler. (`runs_` says whether run_ is set, instead of a comparison
+  /// of run_ with nullptr: g++ 12 with -fsanitize=undefined cannot evaluate that in a constant
+  /// expression, docs/od.md "Lookups in constant expressions".)
+  constexpr void expect(handler h, raw_handler raw, run_handler run) noexcept {
     handler_ = h;
     raw_ = raw;
     run_ = run;
+    runs_ = true;
   }
 
   [[nodiscard]] constexpr status can_start(std::size_t size) const noexcept {
@@ -460,6 +469,7 @@ private:
   handler handler_ = &basic_client::unexpected_message;
   raw_handler raw_ = nullptr;
   run_handler run_ = nullptr;
+  bool runs_ = false; ///< run_ is set (on_frames calls it)
   block_options options_{};
   std::size_t count_ = 0;
   std::span<const std::uint8_t> tx_{};
