@@ -359,8 +359,14 @@ public:
         if (answered(s, before)) return {i, s};
         continue;
       }
+      // the run: what routes as fs[i] does — the routing of a frame that is not a remote frame
+      // and has a DLC of at most 8 depends, within a call, only on its identifier
+      const std::uint16_t id = fs[i].id;
       std::size_t n = 1;
-      while (i + n < fs.size() && sdo_server_for(fs[i + n]) == k) ++n;
+      while (i + n < fs.size() && fs[i + n].id == id && !fs[i + n].rtr &&
+             fs[i + n].dlc <= max_dlc) {
+        ++n;
+      }
       // the server stops after its first frame that answers (frames, its state, a refusal) and
       // every frame before it was for on_frame a call without effect beyond the server's (a
       // store write always comes with a response): that frame as on_frame ends it
