@@ -37,7 +37,7 @@ struct stream_options {
   unsigned fault_per_mille = 0; ///< each frame of the client: lost, repeated or corrupted
   unsigned other_percent = 0;   ///< each chunk: frames of the other services
   unsigned pause_percent = 0;   ///< each chunk: time passes before it
-  unsigned reset_per_mille = 0; ///< each other frame: an NMT stop or reset
+  unsigned reset_per_mille = 0; ///< each NMT command among them: a stop or a reset
   std::size_t chunks = 400;
 };
 
@@ -145,10 +145,13 @@ stream_counts run_stream(const stream_options &o) {
       f = F(0x300U + N, {static_cast<std::uint8_t>(r.next()), 0});
       break;
     case 6:
-    case 7: // heartbeats: node 7 (monitored after the SDO write of 1016h), others
-      f = F(static_cast<std::uint16_t>(0x700U + (below(3) == 0 ? 1U + below(127) : 7U)),
-            {below(10) == 0 ? std::uint8_t{0} : std::uint8_t{0x05}});
+    case 7: { // heartbeats: node 7 (monitored after the SDO write of 1016h), others
+      // (drawn one after the other: the order of a call's arguments is unspecified)
+      const auto from = static_cast<std::uint16_t>(0x700U + (below(3) == 0 ? 1U + below(127) : 7U));
+      const std::uint8_t hb_state = below(10) == 0 ? std::uint8_t{0} : std::uint8_t{0x05};
+      f = F(from, {hb_state});
       break;
+    }
     case 8: f = R(static_cast<std::uint16_t>(0x700U + N), 0); break;   // guarding
     case 9: f.id = static_cast<std::uint16_t>(0x600U + N + 1U); break; // another node's SDO
     case 10:
@@ -308,15 +311,15 @@ TEST_CASE("node::device::on_frames: the same frames, events, states and bytes as
        .fault_per_mille = 30,
        .other_percent = 60,
        .pause_percent = 20,
-       .reset_per_mille = 100},
+       .reset_per_mille = 300},
       {.seed = 15,
        .server_crc = false,
        .fault_per_mille = 5,
        .other_percent = 80,
        .pause_percent = 30,
-       .reset_per_mille = 30,
+       .reset_per_mille = 100,
        .chunks = 1000},
-      {.seed = 16, .other_percent = 100, .pause_percent = 50, .reset_per_mille = 200},
+      {.seed = 16, .other_percent = 100, .pause_percent = 50, .reset_per_mille = 400},
   };
   stream_counts total;
   for (const auto &o : cases) {
