@@ -11,6 +11,7 @@
 #include "codec_harness.hpp"
 
 #include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
@@ -399,6 +400,47 @@ download_out server_block_download_batch(const transfer_in &in) {
   return out;
 }
 
+/// The node around the server (round 6): node::device over the same store, one SDO server with
+/// the download buffer's 2 × 889 bytes, started once in main (pre-operational: SDO served).
+constexpr auto device_capacity = [] {
+  auto c = co::node::capacity_for(block_dict);
+  c.sdo_buffer = 2U * block_bytes;
+  return c;
+}();
+using device_type = co::node::device<store_type, device_capacity>;
+device_type g_device{g_block_store, sdo_node};
+
+/// fieldcodec: the same download through node::device::on_frames, `Batch` frames a call as in
+/// server_block_download_batch; the initiate and the end through device::on_frame. The device
+/// routes each frame (NMT, SYNC, SDO servers, heartbeats, PDOs) and builds its own step.
+/// Batch 0: every segment through device::on_frame (the device's path before round 6).
+template <std::size_t Batch>
+download_out device_block_download_batch(const transfer_in &in) {
+  download_out out;
+  const download_requests &q = g_server_download_plain[in.object];
+  push_all(out.frames, g_device.on_frame(q.initiate, 0).send);
+  if constexpr (Batch == 0U) {
+    for (const co::can_frame &f : q.segments) push_all(out.frames, g_device.on_frame(f, 0).send);
+  }
+  for (std::span<const co::can_frame> fifo(Batch == 0U
+                                               ? std::span<const co::can_frame>{}
+                                               : std::span<const co::can_frame>(q.segments));
+       !fifo.empty();) {
+    std::span<const co::can_frame> rx = fifo.first(fifo.size() < Batch ? fifo.size() : Batch);
+    fifo = fifo.subspan(rx.size());
+    while (!rx.empty()) {
+      const auto b = g_device.on_frames(rx, 0);
+      push_all(out.frames, b.last.send);
+      rx = rx.subspan(b.consumed);
+    }
+  }
+  push_all(out.frames, g_device.on_frame(q.end, 0).send);
+  out.frames.done = g_device.sdo().server(0).state() == sdo::transfer_state::done;
+  std::memcpy(out.value.data(), stored_value(static_cast<std::uint8_t>(value_count + in.object)),
+              block_bytes);
+  return out;
+}
+
 /// What a block upload left behind: the frames the client sent and the value it received.
 struct upload_out {
   transfer_out frames;
@@ -641,6 +683,15 @@ void add_sdo(bench::registry &reg) {
       reg, "sdo/block download 889 B, server, CRC table, on_frames 127",
       [](const transfer_in &in) { return server_block_download_batch<127, true, with_table>(in); },
       [](const transfer_in &in) { return hand_server_block_download<true>(in); });
+  // the same through the node (node::device::on_frames): what the device adds over the server
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, device, no CRC",
+      [](const transfer_in &in) { return device_block_download_batch<0>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
+  bench::add<g_transfers>(
+      reg, "sdo/block download 889 B, device, no CRC, on_frames 127",
+      [](const transfer_in &in) { return device_block_download_batch<127>(in); },
+      [](const transfer_in &in) { return hand_server_block_download<false>(in); });
   bench::add<g_transfers>(
       reg, "sdo/block download 889 B, server, no CRC, on_frames 8",
       [](const transfer_in &in) { return server_block_download_batch<8, false>(in); },
@@ -677,7 +728,8 @@ bool complete_transfers() {
         server_block_download_batch<127, true>(in),
         server_block_download_batch<127, true, with_table>(in),
         server_block_download_batch<8, false>(in), server_block_download_batch<8, true>(in),
-        server_block_download_batch<8, true, with_table>(in)}) {
+        server_block_download_batch<8, true, with_table>(in), device_block_download_batch<0>(in),
+        device_block_download_batch<127>(in)}) {
     if (!d.frames.done || d.frames.n != 3U || d.value != g_download_data[in.object]) {
       std::fprintf(stderr, "codec_sdo_block: a block download did not complete\n");
       return false;
@@ -704,6 +756,7 @@ bool complete_transfers() {
 
 int main(int argc, char **argv) {
   if (!g_block_store.init_defaults(sdo_node)) return 2;
+  if (!g_device.start(0)) return 2;
   fill_sdo_inputs();
   bench::registry reg;
   bench::add_harness<g_transfers>(reg);

@@ -54,6 +54,31 @@ constexpr bool whole_node() {
   return t.send.size() == 1 && t.send[0] == co::make_frame(0x70A, {0x05}).value();
 }
 static_assert(whole_node());
+
+/// device::on_frames in a constant expression: a frame for nobody, an SDO request (through the
+/// run for the server), an NMT start.
+constexpr bool batch_node() {
+  std::array<std::uint8_t, tiny_layout.storage_size()> storage{};
+  sdo::dictionary_store<> store{tiny, tiny_layout, storage};
+  if (!store.init_defaults(10)) return false;
+  node::device<sdo::dictionary_store<>, tiny_caps> dev(store, 10);
+  if (!dev.start(0)) return false;
+  const auto ch = sdo::channel::default_for(10).value();
+  const std::array<std::uint8_t, 2> period{100, 0};
+  const std::array<co::can_frame, 3> rx{
+      co::make_frame(0x123, {1}).value(),
+      ch.request(sdo::expedited_download({0x1017, 0}, period).value()),
+      co::make_frame(0, {0x01, 10}).value()};
+  auto b = dev.on_frames(rx, 1);
+  if (b.consumed != 2U || b.last.send.size() != 1U || b.last.send[0].data[0] != 0x60) return false;
+  b = dev.on_frames(std::span(rx).subspan(2), 1);
+  return b.consumed == 1U && b.last.state == co::nmt::state::operational &&
+         dev.events().size() == 1U && store.value({0x1017, 0}).value()[0] == 100U;
+}
+static_assert(batch_node());
 } // namespace
 
-TEST_CASE("device: the same sequence at run time") { CHECK(whole_node()); }
+TEST_CASE("device: the same sequence at run time") {
+  CHECK(whole_node());
+  CHECK(batch_node());
+}

@@ -27,6 +27,11 @@
 //
 // `node_glue` puts the commands on the node (node::device) and notes what the node does not
 // consume (TIME, other nodes' EMCY) for `!last`.
+//
+// With the environment variable FIELDCODEC_INTEROP_BATCH set, the frames that arrive on
+// standard input until it is quiet for 1 ms (or up to the next command line) go to the node
+// together, through node::device::on_frames, as a CAN driver hands over what it drained from
+// its receive FIFO (the tests interop_*_batch); without it, frame by frame through on_frame.
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
@@ -55,6 +60,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -219,6 +225,15 @@ public:
     note(f);
     transmit_all(dev_.on_frame(f, now).send);
   }
+  /// Several frames at once (FIELDCODEC_INTEROP_BATCH): device::on_frames until all are taken.
+  void on_frames(std::span<const co::can_frame> fs, std::uint32_t now) {
+    for (const co::can_frame &f : fs) note(f);
+    while (!fs.empty()) {
+      const auto r = dev_.on_frames(fs, now);
+      transmit_all(r.last.send);
+      fs = fs.subspan(r.consumed);
+    }
+  }
   void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
 
   [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
@@ -328,10 +343,19 @@ int run(Store &store, std::uint8_t node) {
   static Glue glue(node, store);
   client_side client;
   std::string pending;
+  const bool batch = std::getenv("FIELDCODEC_INTEROP_BATCH") != nullptr;
+  std::vector<co::can_frame> rx; // batch: the frames of this read so far
   for (;;) {
     pollfd p{STDIN_FILENO, POLLIN, 0};
-    const int ready = ::poll(&p, 1, 5);
+    // batch: frames wait while more arrive within 1 ms (a sub-block's segments come together)
+    const int ready = ::poll(&p, 1, rx.empty() ? 5 : 1);
     const std::uint32_t now = now_ms();
+    const auto flush = [&]() {
+      if (rx.empty()) return;
+      glue.on_frames(rx, now);
+      for (const co::can_frame &f : rx) client.on_frame(f, now);
+      rx.clear();
+    };
     if (ready > 0) {
       char buf[4096];
       const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
@@ -350,10 +374,15 @@ int run(Store &store, std::uint8_t node) {
           }
           auto f = fieldcodec::host::to_canopen(r.value());
           if (!f) continue;
+          if (batch) {
+            rx.push_back(f.value());
+            continue;
+          }
           glue.on_frame(f.value(), now);
           client.on_frame(f.value(), now);
           continue;
         }
+        flush(); // the frames before a command are taken before it
         const auto w = words(line);
         if (w[0] == "!quit") return 0;
         if (w[0] == "!start") {
@@ -412,9 +441,11 @@ int run(Store &store, std::uint8_t node) {
           answer_error(fieldcodec::errc::bad_syntax, {});
         }
       }
+      if (!rx.empty()) continue; // taken when the bus is quiet, or before the next command
     } else if (ready < 0) {
       return 2;
     }
+    flush();
     glue.poll(now);
     client.poll(now);
   }

@@ -9,6 +9,8 @@
 //   node::device<sdo::dictionary_store<>, node::capacity_for(dict)> dev(store, 5);
 //   send(dev.start(now).value());                   // boot-up, pre-operational
 //   on every received frame: send(dev.on_frame(frame, now));
+//   or several (a receive FIFO): auto r = dev.on_frames(rx, now); send(r.last);
+//                                rx = rx.subspan(r.consumed);  // until rx is empty
 //   at the deadline (or every tick): send(dev.poll(now));
 //   dev.set({0x6041, 0}, bytes);                    // the application's own values
 //   for (const node::event &e : dev.events()) ...   // what the last call did
@@ -162,6 +164,11 @@ class device {
 
 public:
   using step = canopen::step<nmt::state>;
+  /// What on_frames did with a run of received frames.
+  struct batch_step {
+    std::size_t consumed = 0; ///< frames taken from the front of the span (≥ 1 unless empty)
+    step last{};              ///< the step to act on: on_frame's step for the last frame taken
+  };
 
   /// The view of the store that the SDO servers and the PDO engine use: reads go to the store,
   /// writes through the device's rules (see above). The device's own; not for the
@@ -312,6 +319,71 @@ public:
     return finish(now);
   }
 
+  /// Several received frames in order (what a CAN driver took from its receive FIFO), each
+  /// exactly as on_frame(frame, now) takes it, all at the same `now`. It stops after the first
+  /// frame that answers — its step has frames to send, or the call reported events (events()
+  /// not empty: an NMT state change or reset, a SYNC, an RPDO, a heartbeat or guarding event)
+  /// — and returns {frames taken including that one, on_frame's step for it}; events() are that
+  /// frame's. Act on the step and the events, then call again with the rest. When no frame
+  /// answers, every frame is taken and `last` is the step on_frame gave for the last of them
+  /// (nothing to send, the state and deadline after them; events() empty). An empty span takes
+  /// nothing and changes nothing: consumed 0, nothing to send, the state and deadline as they
+  /// are, events() still those of the last call. Like on_frame it does not look at the
+  /// deadline: call poll(now) for that. So the frames sent, the events, the states and the
+  /// stored bytes are those of on_frame called for each frame
+  /// (tests/node/device_batch_test.cpp). A run of frames in front for one SDO server (its
+  /// request COB-ID, while the NMT state lets SDO through) goes to that server's on_frames in
+  /// one piece (sdo::server::on_frames: the segments of a block download without a step each);
+  /// every other frame, and the first of each call, goes through on_frame.
+  [[nodiscard]] constexpr batch_step on_frames(std::span<const can_frame> fs,
+                                               std::uint32_t now) noexcept {
+    if (fs.empty()) {
+      step s;
+      s.state = nmt_.state();
+      s.deadline = carry_ ? std::optional<std::uint32_t>(now) : deadline(now);
+      return {0, s};
+    }
+    // the first frame as on_frame takes it: it sends what an earlier call left (a burst's
+    // companions), and its end settles the node (its own EMCY after the application's set());
+    // after a frame that answered nothing, one more that answers nothing changes only what it
+    // was for
+    nmt::state before = nmt_.state();
+    step s = on_frame(fs[0], now);
+    std::size_t i = 1;
+    if (answered(s, before)) return {i, s};
+    while (i < fs.size()) {
+      before = nmt_.state();
+      const std::size_t k = sdo_server_for(fs[i]);
+      if (k == C.sdo_servers) {
+        s = on_frame(fs[i++], now);
+        if (answered(s, before)) return {i, s};
+        continue;
+      }
+      // the run: what routes as fs[i] does — the routing of a frame that is not a remote frame
+      // and has a DLC of at most 8 depends, within a call, only on its identifier
+      const std::uint16_t id = fs[i].id;
+      std::size_t n = 1;
+      while (i + n < fs.size() && fs[i + n].id == id && !fs[i + n].rtr &&
+             fs[i + n].dlc <= max_dlc) {
+        ++n;
+      }
+      // the server stops after its first frame that answers (frames, its state, a refusal) and
+      // every frame before it was for on_frame a call without effect beyond the server's (a
+      // store write always comes with a response): that frame as on_frame ends it
+      const sdo::batch_step r = sdo_.on_server_frames(k, fs.subspan(i, n), now);
+      i += r.consumed;
+      begin(now);
+      if (r.last.send.is_burst()) {
+        burst_ = r.last.send;
+      } else {
+        take(r.last);
+      }
+      s = finish(now);
+      if (answered(s, before)) return {i, s};
+    }
+    return {i, s};
+  }
+
   /// Time: heartbeat, consumer and life guarding timeouts, SDO timeouts, PDO timers, EMCY
   /// inhibit time.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
@@ -450,6 +522,21 @@ private:
       e.pdo = p;
       push_event(e);
     }
+  }
+  /// Did the call that returned `s` answer (see on_frames)? `before`: the state before it.
+  [[nodiscard]] constexpr bool answered(const step &s, nmt::state before) const noexcept {
+    return !s.send.empty() || !events_.span().empty() || s.state != before;
+  }
+  /// The SDO server on_frame would hand `f` to, or C.sdo_servers (on_frame's routing: the
+  /// checks before the SDO channels, then sdo_channels::server_of).
+  [[nodiscard]] constexpr std::size_t sdo_server_for(const can_frame &f) const noexcept {
+    const nmt::state s = nmt_.state();
+    if (!started_ || s == nmt::state::boot_up || f.id > max_can_id || f.dlc > max_dlc ||
+        f.id == cob_id::nmt || f.rtr || !allowed(s, service::sdo) ||
+        (f.id == sync_.cob_id() && allowed(s, service::sync))) {
+      return C.sdo_servers; // remote frames: guarding, or no server's (is_request)
+    }
+    return sdo_.server_of(f);
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!started_ || nmt_.state() == nmt::state::boot_up) return std::nullopt;

@@ -6,6 +6,7 @@
 //   node::sdo_channels<Store, 2, 1, 64> sdo(store, 5);
 //   sdo.reload(dictionary);                     // 1200h.. and 1280h.. from the store
 //   if (auto s = sdo.on_frame(frame, now)) ...  // taken by a server or client: its step
+//   sdo.on_server_frames(sdo.server_of(f), run, now);  // a run of frames for one server
 //   sdo.poll(now);                              // timeouts of every channel
 //   auto t = sdo.client(0).upload({0x1008, 0}, buffer, now);   // a transfer of client 0
 //
@@ -137,6 +138,21 @@ public:
       }
     }
     return std::nullopt;
+  }
+
+  /// The server that on_frame hands `f` to (the first whose request COB-ID it is), or
+  /// server_capacity() when it hands it to none (a client's frame, or no channel's).
+  [[nodiscard]] constexpr std::size_t server_of(const can_frame &f) const noexcept {
+    for (std::size_t i = 0; i < Servers; ++i) {
+      if (server_ok_[i] && servers_[i].connection().is_request(f)) return i;
+    }
+    return Servers;
+  }
+  /// Frames that server_of gives to server `i` (< server_capacity()), in order: that server's
+  /// on_frames (sdo::server::on_frames; what on_frame does for each of them).
+  [[nodiscard]] constexpr sdo::batch_step
+  on_server_frames(std::size_t i, std::span<const can_frame> fs, std::uint32_t now) noexcept {
+    return servers_[i].on_frames(fs, now);
   }
 
   /// Timeouts of every channel (each sends at most one abort).
