@@ -18,6 +18,7 @@
 
 #include <doctest/doctest.h>
 
+#include "batch_stream.hpp"
 #include "xorshift.hpp"
 
 #include <algorithm>
@@ -100,18 +101,10 @@ stream_counts run_stream(const stream_options &o) {
   stream_counts n;
 
   const auto from_server = [&](const co::frames &fs) {
-    for (const co::can_frame &f : fs) {
-      const std::size_t roll = below(1000);
-      if (roll < o.fault_per_mille / 3U) continue; // lost
-      if (roll < 2U * o.fault_per_mille / 3U) {    // a corrupted byte (often the first)
-        co::can_frame g = f;
-        g.data[below(2) == 0 ? 0U : below(8)] = static_cast<std::uint8_t>(r.next());
-        to_client.push_back(g);
-        continue;
-      }
-      to_client.push_back(f);
-      if (roll < o.fault_per_mille) to_client.push_back(f); // repeated
-    }
+    // a corrupted byte (often the first)
+    fc::test::send_over_faulty_link(fs, to_client, o.fault_per_mille, r, [&](co::can_frame &g) {
+      g.data[below(2) == 0 ? 0U : below(8)] = static_cast<std::uint8_t>(r.next());
+    });
   };
   const auto to_server = [&](const std::vector<co::can_frame> &fs) {
     for (const co::can_frame &f : fs) from_server(server.on_frame(f, now).send);
@@ -203,28 +196,10 @@ stream_counts run_stream(const stream_options &o) {
     // a few rounds of what is queued (a segmented transfer has one frame in flight)
     for (std::size_t round = 1U + below(16); round > 0U; --round) {
       if (round > 1U && to_client.empty()) continue;
-      chunk.clear();
-      for (std::size_t k = 1U + below(60); k > 0U && !to_client.empty(); --k) {
-        chunk.push_back(to_client.front());
-        to_client.pop_front();
-      }
-      if (below(100) < o.junk_percent) {
-        for (std::size_t k = 1U + below(3); k > 0U; --k) {
-          // (drawn one after the other: the order of a call's arguments is unspecified)
-          const std::size_t where = below(chunk.size() + 1U);
-          chunk.insert(chunk.begin() + static_cast<std::ptrdiff_t>(where), junk());
-        }
-      }
-      if (!chunk.empty() && below(10) == 0) { // two neighbours swapped
-        const std::size_t k = below(chunk.size());
-        if (k + 1U < chunk.size()) std::swap(chunk[k], chunk[k + 1U]);
-      }
+      fc::test::take_chunk(to_client, chunk, r, 60, o.junk_percent, 3, junk, true);
       // the chunk in random batches (sometimes empty ones), at the same `now`
-      std::size_t at = 0;
-      do {
-        const std::size_t len = below(8) == 0 ? 0 : 1U + below(chunk.size() - at + 1U);
-        const std::size_t take = len < chunk.size() - at ? len : chunk.size() - at;
-        const auto span = std::span<const co::can_frame>(chunk).subspan(at, take);
+      fc::test::in_random_batches(chunk, r, [&](std::span<const co::can_frame> span) {
+        const std::size_t take = span.size();
         const sdo::batch_step b = batch.client.on_frames(span, now);
         ++n.calls;
         const auto b_sent = list(b.last.send);
@@ -234,7 +209,7 @@ stream_counts run_stream(const stream_options &o) {
           CHECK(b.last.state == one.client.state());
           CHECK(b.last.deadline == one.client.deadline());
           same_clients();
-          continue;
+          return std::size_t{0};
         }
         REQUIRE(b.consumed >= 1U);
         REQUIRE(b.consumed <= take);
@@ -261,8 +236,8 @@ stream_counts run_stream(const stream_options &o) {
           to_server(sent);
         }
         same_clients();
-        at += b.consumed;
-      } while (at < chunk.size());
+        return b.consumed;
+      });
     }
   }
   return n;

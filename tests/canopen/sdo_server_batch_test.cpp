@@ -17,6 +17,7 @@
 
 #include <doctest/doctest.h>
 
+#include "batch_stream.hpp"
 #include "xorshift.hpp"
 
 #include <array>
@@ -100,18 +101,10 @@ stream_counts run_stream(const stream_options &o) {
   stream_counts n;
 
   const auto from_client = [&](const co::frames &fs) {
-    for (const co::can_frame &f : fs) {
-      const std::size_t roll = below(1000);
-      if (roll < o.fault_per_mille / 3U) continue; // lost
-      if (roll < 2U * o.fault_per_mille / 3U) {    // corrupted sequence number or command
-        co::can_frame g = f;
-        g.data[0] = static_cast<std::uint8_t>(r.next());
-        to_server.push_back(g);
-        continue;
-      }
-      to_server.push_back(f);
-      if (roll < o.fault_per_mille) to_server.push_back(f); // repeated
-    }
+    // a corrupted sequence number or command
+    fc::test::send_over_faulty_link(fs, to_server, o.fault_per_mille, r, [&](co::can_frame &g) {
+      g.data[0] = static_cast<std::uint8_t>(r.next());
+    });
   };
   const auto to_client = [&](const std::vector<co::can_frame> &fs) {
     for (const co::can_frame &f : fs) from_client(client.on_frame(f, now).send);
@@ -166,28 +159,10 @@ stream_counts run_stream(const stream_options &o) {
       REQUIRE(s.has_value());
       from_client(s.value().send);
     }
-    chunk.clear();
-    for (std::size_t k = 1U + below(60); k > 0U && !to_server.empty(); --k) {
-      chunk.push_back(to_server.front());
-      to_server.pop_front();
-    }
-    if (below(100) < o.junk_percent) {
-      for (std::size_t k = 1U + below(3); k > 0U; --k) {
-        // (drawn one after the other: the order of a call's arguments is unspecified)
-        const std::size_t where = below(chunk.size() + 1U);
-        chunk.insert(chunk.begin() + static_cast<std::ptrdiff_t>(where), junk());
-      }
-    }
-    if (!chunk.empty() && below(10) == 0) { // two neighbours swapped
-      const std::size_t k = below(chunk.size());
-      if (k + 1U < chunk.size()) std::swap(chunk[k], chunk[k + 1U]);
-    }
+    fc::test::take_chunk(to_server, chunk, r, 60, o.junk_percent, 3, junk, true);
     // the chunk in random batches (sometimes empty ones), at the same `now`
-    std::size_t at = 0;
-    do {
-      const std::size_t len = below(8) == 0 ? 0 : 1U + below(chunk.size() - at + 1U);
-      const std::size_t take = len < chunk.size() - at ? len : chunk.size() - at;
-      const auto span = std::span<const co::can_frame>(chunk).subspan(at, take);
+    fc::test::in_random_batches(chunk, r, [&](std::span<const co::can_frame> span) {
+      const std::size_t take = span.size();
       const sdo::batch_step b = batch.server.on_frames(span, now);
       ++n.calls;
       const auto b_sent = list(b.last.send);
@@ -197,7 +172,7 @@ stream_counts run_stream(const stream_options &o) {
         CHECK(b.last.state == one.server.state());
         CHECK(b.last.deadline == one.server.deadline());
         same_machines();
-        continue;
+        return std::size_t{0};
       }
       REQUIRE(b.consumed >= 1U);
       REQUIRE(b.consumed <= take);
@@ -224,8 +199,8 @@ stream_counts run_stream(const stream_options &o) {
         to_client(sent);
       }
       same_machines();
-      at += b.consumed;
-    } while (at < chunk.size());
+      return b.consumed;
+    });
   }
   return n;
 }

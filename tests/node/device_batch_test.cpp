@@ -16,6 +16,7 @@
 
 #include <fieldcodec/canopen/sdo_client.hpp>
 
+#include "batch_stream.hpp"
 #include "xorshift.hpp"
 
 #include <deque>
@@ -80,18 +81,10 @@ stream_counts run_stream(const stream_options &o) {
     CHECK(batch.dev.lost() == 0U);
   };
   const auto from_client = [&](const co::frames &fs) {
-    for (const co::can_frame &f : fs) {
-      const std::size_t roll = below(1000);
-      if (roll < o.fault_per_mille / 3U) continue; // lost
-      if (roll < 2U * o.fault_per_mille / 3U) {    // corrupted sequence number or command
-        co::can_frame g = f;
-        g.data[0] = static_cast<std::uint8_t>(r.next());
-        to_node.push_back(g);
-        continue;
-      }
-      to_node.push_back(f);
-      if (roll < o.fault_per_mille) to_node.push_back(f); // repeated
-    }
+    // a corrupted sequence number or command
+    fc::test::send_over_faulty_link(fs, to_node, o.fault_per_mille, r, [&](co::can_frame &g) {
+      g.data[0] = static_cast<std::uint8_t>(r.next());
+    });
   };
   // what the node sent: the client takes its responses, the counts take the rest
   const auto sent_by_node = [&](const std::vector<co::can_frame> &fs, std::uint32_t now) {
@@ -240,23 +233,10 @@ stream_counts run_stream(const stream_options &o) {
       from_client(client.poll(one.now).send);
     }
     if (!client.busy() && to_node.empty()) new_transfer(one.now);
-    chunk.clear();
-    for (std::size_t k = 1U + below(150); k > 0U && !to_node.empty(); --k) {
-      chunk.push_back(to_node.front());
-      to_node.pop_front();
-    }
-    if (below(100) < o.other_percent) {
-      for (std::size_t k = 1U + below(4); k > 0U; --k) {
-        const std::size_t where = below(chunk.size() + 1U);
-        chunk.insert(chunk.begin() + static_cast<std::ptrdiff_t>(where), other());
-      }
-    }
+    fc::test::take_chunk(to_node, chunk, r, 150, o.other_percent, 4, other, false);
     // the chunk in random batches (sometimes empty ones), at the same `now`
-    std::size_t at = 0;
-    do {
-      const std::size_t len = below(8) == 0 ? 0 : 1U + below(chunk.size() - at + 1U);
-      const std::size_t take = len < chunk.size() - at ? len : chunk.size() - at;
-      const auto span = std::span<const co::can_frame>(chunk).subspan(at, take);
+    fc::test::in_random_batches(chunk, r, [&](std::span<const co::can_frame> span) {
+      const std::size_t take = span.size();
       const auto events_before = events_of(batch.dev);
       const auto b = batch.dev.on_frames(span, batch.now);
       ++n.calls;
@@ -268,7 +248,7 @@ stream_counts run_stream(const stream_options &o) {
         CHECK(b.last.state == one.dev.state());
         CHECK(b_events == events_before); // nothing changed
         same_devices();
-        continue;
+        return std::size_t{0};
       }
       REQUIRE(b.consumed >= 1U);
       REQUIRE(b.consumed <= take);
@@ -294,8 +274,8 @@ stream_counts run_stream(const stream_options &o) {
         sent_by_node(sent, one.now);
       }
       same_devices();
-      at += b.consumed;
-    } while (at < chunk.size());
+      return b.consumed;
+    });
   }
   return n;
 }
