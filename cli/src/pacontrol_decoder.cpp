@@ -1,6 +1,7 @@
 // fieldcodec CLI — PA-CONTROL RS232 captures.
 #include "pacontrol_decoder.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/host/quoted_bytes.hpp>
 #include <fieldcodec/pacontrol/codes.hpp>
@@ -16,13 +17,6 @@ namespace fieldcodec::cli {
 namespace ser = pacontrol::serial;
 
 namespace {
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
 
 std::string value_text(const pacontrol::value &v) {
   return decimal_text(v.number) +
@@ -74,7 +68,7 @@ bool looks_like_hex(std::string_view bytes) {
     }
     if (c == '#') {
       comment = true;
-    } else if (hex_digit(c) >= 0) {
+    } else if (ascii::hex_value(c) >= 0) {
       any = true;
     } else if (c == 'x' && i > 0 && bytes[i - 1] == '0') {
       continue;
@@ -98,8 +92,8 @@ bool parse_hex_capture(std::string_view text, std::vector<std::uint8_t> &out, st
       return false;
     }
     for (std::size_t i = 0; i < t.size(); i += 2U) {
-      const int hi = hex_digit(t[i]);
-      const int lo = hex_digit(t[i + 1U]);
+      const int hi = ascii::hex_value(t[i]);
+      const int lo = ascii::hex_value(t[i + 1U]);
       if (hi < 0 || lo < 0) {
         error = "line " + std::to_string(line) + ": not hex: '" + t + "'";
         return false;

@@ -1,6 +1,7 @@
 // fieldcodec CLI — small text helpers.
 #include "util.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/decimal.hpp>
 
 #include <charconv>
@@ -119,19 +120,17 @@ std::string real_text(double v) {
 }
 
 bool parse_uint(std::string_view s, std::uint64_t max, std::uint64_t &out) {
-  int base = 10;
+  bool hex = false;
   if (s.size() > 2U && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
     s.remove_prefix(2);
-    base = 16;
+    hex = true;
   } else if (s.size() > 1U && (s.back() == 'h' || s.back() == 'H')) {
     s.remove_suffix(1);
-    base = 16;
+    hex = true;
   }
-  if (s.empty()) return false;
-  std::uint64_t v = 0;
-  auto r = std::from_chars(s.data(), s.data() + s.size(), v, base);
-  if (r.ec != std::errc{} || r.ptr != s.data() + s.size() || v > max) return false;
-  out = v;
+  const auto v = hex ? ascii::parse_hex(s) : ascii::parse_unsigned(s);
+  if (!v || v.value() > max) return false;
+  out = v.value();
   return true;
 }
 

@@ -3,6 +3,7 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/od/value.hpp>
 
 #include <algorithm>
@@ -303,20 +304,12 @@ struct classified {
   std::uint8_t sub = 0;
 };
 
+/// 1..max upper-case hex digits (the section name is upper-cased first).
 bool hex_digits(std::string_view s, std::size_t max, std::uint32_t &v) {
-  if (s.empty() || s.size() > max) return false;
-  v = 0;
-  for (const char c : s) {
-    unsigned d = 0;
-    if (c >= '0' && c <= '9') {
-      d = static_cast<unsigned>(c - '0');
-    } else if (c >= 'A' && c <= 'F') {
-      d = static_cast<unsigned>(c - 'A' + 10);
-    } else {
-      return false;
-    }
-    v = v * 16U + d;
-  }
+  if (s.size() > max) return false;
+  const auto r = ascii::parse_hex(s, ascii::hex_case::upper);
+  if (!r) return false;
+  v = static_cast<std::uint32_t>(r.value());
   return true;
 }
 

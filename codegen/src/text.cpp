@@ -1,5 +1,7 @@
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -174,10 +176,8 @@ int_parse parse_int(std::string_view s) {
   std::uint64_t v = 0;
   for (std::size_t k = i; k < end; ++k) {
     const char c = s[k];
-    unsigned d = 99;
-    if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
-    if (c >= 'a' && c <= 'f') d = static_cast<unsigned>(c - 'a' + 10);
-    if (c >= 'A' && c <= 'F') d = static_cast<unsigned>(c - 'A' + 10);
+    const int hex = ascii::hex_value(c);
+    const unsigned d = hex < 0 ? 99U : static_cast<unsigned>(hex);
     if (d >= base) {
       const char *what = base == 16  ? "a hexadecimal digit"
                          : base == 8 ? "an octal digit"
@@ -306,15 +306,6 @@ nodeid_expr split_nodeid(std::string_view s) noexcept {
   return x;
 }
 
-namespace {
-int hex_value(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-} // namespace
-
 std::optional<std::string> byte_string_value(od::data_type type, std::string_view text) {
   switch (type) {
   case od::data_type::visible_string:
@@ -367,8 +358,8 @@ std::optional<std::string> byte_string_value(od::data_type type, std::string_vie
         continue;
       }
       if (i + 1U >= text.size()) return std::nullopt;
-      const int hi = hex_value(text[i]);
-      const int lo = hex_value(text[i + 1U]);
+      const int hi = ascii::hex_value(text[i]);
+      const int lo = ascii::hex_value(text[i + 1U]);
       if (hi < 0 || lo < 0) return std::nullopt;
       out += static_cast<char>(hi * 16 + lo);
       i += 2;

@@ -13,6 +13,7 @@
 // Pure text: the caller reads and writes the lines.
 #pragma once
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 
@@ -25,12 +26,6 @@
 namespace fieldcodec::host::candump {
 
 namespace detail {
-[[nodiscard]] constexpr int hex_value(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
 [[nodiscard]] constexpr bool is_blank(char c) noexcept {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
@@ -86,7 +81,7 @@ namespace detail {
   if (id.size() != 3U && id.size() != 8U) return errc::bad_syntax;
   std::uint32_t value = 0;
   for (const char c : id) {
-    const int v = detail::hex_value(c);
+    const int v = ascii::hex_value(c);
     if (v < 0) return errc::bad_digit;
     value = value * 16U + static_cast<std::uint32_t>(v);
   }
@@ -120,10 +115,10 @@ namespace detail {
       ++i;
       continue;
     }
-    const int hi = detail::hex_value(rest[i]);
+    const int hi = ascii::hex_value(rest[i]);
     if (hi < 0) return rest[i] == '.' ? errc::bad_syntax : errc::bad_digit;
     if (i + 1U >= rest.size()) return errc::truncated;
-    const int lo = detail::hex_value(rest[i + 1U]);
+    const int lo = ascii::hex_value(rest[i + 1U]);
     if (lo < 0) return errc::bad_digit;
     if (n == 8U) return errc::too_long;
     r.data[n++] = static_cast<std::uint8_t>(hi * 16 + lo);

@@ -20,6 +20,7 @@
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/od/address.hpp>
 
 #include <chrono>
@@ -106,11 +107,7 @@ public:
   [[nodiscard]] const sdo_options &options() const noexcept { return options_; }
 
 private:
-  std::uint32_t now() const noexcept {
-    return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                          std::chrono::steady_clock::now() - start_)
-                                          .count());
-  }
+  std::uint32_t now() const noexcept { return clock_.now(); }
 
   bool send_all(const canopen::sdo::step &s) {
     for (const canopen::can_frame &f : s.send) {
@@ -190,7 +187,7 @@ private:
   canopen::sdo::client client_;
   std::vector<std::uint8_t> buffer_;
   sdo_error error_{};
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  steady_ms clock_;
 };
 
 /// Read `a` of `node`: its bytes, or why not (sdo_error: code, abort code, address, one line).

@@ -19,6 +19,7 @@
 #ifdef FIELDCODEC_HAS_TERMIOS
 
 #include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
 #include <fieldcodec/host/frame_record.hpp>
@@ -108,20 +109,10 @@ inline constexpr std::uint8_t bus_error = 0x80U;
 } // namespace status_flags
 
 namespace detail {
-[[nodiscard]] constexpr int hex(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
+/// A field of at most 8 hex digits (core/ascii's parser). Errors: bad_digit.
 [[nodiscard]] constexpr result<std::uint32_t> hex_field(std::string_view s) noexcept {
-  std::uint32_t v = 0;
-  for (const char c : s) {
-    const int d = hex(c);
-    if (d < 0) return errc::bad_digit;
-    v = v * 16U + static_cast<std::uint32_t>(d);
-  }
-  return v;
+  FIELDCODEC_TRY(const std::uint64_t v, ascii::parse_hex(s));
+  return static_cast<std::uint32_t>(v);
 }
 } // namespace detail
 
