@@ -181,15 +181,13 @@ can_decoder::node_state &can_decoder::node(std::uint8_t n) {
   node_state &s = nodes_[n];
   pdo_dirty_ = true;
   auto d = dicts_.find(n);
-  if (d == dicts_.end()) {
-    auto all = dicts_.find(0);
-    if (all != dicts_.end()) d = dicts_.emplace(n, all->second.for_node(n)).first;
-  }
-  if (d != dicts_.end()) {
-    s.dict = &d->second;
-    s.family = d->second.family();
-  }
+  if (d == dicts_.end()) d = dicts_.find(0);
+  if (d != dicts_.end()) s.family = d->second.family();
   if (auto f = families_.find(n); f != families_.end()) s.family = f->second;
+  if (d != dicts_.end()) {
+    // node-ID-relative values resolved for n, the vendor units of its family applied
+    s.dict = &built_.insert_or_assign(n, d->second.for_node(n, s.family)).first->second;
+  }
   // PDO communication and mapping as configured in the dictionary (DCF values, else defaults);
   // without a dictionary: the predefined COB-IDs of PDO 1..4, mappings unknown
   for (std::size_t k = 0; k < 4U; ++k) {
@@ -198,17 +196,17 @@ can_decoder::node_state &can_decoder::node(std::uint8_t n) {
   }
   if (s.dict != nullptr) {
     for (const object_desc &o : s.dict->objects()) {
-      const auto p = pdo_param_of(o.core.index);
+      const auto p = pdo_param_of(o.d.index);
       if (!p || !o.configured) continue;
       pdo_config &c = p->rpdo ? s.rpdo[p->n] : s.tpdo[p->n];
       const auto v = static_cast<std::uint32_t>(*o.configured);
-      if (!p->mapping && o.core.sub == 1) {
+      if (!p->mapping && o.d.sub == 1) {
         c.cob_id = v;
-      } else if (p->mapping && o.core.sub == 0) {
+      } else if (p->mapping && o.d.sub == 0) {
         c.count = static_cast<std::uint8_t>(v);
         c.mapping_known = true;
-      } else if (p->mapping && o.core.sub <= 64) {
-        c.map[o.core.sub - 1U] = v;
+      } else if (p->mapping && o.d.sub <= 64) {
+        c.map[o.d.sub - 1U] = v;
       }
     }
   }

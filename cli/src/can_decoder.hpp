@@ -104,7 +104,8 @@ private:
   void sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool aborted);
   void apply_write(std::uint8_t n, od::address a, std::span<const std::uint8_t> bytes);
 
-  std::map<std::uint8_t, node_dictionary> dicts_;
+  std::map<std::uint8_t, node_dictionary> dicts_; ///< as loaded: by node, 0 for every node
+  std::map<std::uint8_t, node_dictionary> built_; ///< for each node seen: resolved, units applied
   std::map<std::uint8_t, device_family> families_;
   options options_;
   std::map<std::uint8_t, node_state> nodes_;

@@ -25,7 +25,7 @@ namespace t = fieldcodec::test;
 
 namespace {
 
-const std::string peer_dir = "../../shared/peers/python-canopen";
+const std::string peer_dir = std::string(FIELDCODEC_SHARED_DIR) + "/peers/python-canopen";
 
 bool python_ready() {
   if (::access((peer_dir + "/canopen/__init__.py").c_str(), R_OK) != 0) return false;
@@ -175,7 +175,10 @@ TEST_CASE("cli: sdo read and write against python-canopen over slcan") {
   r = cli({"sdo", "read", "5", "1008", "--block"});
   CHECK(r.code == 1);
   CHECK(r.err == "fieldcodec: sdo read: node 5, 1008h:00: unexpected frame (sent SDO abort "
-                 "05040001h: client/server command specifier invalid or unknown)\n");
+                 "05040001h: client/server command specifier invalid or unknown) (with --block: "
+                 "the node may not support block transfer, or answers a block upload with a "
+                 "normal upload; try without --block, or allow the switch with "
+                 "--switch-threshold 127)\n");
   // ... and followed when the client allows the switch
   r = cli({"sdo", "read", "5", "1008", "--block", "--switch-threshold", "127"});
   CHECK(r.err == "");

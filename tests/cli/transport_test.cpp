@@ -73,8 +73,8 @@ TEST_CASE("cli: sdo read and write over slcan") {
   // usage errors: exit 2, before anything is sent
   r = t::run_cli({"sdo", "write", "5", "6040:0", "x", "--slcan", port, "--dict", xenax_eds});
   CHECK(r.code == 2);
-  CHECK(r.err == "fieldcodec: sdo write: not a number: 'x' (bad digit) (try 'fieldcodec sdo "
-                 "write --help')\n");
+  CHECK(r.err == "fieldcodec: sdo write: node 5, 6040h:00 Controlword: 'x': bad digit at "
+                 "character 1 (nothing sent)\n");
   r = t::run_cli({"sdo", "write", "5", "6040:0", "70000", "--slcan", port, "--dict", xenax_eds});
   CHECK(r.code == 2);
   r = t::run_cli({"sdo", "write", "5", "6040:0", "1", "--slcan", port});
@@ -136,9 +136,9 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
   // the times are the host's: compare what follows them
   const auto lines = fieldcodec::cli::split_lines(r.out);
   REQUIRE(lines.size() == 2);
-  CHECK(lines[0].substr(lines[0].find(' ')) == " 705 HEARTBEAT node 5: operational");
+  CHECK(lines[0].substr(lines[0].find(' ')) == " slcan0 705 HEARTBEAT node 5: operational");
   CHECK(lines[1].substr(lines[1].find(' ')) ==
-        " 185 TPDO1     node 5: Statusword = 0x0637 (operation enabled, target reached)");
+        " slcan0 185 TPDO1     node 5: Statusword = 0x0637 (operation enabled, target reached)");
   std::string untimed;
   for (const auto l : lines) untimed += "<time>" + std::string(l.substr(l.find(' '))) + "\n";
   t::check_golden("monitor.txt", untimed);
@@ -220,6 +220,18 @@ TEST_CASE("cli: --help for every command, usage errors") {
     CHECK(r.out.rfind("usage: fieldcodec", 0) == 0);
     CHECK(r.err == "");
   }
+  // "help COMMAND" is the command's --help (it printed the general help)
+  for (const auto &[asked, same] :
+       std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>>{
+           {{"help", "decode"}, {"decode", "--help"}},
+           {{"help", "sdo", "write"}, {"sdo", "write", "--help"}},
+           {{"help", "pacontrol", "send"}, {"pacontrol", "send", "--help"}}}) {
+    const auto h = t::run_cli(asked);
+    CHECK(h.code == 0);
+    CHECK(h.out == t::run_cli(same).out);
+  }
+  CHECK(t::run_cli({"help", "decode"}).out.rfind("usage: fieldcodec decode", 0) == 0);
+  CHECK(t::run_cli({"help", "frobnicate"}).code == 2);
   auto r = t::run_cli({});
   CHECK(r.code == 2);
   r = t::run_cli({"frobnicate"});

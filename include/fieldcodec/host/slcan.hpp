@@ -186,6 +186,9 @@ struct slcan_options {
   /// pseudo-terminal, e.g. python-can's slcan interface).
   bool check_answers = true;
   std::chrono::milliseconds answer_timeout{500};
+  /// The interface name received records carry (a candump log needs one): "slcan0", what
+  /// can-utils' slcand calls the first adapter.
+  interface_name iface = interface_name::make("slcan0").value();
 };
 
 /// An slcan adapter on a serial port as a CAN bus.
@@ -204,6 +207,7 @@ public:
     if (!code)
       return fail(errc::invalid_argument, 0, "no slcan bit rate " + std::to_string(bitrate));
     if (auto s = port_.open(path, o.line); !s) return fail_port();
+    iface_ = o.iface;
     return start(code.value(), o);
   }
 
@@ -215,6 +219,7 @@ public:
     if (!code)
       return fail(errc::invalid_argument, 0, "no slcan bit rate " + std::to_string(bitrate));
     if (auto s = port_.adopt(fd, name, o.line); !s) return fail_port();
+    iface_ = o.iface;
     return start(code.value(), o);
   }
 
@@ -236,6 +241,7 @@ public:
       if (!d) return fail(d.error(), 0, "bad line from the adapter: " + printable(l));
       if (d.value().kind != slcan::line_kind::frame) continue;
       frame_record r = d.value().record;
+      r.iface = iface_;
       const auto now = std::chrono::system_clock::now().time_since_epoch();
       r.time = timestamp::from_microseconds(
           std::chrono::duration_cast<std::chrono::microseconds>(now).count());
@@ -355,6 +361,7 @@ private:
   errc fail_port() { return can_bus::fail(port_.last_error()); }
 
   serial_port port_;
+  interface_name iface_ = interface_name::make("slcan0").value();
   std::string buffer_;
 };
 

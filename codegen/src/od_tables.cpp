@@ -1,0 +1,78 @@
+// fieldcodec-gen — a dictionary read at run time as od tables.
+#include "od_tables.hpp"
+
+#include <algorithm>
+
+namespace fieldcodec::gen {
+
+od::text od_tables::keep(std::string_view s) {
+  if (s.empty()) return od::text{};
+  texts_.emplace_back(s);
+  return od::text{std::string_view(texts_.back())};
+}
+
+od_tables::od_tables(const dictionary &d, od_table_options o) {
+  std::size_t n = 0;
+  for (const entry &e : d.entries) n += e.count;
+  entries_.reserve(n);
+  infos_.reserve(n);
+  scales_.reserve(n);
+  display_names_.reserve(n);
+  for (const entry &e : d.entries) {
+    for (std::uint16_t k = 0; k < e.count; ++k) {
+      od::descriptor x{};
+      x.index = e.index;
+      x.sub = static_cast<std::uint8_t>(e.sub + k);
+      x.object = e.object;
+      x.type = e.type;
+      x.access_type = e.access;
+      x.pdo = e.pdo;
+      std::uint16_t flags = e.flags;
+      if (e.scaled) flags |= od::flag::scaled;
+      if (e.default_nodeid) flags |= od::flag::default_nodeid;
+      if (e.low_nodeid) flags |= od::flag::low_nodeid;
+      if (e.high_nodeid) flags |= od::flag::high_nodeid;
+      if (e.parameter_nodeid) flags |= od::flag::parameter_nodeid;
+      x.flags = flags;
+      if (od::is_byte_string(e.type)) {
+        x.size = e.size_declared || o.capacity_from_default ? e.size : 0U;
+      }
+      x.low = e.low;
+      x.high = e.high;
+      x.default_value = e.default_value;
+      x.default_text = keep(e.default_text.str());
+      std::string name = e.name;
+      if (e.count > 1U) name += std::to_string(x.sub);
+      x.info.name = keep(name);
+      x.info.unit = keep(e.unit.str());
+      x.info.denotation = keep(e.denotation);
+      x.info.parameter_value = e.parameter_value;
+      x.info.parameter_text = keep(e.parameter_text.str());
+      if (e.scaled) x.scale = scaling::linear{e.scale, e.offset};
+      if (!o.units.empty()) {
+        if (auto u = od::with_unit(x, o.units)) {
+          x = u.value();
+        } else {
+          unit_failures_.push_back({x.index, x.sub});
+        }
+      }
+      const auto obj = d.objects.find(e.index);
+      if (e.object == od::object_code::var || obj == d.objects.end() || obj->second.name.empty() ||
+          obj->second.name == name) {
+        display_names_.push_back(x.info.name.view());
+      } else {
+        display_names_.push_back(keep(obj->second.name + ": " + name).view());
+      }
+      entries_.push_back(static_cast<const od::entry &>(x));
+      infos_.push_back(x.info);
+      scales_.push_back(x.scale);
+    }
+  }
+}
+
+std::string_view od_tables::display_name(od::address a) const noexcept {
+  const std::size_t i = view().position(a);
+  return i < display_names_.size() ? display_names_[i] : std::string_view{};
+}
+
+} // namespace fieldcodec::gen
