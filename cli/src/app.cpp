@@ -67,25 +67,33 @@ transport (one of):
 
 constexpr const char *decode_help = R"(usage: fieldcodec decode [FILE] [OPTIONS]
 
-Reads a candump log (FILE, or standard input when FILE is '-' or missing) and
-writes one line per frame: NMT, SYNC, TIME, EMCY, PDO, heartbeat, node guarding,
-and one line per SDO transfer (expedited, segmented and block transfers are
-reassembled; aborts are spelled out). With a dictionary, objects are named and
-values shown in engineering units; PDOs are unpacked by the mapping the
-dictionary or the log's own SDO writes define.
+Reads what candump writes (FILE, or standard input when FILE is '-' or missing)
+and writes one line per frame: NMT, SYNC, TIME, EMCY, PDO, heartbeat, node
+guarding, LSS, and one line per SDO transfer (expedited, segmented and block
+transfers are reassembled; aborts are spelled out). With a dictionary, objects
+are named and values shown in engineering units; PDOs are unpacked by the mapping
+the dictionary or the log's own SDO writes define.
 
-Log lines: (1700000000.123456) can0 605#2B00180564000000, or 605#2B001805...,
-705#R; blank lines and lines starting with '#' are skipped.
+Input lines, as candump prints them:
+  (1700000000.123456) can0 605#2B00180564000000     candump -l / -L (log)
+    can0  605   [8]  2B 00 18 05 64 00 00 00          candump can0 (also -ta -tA
+                                                      -td -tz, -x, -a, -e)
+  605#2B00180564000000, 705#R                         the compact notation
+Blank lines and lines starting with '#' are skipped.
 
 options:
   --dict [NODE=]FILE  object dictionary (.eds, .dcf, .csv) of node NODE (1..127),
                       or of every node without its own when NODE= is left out
   --device NODE=KIND  device family of a node: generic, ds402, xenax, dpq
                       (default: from the dictionary)
+  --iface NAME        only frames of interface NAME (repeatable)
   --json              one JSON object per line instead of text
   --sdo-frames        also one line per SDO frame
   --pacontrol         the input is a PA-CONTROL RS232 capture instead
   --hex / --raw       the capture is hex text / raw bytes (default: detected)
+  --check-rule R      PA-CONTROL: which check rule a frame must follow:
+                      manual (default: requests body, acknowledgements body+ETX),
+                      either (both rules pass, the other one noted)
 
 exit status: 0, or 4 when some input could not be decoded, 3 unreadable file,
 5 unreadable dictionary.
@@ -383,10 +391,27 @@ void print_lines(const std::vector<decoded_line> &lines, bool json, std::ostream
 // ---------------------------------------------------------------------------------------------
 // decode
 
+std::string check_rule_error(const std::string &r) {
+  return "bad --check-rule " + r + " (manual, either, body, body+etx)";
+}
+
+/// --iface NAME (repeatable): only frames of these interfaces.
+struct interface_filter {
+  std::set<std::string> names;
+  explicit interface_filter(const options &o) {
+    for (auto [it, end] = o.values.equal_range("--iface"); it != end; ++it) {
+      names.insert(it->second);
+    }
+  }
+  [[nodiscard]] bool passes(const host::frame_record &r) const {
+    return names.empty() || names.count(std::string(r.iface.view())) != 0U;
+  }
+};
+
 int cmd_decode(const std::vector<std::string> &args, context c) {
   options o;
   std::string error;
-  if (!parse_options(args, 1, {"--dict", "--device"},
+  if (!parse_options(args, 1, {"--dict", "--device", "--iface", "--check-rule"},
                      {"--json", "--sdo-frames", "--pacontrol", "--hex", "--raw"}, o, error)) {
     return c.usage(error);
   }
@@ -414,7 +439,13 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     } else {
       bytes.assign(input.begin(), input.end());
     }
-    const auto lines = decode_pacontrol(bytes);
+    auto checks = default_decode_checks();
+    if (o.given("--check-rule")) {
+      const auto r = parse_check_rule(o.get("--check-rule"));
+      if (!r) return c.usage(check_rule_error(o.get("--check-rule")));
+      checks = *r;
+    }
+    const auto lines = decode_pacontrol(bytes, checks);
     print_lines(lines, json, c.out);
     for (const auto &l : lines) {
       problems = problems || l.function == "MALFORMED" || l.function == "NOISE" ||
@@ -423,7 +454,9 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     }
     return problems ? exit_input : exit_ok;
   }
-  if (o.has("--hex") || o.has("--raw")) return c.usage("--hex and --raw go with --pacontrol");
+  if (o.has("--hex") || o.has("--raw") || o.given("--check-rule")) {
+    return c.usage("--hex, --raw and --check-rule go with --pacontrol");
+  }
   std::map<std::uint8_t, node_dictionary> dicts;
   std::map<std::uint8_t, device_family> families;
   int code = exit_ok;
@@ -431,18 +464,21 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
   can_decoder dec(std::move(dicts), std::move(families), {o.has("--sdo-frames")});
   std::vector<decoded_line> lines;
   std::size_t n = 0;
-  // line by line, so that `candump -L can0 | fieldcodec decode` shows frames as they come
+  const interface_filter only(o);
+  // line by line, so that `candump can0 | fieldcodec decode` shows frames as they come
   std::string line;
   while (std::getline(in, line)) {
     ++n;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    const std::string_view raw = line;
+    std::string_view raw = line;
+    if (n == 1U && raw.substr(0, 3) == "\xEF\xBB\xBF") raw.remove_prefix(3); // UTF-8 BOM
     if (host::candump::is_blank_or_comment(raw)) continue;
-    auto r = host::candump::parse_line(raw);
-    if (!r) {
+    if (raw.substr(0, 9) == "DROPCOUNT") { // candump -d: frames the kernel dropped
+      dec.note(raw, n, lines);
+    } else if (auto r = host::candump::parse_line(raw); !r) {
       dec.malformed(raw, r.error(), n, lines);
       problems = true;
-    } else {
+    } else if (only.passes(r.value())) {
       dec.feed(r.value(), n, lines);
     }
     print_lines(lines, json, c.out);
@@ -609,9 +645,10 @@ int sdo_common(const std::vector<std::string> &args, context &c, bool write, opt
   return exit_ok;
 }
 
-/// The line `sdo read` prints for a value (and `sdo write` for what it sent).
+/// The line `sdo read` prints for a value (and `sdo write` for what it sent): with --json also
+/// the bytes ("bytes" that came, "sent" that went).
 std::string value_line(const sdo_target &t, const formatted_value &f, bool json,
-                       std::span<const std::uint8_t> sent = {}) {
+                       std::span<const std::uint8_t> bytes, bool sent) {
   if (json) {
     json_object j;
     j.num("node", t.node).unum("index", t.a.index).unum("sub", t.a.sub);
@@ -621,10 +658,8 @@ std::string value_line(const sdo_target &t, const formatted_value &f, bool json,
       s.pop_back();
       s += "," + f.json.text().substr(1);
     }
-    if (!sent.empty()) {
-      s.pop_back();
-      s += ",\"sent\":" + json_string(hex_bytes(sent, "")) + "}";
-    }
+    s.pop_back();
+    s += std::string(sent ? ",\"sent\":" : ",\"bytes\":") + json_string(hex_bytes(bytes, "")) + "}";
     return s;
   }
   const std::string name = t.dict && t.desc != nullptr ? " " + t.desc->name : std::string();
@@ -662,7 +697,7 @@ int cmd_sdo_read(const std::vector<std::string> &args, context c) {
   value_context ctx;
   const device_family fam = t.dict ? t.dict->family() : device_family::generic;
   const auto f = format_value(t.desc, t.a, bytes, fam, ctx, o.has("--raw"));
-  c.out << value_line(t, f, o.has("--json")) << "\n";
+  c.out << value_line(t, f, o.has("--json"), bytes, false) << "\n";
   return exit_ok;
 }
 
@@ -689,7 +724,7 @@ int cmd_sdo_write(const std::vector<std::string> &args, context c) {
   value_context ctx;
   const device_family fam = t.dict ? t.dict->family() : device_family::generic;
   const auto f = format_value(t.desc, t.a, v.bytes, fam, ctx, raw);
-  c.out << value_line(t, f, o.has("--json"), v.bytes) << "\n";
+  c.out << value_line(t, f, o.has("--json"), v.bytes, true) << "\n";
   return exit_ok;
 }
 
@@ -857,8 +892,10 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   namespace cmds = dictionaries::pacontrol_commands;
   options o;
   std::string error;
-  if (!parse_options(args, 2, {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout"},
-                     {"--rts-cts", "--json"}, o, error)) {
+  if (!parse_options(
+          args, 2,
+          {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout", "--check-rule"},
+          {"--rts-cts", "--json"}, o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -897,9 +934,12 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   line.rts_cts = o.has("--rts-cts");
   if (!host::check(line)) return c.usage("unsupported line settings (baud rate?)");
   std::uint64_t timeout = 1000;
-  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
-    return c.usage("bad --timeout");
-  }
+  if (int bad = exit_ok; !parse_timeout(o, c, timeout, bad)) return bad;
+  host::pacontrol_options link_options;
+  auto checks = parse_check_rule(o.get("--check-rule", "manual"));
+  if (!checks) return c.usage(check_rule_error(o.get("--check-rule")));
+  link_options.check = *checks;
+  link_options.request_rule = checks->request;
   const std::string &name = o.positional[1];
   const bool poll = name == "poll";
   const od::command *cmd = nullptr;
@@ -919,32 +959,59 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
       return c.usage("bad parameter '" + o.positional[2] + "'");
     }
     const auto p = static_cast<std::uint16_t>(par);
+    const std::string cname(cmd->name);
+    auto range = [](const od::number &lo, const od::number &hi) {
+      auto text = [](const od::number &n) {
+        auto d = n.to_decimal();
+        return d ? decimal_text(d.value()) : std::string("?");
+      };
+      return text(lo) + ".." + text(hi);
+    };
+    if (!cmd->check_parameter(p)) {
+      return c.usage(cname + ": parameter " + std::to_string(p) + " is outside " +
+                     range(cmd->parameter_min, cmd->parameter_max));
+    }
+    const bool takes_date = cmd->date_type != od::command_value::none;
+    const std::string date_kind =
+        cmd->date_type == od::command_value::real ? "a real date" : "an integer date";
+    if (takes_date && o.positional.size() < 4U) {
+      return c.usage(cname + " takes " + date_kind + ": PARAMETER DATE" +
+                     (cmd->date_min || cmd->date_max
+                          ? " (" + range(cmd->date_min, cmd->date_max) + ")"
+                          : std::string()));
+    }
+    if (!takes_date && o.positional.size() > 3U) {
+      return c.usage(cname + " takes no date (PARAMETER only)");
+    }
     result<pacontrol::serial::request> r = errc::invalid_argument;
-    if (o.positional.size() > 3U) {
+    if (takes_date) {
       const std::string &date = o.positional[3];
       auto dec = parse_decimal(std::string_view(date));
-      if (!dec) return c.usage("bad date '" + date + "'");
-      if (pacontrol::request_date_type(*cmd) == od::command_value::real) {
+      if (!dec)
+        return c.usage("bad date '" + date + "' (" + std::string(to_string(dec.error())) + ")");
+      if (cmd->date_type == od::command_value::real) {
         auto val = pacontrol::value::of_real(dec.value());
-        if (!val) return c.usage("bad date '" + date + "'");
+        if (!val)
+          return c.usage("bad date '" + date + "' (" + std::string(to_string(val.error())) + ")");
         r = pacontrol::make_request(*cmd, p, val.value());
       } else {
-        if (dec.value().places != 0U)
-          return c.usage("the date of " + std::string(cmd->name) + " is an integer");
+        if (dec.value().places != 0U) return c.usage("the date of " + cname + " is an integer");
         r = pacontrol::make_request(*cmd, p, dec.value().mantissa);
+      }
+      if (!r && r.error() == errc::out_of_range) {
+        return c.usage(cname + ": date " + date + " is outside " +
+                       range(cmd->date_min, cmd->date_max));
       }
     } else {
       r = pacontrol::make_request(*cmd, p);
     }
-    if (!r) {
-      return c.usage(std::string(cmd->name) + ": " + std::string(to_string(r.error())) +
-                     " (parameter " + std::to_string(cmd->parameter_min.to_int64().value_or(0)) +
-                     ".." + std::to_string(cmd->parameter_max.to_int64().value_or(0)) + ")");
-    }
+    if (!r) return c.usage(cname + ": " + std::string(to_string(r.error())));
     req = r.value();
   }
   host::pacontrol_link link;
-  if (!link.open(o.positional[0], line)) return c.fail(exit_io, link.last_error().what);
+  if (!link.open(o.positional[0], line, link_options)) {
+    return c.fail(exit_io, link.last_error().what);
+  }
   auto ack = poll ? link.poll(std::chrono::milliseconds(timeout))
                   : link.transact(req, std::chrono::milliseconds(timeout));
   if (!ack) {
@@ -954,7 +1021,7 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   // the exchange, decoded as 'decode --pacontrol' shows it
   std::vector<std::uint8_t> both(link.sent().begin(), link.sent().end());
   both.insert(both.end(), link.received().begin(), link.received().end());
-  const auto lines = decode_pacontrol(both);
+  const auto lines = decode_pacontrol(both, link_options.check);
   print_lines(lines, o.has("--json"), c.out);
   if (ack.value().command_error_number != 0U) {
     auto t = pacontrol::describe_command_error(ack.value().command_error_number);

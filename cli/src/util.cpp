@@ -3,6 +3,7 @@
 
 #include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/utf8.hpp>
 
 #include <charconv>
 #include <cstdio>
@@ -57,8 +58,23 @@ json_object &json_object::raw(std::string_view k, std::string_view json) {
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";
-  for (const char c : s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const char c = s[i];
     const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x80U) {
+      const std::size_t n = utf8::sequence_length(s, i);
+      if (n != 0U) {
+        out.append(s.substr(i, n));
+        i += n;
+      } else {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04X", static_cast<unsigned>(u));
+        out += buf;
+        ++i;
+      }
+      continue;
+    }
     switch (c) {
     case '"': out += "\\\""; break;
     case '\\': out += "\\\\"; break;
@@ -74,9 +90,15 @@ std::string json_string(std::string_view s) {
         out += c;
       }
     }
+    ++i;
   }
   out += '"';
   return out;
+}
+
+std::string capped(std::string_view s, std::size_t max) {
+  if (s.size() <= max) return std::string(s);
+  return std::string(s.substr(0, max)) + "… (" + std::to_string(s.size()) + " characters)";
 }
 
 std::string hex_bytes(std::span<const std::uint8_t> b, std::string_view sep) {

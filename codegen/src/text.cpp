@@ -1,6 +1,7 @@
 #include "text.hpp"
 
 #include <fieldcodec/core/ascii.hpp>
+#include <fieldcodec/core/utf8.hpp>
 
 #include <algorithm>
 #include <array>
@@ -317,23 +318,9 @@ std::optional<std::string> byte_string_value(od::data_type type, std::string_vie
     std::string out;
     std::size_t i = 0;
     while (i < text.size()) { // the text is UTF-8 (the readers convert every file)
-      const auto c = static_cast<unsigned char>(text[i]);
-      std::uint32_t cp = c;
-      std::size_t n = 0;
-      if (c >= 0xF0U) {
-        cp = c & 0x07U;
-        n = 3;
-      } else if (c >= 0xE0U) {
-        cp = c & 0x0FU;
-        n = 2;
-      } else if (c >= 0xC0U) {
-        cp = c & 0x1FU;
-        n = 1;
-      }
-      for (std::size_t k = 1; k <= n && i + k < text.size(); ++k) {
-        cp = (cp << 6U) | (static_cast<unsigned char>(text[i + k]) & 0x3FU);
-      }
-      i += n + 1U;
+      auto next = utf8::next(text, i);
+      // not UTF-8 (a reader let it through): the byte as the code point it is in Latin-1
+      std::uint32_t cp = next ? next.value() : static_cast<unsigned char>(text[i++]);
       auto unit = [&](std::uint32_t u) {
         out += static_cast<char>(u & 0xFFU);
         out += static_cast<char>((u >> 8U) & 0xFFU);

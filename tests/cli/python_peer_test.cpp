@@ -14,7 +14,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdlib>
 #include <string>
 #include <thread>
@@ -125,27 +127,41 @@ private:
   std::string buffer_;
 };
 
+/// The python peer (node 5, cli/peer_node.eds) on one pseudo-terminal, the CLI on the other.
+struct python_session {
+  t::pty_pair python_side, cli_side;
+  pump joined{python_side, cli_side};
+  python_peer peer{python_side.path(), "cli/peer_node.eds"};
+
+  [[nodiscard]] bool ready() {
+    return python_side.ok() && cli_side.ok() && peer.line(20000) == "ready";
+  }
+  [[nodiscard]] std::string port() const { return cli_side.path(); }
+  /// The CLI with the link options and the peer's dictionary appended.
+  t::cli_result cli(std::vector<std::string> args) const {
+    for (const std::string &a : {std::string("--slcan"), port(), std::string("--slcan-no-answers"),
+                                 std::string("--dict"), std::string("cli/peer_node.eds")}) {
+      args.push_back(a);
+    }
+    return t::run_cli(args);
+  }
+};
+
+bool skip_without_python() {
+  if (python_ready()) return false;
+  MESSAGE("skipped: python-canopen peer (" << peer_dir << ") or python-can/pyserial not available");
+  return true;
+}
+
 } // namespace
 
 TEST_CASE("cli: sdo read and write against python-canopen over slcan") {
-  if (!python_ready()) {
-    MESSAGE("skipped: python-canopen peer (" << peer_dir
-                                             << ") or python-can/pyserial not available");
-    return;
-  }
-  t::pty_pair python_side, cli_side;
-  REQUIRE(python_side.ok());
-  REQUIRE(cli_side.ok());
-  pump joined(python_side, cli_side);
-  const std::string eds = "cli/peer_node.eds";
-  python_peer peer(python_side.path(), eds);
-  REQUIRE(peer.line(20000) == "ready");
-  const std::string port = cli_side.path();
-  const std::vector<std::string> link = {"--slcan", port, "--slcan-no-answers", "--dict", eds};
-  auto cli = [&link](std::vector<std::string> args) {
-    args.insert(args.end(), link.begin(), link.end());
-    return t::run_cli(args);
-  };
+  if (skip_without_python()) return;
+  python_session session;
+  REQUIRE(session.ready());
+  python_peer &peer = session.peer;
+  const std::string port = session.port();
+  auto cli = [&session](std::vector<std::string> args) { return session.cli(std::move(args)); };
 
   auto r = cli({"sdo", "read", "5", "1018:1"});
   CHECK(r.err == "");
@@ -187,4 +203,68 @@ TEST_CASE("cli: sdo read and write against python-canopen over slcan") {
   CHECK(r.code == 1);
   CHECK(r.err == "fieldcodec: sdo read: node 5, 1234h:00: SDO abort 06020000h: object not in the "
                  "object dictionary\n");
+}
+
+namespace {
+/// The value in a `sdo read` line: after " = ", a quoted string whole, else up to the first
+/// " (" (annotations: the raw number, a CiA 402 command) or " [".
+std::string value_of(const std::string &line) {
+  std::string v = line.substr(line.find(" = ") + 3U);
+  if (!v.empty() && v.back() == '\n') v.pop_back();
+  if (!v.empty() && v.front() == '"') {
+    std::size_t i = 1;
+    while (i < v.size() && v[i] != '"') i += v[i] == '\\' ? 2U : 1U;
+    return v.substr(0, i + 1U);
+  }
+  return v.substr(0, std::min(v.find(" ("), v.find(" [")));
+}
+/// A field of a JSON line ("bytes":"0102" → 0102).
+std::string json_field(const std::string &line, const std::string &key) {
+  const auto at = line.find("\"" + key + "\":\"");
+  if (at == std::string::npos) return {};
+  const auto start = at + key.size() + 4U;
+  return line.substr(start, line.find('"', start) - start);
+}
+std::string lower(std::string s) {
+  for (char &c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+} // namespace
+
+TEST_CASE("cli: what sdo read prints, sdo write sends back to python-canopen as the same bytes") {
+  if (skip_without_python()) return;
+  python_session session;
+  REQUIRE(session.ready());
+  python_peer &peer = session.peer;
+  auto cli = [&session](std::vector<std::string> args) { return session.cli(std::move(args)); };
+  // every writable object of the EDS: read, write back the printed text, compare the bytes
+  for (const std::string object :
+       {"2000", "2001", "2002", "2003", "2004", "2005", "6040", "6060", "607A"}) {
+    CAPTURE(object);
+    const auto text = cli({"sdo", "read", "5", object});
+    REQUIRE(text.code == 0);
+    const auto json = cli({"sdo", "read", "5", object, "--json"});
+    const std::string bytes = json_field(json.out, "bytes");
+    REQUIRE_FALSE(bytes.empty());
+    const std::string value = value_of(text.out);
+    CAPTURE(value);
+    const auto w = cli({"sdo", "write", "5", object, value, "--json"});
+    CHECK(w.err == "");
+    CHECK(w.code == 0);
+    CHECK(json_field(w.out, "sent") == bytes);
+    const std::string seen = peer.line(5000); // "write 2000:00 dc05"
+    CHECK(seen.substr(seen.rfind(' ') + 1U) == lower(bytes));
+  }
+  // refused before any frame: the peer reports no write (the next line is the valid one's)
+  auto r = cli({"sdo", "write", "5", "2000", "2001"});
+  CHECK(r.code == 2);
+  CHECK(r.err == "fieldcodec: sdo write: node 5, 2000h:00 Current Limit: '2001': above the high "
+                 "limit 2000 (nothing sent)\n");
+  r = cli({"sdo", "write", "5", "2001", "seventeen chars!!"});
+  CHECK(r.code == 2);
+  CHECK(r.err.find("longer than the 16 bytes the object holds") != std::string::npos);
+  r = cli({"sdo", "write", "5", "2000", "0x7D0"});
+  CHECK(r.code == 0);
+  CHECK(r.out == "2000h:00 Current Limit = 2000\n");
+  CHECK(peer.line(5000) == "write 2000:00 d007");
 }

@@ -33,6 +33,7 @@
 #include <fieldcodec/core/calendar.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/core/utf8.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/engineering.hpp>
@@ -260,40 +261,6 @@ constexpr void put_clock(text_writer &w, std::uint32_t ms) noexcept {
   w.number(ms % 1000U, 3);
 }
 
-/// A UTF-8 sequence at `s[i]` → its code point; advances i. Errors: bad_character.
-[[nodiscard]] constexpr result<std::uint32_t> utf8_next(std::string_view s,
-                                                        std::size_t &i) noexcept {
-  const auto c = static_cast<unsigned char>(s[i]);
-  std::size_t n = 0;
-  std::uint32_t cp = 0;
-  if (c < 0x80U) {
-    ++i;
-    return c;
-  }
-  if (c >= 0xC2U && c <= 0xDFU) {
-    n = 1;
-    cp = c & 0x1FU;
-  } else if (c >= 0xE0U && c <= 0xEFU) {
-    n = 2;
-    cp = c & 0x0FU;
-  } else if (c >= 0xF0U && c <= 0xF4U) {
-    n = 3;
-    cp = c & 0x07U;
-  } else {
-    return errc::bad_character;
-  }
-  for (std::size_t k = 1; k <= n; ++k) {
-    if (i + k >= s.size()) return errc::bad_character;
-    const auto b = static_cast<unsigned char>(s[i + k]);
-    if ((b & 0xC0U) != 0x80U) return errc::bad_character;
-    cp = (cp << 6U) | (b & 0x3FU);
-  }
-  const std::uint32_t min = n == 1 ? 0x80U : n == 2 ? 0x800U : 0x10000U;
-  if (cp < min || cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) return errc::bad_character;
-  i += n + 1U;
-  return cp;
-}
-
 /// Appends a UTF-16LE encoding of `cp` to `out` at `n`.
 constexpr bool put_utf16(std::uint32_t cp, std::span<std::uint8_t> out, std::size_t &n) noexcept {
   auto unit = [&](std::uint32_t u) {
@@ -333,7 +300,7 @@ parse_bytes(data_type type, std::string_view text, std::span<std::uint8_t> out) 
       if (c == '"') return syntax_error(errc::bad_syntax, at);
       if (c != '\\') {
         if (unicode) {
-          auto cp = utf8_next(body, i);
+          auto cp = utf8::next(body, i);
           if (!cp) {
             value_error e{errc::bad_character, value_issue::character};
             e.position = at;
@@ -382,7 +349,7 @@ parse_bytes(data_type type, std::string_view text, std::span<std::uint8_t> out) 
     std::size_t i = 0;
     while (i < text.size()) {
       const auto at = static_cast<std::uint32_t>(i);
-      auto cp = utf8_next(text, i);
+      auto cp = utf8::next(text, i);
       if (!cp) {
         value_error e{errc::bad_character, value_issue::character};
         e.position = at;
