@@ -30,6 +30,7 @@
 #include <fieldcodec/master/config.hpp>
 #include <fieldcodec/master/configurator.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 #include <fieldcodec/xenax/modes.hpp>
 
 #include <poll.h>
@@ -131,7 +132,7 @@ public:
   std::optional<std::string> run() {
     if (auto e = configure()) return e;
     if (auto e = read_statusword()) return e;
-    master::drive axis({.vendor = master::drive_vendor::xenax,
+    master::drive axis({.profile = fieldcodec::xenax::profile,
                         .enable_timeout_ms = 2000,
                         .mode_timeout_ms = 2000,
                         .set_point_timeout_ms = 2000,
