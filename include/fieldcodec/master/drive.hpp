@@ -740,7 +740,7 @@ private:
       pending_.reset();
     }
     s.state = state_;
-    s.deadline = deadline_;
+    if (deadline_) s.deadline = *deadline_; // (a disengaged optional is not copied: constexpr)
     return s;
   }
 
