@@ -159,7 +159,17 @@ class NmtSlave302:
             self.network.send_message(0x700 + NODE, [0])
             self.node.nmt.update_heartbeat()
 
-    def take(self):
+    def take(self, expected=None, timeout=2.0):
+        """The NMT commands received since the last take. The bridge answers once it has sent
+        its last frame, which the bus may deliver a little later: wait until `expected` has
+        arrived (or, without it, a moment for stray commands)."""
+        import time
+        end = time.monotonic() + (timeout if expected is not None else 0.2)
+        while time.monotonic() < end:
+            with self.lock:
+                if expected is not None and self.commands == expected:
+                    break
+            time.sleep(0.01)
         with self.lock:
             c, self.commands = self.commands, []
         return c
@@ -198,7 +208,9 @@ def boot_tests(bridge, local, network, canopen):
                        (0x6065, 0, struct.pack("<I", 333))])
     answer = boot302(bridge, "boot", 0x05, 500, identity, dcf)
     check(answer == "ok booted", "boot", answer)
-    check(slave.take() == [0x82, 0x01], "boot", "the node did not see reset communication, start")
+    seen = slave.take([0x82, 0x01])
+    check(seen == [0x82, 0x01], "boot", f"the node saw NMT commands {seen}, expected reset "
+          "communication, start")
     check((u32(0x6081), u32(0x6083), u32(0x6065)) == (1111, 2222, 333), "boot",
           "the concise DCF's values are not in the LocalNode's store")
     check(slave.state() == 5, "boot", f"NMT state {slave.state()}, expected operational")
@@ -243,8 +255,10 @@ def boot_tests(bridge, local, network, canopen):
     check(answer == "ok booted", "restore", answer)
     check(local.data_store.get(0x1011, {}).get(1) == b"load", "restore",
           "1011h sub 1 did not receive \"load\"")
-    check(slave.take() == [0x82, 0x81, 0x01], "restore",
-          "expected reset communication, reset node (after the restore), start")
+    seen = slave.take([0x82, 0x81, 0x01])
+    check(seen == [0x82, 0x81, 0x01], "restore",
+          f"NMT commands {seen}, expected reset communication, reset node (after the restore), "
+          "start")
     check(u32(0x6081) == 1111, "restore", "downloaded although 1020h showed the configuration")
     ok("boot302", "restore (1011h sub 1 = \"load\", reset node), 1020h sub 1/2 = 1F26h/1F27h: "
        "no download, booted")
