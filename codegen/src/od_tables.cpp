@@ -18,6 +18,7 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
   infos_.reserve(n);
   scales_.reserve(n);
   display_names_.reserve(n);
+  object_names_.reserve(n);
   for (const entry &e : d.entries) {
     for (std::uint16_t k = 0; k < e.count; ++k) {
       od::descriptor x{};
@@ -57,8 +58,10 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
         }
       }
       const auto obj = d.objects.find(e.index);
-      if (e.object == od::object_code::var || obj == d.objects.end() || obj->second.name.empty() ||
-          obj->second.name == name) {
+      const bool var =
+          e.object == od::object_code::var || obj == d.objects.end() || obj->second.name.empty();
+      object_names_.push_back(var ? std::string_view{} : keep(obj->second.name).view());
+      if (var || obj->second.name == name) {
         display_names_.push_back(x.info.name.view());
       } else {
         display_names_.push_back(keep(obj->second.name + ": " + name).view());
@@ -68,6 +71,18 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
       scales_.push_back(x.scale);
     }
   }
+}
+
+result<od::address> od_tables::address_of(std::string_view object,
+                                          std::string_view sub) const noexcept {
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const bool var = object_names_[i].empty();
+    if (var ? (sub.empty() && infos_[i].name.view() == object)
+            : (object_names_[i] == object && infos_[i].name.view() == sub)) {
+      return od::address{entries_[i].index, entries_[i].sub};
+    }
+  }
+  return errc::unknown_object;
 }
 
 std::string_view od_tables::display_name(od::address a) const noexcept {

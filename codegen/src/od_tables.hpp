@@ -54,6 +54,12 @@ public:
   /// The name a person reads: the sub-object's own name for a VAR or where the object has
   /// none, else "Object: Sub-object" ("Identity Object: Vendor Id"); empty when absent.
   [[nodiscard]] std::string_view display_name(od::address a) const noexcept;
+  /// The address of a sub-object by the names the file gives: the object's name and, for an
+  /// ARRAY/RECORD, the sub-object's (`address_of("Identity Object", "Vendor Id")`); a VAR by its
+  /// name alone. Exact, case-sensitive. Errors: unknown_object (no such name, or a RECORD
+  /// without the sub-object's name).
+  [[nodiscard]] result<od::address> address_of(std::string_view object,
+                                               std::string_view sub = {}) const noexcept;
   /// The entries that could not take their vendor unit (od::with_unit failed), by address.
   [[nodiscard]] const std::vector<od::address> &unit_failures() const noexcept {
     return unit_failures_;
@@ -66,6 +72,7 @@ private:
   std::vector<od::entry_info> infos_;
   std::vector<scaling::linear> scales_;
   std::vector<std::string_view> display_names_; ///< parallel to entries_
+  std::vector<std::string_view> object_names_;  ///< parallel: the object's name ("" for a VAR)
   std::deque<std::string> texts_;               ///< stable storage for every od::text
   std::vector<od::address> unit_failures_;
 };
