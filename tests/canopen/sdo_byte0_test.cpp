@@ -44,6 +44,7 @@ TEST_CASE("SDO byte 0 read in place says what decode says, for every byte 0") {
     case sdo::message_type::initiate_upload_response:
       CHECK(detail::initiate_expedited(b0) == v.expedited);
       CHECK(detail::initiate_size_indicated(b0) == v.size_indicated);
+      if (v.expedited) CHECK(detail::expedited_size(b0) == v.size);
       break;
     default: break;
     }

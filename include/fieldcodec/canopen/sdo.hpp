@@ -512,6 +512,11 @@ namespace detail {
 [[nodiscard]] constexpr bool initiate_size_indicated(std::uint8_t b0) noexcept {
   return (b0 & 0x01U) != 0U;
 }
+/// An expedited initiate's data bytes: 4 − bits 3..2 when the size is indicated, else 4 (what
+/// read_expedited_data gives as `size`).
+[[nodiscard]] constexpr std::uint8_t expedited_size(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>(initiate_size_indicated(b0) ? 4U - ((b0 >> 2U) & 3U) : 4U);
+}
 
 // The readers of the layouts: each fills the members of its layout from the 8 bytes (`type` is
 // the caller's). decode_by_table reads through them.

@@ -344,15 +344,12 @@ private:
   [[nodiscard]] constexpr step upload_initiate(const payload &p) noexcept {
     if (auto s = check_initiate(p, ccs_initiate_upload)) return *s;
     if (detail::initiate_expedited(p[0])) {
-      message m; // the data bytes and their count, as decode reads them
-      detail::read_expedited_data(p, m);
-      if (m.size > rx_.size()) {
-        return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
-      }
+      const std::uint8_t n = detail::expedited_size(p[0]);
+      if (n > rx_.size()) return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
       for (std::size_t i = 0; i < 4U; ++i) { // not a copy of run-time length: no memcpy
-        if (i < m.size) rx_[i] = p[4U + i];
+        if (i < n) rx_[i] = p[4U + i];
       }
-      count_ = m.size;
+      count_ = n;
       return done();
     }
     const bool indicated = detail::initiate_size_indicated(p[0]);
