@@ -70,3 +70,18 @@ TEST_CASE("monitor --log over slcan writes an interface name, not '-'") {
   CHECK(t::run_cli({"decode"}, text).out.find(" slcan0 705 HEARTBEAT node 5: operational") !=
         std::string::npos);
 }
+
+TEST_CASE("--block against a server without block transfer: the error says what to try") {
+  t::slcan_node::options o;
+  o.server_block = false;
+  t::slcan_node node(o);
+  REQUIRE(node.ok());
+  const auto r = t::run_cli({"sdo", "read", "5", "1008", "--block", "--slcan", node.path()});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("SDO abort 05040001h") != std::string::npos);
+  CHECK(r.err.find("(with --block: the node may not support block transfer, or answers a block "
+                   "upload with a normal upload; try without --block, or allow the switch with "
+                   "--switch-threshold 127)") != std::string::npos);
+  const auto plain = t::run_cli({"sdo", "read", "5", "1008", "--slcan", node.path()});
+  CHECK(plain.code == 0);
+}
