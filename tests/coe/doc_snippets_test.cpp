@@ -97,8 +97,7 @@ TEST_CASE("XENAX over CoE: every readable object of the EtherCAT dictionary, 16-
   xenax_module m;
   std::array<std::uint8_t, 16> sm0{};
   std::array<std::uint8_t, 16> sm1{};
-  fieldcodec::canopen::coe::sdo_server<sdo::dictionary_store<>> server{m.store, m.buffer, sm1,
-                                                                       16};
+  fieldcodec::canopen::coe::sdo_server<sdo::dictionary_store<>> server{m.store, m.buffer, sm1, 16};
   fieldcodec::canopen::coe::sdo_client client(sm0, 16);
   const auto exchange = [&](fieldcodec::canopen::coe::step s) {
     for (int i = 0; i < 1000 && !s.send.empty(); ++i) {
@@ -114,8 +113,7 @@ TEST_CASE("XENAX over CoE: every readable object of the EtherCAT dictionary, 16-
     CAPTURE(static_cast<int>(e.sub));
     if (!fieldcodec::od::readable(e.access_type)) continue;
     std::array<std::uint8_t, 64> buf{};
-    REQUIRE(exchange(client.upload({e.index, e.sub}, buf, 0).value()) ==
-            sdo::transfer_state::done);
+    REQUIRE(exchange(client.upload({e.index, e.sub}, buf, 0).value()) == sdo::transfer_state::done);
     const auto stored = m.store.value({e.index, e.sub}).value();
     REQUIRE(client.received().size() == stored.size());
     CHECK(std::equal(stored.begin(), stored.end(), client.received().begin()));

@@ -291,7 +291,7 @@ TEST_CASE("CoE client: download toggle error, the server's abort, timeout, cance
 }
 
 TEST_CASE("CoE server: refused mailboxes get mailbox error replies, the transfer goes on") {
-  link l(128);
+  mailbox_link l(128);
   auto &s = l.server;
   // a running download
   auto r = s.on_mailbox(M(1, req, {0x21, 0x09, 0x20, 0x00, 14, 0, 0, 0}), 0);
@@ -349,7 +349,7 @@ TEST_CASE("CoE server: refused mailboxes get mailbox error replies, the transfer
 TEST_CASE("CoE server: toggle errors, stray segments, unknown commands, sizes, timeouts") {
   for (const std::size_t size : mailbox_sizes) {
     CAPTURE(size);
-    link l(size);
+    mailbox_link l(size);
     auto &s = l.server;
     SUBCASE("stray segment and upload-segment requests") {
       auto r = s.on_mailbox(M(1, req, {0x00, 1, 2, 3, 4, 5, 6, 7}), 0);
@@ -428,7 +428,7 @@ TEST_CASE("CoE server: toggle errors, stray segments, unknown commands, sizes, t
 }
 
 TEST_CASE("CoE server: complete access is refused with 0x06010004, repeats are dropped") {
-  link l(128);
+  mailbox_link l(128);
   auto &s = l.server;
   (void)s.on_mailbox(M(1, req, {0x21, 0x09, 0x20, 0x00, 14, 0, 0, 0}), 0);
   auto r = s.on_mailbox(M(2, req, {0x50, 0x00, 0x30, 0x00, 0, 0, 0, 0}), 0);
@@ -463,7 +463,7 @@ TEST_CASE("CoE: a client and a server with every mailbox corrupted in one byte e
   const auto v = pattern(300, 9);
   for (std::size_t victim = 0; victim < 12; ++victim) {
     for (std::size_t at = 0; at < 40; ++at) {
-      link l(64);
+      mailbox_link l(64);
       std::size_t k = 0;
       l.fault = [&](std::vector<std::uint8_t> &b) {
         if (k++ == victim && at < b.size()) b[at] ^= 0x5A;

@@ -21,7 +21,7 @@ constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_cod
 TEST_CASE("CoE: client and server transfer every fixed-size type, as over CAN") {
   for (const std::size_t size : mailbox_sizes) {
     CAPTURE(size);
-    link l(size);
+    mailbox_link l(size);
     can_link c;
     std::size_t checked = 0;
     for (const auto &e : dict) {
@@ -75,7 +75,7 @@ TEST_CASE("CoE: byte strings of 0 to 5000 bytes, normal and segmented, both ways
         CAPTURE(size);
         CAPTURE(index);
         CAPTURE(n);
-        link l(size);
+        mailbox_link l(size);
         can_link c;
         const auto v = pattern(n, static_cast<std::uint8_t>(n));
         REQUIRE(l.write(index, 0, v) == sdo::transfer_state::done);
@@ -94,7 +94,7 @@ TEST_CASE("CoE: byte strings of 0 to 5000 bytes, normal and segmented, both ways
     }
   }
   // unicode string: even lengths only, as on CAN
-  link l(128);
+  mailbox_link l(128);
   CHECK(l.write(0x200B, 0, pattern(10, 3)) == sdo::transfer_state::done);
   CHECK(l.write(0x200B, 0, pattern(9, 3)) == sdo::transfer_state::failed);
   CHECK(l.client.error()->abort == A(0x06090030U));
@@ -103,12 +103,13 @@ TEST_CASE("CoE: byte strings of 0 to 5000 bytes, normal and segmented, both ways
 TEST_CASE("CoE: request and response mailboxes of different sizes, a server buffer of 7") {
   // SM0 of 16 bytes (every request segment carries 7 bytes) and SM1 of 1486; then the reverse;
   // a server whose buffer holds one CAN segment moves the value in parts of 7 bytes
-  for (const auto &[req, resp, buffer] :
+  for (const auto &sizes :
        {std::array<std::size_t, 3>{16, 1486, 1024}, std::array<std::size_t, 3>{1486, 16, 1024},
         std::array<std::size_t, 3>{100, 37, 7}, std::array<std::size_t, 3>{37, 100, 7}}) {
+    const std::size_t req = sizes[0], resp = sizes[1], buffer = sizes[2];
     CAPTURE(req);
     CAPTURE(resp);
-    link l(req, resp, buffer);
+    mailbox_link l(req, resp, buffer);
     const auto v = pattern(999, 7);
     REQUIRE(l.write(0x200F, 0, v) == sdo::transfer_state::done);
     CHECK(l.mailboxes == 2 * requests_for(999, req));
@@ -122,7 +123,7 @@ TEST_CASE("CoE: request and response mailboxes of different sizes, a server buff
 TEST_CASE("CoE: the server answers bad accesses with the CAN machine's abort codes") {
   for (const std::size_t size : mailbox_sizes) {
     CAPTURE(size);
-    link l(size);
+    mailbox_link l(size);
     std::array<std::uint8_t, 64> buf{};
     const std::array<std::uint8_t, 2> two{1, 0};
     const std::array<std::uint8_t, 3> three{1, 0, 0};
@@ -170,7 +171,7 @@ TEST_CASE("CoE: the server answers bad accesses with the CAN machine's abort cod
 }
 
 TEST_CASE("CoE: typed writes and reads through od's encode and decode") {
-  link l(128);
+  mailbox_link l(128);
   const od::entry &i16 = *dict.find({0x3000, 2}); // INTEGER16, -20..20
   auto s = l.client.write(i16, -7, l.now);
   REQUIRE(s.has_value());

@@ -397,22 +397,13 @@ private:
   /// segments (the last of the transfer when `final`); keep a short rest for the next mailbox.
   [[nodiscard]] constexpr step take_upload(std::span<const std::uint8_t> data,
                                            bool final) noexcept {
-    std::size_t at = 0;
-    while (inner_.busy()) {
-      const std::size_t avail = carry_.size() + (data.size() - at);
-      if (!final && avail < 7U) break;
-      std::array<std::uint8_t, 7> chunk{};
-      const std::size_t n = detail::take_chunk(carry_, data, at, chunk);
-      at += n - carry_.size();
-      carry_.clear();
-      const bool last = final && avail <= 7U;
-      const auto p =
-          sdo::upload_segment(request_toggle_, std::span<const std::uint8_t>(chunk).first(n), last)
-              .value_or(sdo::payload{});
-      if (auto s = feed(p)) return *s;
-      if (last) break;
-    }
-    carry_.append(data.subspan(at));
+    std::optional<step> stop;
+    detail::give_segments(carry_, data, final, [&](std::span<const std::uint8_t> seg, bool last) {
+      const auto p = sdo::upload_segment(request_toggle_, seg, last).value_or(sdo::payload{});
+      stop = feed(p);
+      return !stop;
+    });
+    if (stop) return *stop;
     if (!inner_.busy()) return make();
     phase_ = phase::upload_segment;
     return send({.type = sdo::message_type::upload_segment_request, .toggle = coe_toggle_});

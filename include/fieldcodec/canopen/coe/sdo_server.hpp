@@ -240,24 +240,14 @@ private:
   /// when the machine aborted.
   [[nodiscard]] constexpr std::optional<step> give(std::span<const std::uint8_t> data,
                                                    bool final) noexcept {
-    std::size_t at = 0;
-    while (inner_.busy()) {
-      const std::size_t avail = carry_.size() + (data.size() - at);
-      if (!final && avail < 7U) break;
-      std::array<std::uint8_t, 7> chunk{};
-      const std::size_t n = detail::take_chunk(carry_, data, at, chunk);
-      at += n - carry_.size();
-      carry_.clear();
-      const bool last = final && avail <= 7U;
-      const auto p =
-          sdo::download_segment(can_toggle_, std::span<const std::uint8_t>(chunk).first(n), last)
-              .value_or(sdo::payload{});
-      if (auto s = aborted(feed(p))) return s;
+    std::optional<step> stop;
+    detail::give_segments(carry_, data, final, [&](std::span<const std::uint8_t> seg, bool last) {
+      const auto p = sdo::download_segment(can_toggle_, seg, last).value_or(sdo::payload{});
+      stop = aborted(feed(p));
       can_toggle_ = !can_toggle_;
-      if (last) break;
-    }
-    carry_.append(data.subspan(at));
-    return std::nullopt;
+      return !stop;
+    });
+    return stop;
   }
 
   // ----- upload: the machine's 7-byte segments fill mailboxes -----------------------------

@@ -102,15 +102,26 @@ private:
   std::size_t n_ = 0;
 };
 
-/// The next 7-byte segment of a run of bytes made of a carry and then `data` from position
-/// `at`: `n` bytes (at most 7, fewer only at the end), copied into `out`.
-[[nodiscard]] constexpr std::size_t take_chunk(const carry &c, std::span<const std::uint8_t> data,
-                                               std::size_t at,
-                                               std::array<std::uint8_t, 7> &out) noexcept {
-  std::size_t n = 0;
-  for (const std::uint8_t b : c.bytes()) out[n++] = b;
-  while (n < 7U && at < data.size()) out[n++] = data[at++];
-  return n;
+/// Give the bytes carried over and then `data` to `take(segment, last)` as the 7-byte segments
+/// of a CAN transfer: when `final`, all of them (the last one, of 0..7 bytes, marked last);
+/// otherwise the whole ones, the rest (fewer than 7 bytes) kept in `c` for the next mailbox.
+/// `take` returns false to stop (the machine aborted or ended): nothing more is given or kept.
+template <class Take>
+constexpr void give_segments(carry &c, std::span<const std::uint8_t> data, bool final,
+                             Take take) noexcept {
+  std::size_t at = 0;
+  for (;;) {
+    const std::size_t avail = c.size() + (data.size() - at);
+    if (!final && avail < 7U) break;
+    std::array<std::uint8_t, 7> chunk{};
+    std::size_t n = 0;
+    for (const std::uint8_t b : c.bytes()) chunk[n++] = b;
+    c.clear();
+    while (n < 7U && at < data.size()) chunk[n++] = data[at++];
+    const bool last = final && avail <= 7U;
+    if (!take(std::span<const std::uint8_t>(chunk).first(n), last) || last) return;
+  }
+  c.append(data.subspan(at));
 }
 
 } // namespace detail
