@@ -52,6 +52,7 @@ struct mailbox_link {
   std::size_t mailboxes = 0;
   std::deque<std::vector<std::uint8_t>> to_server, to_client;
   std::function<void(std::vector<std::uint8_t> &)> fault; ///< may change a mailbox on its way
+  std::vector<std::vector<std::uint8_t>> wire; ///< the SDO part of every mailbox sent, in order
 
   explicit mailbox_link(std::size_t mailbox_size, std::size_t server_buffer_size = 1024)
       : mailbox_link(mailbox_size, mailbox_size, server_buffer_size) {}
@@ -67,6 +68,7 @@ struct mailbox_link {
     if (mbx.empty()) return;
     CHECK(mbx.size() <= area);
     std::vector<std::uint8_t> b(mbx.begin(), mbx.end());
+    wire.emplace_back(b.begin() + 8, b.end()); // the SDO part
     if (fault) fault(b);
     b.resize(area, 0xEE);
     q.push_back(std::move(b));
@@ -123,8 +125,12 @@ struct can_link {
   std::deque<co::can_frame> to_server, to_client;
 
   can_link() { REQUIRE(store.init_defaults(node).has_value()); }
-  static void push(std::deque<co::can_frame> &q, const sdo::step &s) {
-    for (const auto &f : s.send) q.push_back(f);
+  std::vector<std::vector<std::uint8_t>> wire; ///< the data of every frame sent, in order
+  void push(std::deque<co::can_frame> &q, const sdo::step &s) {
+    for (const auto &f : s.send) {
+      q.push_back(f);
+      wire.emplace_back(f.data.begin(), f.data.end());
+    }
   }
   void run(const sdo::step &first) {
     push(to_server, first);

@@ -204,3 +204,57 @@ TEST_CASE("CoE: typed writes and reads through od's encode and decode") {
   l.run(l.client.write(i16, 3, l.now).value());
   CHECK(l.client.value<int>(i16) == errc::bad_state);
 }
+
+TEST_CASE("CoE over 16-byte mailboxes: the SDO part of every mailbox is the CAN frame's bytes") {
+  // A 16-byte mailbox holds the 8 SDO bytes and nothing more: a normal initiate carries no data
+  // and every segment 7 bytes (the last one padded), exactly the messages of CAN. So every
+  // transfer of tests/canopen/sdo_transfer_test.cpp sends, frame for frame, the bytes it sends
+  // on CAN — also when it fails. Except for a value of 0 bytes: a normal initiate with complete
+  // size 0 is the whole transfer in CoE, where CAN sends one empty segment after it.
+  struct row {
+    bool write;
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::vector<std::uint8_t> data;
+  };
+  std::vector<row> rows = {
+      {false, 0x4000, 0, {}}, {false, 0x2001, 1, {}},       {true, 0x1000, 0, {1, 0}},
+      {true, 0x2006, 0, {1}}, {true, 0x2006, 0, {1, 0, 0}}, {true, 0x3000, 2, {21, 0}},
+      {false, 0x3000, 1, {}}, {false, 0x3001, 0, {}},       {true, 0x2009, 0, pattern(401, 1)},
+  };
+  for (const auto &e : dict) {
+    if (od::writable(e.access_type) && !od::is_byte_string(e.type)) {
+      rows.push_back({true, e.index, e.sub, std::vector<std::uint8_t>(e.width(), 0x01)});
+    }
+    if (od::readable(e.access_type)) rows.push_back({false, e.index, e.sub, {}});
+  }
+  for (const std::size_t n : {0U, 1U, 4U, 5U, 7U, 8U, 13U, 14U, 15U, 100U, 400U}) {
+    rows.push_back({true, 0x2009, 0, pattern(n, 2)});
+    rows.push_back({false, 0x2009, 0, {}});
+  }
+  mailbox_link l(16);
+  can_link c;
+  std::size_t frames = 0;
+  for (const auto &r : rows) {
+    CAPTURE(r.index);
+    CAPTURE(r.data.size());
+    l.wire.clear();
+    c.wire.clear();
+    std::array<std::uint8_t, 512> a{}, b{};
+    const auto sl = r.write ? l.write(r.index, r.sub, r.data) : l.read(r.index, r.sub, a);
+    const auto sc = r.write ? c.write(r.index, r.sub, r.data) : c.read(r.index, r.sub, b);
+    CHECK(sl == sc);
+    const bool empty_value =
+        r.write ? r.data.empty() : sc == sdo::transfer_state::done && c.client.received().empty();
+    if (empty_value) {
+      REQUIRE(c.wire.size() == 4);
+      CHECK(l.wire.size() == 2);
+      CHECK(l.wire[0] == c.wire[0]); // the initiate (size 0)
+      CHECK(l.wire[1] == c.wire[1]); // its response
+      continue;
+    }
+    CHECK(l.wire == c.wire);
+    frames += c.wire.size();
+  }
+  CHECK(frames > 400);
+}
