@@ -478,3 +478,40 @@ TEST_CASE("CoE: a client and a server with every mailbox corrupted in one byte e
     }
   }
 }
+
+TEST_CASE("CoE client: complete access (ETG.1000.6 5.6.2, bit 4 of the initiate)") {
+  // upload of 1C12h with sub-index 0 included: 50 12 1C 00; the slave answers normal, with the
+  // object's image (here: 2 entries, sub-index 0 padded to 16 bits, then 1600h and 1601h)
+  client_fixture c;
+  auto s = c.c.upload({0x1C12, 0}, c.buf, 0, true).value();
+  CHECK(body_of(s.send) == bytes{0x50, 0x12, 0x1C, 0x00, 0, 0, 0, 0});
+  auto o = c.c.on_mailbox(
+      M(1, res, {0x51, 0x12, 0x1C, 0x00, 6, 0, 0, 0, 0x02, 0x00, 0x00, 0x16, 0x01, 0x16}), 1);
+  CHECK(o.state == sdo::transfer_state::done);
+  CHECK(bytes(c.c.received().begin(), c.c.received().end()) ==
+        bytes{0x02, 0x00, 0x00, 0x16, 0x01, 0x16});
+  // sub-index 0 excluded: sub-index 1
+  client_fixture e;
+  CHECK(body_of(e.c.upload({0x1C12, 1}, e.buf, 0, true).value().send)[3] == 0x01);
+  // a download of the whole object: normal with bit 4 (31), also for 4 bytes
+  const std::array<std::uint8_t, 4> image{0x01, 0x00, 0x00, 0x16};
+  client_fixture d;
+  s = d.c.download({0x1C12, 0}, image, 0, true).value();
+  CHECK(body_of(s.send) == bytes{0x31, 0x12, 0x1C, 0x00, 4, 0, 0, 0, 0x01, 0x00, 0x00, 0x16});
+  o = d.c.on_mailbox(M(1, res, {0x70, 0x12, 0x1C, 0x00, 0, 0, 0, 0}), 1);
+  CHECK(o.state == sdo::transfer_state::done);
+  CHECK(d.c.transferred() == 4);
+  // in a 16-byte mailbox the 4 bytes do not fit a normal initiate: expedited with bit 4 (33)
+  client_fixture t(16);
+  s = t.c.download({0x1C12, 0}, image, 0, true).value();
+  CHECK(body_of(s.send) == bytes{0x33, 0x12, 0x1C, 0x00, 0x01, 0x00, 0x00, 0x16});
+  CHECK(t.c.on_mailbox(M(1, res, {0x70, 0x12, 0x1C, 0x00, 0, 0, 0, 0}), 1).state ==
+        sdo::transfer_state::done);
+  // an image longer than a mailbox: normal, then segments, as any value
+  client_fixture l(16);
+  const auto big = pattern(20, 1);
+  s = l.c.download({0x1C12, 1}, big, 0, true).value();
+  CHECK(body_of(s.send) == bytes{0x31, 0x12, 0x1C, 0x01, 20, 0, 0, 0});
+  o = l.c.on_mailbox(M(1, res, {0x70, 0x12, 0x1C, 0x01, 0, 0, 0, 0}), 1);
+  CHECK(o.send[8] == 0x00); // the first segment
+}
