@@ -88,6 +88,6 @@ struct store {
     return sdo::abort_code::none;
   }
 };
-static_assert(sdo::object_store<store>);
+static_assert(fieldcodec::canopen::object_store<store>);
 
 } // namespace fuzz_sdo

@@ -13,14 +13,15 @@
 #include <cstdint>
 
 namespace coe = fieldcodec::canopen::coe;
+namespace co = fieldcodec::canopen;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace io = fieldcodec::dictionaries::io_node;
 
 namespace {
 constexpr fieldcodec::od::dictionary dict{io::entries};
-constexpr auto layout = sdo::make_layout<io::entries.size()>(dict);
+constexpr auto layout = co::make_layout<io::entries.size()>(dict);
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
 store_type store{dict, layout, storage};
 std::array<std::uint8_t, 64> buffer{};

@@ -17,19 +17,20 @@
 #include <vector>
 
 namespace {
+namespace co = fieldcodec::canopen;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace xe = fieldcodec::dictionaries::xenax_ethercat;
 
 /// A simulated XENAX EtherCAT module: its object dictionary behind an SDO server over CoE, with
 /// a send mailbox (SM1) of 128 bytes and a receive mailbox (SM0) of 128.
 struct xenax_module {
-  static constexpr auto layout = sdo::make_layout<xe::dictionary.size()>(xe::dictionary);
+  static constexpr auto layout = co::make_layout<xe::dictionary.size()>(xe::dictionary);
   std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(xe::dictionary));
-  sdo::dictionary_store<> store{xe::dictionary, layout, storage};
+      std::vector<std::uint8_t>(co::dictionary_store<>::storage_size(xe::dictionary));
+  co::dictionary_store<> store{xe::dictionary, layout, storage};
   std::vector<std::uint8_t> buffer = std::vector<std::uint8_t>(256);
   std::array<std::uint8_t, 128> sm1{};
-  fieldcodec::canopen::coe::sdo_server<sdo::dictionary_store<>> server{store, buffer, sm1, 128};
+  fieldcodec::canopen::coe::sdo_server<co::dictionary_store<>> server{store, buffer, sm1, 128};
   std::vector<std::uint8_t> sm1_content; ///< what the master reads next
   xenax_module() { REQUIRE(store.init_defaults(1).has_value()); }
 };
@@ -97,7 +98,7 @@ TEST_CASE("XENAX over CoE: every readable object of the EtherCAT dictionary, 16-
   xenax_module m;
   std::array<std::uint8_t, 16> sm0{};
   std::array<std::uint8_t, 16> sm1{};
-  fieldcodec::canopen::coe::sdo_server<sdo::dictionary_store<>> server{m.store, m.buffer, sm1, 16};
+  fieldcodec::canopen::coe::sdo_server<co::dictionary_store<>> server{m.store, m.buffer, sm1, 16};
   fieldcodec::canopen::coe::sdo_client client(sm0, 16);
   const auto exchange = [&](fieldcodec::canopen::coe::step s) {
     for (int i = 0; i < 1000 && !s.send.empty(); ++i) {

@@ -30,9 +30,9 @@ using od::data_type;
 
 using sdo_test::dict;
 using sdo_test::entries;
-inline constexpr auto layout = sdo::make_layout<std::size(entries)>(dict);
+inline constexpr auto layout = co::make_layout<std::size(entries)>(dict);
 
-using store_t = sdo::dictionary_store<>;
+using store_t = co::dictionary_store<>;
 
 /// A client adapter and a server adapter on one link: mailboxes travel in order, each written
 /// into a SyncManager area of its mailbox size (the rest padded with 0xEE, which the receiver

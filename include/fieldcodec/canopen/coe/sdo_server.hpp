@@ -53,7 +53,7 @@
 
 namespace fieldcodec::canopen::coe {
 
-template <sdo::object_store Store>
+template <canopen::object_store Store>
 class sdo_server {
 public:
   /// A server over `store` with the machine's `buffer` (both borrowed; see sdo::server), that
