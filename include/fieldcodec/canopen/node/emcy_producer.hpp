@@ -174,6 +174,54 @@ public:
   /// With `on`, every clear() sends "error reset" (0000h) with the remaining register.
   constexpr void report_each_reset(bool on) noexcept { report_each_reset_ = on; }
 
+  // ----- its objects in a node (node::device) ------------------------------------------------
+
+  /// Would `v` be accepted for `a`? 1003h sub 0 takes only 0 (it empties the history), 1014h
+  /// as check_cob_id says (0x06090030); none for every other object.
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
+    if (a.index == 0x1003U) {
+      return a.sub == 0U && v != 0U ? abort_code::invalid_value : abort_code::none;
+    }
+    if (a.index == 0x1014U) return check_cob_id(v);
+    return abort_code::none;
+  }
+  /// `v` was stored at `a`: follow 1003h sub 0 (history emptied), 1014h and 1015h.
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
+    if (a.index == 0x1003U && a.sub == 0U) clear_history();
+    if (a.index == 0x1014U) (void)set_cob_id(v);
+    if (a.index == 0x1015U) set_inhibit(static_cast<std::uint16_t>(v));
+  }
+  /// Start afresh (boot, NMT reset: no errors, empty history, nothing queued) with 1014h and
+  /// 1015h from `store`, and note where 1003h is, for publish().
+  template <node_store Store>
+  constexpr status load(const Store &store, std::uint32_t) noexcept {
+    reset();
+    if (const auto v = read_u32(store, {0x1014, 0})) load_cob_id(*v);
+    if (const auto v = read_u32(store, {0x1015, 0})) set_inhibit(static_cast<std::uint16_t>(*v));
+    const od::dictionary dict = store.dictionary();
+    history_subs_ = 0;
+    for (const od::entry &e : dict.object(0x1003)) {
+      if (e.sub > history_subs_) history_subs_ = e.sub;
+    }
+    has_history_ = history_subs_ != 0U || dict.contains(0x1003, 0);
+    return {};
+  }
+  /// After a change (take_changed()): write the error register to 1001h and the history to
+  /// 1003h (sub 1.. newest first, the others 0, then sub 0 = the number of entries) with the
+  /// store's set().
+  template <node_store Store>
+  constexpr void publish(Store &store) noexcept {
+    if (!take_changed()) return;
+    (void)store.set({0x1001, 0}, encode_le(error_register(), 1).span());
+    if (!has_history_) return;
+    const std::size_t n = history_count_ < history_subs_ ? history_count_ : history_subs_;
+    for (std::size_t k = 1; k <= history_subs_; ++k) {
+      const std::uint32_t v = k <= n ? history_[k - 1U] : 0U;
+      (void)store.set({0x1003, static_cast<std::uint8_t>(k)}, encode_le(v, 4).span());
+    }
+    (void)store.set({0x1003, 0}, encode_le(static_cast<std::uint32_t>(n), 1).span());
+  }
+
   // ----- state -----------------------------------------------------------------------------
 
   [[nodiscard]] constexpr std::uint8_t error_register() const noexcept {
@@ -275,6 +323,8 @@ private:
   bool enabled_ = true;
   bool changed_ = false;
   bool report_each_reset_ = false;
+  std::uint8_t history_subs_ = 0; ///< the highest sub-index of 1003h (load)
+  bool has_history_ = false;      ///< the dictionary has 1003h (load)
 };
 
 } // namespace fieldcodec::canopen::node

@@ -104,11 +104,14 @@ public:
   /// Would `value` be accepted at `a` (sub 1 / sub 2 of a served SDO parameter object)?
   [[nodiscard]] constexpr abort_code
   check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    const auto v = u32_of(value);
+    return v ? check_write(a, *v) : abort_code::none;
+  }
+  /// The same for a value of 1..4 bytes as a number (node::device decodes it once).
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
     if (a.sub != 1U && a.sub != 2U) return abort_code::none;
     if (!serves(a.index)) return abort_code::none;
-    const auto v = u32_of(value);
-    if (!v) return abort_code::none;
-    return check_cob_id(*v, read_u32(*store_, a), false);
+    return check_cob_id(v, read_u32(*store_, a), false);
   }
   /// `a` was written: move the channel.
   constexpr void written(od::address a) noexcept {
@@ -119,6 +122,15 @@ public:
     for (std::size_t i = 0; i < client_count_; ++i) {
       if (client_index_[i] == a.index) connect_client(i);
     }
+  }
+  constexpr void written(od::address a, std::uint32_t, std::uint32_t) noexcept { written(a); }
+  /// reload() from `store`'s dictionary with every server transfer ended, as node::device
+  /// starts its services.
+  template <class S>
+  constexpr status load(const S &store, std::uint32_t) noexcept {
+    const status st = reload(store.dictionary());
+    stop_servers();
+    return st;
   }
 
   // ----- traffic ---------------------------------------------------------------------------

@@ -65,6 +65,32 @@ public:
   /// 1007h, µs (0 = no window); rounded up to the caller's milliseconds.
   constexpr void set_window_us(std::uint32_t us) noexcept { window_ms_ = ms_from_us(us); }
 
+  // ----- its objects in a node (node::device) ------------------------------------------------
+
+  /// Would `v` be accepted for `a`? 1005h and 1019h as check_cob_id / check_overflow say;
+  /// none for every other object.
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
+    if (a.index == 0x1005U) return check_cob_id(v);
+    if (a.index == 0x1019U) return check_overflow(v);
+    return abort_code::none;
+  }
+  /// `v` was stored at `a`: follow 1005h, 1007h, 1019h.
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
+    if (a.index == 0x1005U) (void)set_cob_id(v);
+    if (a.index == 0x1007U) set_window_us(v);
+    if (a.index == 0x1019U) (void)set_overflow(v);
+  }
+  /// Start afresh from the values of 1005h, 1007h and 1019h in `store` (boot, NMT reset).
+  template <sdo::object_store Store>
+  constexpr status load(const Store &store, std::uint32_t now) noexcept {
+    *this = sync_consumer{};
+    constexpr std::uint16_t objects[] = {0x1005, 0x1007, 0x1019};
+    for (const std::uint16_t i : objects) {
+      if (const auto v = read_u32(store, {i, 0})) written({i, 0}, *v, now);
+    }
+    return {};
+  }
+
   [[nodiscard]] constexpr std::uint16_t cob_id() const noexcept { return id_; }
 
   /// A frame on the SYNC COB-ID (others are ignored).
