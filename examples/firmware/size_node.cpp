@@ -21,7 +21,8 @@ constexpr fieldcodec::od::dictionary dict{io::entries};
 constexpr auto layout = sdo::make_layout<io::entries.size()>(dict);
 constexpr node::capacity caps = [] {
   node::capacity c = node::capacity_for(dict);
-  c.sdo_buffer = 64; // expedited and segmented of any size; block sub-blocks of 9 segments
+  c.sdo_buffer = 64;    // expedited and segmented of any size; block sub-blocks of 9 segments
+  c.pdo_copies = false; // mapped objects one by one: the smaller PDO engine
   return c;
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);

@@ -93,16 +93,12 @@ public:
   /// (download_segment_request or upload_segment_response); moves on and flips the toggle.
   [[nodiscard]] constexpr payload next(message_type type,
                                        std::span<const std::uint8_t> bytes) noexcept {
-    message m;
-    m.type = type;
-    m.toggle = toggle_;
-    m.last = next_is_last();
-    m.data_size = static_cast<std::uint8_t>(bytes.size());
-    for (std::size_t i = 0; i < bytes.size() && i < 7U; ++i) m.data[i] = bytes[i];
+    const bool last = next_is_last();
+    const auto p = detail::write_segment(detail::command_bits(type), toggle_, bytes, last);
     offset_ += static_cast<std::uint32_t>(bytes.size());
-    sent_last_ = m.last;
+    sent_last_ = last;
     toggle_ = !toggle_;
-    return encode(m).value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
+    return p.value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
   }
   /// Does the toggle the peer answered with belong to the segment just sent?
   [[nodiscard]] constexpr bool answer_matches(bool peer_toggle) const noexcept {

@@ -84,6 +84,11 @@ struct capacity {
   /// (crc::ccitt16_with_table: 512 bytes of flash, about half the instructions a byte) instead
   /// of without one (the default). The SDO clients compute it without a table either way.
   bool sdo_crc_table = false;
+  /// The PDO engine copies the mapped objects that the store keeps plain as runs of bytes
+  /// (pdo_engine::by_copy, the fastest way; the default) instead of reading and writing them
+  /// one by one (false: about 0.8 kB less flash on Cortex-M, each mapped object then costs a
+  /// store call per SYNC or RPDO). Same frames and stored values either way.
+  bool pdo_copies = true;
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
@@ -215,11 +220,11 @@ public:
     // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
     // would skip
     [[nodiscard]] constexpr std::span<std::uint8_t>
-    plain_storage() noexcept requires sdo::plain_store<Store> {
+    plain_storage() noexcept requires(sdo::plain_store<Store> && C.pdo_copies) {
       return d_->store_->plain_storage();
     }
     [[nodiscard]] constexpr sdo::plain_slot
-    plain_at(std::size_t at) const noexcept requires sdo::plain_store<Store> {
+    plain_at(std::size_t at) const noexcept requires(sdo::plain_store<Store> && C.pdo_copies) {
       sdo::plain_slot p = d_->store_->plain_at(at);
       p.writable = false;
       return p;
@@ -437,17 +442,17 @@ public:
   raise(std::uint16_t code, std::uint32_t now, std::uint8_t register_bits = 0,
         std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
     begin(now);
-    auto r = emcy_.raise(code, now, register_bits, manufacturer);
-    if (!r) return r.error();
-    take(r.value());
+    if (const status r = emcy_.raise_error(code, now, register_bits, manufacturer); !r) {
+      return r.error();
+    }
+    take_frames(frames(emcy_.sent()));
     return finish(now);
   }
   /// An application error is gone (see emcy_producer::clear).
   [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
     begin(now);
-    auto r = emcy_.clear(code, now);
-    if (!r) return r.error();
-    take(r.value());
+    if (const status r = emcy_.clear_error(code, now); !r) return r.error();
+    take_frames(frames(emcy_.sent()));
     return finish(now);
   }
   /// A local NMT state change (the device's error behaviour, or no NMT master).
@@ -513,7 +518,12 @@ private:
   }
   template <class Step>
   constexpr void take(const Step &s) noexcept {
-    for (const can_frame &f : s.send) out_.push(f);
+    take_frames(s.send);
+  }
+  /// The frames a service's step sends go out with the node's (one function for every
+  /// service: called from many places, not inlined into each).
+  [[gnu::noinline]] constexpr void take_frames(const frames &send) noexcept {
+    for (const can_frame &f : send) out_.push(f);
   }
   constexpr void push_event(const event &e) noexcept { events_.push(e); }
   constexpr void pdo_events() noexcept {
@@ -691,10 +701,11 @@ private:
   /// Raise (`on`) or clear managed_codes[i].
   constexpr void change_error(std::size_t i, bool on, std::uint32_t now) noexcept {
     const auto bit = static_cast<std::uint8_t>(1U << i);
-    auto r = on ? emcy_.raise(managed_codes[i], now) : emcy_.clear(managed_codes[i], now);
+    const status r = on ? emcy_.raise_error(managed_codes[i], now)
+                        : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
-    take(r.value());
+    take_frames(frames(emcy_.sent()));
     if (on) own_errors_ = static_cast<std::uint8_t>(own_errors_ | bit);
   }
   // ----- members ---------------------------------------------------------------------------

@@ -114,9 +114,24 @@ public:
   [[nodiscard]] constexpr result<step>
   raise(std::uint16_t code, std::uint32_t now, std::uint8_t register_bits = 0,
         std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
+    if (const status st = raise_error(code, now, register_bits, manufacturer); !st) {
+      return st.error();
+    }
+    return make(now);
+  }
+  /// An error is gone. Errors: unknown_object (the code is not active: nothing sent).
+  [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
+    if (const status st = clear_error(code, now); !st) return st.error();
+    return make(now);
+  }
+  /// raise() and clear() without the step (what node::device calls): the frames they send are
+  /// sent() until the next call.
+  constexpr status raise_error(std::uint16_t code, std::uint32_t now,
+                               std::uint8_t register_bits = 0,
+                               std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
     out_.clear();
     if (code == emcy::code::error_reset) return errc::invalid_argument;
-    if (find(code) < MaxActive) return make(now);
+    if (find(code) < MaxActive) return {};
     if (count_ == MaxActive) return errc::buffer_too_small;
     active_[count_++] = {code, static_cast<std::uint8_t>(register_bits & ~emcy::reg::reserved),
                          manufacturer};
@@ -124,11 +139,10 @@ public:
                  (std::uint32_t{manufacturer[1]} << 24U));
     changed_ = true;
     enqueue({code, error_register(), manufacturer});
-    return flush(now);
+    send_queued(now);
+    return {};
   }
-
-  /// An error is gone. Errors: unknown_object (the code is not active: nothing sent).
-  [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
+  constexpr status clear_error(std::uint16_t code, std::uint32_t now) noexcept {
     out_.clear();
     const std::size_t i = find(code);
     if (i >= MaxActive) return errc::unknown_object;
@@ -138,8 +152,11 @@ public:
     if (count_ == 0U || report_each_reset_) {
       enqueue({emcy::code::error_reset, error_register(), {}});
     }
-    return flush(now);
+    send_queued(now);
+    return {};
   }
+  /// The frames the last call sent.
+  [[nodiscard]] constexpr std::span<const can_frame> sent() const noexcept { return out_.span(); }
 
   /// Every error gone at once (one "error reset" message when any was active).
   [[nodiscard]] constexpr step clear_all(std::uint32_t now) noexcept {
@@ -283,6 +300,11 @@ private:
   }
   [[nodiscard]] constexpr step flush(std::uint32_t now) noexcept {
     out_.clear();
+    send_queued(now);
+    return make(now);
+  }
+  /// Send what the queue holds and the inhibit time allows (appended to out_).
+  constexpr void send_queued(std::uint32_t now) noexcept {
     if (inhibited_ && reached(inhibit_until_, now)) inhibited_ = false;
     while (queued_ > 0U && !inhibited_) {
       can_frame f;
@@ -301,7 +323,6 @@ private:
         inhibit_until_ = now + inhibit_ms_;
       }
     }
-    return make(now);
   }
   [[nodiscard]] constexpr step make([[maybe_unused]] std::uint32_t now) const noexcept {
     return {out_.view(), error_register(), deadline()};

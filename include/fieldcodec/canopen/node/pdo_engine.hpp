@@ -109,19 +109,22 @@ struct pdo_event {
   friend constexpr bool operator==(const pdo_event &, const pdo_event &) = default;
 };
 
-/// A PDO's parameters as the engine holds them.
+/// A PDO's parameters as the engine holds them. (Every member is 0 until the engine loads them:
+/// an engine's tables start as zeros, which cost a firmware image no initialising code.)
 template <std::size_t MaxEntries>
 struct pdo_config {
-  std::uint16_t number = 0;              ///< 1..512
-  std::uint32_t cob = cob_bits::invalid; ///< sub 1 as stored
-  std::uint8_t type = 255;               ///< sub 2
-  std::uint16_t inhibit = 0;             ///< sub 3, 100 µs
-  std::uint16_t event_timer = 0;         ///< sub 5, ms
-  std::uint8_t sync_start = 0;           ///< sub 6
-  std::uint8_t count = 0;                ///< mapping sub 0
-  std::uint8_t map_subs = 0;             ///< highest mapping sub-index the dictionary has
-  std::uint8_t bytes = 0;                ///< length of the mapped data
-  bool usable = true;                    ///< false: the stored configuration is broken
+  std::uint16_t number = 0;      ///< 1..512
+  std::uint32_t cob = 0;         ///< sub 1 as stored
+  std::uint8_t type = 0;         ///< sub 2
+  std::uint16_t inhibit = 0;     ///< sub 3, 100 µs
+  std::uint16_t event_timer = 0; ///< sub 5, ms
+  std::uint8_t sync_start = 0;   ///< sub 6
+  std::uint8_t count = 0;        ///< mapping sub 0
+  std::uint8_t map_subs = 0;     ///< highest mapping sub-index the dictionary has
+  std::uint8_t bytes = 0;        ///< length of the mapped data
+  /// Loaded and servable (false before the engine loaded it, or when the stored configuration
+  /// is broken: the PDO is then never sent or received).
+  bool usable = false;
   std::array<pdo::mapping_entry, MaxEntries> map{};
 
   [[nodiscard]] constexpr bool valid() const noexcept {

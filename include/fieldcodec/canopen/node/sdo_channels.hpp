@@ -95,7 +95,7 @@ public:
       }
     }
     for (std::size_t i = 0; i < Servers; ++i) connect_server(i);
-    for (std::size_t i = 0; i < client_count_; ++i) connect_client(i);
+    for (std::size_t i = 0; i < used_clients(); ++i) connect_client(i);
     return st;
   }
 
@@ -119,7 +119,7 @@ public:
     for (std::size_t i = 0; i < server_count_; ++i) {
       if (server_index_[i] == a.index && a.index != 0U) connect_server(i);
     }
-    for (std::size_t i = 0; i < client_count_; ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_index_[i] == a.index) connect_client(i);
     }
   }
@@ -144,7 +144,7 @@ public:
         return servers_[i].on_frame(f, now);
       }
     }
-    for (std::size_t i = 0; i < client_count_; ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_ok_[i] && clients_[i].connection().is_response(f)) {
         return clients_[i].on_frame(f, now);
       }
@@ -173,7 +173,7 @@ public:
     for (std::size_t i = 0; i < Servers; ++i) {
       for (const can_frame &f : servers_[i].poll(now).send) out_.push(f);
     }
-    for (std::size_t i = 0; i < client_count_; ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       for (const can_frame &f : clients_[i].poll(now).send) out_.push(f);
     }
     return {out_.view(), busy(), deadline(now)};
@@ -203,14 +203,14 @@ public:
   }
   /// The node-ID of the server client i talks to (1280h + i sub 3; 0 when not given).
   [[nodiscard]] constexpr std::uint8_t client_server_node(std::size_t i) const noexcept {
-    if (i >= client_count_) return 0;
+    if (i >= used_clients()) return 0;
     return static_cast<std::uint8_t>(read_u32(*store_, {client_index_[i], 3}).value_or(0U));
   }
   [[nodiscard]] constexpr bool busy() const noexcept {
     for (std::size_t i = 0; i < Servers; ++i) {
       if (servers_[i].busy()) return true;
     }
-    for (std::size_t i = 0; i < client_count_; ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (clients_[i].busy()) return true;
     }
     return false;
@@ -218,7 +218,7 @@ public:
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     std::optional<std::uint32_t> d;
     for (std::size_t i = 0; i < Servers; ++i) d = earliest(d, servers_[i].deadline(), now);
-    for (std::size_t i = 0; i < client_count_; ++i) d = earliest(d, clients_[i].deadline(), now);
+    for (std::size_t i = 0; i < used_clients(); ++i) d = earliest(d, clients_[i].deadline(), now);
     return d;
   }
   static constexpr std::size_t server_capacity() noexcept { return Servers; }
@@ -245,7 +245,7 @@ private:
     for (std::size_t i = 0; i < server_count_; ++i) {
       if (server_index_[i] == index && index != 0U) return true;
     }
-    for (std::size_t i = 0; i < client_count_; ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_index_[i] == index) return true;
     }
     return false;
@@ -273,13 +273,18 @@ private:
   }
   constexpr void connect_client(std::size_t i) noexcept {
     std::optional<sdo::channel> ch;
-    if (i < client_count_) ch = channel_of(client_index_[i]);
+    if (i < used_clients()) ch = channel_of(client_index_[i]);
     client_ok_[i] = ch.has_value();
     if (clients_[i].busy()) (void)clients_[i].cancel(); // the channel it ran on is gone
     (void)clients_[i].set_connection(ch.value_or(sdo::channel{}));
   }
 
   static constexpr std::size_t client_slots = Clients == 0U ? 1U : Clients;
+  /// The clients in use: 0, known at compile time, for a node without clients (whose image
+  /// then holds no client code).
+  [[nodiscard]] constexpr std::size_t used_clients() const noexcept {
+    return Clients == 0U ? 0U : client_count_;
+  }
 
   Store *store_;
   std::uint8_t node_;
