@@ -402,9 +402,8 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   return p;
 }
 /// layout::segment: `bytes` (at most 7; exactly 7 unless `last`) and their count in byte 0.
-[[nodiscard]] constexpr result<payload> write_segment(unsigned bits, bool toggle,
-                                                      std::span<const std::uint8_t> bytes,
-                                                      bool last) noexcept {
+[[nodiscard]] constexpr result<payload>
+write_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
   const std::size_t n = bytes.size();
   if (n > 7U) return errc::too_long;
   if (!last && n != 7U) return errc::bad_length;
@@ -520,8 +519,7 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
     return detail::write_block_size(bits | crc, m.address, m.block_size, 0);
   case detail::layout::block_upload:
     return detail::write_block_size(bits | crc, m.address, m.block_size, m.switch_threshold);
-  case detail::layout::block_ack:
-    return detail::write_block_ack(bits, m.sequence, m.block_size);
+  case detail::layout::block_ack: return detail::write_block_ack(bits, m.sequence, m.block_size);
   case detail::layout::block_end: return detail::write_block_end(bits, m.unused, m.checksum);
   case detail::layout::command_only: return detail::write_toggle(bits, false);
   }
@@ -771,9 +769,9 @@ upload_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noex
 /// Errors: out_of_range (block size not 1..127).
 [[nodiscard]] constexpr result<payload>
 block_download_initiate_response(od::address a, std::uint8_t block_size, bool crc) noexcept {
-  return detail::write_block_size(
-      detail::bits_of<message_type::block_download_initiate_response> | (crc ? 0x04U : 0U), a,
-      block_size, 0);
+  return detail::write_block_size(detail::bits_of<message_type::block_download_initiate_response> |
+                                      (crc ? 0x04U : 0U),
+                                  a, block_size, 0);
 }
 /// Block upload initiate (client, 0xA0 | crc << 2): block size and protocol switch threshold
 /// (0: no switch). Errors: out_of_range (block size not 1..127).
@@ -781,9 +779,9 @@ block_download_initiate_response(od::address a, std::uint8_t block_size, bool cr
                                                               std::uint8_t block_size,
                                                               std::uint8_t switch_threshold,
                                                               bool crc) noexcept {
-  return detail::write_block_size(
-      detail::bits_of<message_type::block_upload_initiate> | (crc ? 0x04U : 0U), a, block_size,
-      switch_threshold);
+  return detail::write_block_size(detail::bits_of<message_type::block_upload_initiate> |
+                                      (crc ? 0x04U : 0U),
+                                  a, block_size, switch_threshold);
 }
 /// Block upload initiate response (server, 0xC0 | crc << 2 | s << 1) with the size.
 [[nodiscard]] constexpr payload block_upload_initiate_response(od::address a, std::uint32_t size,

@@ -219,12 +219,12 @@ public:
     // reads as the store shows them; never writable, since every write of the device, an
     // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
     // would skip
-    [[nodiscard]] constexpr std::span<std::uint8_t>
-    plain_storage() noexcept requires(sdo::plain_store<Store> && C.pdo_copies) {
+    [[nodiscard]] constexpr std::span<std::uint8_t> plain_storage() noexcept
+        requires(sdo::plain_store<Store> &&C.pdo_copies) {
       return d_->store_->plain_storage();
     }
-    [[nodiscard]] constexpr sdo::plain_slot
-    plain_at(std::size_t at) const noexcept requires(sdo::plain_store<Store> && C.pdo_copies) {
+    [[nodiscard]] constexpr sdo::plain_slot plain_at(std::size_t at) const noexcept
+        requires(sdo::plain_store<Store> &&C.pdo_copies) {
       sdo::plain_slot p = d_->store_->plain_at(at);
       p.writable = false;
       return p;
@@ -701,8 +701,8 @@ private:
   /// Raise (`on`) or clear managed_codes[i].
   constexpr void change_error(std::size_t i, bool on, std::uint32_t now) noexcept {
     const auto bit = static_cast<std::uint8_t>(1U << i);
-    const status r = on ? emcy_.raise_error(managed_codes[i], now)
-                        : emcy_.clear_error(managed_codes[i], now);
+    const status r =
+        on ? emcy_.raise_error(managed_codes[i], now) : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
     take_frames(frames(emcy_.sent()));
