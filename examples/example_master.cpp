@@ -14,6 +14,7 @@
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/master/boot.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 #include <fieldcodec/xenax/homing.hpp>
 
 #include <array>
@@ -211,7 +212,7 @@ int main() {
               b.frames);
 
   // 2. the cyclic task: 1 ms cycle, RPDO 1 carries the controlword, TPDO 1 the statusword
-  master::drive axis({.vendor = master::drive_vendor::xenax, .target_over_sdo = true});
+  master::drive axis({.profile = xenax::profile, .target_over_sdo = true});
   std::uint16_t statusword = xenax_drive.statusword();
   std::array<std::uint8_t, 4> sdo_buffer{};
   const auto cycle = [&]() {

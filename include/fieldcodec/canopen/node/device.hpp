@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 namespace fieldcodec::canopen::node {
@@ -152,6 +153,23 @@ struct event {
   std::optional<std::uint8_t> counter{};
   friend constexpr bool operator==(const event &, const event &) = default;
 };
+
+/// A short, stable text for a device event (for logs; the texts do not change between
+/// versions). The event's details have their own: to_string(e.state), to_string(e.heartbeat.what),
+/// to_string(e.pdo.what).
+[[nodiscard]] constexpr std::string_view to_string(event::kind k) noexcept {
+  switch (k) {
+  case event::kind::nmt_state: return "NMT state changed";
+  case event::kind::reset_application: return "reset application";
+  case event::kind::reset_communication: return "reset communication";
+  case event::kind::heartbeat: return "heartbeat consumer event";
+  case event::kind::life_guard_lost: return "life guarding lost";
+  case event::kind::life_guard_resumed: return "life guarding resumed";
+  case event::kind::pdo: return "PDO event";
+  case event::kind::sync: return "SYNC received";
+  }
+  return "?";
+}
 
 /// The node-managed EMCY codes (see above).
 namespace managed_code {

@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 namespace fieldcodec::canopen::node {
@@ -108,6 +109,19 @@ struct pdo_event {
   std::uint8_t refused = 0; ///< received: objects the store refused
   friend constexpr bool operator==(const pdo_event &, const pdo_event &) = default;
 };
+
+/// A short, stable text for a PDO event (for logs; the texts do not change between versions).
+[[nodiscard]] constexpr std::string_view to_string(pdo_event::kind k) noexcept {
+  switch (k) {
+  case pdo_event::kind::received: return "RPDO received";
+  case pdo_event::kind::too_short: return "RPDO too short";
+  case pdo_event::kind::too_long: return "RPDO too long";
+  case pdo_event::kind::outside_window: return "RPDO outside the synchronous window";
+  case pdo_event::kind::timeout: return "RPDO timeout";
+  case pdo_event::kind::not_sent: return "TPDO not sent";
+  }
+  return "?";
+}
 
 /// A PDO's parameters as the engine holds them. (Every member is 0 until the engine loads them:
 /// an engine's tables start as zeros, which cost a firmware image no initialising code.)
