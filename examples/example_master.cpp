@@ -36,13 +36,13 @@ constexpr std::uint8_t node = 5;
 
 // ----- the simulated XENAX -------------------------------------------------------------------
 
-constexpr auto layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 
 struct simulated_xenax {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout.storage_size());
-  sdo::dictionary_store<> store{xcan::dictionary, layout, storage};
+  co::dictionary_store<> store{xcan::dictionary, layout, storage};
   std::array<std::uint8_t, 256> buffer{};
-  sdo::server<sdo::dictionary_store<>> server{node, store, buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, buffer};
   co::nmt::state nmt = co::nmt::state::pre_operational;
   ds402::state state = ds402::state::switch_on_disabled;
   std::uint16_t previous_cw = 0;

@@ -25,14 +25,14 @@ namespace co = fieldcodec::canopen;
 namespace csdo = fieldcodec::canopen::sdo;
 namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 
-inline constexpr auto xcan_layout = csdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+inline constexpr auto xcan_layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 
 struct device {
   std::uint8_t node;
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(xcan_layout.storage_size());
-  csdo::dictionary_store<> store{xcan::dictionary, xcan_layout, storage};
+  co::dictionary_store<> store{xcan::dictionary, xcan_layout, storage};
   std::array<std::uint8_t, 256> buffer{};
-  csdo::server<csdo::dictionary_store<>> server{node, store, buffer};
+  csdo::server<co::dictionary_store<>> server{node, store, buffer};
   co::nmt::state nmt = co::nmt::state::pre_operational;
 
   // misbehaviour
