@@ -19,12 +19,16 @@
 // the NMT state, and when to poll at the latest. What happened is in events().
 //
 // The node keeps the store and its services consistent through the store's writes: SDO
-// downloads and RPDOs reach the store through the device (device::access), which first checks
-// the CiA 301 rules of the communication objects it serves (1003h, 1005h, 1014h, 1016h, 1019h,
-// 1200h–12FFh, 1400h–1BFFh), then lets the store write (its checks and the application's write
-// hook), then follows the new value (1005h, 1007h, 100Ch, 100Dh, 1014h–1017h, 1019h, SDO and
-// PDO parameters) and marks the event-driven TPDOs that map the object. Nothing is rescanned.
-// The application writes its own values with set() (same path, no access check, no hook).
+// downloads and RPDOs reach the store through the device (device::access). Each service owns
+// its communication objects (the SYNC consumer 1005h, 1007h, 1019h; life guarding 100Ch,
+// 100Dh; the EMCY producer 1001h, 1003h, 1014h, 1015h; the heartbeat producer 1017h and
+// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh) and has the
+// three members the device calls for every service in turn (each_service): check_write (the
+// CiA 301 rules of its objects), written (follow a stored value) and load (read them all at
+// start and after a reset). A write is checked by the owning service, stored by the store
+// (its checks and the application's write hook), followed by the owning service, and the
+// event-driven TPDOs that map the object are marked. Nothing is rescanned. The application
+// writes its own values with set() (same path, no access check, no hook).
 //
 // The node owns 1001h (error register) and 1003h (pre-defined error field) and writes them
 // whenever its EMCY producer changes, and it raises and clears these EMCY codes itself:
@@ -44,12 +48,14 @@
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
 #include <fieldcodec/canopen/node/emcy_producer.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
+#include <fieldcodec/canopen/node/store.hpp>
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>

@@ -29,9 +29,13 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
@@ -210,14 +214,14 @@ public:
   }
   /// Start afresh (boot, NMT reset: no errors, empty history, nothing queued) with 1014h and
   /// 1015h from `store`, and note where 1003h is, for publish().
-  template <node_store Store>
+  template <class Store>
   constexpr status load(const Store &store, std::uint32_t) noexcept {
     reset();
     if (const auto v = read_u32(store, {0x1014, 0})) load_cob_id(*v);
     if (const auto v = read_u32(store, {0x1015, 0})) set_inhibit(static_cast<std::uint16_t>(*v));
-    const od::dictionary dict = store.dictionary();
+    const auto dict = store.dictionary();
     history_subs_ = 0;
-    for (const od::entry &e : dict.object(0x1003)) {
+    for (const auto &e : dict.object(0x1003)) {
       if (e.sub > history_subs_) history_subs_ = e.sub;
     }
     has_history_ = history_subs_ != 0U || dict.contains(0x1003, 0);
@@ -226,7 +230,7 @@ public:
   /// After a change (take_changed()): write the error register to 1001h and the history to
   /// 1003h (sub 1.. newest first, the others 0, then sub 0 = the number of entries) with the
   /// store's set().
-  template <node_store Store>
+  template <class Store>
   constexpr void publish(Store &store) noexcept {
     if (!take_changed()) return;
     (void)store.set({0x1001, 0}, encode_le(error_register(), 1).span());

@@ -20,9 +20,12 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
@@ -62,7 +65,7 @@ public:
   }
   /// 1017h from `store` (0 when absent); the next heartbeat a period after `now` (the boot-up
   /// message, sent at the same time, counts as the first).
-  template <sdo::object_store Store>
+  template <class Store>
   constexpr status load(const Store &store, std::uint32_t now) noexcept {
     configure(static_cast<std::uint16_t>(read_u32(store, {0x1017, 0}).value_or(0U)), now);
     return {};
@@ -209,11 +212,11 @@ public:
   /// Every entry from 1016h in `store`, each monitor waiting for a first heartbeat. Errors:
   /// too_long (1016h has more entries than N: those are not served), invalid_argument (a stored
   /// entry check() refuses, e.g. a second entry for a node: left off).
-  template <node_store Store>
+  template <class Store>
   constexpr status load(const Store &store, std::uint32_t now) noexcept {
     status st{};
     for (std::size_t i = 0; i < N; ++i) (void)configure(i, 0, now);
-    for (const od::entry &e : store.dictionary().object(0x1016)) {
+    for (const auto &e : store.dictionary().object(0x1016)) {
       if (e.sub == 0U) continue;
       if (e.sub > N) {
         st = errc::too_long;
@@ -391,7 +394,7 @@ public:
     if (a.index == 0x100DU) configure(guard_ms_, static_cast<std::uint8_t>(v));
   }
   /// 100Ch and 100Dh from `store` (0 when absent); waiting for a first request.
-  template <sdo::object_store Store>
+  template <class Store>
   constexpr status load(const Store &store, std::uint32_t) noexcept {
     configure(static_cast<std::uint16_t>(read_u32(store, {0x100C, 0}).value_or(0U)),
               static_cast<std::uint8_t>(read_u32(store, {0x100D, 0}).value_or(0U)));

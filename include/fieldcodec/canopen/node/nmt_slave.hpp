@@ -22,7 +22,6 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
 

@@ -48,7 +48,10 @@
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/step.hpp>

@@ -19,10 +19,13 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/canopen/sync.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -81,7 +84,7 @@ public:
     if (a.index == 0x1019U) (void)set_overflow(v);
   }
   /// Start afresh from the values of 1005h, 1007h and 1019h in `store` (boot, NMT reset).
-  template <sdo::object_store Store>
+  template <class Store>
   constexpr status load(const Store &store, std::uint32_t now) noexcept {
     *this = sync_consumer{};
     constexpr std::uint16_t objects[] = {0x1005, 0x1007, 0x1019};
