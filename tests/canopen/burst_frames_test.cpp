@@ -273,3 +273,48 @@ TEST_CASE("encode_block_segment equals the round-4 encoder for every sequence nu
     }
   }
 }
+
+// frames::burst is generic (step.hpp knows no SDO): any maker, frames made when they are read.
+namespace {
+/// Frame i of the test burst: on the burst's id, data[0] = i, data[1] = the data's byte i (or 0),
+/// data[2] = the flag.
+constexpr void test_maker(const co::frames &b, std::size_t first,
+                          std::span<co::can_frame> out) noexcept {
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::size_t i = first + j;
+    co::can_frame f;
+    f.id = b.burst_id();
+    f.dlc = 3;
+    f.data[0] = static_cast<std::uint8_t>(i);
+    f.data[1] = i < b.burst_data().size() ? b.burst_data()[i] : std::uint8_t{0};
+    f.data[2] = b.burst_flag() ? 1U : 0U;
+    out[j] = f;
+  }
+}
+constexpr std::array<std::uint8_t, 3> burst_bytes{7, 8, 9};
+} // namespace
+
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker).size() == 5U);
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker).is_burst());
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker)[2].data[1] == 9U);
+
+TEST_CASE("a burst of any maker: operator[], iteration and copy_to give the maker's frames") {
+  const auto b = co::frames::burst(0x321, burst_bytes, 4, false, &test_maker);
+  CHECK(b.burst_id() == 0x321U);
+  CHECK(b.burst_data().size() == 3U);
+  CHECK_FALSE(b.burst_flag());
+  std::size_t i = 0;
+  for (const co::can_frame &f : b) {
+    CHECK(f.id == 0x321U);
+    CHECK(f.data[0] == i);
+    CHECK(f.data[1] == (i < 3U ? burst_bytes[i] : 0U));
+    CHECK(f.data[2] == 0U);
+    ++i;
+  }
+  CHECK(i == 4U);
+  std::array<co::can_frame, 3> q{};
+  CHECK(b.copy_to(q, 2) == 2U); // frames 2 and 3
+  CHECK(q[0] == b[2]);
+  CHECK(q[1] == b[3]);
+  CHECK(b.copy_to(q, 4) == 0U);
+}

@@ -297,54 +297,7 @@ public:
   /// A received frame: routed by COB-ID to the service it belongs to.
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
     begin(now);
-    if (!started_ || f.id > max_can_id || f.dlc > max_dlc) return finish(now);
-    if (f.id == cob_id::nmt) {
-      nmt_frame(f, now);
-      return finish(now);
-    }
-    const nmt::state s = nmt_.state();
-    if (s == nmt::state::boot_up) return finish(now);
-    if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
-      if (auto r = guard_.respond(f, s)) out_.push(r.value());
-      const auto before = life_.state();
-      (void)life_.on_request(now);
-      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
-      return finish(now);
-    }
-    if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
-      const auto r = sync_.on_frame(f, now);
-      if (r.state.received) {
-        event e{event::kind::sync};
-        e.counter = r.state.counter;
-        push_event(e);
-        take(pdo_.on_sync(r.state.counter, now));
-        pdo_events();
-      }
-      return finish(now);
-    }
-    if (allowed(s, service::sdo)) {
-      if (auto r = sdo_.on_frame(f, now)) {
-        if (r->send.is_burst()) {
-          burst_ = r->send;
-        } else {
-          take(*r);
-        }
-        return finish(now);
-      }
-    }
-    if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
-      (void)consumer_.on_frame(f, now);
-      for (const auto &h : consumer_.events()) {
-        event e{event::kind::heartbeat};
-        e.heartbeat = h;
-        push_event(e);
-      }
-      return finish(now);
-    }
-    if (allowed(s, service::pdo)) {
-      take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
-      pdo_events();
-    }
+    route(f, now);
     return finish(now);
   }
 
@@ -581,6 +534,58 @@ private:
     d = earliest(d, pdo_.deadline(now), now);
     d = earliest(d, sdo_.deadline(now), now);
     return d;
+  }
+
+  /// on_frame's routing (the step is built once, after it).
+  constexpr void route(const can_frame &f, std::uint32_t now) noexcept {
+    if (!started_ || f.id > max_can_id || f.dlc > max_dlc) return;
+    if (f.id == cob_id::nmt) {
+      nmt_frame(f, now);
+      return;
+    }
+    const nmt::state s = nmt_.state();
+    if (s == nmt::state::boot_up) return;
+    if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
+      if (auto r = guard_.respond(f, s)) out_.push(r.value());
+      const auto before = life_.state();
+      (void)life_.on_request(now);
+      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
+      return;
+    }
+    if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
+      const auto r = sync_.on_frame(f, now);
+      if (r.state.received) {
+        event e{event::kind::sync};
+        e.counter = r.state.counter;
+        push_event(e);
+        take(pdo_.on_sync(r.state.counter, now));
+        pdo_events();
+      }
+      return;
+    }
+    if (allowed(s, service::sdo)) {
+      if (auto r = sdo_.on_frame(f, now)) {
+        if (r->send.is_burst()) {
+          burst_ = r->send;
+        } else {
+          take(*r);
+        }
+        return;
+      }
+    }
+    if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
+      (void)consumer_.on_frame(f, now);
+      for (const auto &h : consumer_.events()) {
+        event e{event::kind::heartbeat};
+        e.heartbeat = h;
+        push_event(e);
+      }
+      return;
+    }
+    if (allowed(s, service::pdo)) {
+      take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
+      pdo_events();
+    }
   }
 
   // ----- NMT -------------------------------------------------------------------------------

@@ -74,12 +74,13 @@ public:
   /// The heartbeat when it is due, with the state `s`. A poll later than one period sends one
   /// heartbeat (not one per missed period) and schedules the next a period after `now`.
   [[nodiscard]] constexpr step poll(std::uint32_t now, nmt::state s) noexcept {
-    if (period_ == 0U || !reached(due_, now)) return make({}, s);
-    due_ += period_;
-    if (reached(due_, now)) due_ = now + period_;
-    auto f = nmt::encode_heartbeat(node_, s);
-    if (!f) return make({}, s);
-    return make(frames(f.value()), s);
+    frames out;
+    if (period_ != 0U && reached(due_, now)) {
+      due_ += period_;
+      if (reached(due_, now)) due_ = now + period_;
+      if (const auto f = nmt::encode_heartbeat(node_, s)) out = frames(f.value());
+    }
+    return {out, s, deadline()};
   }
 
   [[nodiscard]] constexpr std::uint16_t period() const noexcept { return period_; }
@@ -89,9 +90,6 @@ public:
   }
 
 private:
-  [[nodiscard]] constexpr step make(frames f, nmt::state s) const noexcept {
-    return {f, s, deadline()};
-  }
   std::uint8_t node_;
   std::uint16_t period_ = 0;
   std::uint32_t due_ = 0;
