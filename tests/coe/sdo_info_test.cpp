@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <list>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -138,8 +139,11 @@ TEST_CASE("SDO information: bad input") {
         errc::unknown_command);
   CHECK(coe::decode_info(bytes{10, 0, 0, 0, 0, 0x13, 0x00, 0x20, 0x40, 0, 0x10, 0, 0, 0, 0, 0}) ==
         errc::unexpected_frame);
-  const auto req = [](std::initializer_list<std::uint8_t> body) {
-    bytes b{static_cast<std::uint8_t>(2 + body.size()), 0, 0, 0, 0, 0x13, 0x00, 0x80};
+  // decode_info() returns a view into its input: each request keeps its bytes alive here.
+  std::list<bytes> keep;
+  const auto req = [&keep](std::initializer_list<std::uint8_t> body) {
+    bytes& b = keep.emplace_back(
+        bytes{static_cast<std::uint8_t>(2 + body.size()), 0, 0, 0, 0, 0x13, 0x00, 0x80});
     b.insert(b.end(), body);
     return coe::decode_info(b).value();
   };
