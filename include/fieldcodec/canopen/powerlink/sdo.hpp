@@ -125,8 +125,10 @@ encode_sequence(const sequence_header &h) noexcept {
     return errc::out_of_range;
   }
   return std::array<std::uint8_t, sequence_header_size>{
-      static_cast<std::uint8_t>((h.receive_sequence << 2U) | static_cast<unsigned>(h.rcon)),
-      static_cast<std::uint8_t>((h.send_sequence << 2U) | static_cast<unsigned>(h.scon)), 0, 0};
+      static_cast<std::uint8_t>((unsigned{h.receive_sequence} << 2U) |
+                                static_cast<unsigned>(h.rcon)),
+      static_cast<std::uint8_t>((unsigned{h.send_sequence} << 2U) | static_cast<unsigned>(h.scon)),
+      0, 0};
 }
 /// Read a sequence layer header (the reserved bytes are ignored). Errors: truncated.
 [[nodiscard]] constexpr result<sequence_header>
