@@ -8,6 +8,7 @@
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/dpq/emergency.hpp>
 #include <fieldcodec/ds402/error_code.hpp>
