@@ -1,6 +1,7 @@
 #!/bin/sh
 # Regenerate include/fieldcodec/dictionaries/<name>.hpp from every dictionaries/*.eds, *.dcf
-# and *.csv, the EDS exports in dictionaries/export/ (DPQ) and the dictionary of the firmware
+# and *.csv, the EDS exports in dictionaries/export/ (DPQ), the XDD exports there (XENAX
+# CANopen and POWERLINK) and the dictionary of the firmware
 # example (examples/firmware/io_node_dictionary.hpp from io_node.eds). With --check nothing is
 # written: the script fails (exit 1) when a checked-in header differs from what the generator
 # writes, is missing, or has no source any more.
@@ -36,6 +37,9 @@ eds_exports="dpq_parameters"
 # because CiA 301 tools refuse a communication parameter without its mapping parameter
 # (docs/dpq.md "EDS export").
 export_only_dpq_parameters="0x0000-0x17FF,0x1A00-0xFFFF"
+# XML device descriptions of the XENAX dictionaries (manual 2.4 lists Xenax_CANopen.xdd and
+# Xenax_Powerlink.xdd): name:profile, written to dictionaries/export/<name>.xdd
+xdd_exports="xenax_canopen:canopen xenax_powerlink:powerlink"
 mkdir -p "$out"
 status=0
 expected=
@@ -66,6 +70,13 @@ for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
         status=1
       fi ;;
   esac
+  for x in $xdd_exports; do
+    [ "${x%%:*}" = "$stem" ] || continue
+    mkdir -p dictionaries/export
+    if ! "$gen" $check --quiet --xdd-profile "${x#*:}" --xdd "dictionaries/export/$stem.xdd" "$src"; then
+      status=1
+    fi
+  done
 done
 # Example dictionaries generated from an EDS beside the example that uses them (the header says
 # "Regenerate with codegen/regenerate.sh"): source:name:output

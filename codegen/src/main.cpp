@@ -32,12 +32,19 @@ constexpr const char *usage_text =
     R"(usage: fieldcodec-gen [options] INPUT
 
 Reads INPUT (.eds or .dcf: CiA 306; .csv: object or command table, see
-docs/dictionary-formats.md) and writes a constexpr C++ header and/or an EDS.
+docs/dictionary-formats.md; .xdd, .xdc or .xpd: CiA 311 CANopen or EPSG DS 311
+POWERLINK) and writes a constexpr C++ header, an EDS and/or an XDD.
 
 options:
   -o, --output FILE   write the C++ header to FILE ("-" for standard output)
       --eds FILE      write the dictionary as a CiA 306 EDS/DCF to FILE ("-" for
                       standard output); for CSV object tables and EDS/DCF input
+      --xdd FILE      write the dictionary as an XDD (an XDC when it has DCF values)
+                      to FILE ("-" for standard output); what an XDD cannot hold is
+                      reported as warnings
+      --xdd-profile canopen|powerlink
+                      the XDD's profile: CiA 311 CANopen or EPSG DS 311 POWERLINK
+                      (default: the profile of an XDD/XDC input, else canopen)
       --name NAME     namespace name below fieldcodec::dictionaries (default: from
                       the input's file name, e.g. dpq_parameters)
       --check         do not write; exit 1 when an output file differs from what
@@ -70,7 +77,7 @@ options:
   -h, --help          show this text
       --version       show the version
 
-Without -o or --eds the input is only checked. Diagnostics are printed as
+Without -o, --eds or --xdd the input is only checked. Diagnostics are printed as
 file:line:column: error|warning: message, in line order, followed by a count
 ("2 errors, 1 warning"). Exit status: 0 success, 1 errors in the input (or a
 difference under --check), 2 usage errors.
@@ -178,6 +185,8 @@ struct command_line {
   std::string input;
   std::string header_out;
   std::string eds_out;
+  std::string xdd_out;
+  fieldcodec::gen::bus_profile xdd_profile = fieldcodec::gen::bus_profile::unspecified;
   std::string config_out;
   fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
   std::string name;
@@ -209,6 +218,18 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.header_out)) return usage_error("option " + a + " needs a file name");
     } else if (a == "--eds") {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
+    } else if (a == "--xdd") {
+      if (!value(cl.xdd_out)) return usage_error("option --xdd needs a file name");
+    } else if (a == "--xdd-profile") {
+      std::string v;
+      if (!value(v)) return usage_error("option --xdd-profile needs canopen or powerlink");
+      if (v == "canopen") {
+        cl.xdd_profile = fieldcodec::gen::bus_profile::canopen;
+      } else if (v == "powerlink") {
+        cl.xdd_profile = fieldcodec::gen::bus_profile::powerlink;
+      } else {
+        return usage_error("--xdd-profile '" + v + "': expected canopen or powerlink");
+      }
     } else if (a == "--config-list") {
       if (!value(cl.config_out)) return usage_error("option --config-list needs a file name");
     } else if (a == "--config-values") {
@@ -314,9 +335,41 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
                          std::string(fieldcodec::od::name(e.type)) + ")");
       }
     }
+    // CiA 306 PDOMapping is 0 or 1: a direction (CSV rx/tx, XDD RPDO/TPDO, ESI R/T) is not kept
+    std::size_t directed = 0;
+    int first_line = 0;
+    for (const auto &e : dict.entries) {
+      if (e.pdo == fieldcodec::od::pdo_mapping::rx || e.pdo == fieldcodec::od::pdo_mapping::tx) {
+        if (directed++ == 0) first_line = e.line;
+      }
+    }
+    if (directed != 0U) {
+      lost.warning(cl.input, first_line, 0,
+                   std::to_string(directed) + (directed == 1U ? " entry" : " entries") +
+                       " mappable into RPDOs or TPDOs only written as PDOMapping=1 (CiA 306 "
+                       "has no PDO direction)");
+    }
     put(stderr, lost.text(!cl.quiet));
     if (lost.has_errors()) return 1;
     rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
+  }
+  if (!cl.xdd_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table cannot be written as XDD\n");
+      return 1;
+    }
+    auto profile = cl.xdd_profile;
+    if (profile == fieldcodec::gen::bus_profile::unspecified) {
+      profile = dict.profile == fieldcodec::gen::bus_profile::powerlink
+                    ? fieldcodec::gen::bus_profile::powerlink
+                    : fieldcodec::gen::bus_profile::canopen;
+    }
+    fieldcodec::gen::diagnostics lost;
+    lost.strict = cl.strict;
+    const std::string text = fieldcodec::gen::write_xdd(dict, profile, cl.input, lost);
+    put(stderr, lost.text(!cl.quiet));
+    if (lost.has_errors()) return 1;
+    rc |= output(cl.xdd_out, text, cl.check);
   }
   return rc;
 }

@@ -140,6 +140,10 @@ struct other_section {
   return index >= 0x2000U && index < 0x6000U ? object_list::manufacturer : object_list::optional;
 }
 
+/// The bus an XML device description is for: an XDD/XDC names CANopen (CiA 311) or POWERLINK
+/// (EPSG DS 311), an ESI is EtherCAT (ETG.2000). `unspecified` for EDS, DCF and CSV input.
+enum class bus_profile : std::uint8_t { unspecified, canopen, powerlink, ethercat };
+
 /// One row of a command table.
 struct command {
   std::uint16_t code = 0;
@@ -171,6 +175,8 @@ struct dictionary {
   bool is_dcf = false;
   int node_id = -1; ///< [DeviceComissioning] NodeID, -1 when absent
   std::string node_name;
+  /// The bus of the XML description read (the XDD writer's default profile).
+  bus_profile profile = bus_profile::unspecified;
 };
 
 } // namespace fieldcodec::gen

@@ -95,8 +95,10 @@ std::optional<dictionary> read_file(const std::string &path, diagnostics &diag) 
     d = read_csv(bytes, path, diag);
   } else if (ext == "eds" || ext == "dcf") {
     d = read_eds(bytes, path, diag);
+  } else if (ext == "xdd" || ext == "xdc" || ext == "xpd") {
+    d = read_xdd(bytes, path, diag);
   } else {
-    diag.error(path, 0, 0, "expected a file ending in .eds, .dcf or .csv");
+    diag.error(path, 0, 0, "expected a file ending in .eds, .dcf, .csv, .xdd, .xdc or .xpd");
     return std::nullopt;
   }
   if (d) {

@@ -16,6 +16,11 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::optional<dictionary> read_eds(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
 
+/// Read an XDD, XDC or XPD (ISO 15745 profile container: CiA 311 CANopen or EPSG DS 311
+/// POWERLINK; docs/generator.md "XDD and XDC").
+[[nodiscard]] std::optional<dictionary> read_xdd(std::string_view text, const std::string &file,
+                                                 diagnostics &diag);
+
 /// Read a CSV object or command table (docs/dictionary-formats.md).
 [[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
@@ -29,8 +34,24 @@ void check_pdo_pairs(const dictionary &d, const std::string &file, diagnostics &
 /// no communication objects, and CANopen tools refuse an EDS without them.
 void add_mandatory_objects(dictionary &d);
 
+/// A number of entry `e` as the writers write it (and the readers read it back unchanged):
+/// signed values in decimal, values of unsigned types as `0x…` hex, reals in their shortest
+/// round-trip form, decimals as written, node-ID relative values as `$NODEID+…`.
+[[nodiscard]] std::string entry_number(const entry &e, const od::number &n, bool nodeid);
+
+/// A limit of entry `e` as the writers write it: entry_number(), except that the limits of a
+/// scaled CSV row (engineering units) are written as raw values, cut to the field's range.
+[[nodiscard]] std::string limit_number(const entry &e, const od::number &n, bool nodeid);
+
 /// Write a dictionary (object table) as a CiA 306 EDS (or DCF when it has DCF values).
 [[nodiscard]] std::string write_eds(const dictionary &d);
+
+/// Write a dictionary as an XDD (an XDC when it has DCF values) for `profile`: CiA 311 CANopen
+/// or EPSG DS 311 POWERLINK. What the XDD cannot hold (CiA 306 keys without an XDD attribute,
+/// object links, CSV columns, ...) is reported to `diag` as warnings naming it; `file` names the
+/// source in them.
+[[nodiscard]] std::string write_xdd(const dictionary &d, bus_profile profile,
+                                    const std::string &file, diagnostics &diag);
 
 /// Emit the C++ header.
 [[nodiscard]] std::string emit_header(const dictionary &d);
@@ -68,7 +89,8 @@ private:
   std::string_view view_;
 };
 
-/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv). Reports unreadable files.
+/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv, XDD/XDC by .xdd/.xdc/.xpd).
+/// Reports unreadable files.
 [[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
 
 } // namespace fieldcodec::gen
