@@ -382,7 +382,9 @@ private:
         {"DefaultValue", "defaultValue"},  {"LowLimit", "lowLimit"},
         {"HighLimit", "highLimit"},        {"PDOMapping", "PDOmapping"},
         {"ParameterValue", "actualValue"}, {"Denotation", "denotation"}};
-    for (const auto &[k, v] : info.other_keys) {
+    for (const auto &kv : info.other_keys) {
+      const std::string &k = kv.first; // (clang 14 captures no structured binding)
+      const std::string &v = kv.second;
       const auto *a = std::find_if(std::begin(attrs), std::end(attrs),
                                    [&](const auto &x) { return iequals(x.first, k); });
       if (a == std::end(attrs)) {
@@ -565,7 +567,8 @@ private:
   // ---- what has no place ------------------------------------------------------------------------
   void not_written() {
     std::string keys;
-    for (const auto &[k, v] : d_.file_info) {
+    for (const auto &kv : d_.file_info) {
+      const std::string &k = kv.first;
       if (std::none_of(std::begin(file_keys), std::end(file_keys),
                        [&](const mapped_key &m) { return m.eds_key == k; })) {
         keys += (keys.empty() ? "" : ", ") + k;
@@ -573,7 +576,8 @@ private:
     }
     if (!keys.empty()) lost(0, "[FileInfo] " + keys + " not written to the XDD (no XDD attribute)");
     keys.clear();
-    for (const auto &[k, v] : d_.device_info) {
+    for (const auto &kv : d_.device_info) {
+      const std::string &k = kv.first;
       const bool identity = std::any_of(std::begin(identity_keys), std::end(identity_keys),
                                         [&](const mapped_key &m) { return m.eds_key == k; });
       const bool feature =
