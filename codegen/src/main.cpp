@@ -33,7 +33,8 @@ constexpr const char *usage_text =
 
 Reads INPUT (.eds or .dcf: CiA 306; .csv: object or command table, see
 docs/dictionary-formats.md; .xdd, .xdc or .xpd: CiA 311 CANopen or EPSG DS 311
-POWERLINK) and writes a constexpr C++ header, an EDS and/or an XDD.
+POWERLINK; .xml: EtherCAT ESI, ETG.2000) and writes a constexpr C++ header, an
+EDS and/or an XDD.
 
 options:
   -o, --output FILE   write the C++ header to FILE ("-" for standard output)
@@ -45,6 +46,8 @@ options:
       --xdd-profile canopen|powerlink
                       the XDD's profile: CiA 311 CANopen or EPSG DS 311 POWERLINK
                       (default: the profile of an XDD/XDC input, else canopen)
+      --device DEVICE the device of an ESI that describes several: its name,
+                      PRODUCTCODE or PRODUCTCODE:REVISION (0x.../#x... or decimal)
       --name NAME     namespace name below fieldcodec::dictionaries (default: from
                       the input's file name, e.g. dpq_parameters)
       --check         do not write; exit 1 when an output file differs from what
@@ -190,6 +193,7 @@ struct command_line {
   std::string config_out;
   fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
   std::string name;
+  fieldcodec::gen::read_options read;
   bool check = false;
   bool strict = false;
   bool quiet = false;
@@ -241,6 +245,10 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
         cl.config_values = fieldcodec::gen::config_values::default_;
       } else {
         return usage_error("--config-values '" + v + "': expected parameter or default");
+      }
+    } else if (a == "--device") {
+      if (!value(cl.read.device) || cl.read.device.empty()) {
+        return usage_error("option --device needs a device name or product code");
       }
     } else if (a == "--name") {
       if (!value(cl.name)) return usage_error("option --name needs a name");
@@ -388,7 +396,7 @@ int main(int argc, char **argv) {
   if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
   fieldcodec::gen::diagnostics diag;
   diag.strict = cl.strict;
-  auto dict = fieldcodec::gen::read_file(cl.input, diag);
+  auto dict = fieldcodec::gen::read_file(cl.input, diag, cl.read);
   if (dict && !diag.has_errors()) {
     const auto &o = cl.opts;
     if (dict->is_command_table && (!o.only.empty() || o.compact_arrays || o.string_capacity ||

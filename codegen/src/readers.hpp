@@ -21,6 +21,14 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::optional<dictionary> read_xdd(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
 
+/// Read an ESI (EtherCAT Slave Information, ETG.2000): the object dictionary of one device and
+/// its PDOs, sync managers and mailbox (dictionary::ethercat). `device` chooses the device of a
+/// file that describes several: its Type text or Name, "<product code>" or
+/// "<product code>:<revision>" (decimal, 0x… or #x…); empty: the only one (a file with several
+/// is an error that lists them). An XDD given as .xml is read as an XDD.
+[[nodiscard]] std::optional<dictionary> read_esi(std::string_view text, const std::string &file,
+                                                 diagnostics &diag, const std::string &device = {});
+
 /// Read a CSV object or command table (docs/dictionary-formats.md).
 [[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
@@ -89,8 +97,14 @@ private:
   std::string_view view_;
 };
 
-/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv, XDD/XDC by .xdd/.xdc/.xpd).
-/// Reports unreadable files.
-[[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
+/// What read_file passes on to a reader.
+struct read_options {
+  std::string device; ///< the ESI device to read (read_esi)
+};
+
+/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv, XDD/XDC by .xdd/.xdc/.xpd, ESI by
+/// .xml). Reports unreadable files.
+[[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag,
+                                                  const read_options &options = {});
 
 } // namespace fieldcodec::gen

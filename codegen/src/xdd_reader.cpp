@@ -56,10 +56,8 @@ class xdd_reader {
 public:
   xdd_reader(const std::string &file, diagnostics &diag) : file_(file), diag_(diag) {}
 
-  std::optional<dictionary> read(std::string_view bytes) {
-    auto doc = xml::parse(bytes, file_, diag_);
-    if (!doc) return std::nullopt;
-    const xml::element &root = doc->root;
+  std::optional<dictionary> read(const xml::document &doc) {
+    const xml::element &root = doc.root;
     if (root.local != "ISO15745ProfileContainer") {
       error(root.at, "expected the root element <ISO15745ProfileContainer> of an XDD/XDC, got <" +
                          std::string(root.name) + ">");
@@ -1163,10 +1161,17 @@ private:
 
 } // namespace
 
+std::optional<dictionary> read_xdd_document(const xml::document &doc, const std::string &file,
+                                            diagnostics &diag) {
+  xdd_reader r(file, diag);
+  return r.read(doc);
+}
+
 std::optional<dictionary> read_xdd(std::string_view bytes, const std::string &file,
                                    diagnostics &diag) {
-  xdd_reader r(file, diag);
-  return r.read(bytes);
+  const auto doc = xml::parse(bytes, file, diag);
+  if (!doc) return std::nullopt;
+  return read_xdd_document(*doc, file, diag);
 }
 
 } // namespace fieldcodec::gen

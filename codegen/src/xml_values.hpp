@@ -6,6 +6,7 @@
 #include "model.hpp"
 #include "xml.hpp"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -42,5 +43,10 @@ bool check_value_range(const xml_place &place, const entry &e);
                                              std::string_view element_name,
                                              std::string_view language_attribute,
                                              std::vector<std::string> &other_languages);
+
+/// The XDD reader on a document read already (read_esi reads an XDD given as .xml with it).
+[[nodiscard]] std::optional<dictionary> read_xdd_document(const xml::document &doc,
+                                                          const std::string &file,
+                                                          diagnostics &diag);
 
 } // namespace fieldcodec::gen
