@@ -21,15 +21,15 @@ namespace {
 struct flat_sub {
   std::uint8_t sub = 0;
   std::string name;
-  std::string type; // the type's name
+  std::string type;                   // the type's name
   const xml::element *item = nullptr; // the DataType SubItem (access, PDO mapping)
   bool element_of_array = false;
 };
 
 struct data_type_def {
   const xml::element *el = nullptr;
-  std::string base;        // BaseType
-  std::uint32_t bits = 0;  // BitSize
+  std::string base;       // BaseType
+  std::uint32_t bits = 0; // BitSize
   bool array = false;
   std::uint32_t lbound = 0;
   std::uint32_t elements = 0;
@@ -165,8 +165,8 @@ private:
   }
   std::uint32_t number32(const xml::element &e, const std::string &what) {
     bool ok = true;
-    return static_cast<std::uint32_t>(number(e.text, e.text_at.line != 0 ? e.text_at : e.at, what,
-                                             0xFFFF'FFFFU, ok));
+    return static_cast<std::uint32_t>(
+        number(e.text, e.text_at.line != 0 ? e.text_at : e.at, what, 0xFFFF'FFFFU, ok));
   }
   std::uint32_t attribute32(const xml::attribute &a, const std::string &what) {
     bool ok = true;
@@ -236,9 +236,9 @@ private:
         const xml::attribute *rn = type->find_attribute("RevisionNo");
         const int_parse p = pc != nullptr ? parse_int(pc->value, int_syntax::xml) : int_parse{};
         const int_parse r = rn != nullptr ? parse_int(rn->value, int_syntax::xml) : int_parse{};
-        by_number = p.ok && p.value.to_uint64() == code.value.to_uint64() &&
-                    (colon == std::string::npos ||
-                     (r.ok && r.value.to_uint64() == rev.value.to_uint64()));
+        by_number =
+            p.ok && p.value.to_uint64() == code.value.to_uint64() &&
+            (colon == std::string::npos || (r.ok && r.value.to_uint64() == rev.value.to_uint64()));
       }
       bool by_name = trimmed(type->text) == selector_;
       for (const xml::element *n : d->children_named("Name")) {
@@ -334,10 +334,11 @@ private:
     sm.type = trimmed(c.text);
     for (const auto &a : c.attributes) {
       if (a.local == "StartAddress") {
-        sm.start = static_cast<std::uint16_t>(std::min<std::uint32_t>(attribute32(a, "StartAddress"), 0xFFFF));
+        sm.start = static_cast<std::uint16_t>(
+            std::min<std::uint32_t>(attribute32(a, "StartAddress"), 0xFFFF));
       } else if (a.local == "DefaultSize") {
-        sm.default_size =
-            static_cast<std::uint16_t>(std::min<std::uint32_t>(attribute32(a, "DefaultSize"), 0xFFFF));
+        sm.default_size = static_cast<std::uint16_t>(
+            std::min<std::uint32_t>(attribute32(a, "DefaultSize"), 0xFFFF));
         sm.has_default_size = true;
       } else if (a.local == "ControlByte") {
         sm.control = static_cast<std::uint8_t>(attribute32(a, "ControlByte") & 0xFFU);
@@ -366,7 +367,8 @@ private:
     bool have_index = false;
     for (const auto &x : c.children) {
       if (x.local == "Index") {
-        p.index = static_cast<std::uint16_t>(std::min<std::uint32_t>(number32(x, "PDO Index"), 0xFFFF));
+        p.index =
+            static_cast<std::uint16_t>(std::min<std::uint32_t>(number32(x, "PDO Index"), 0xFFFF));
         have_index = true;
       } else if (x.local == "Name") {
         continue;
@@ -374,12 +376,15 @@ private:
         p.excludes.push_back(static_cast<std::uint16_t>(number32(x, "Exclude") & 0xFFFFU));
       } else if (x.local == "Entry") {
         esi_pdo_entry e;
+        e.line = x.at.line;
         bool ok = true;
         for (const auto &f : x.children) {
           if (f.local == "Index") {
-            e.index = static_cast<std::uint16_t>(number(f.text, f.text_at, "Entry Index", 0xFFFF, ok));
+            e.index =
+                static_cast<std::uint16_t>(number(f.text, f.text_at, "Entry Index", 0xFFFF, ok));
           } else if (f.local == "SubIndex") {
-            e.sub = static_cast<std::uint8_t>(number(f.text, f.text_at, "Entry SubIndex", 0xFF, ok));
+            e.sub =
+                static_cast<std::uint8_t>(number(f.text, f.text_at, "Entry SubIndex", 0xFF, ok));
           } else if (f.local == "BitLen") {
             e.bits = static_cast<std::uint8_t>(number(f.text, f.text_at, "Entry BitLen", 0xFF, ok));
           } else if (f.local == "Name") {
@@ -407,8 +412,9 @@ private:
     const bool rx_range = p.index >= 0x1600U && p.index <= 0x17FFU;
     const bool tx_range = p.index >= 0x1A00U && p.index <= 0x1BFFU;
     if ((p.tx && !tx_range) || (!p.tx && !rx_range)) {
-      warning(c.at, std::string(c.local) + " 0x" + hex(p.index, 4) + " is outside the " +
-                        (p.tx ? "TxPDO mapping range 1A00h-1BFFh" : "RxPDO mapping range 1600h-17FFh"));
+      warning(c.at,
+              std::string(c.local) + " 0x" + hex(p.index, 4) + " is outside the " +
+                  (p.tx ? "TxPDO mapping range 1A00h-1BFFh" : "RxPDO mapping range 1600h-17FFh"));
     }
     for (const auto &other : dev.pdos) {
       if (other.index == p.index) {
@@ -656,8 +662,8 @@ private:
       e.index = index;
       e.line = o.at.line;
       e.name = info.name;
-      if (!entry_type(type, type_el->text_at, e) ||
-          !entry_flags(flags, nullptr, e, what) || !entry_values(info_el, e, what)) {
+      if (!entry_type(type, type_el->text_at, e) || !entry_flags(flags, nullptr, e, what) ||
+          !entry_values(info_el, e, what)) {
         dict_.entries.pop_back();
         return;
       }
@@ -711,8 +717,8 @@ private:
       const flat_sub &f = subs[k];
       const std::string sub_what = what + " sub " + std::to_string(f.sub);
       if (!taken.insert(f.sub).second) {
-        error(f.item->at, "duplicate sub-index " + std::to_string(f.sub) + " in data type " +
-                              type + " of " + what);
+        error(f.item->at, "duplicate sub-index " + std::to_string(f.sub) + " in data type " + type +
+                              " of " + what);
         all_ok = false;
         continue;
       }
@@ -723,8 +729,7 @@ private:
       e.line = f.item->at.line;
       e.name = f.name.empty() ? info.name + " " + std::to_string(f.sub) : f.name;
       const xml::element *item_flags = f.item->find_child("Flags");
-      const xml::element *vinfo =
-          info_of[k] != nullptr ? info_of[k]->find_child("Info") : nullptr;
+      const xml::element *vinfo = info_of[k] != nullptr ? info_of[k]->find_child("Info") : nullptr;
       if (!entry_type(f.type, f.item->at, e) || !entry_flags(flags, item_flags, e, sub_what) ||
           !entry_values(vinfo, e, sub_what)) {
         dict_.entries.pop_back();
@@ -855,9 +860,8 @@ private:
       if (e.size_declared && e.type == od::data_type::visible_string && e.size == 0U) {
         e.size = static_cast<std::uint32_t>(e.default_text.size()); // STRING(0): no length given
       } else if (e.size_declared) {
-        error(info->at, "the default of " + what + " is " +
-                            std::to_string(e.default_text.size()) + " bytes, more than its type's " +
-                            std::to_string(e.size));
+        error(info->at, "the default of " + what + " is " + std::to_string(e.default_text.size()) +
+                            " bytes, more than its type's " + std::to_string(e.size));
         return false;
       } else {
         e.size = static_cast<std::uint32_t>(e.default_text.size());
@@ -931,7 +935,8 @@ private:
     // little-endian bytes → the bit pattern in hex, which the value reader reads as the
     // reader of an XDD or EDS would (signed types as two's complement, REALs as IEEE 754)
     std::string pattern = "0x";
-    for (std::size_t i = bytes.size(); i-- > 0;) pattern += hex(static_cast<unsigned char>(bytes[i]), 2);
+    for (std::size_t i = bytes.size(); i-- > 0;)
+      pattern += hex(static_cast<unsigned char>(bytes[i]), 2);
     return read_xml_value(place, pattern, e, role);
   }
 
@@ -982,12 +987,12 @@ private:
       ++assignments;
     }
     if (mapping_objects + data_objects + assignments != 0U) {
-      diag_.warning(file_, first_line, 0,
-                    "the ESI's dictionary lacks what its PDOs describe: " +
-                        std::to_string(mapping_objects) + " PDO mapping objects, " +
-                        std::to_string(data_objects) + " mapped objects and " +
-                        std::to_string(assignments) +
-                        " sync manager assignments (1C10h+n) are added from the PDOs");
+      diag_.warning(
+          file_, first_line, 0,
+          "the ESI's dictionary lacks what its PDOs describe: " + std::to_string(mapping_objects) +
+              " PDO mapping objects, " + std::to_string(data_objects) + " mapped objects and " +
+              std::to_string(assignments) +
+              " sync manager assignments (1C10h+n) are added from the PDOs");
     }
   }
 
@@ -1012,7 +1017,8 @@ private:
     info.line = p.line;
     info.list = default_list(p.index);
     info.sub_number = static_cast<std::uint8_t>(std::min<std::size_t>(p.entries.size() + 1U, 0xFF));
-    entry n = make_entry(p.index, 0, info.code, "Number of entries", od::data_type::unsigned8, p.line);
+    entry n =
+        make_entry(p.index, 0, info.code, "Number of entries", od::data_type::unsigned8, p.line);
     n.access = p.fixed ? od::access::ro : od::access::rw;
     n.default_value = od::unsigned_number(p.entries.size());
     dict_.entries.push_back(std::move(n));
@@ -1070,8 +1076,9 @@ private:
                       ", which the dictionary's object has no sub-index for");
   }
 
-  bool add_data_object(std::uint16_t index, const std::map<std::uint8_t, const esi_pdo_entry *> &subs,
-                       bool tx, const std::string &pdo_name) {
+  bool add_data_object(std::uint16_t index,
+                       const std::map<std::uint8_t, const esi_pdo_entry *> &subs, bool tx,
+                       const std::string &pdo_name) {
     object_info info;
     info.index = index;
     info.line = 0;
@@ -1079,6 +1086,7 @@ private:
     const bool var = subs.size() == 1U && subs.begin()->first == 0U;
     info.code = var ? od::object_code::var : od::object_code::record;
     info.name = var ? subs.begin()->second->name : pdo_name;
+    if (info.name.empty()) info.name = "Object " + hex(index, 4);
     if (!var) {
       entry n = make_entry(index, 0, info.code, "Number of entries", od::data_type::unsigned8, 0);
       n.default_value = od::unsigned_number(subs.rbegin()->first);
@@ -1086,10 +1094,20 @@ private:
     }
     for (const auto &[sub, m] : subs) {
       if (!var && sub == 0U) continue;
-      entry e = make_entry(index, sub, info.code, m->name, od::data_type::domain, 0);
+      entry e = make_entry(index, sub, info.code,
+                           !m->name.empty() ? m->name
+                           : var            ? info.name
+                                            : "Entry " + std::to_string(sub),
+                           od::data_type::domain, 0);
       resolved r;
-      const std::string type = m->data_type.empty() ? std::string("?") : m->data_type;
-      if (!resolve(type, {}, r)) return false;
+      const std::string &type = m->data_type;
+      if (type.empty()) {
+        error({m->line, 0},
+              "PDO entry 0x" + hex(index, 4) + ":" + hex(sub, 2) + " \"" + m->name +
+                  "\" names no object of the dictionary and has no DataType to make one of");
+        return false;
+      }
+      if (!resolve(type, {m->line, 0}, r)) return false;
       e.type_code = r.code;
       e.type = r.type;
       if (od::is_byte_string(e.type)) {
@@ -1101,7 +1119,8 @@ private:
       e.pdo = tx ? od::pdo_mapping::tx : od::pdo_mapping::rx;
       dict_.entries.push_back(std::move(e));
     }
-    info.sub_number = static_cast<std::uint8_t>(std::min<std::size_t>(subs.size() + (var ? 0U : 1U), 0xFF));
+    info.sub_number =
+        static_cast<std::uint8_t>(std::min<std::size_t>(subs.size() + (var ? 0U : 1U), 0xFF));
     dict_.objects[index] = std::move(info);
     return true;
   }
@@ -1112,7 +1131,8 @@ private:
     info.code = od::object_code::array;
     info.name = "Sync manager " + std::to_string(sm) + " PDO assignment";
     info.list = default_list(index);
-    entry n = make_entry(index, 0, info.code, "Number of assigned PDOs", od::data_type::unsigned8, 0);
+    entry n =
+        make_entry(index, 0, info.code, "Number of assigned PDOs", od::data_type::unsigned8, 0);
     n.default_value = od::unsigned_number(list.size());
     dict_.entries.push_back(std::move(n));
     std::uint8_t sub = 1;

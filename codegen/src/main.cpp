@@ -46,6 +46,12 @@ options:
       --xdd-profile canopen|powerlink
                       the XDD's profile: CiA 311 CANopen or EPSG DS 311 POWERLINK
                       (default: the profile of an XDD/XDC input, else canopen)
+      --esi FILE      write the dictionary as an EtherCAT ESI (ETG.2000) to FILE ("-"
+                      for standard output); what an ESI cannot hold is reported
+      --pdo-header FILE
+                      write the PDO layouts to FILE: one compile-time layout per PDO,
+                      checked against the header of -o (included as
+                      <fieldcodec/dictionaries/NAME.hpp>)
       --device DEVICE the device of an ESI that describes several: its name,
                       PRODUCTCODE or PRODUCTCODE:REVISION (0x.../#x... or decimal)
       --name NAME     namespace name below fieldcodec::dictionaries (default: from
@@ -80,7 +86,7 @@ options:
   -h, --help          show this text
       --version       show the version
 
-Without -o, --eds or --xdd the input is only checked. Diagnostics are printed as
+Without -o, --eds, --xdd, --esi or --pdo-header the input is only checked. Diagnostics are printed as
 file:line:column: error|warning: message, in line order, followed by a count
 ("2 errors, 1 warning"). Exit status: 0 success, 1 errors in the input (or a
 difference under --check), 2 usage errors.
@@ -189,6 +195,8 @@ struct command_line {
   std::string header_out;
   std::string eds_out;
   std::string xdd_out;
+  std::string pdo_out;
+  std::string esi_out;
   fieldcodec::gen::bus_profile xdd_profile = fieldcodec::gen::bus_profile::unspecified;
   std::string config_out;
   fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
@@ -224,6 +232,10 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
     } else if (a == "--xdd") {
       if (!value(cl.xdd_out)) return usage_error("option --xdd needs a file name");
+    } else if (a == "--esi") {
+      if (!value(cl.esi_out)) return usage_error("option --esi needs a file name");
+    } else if (a == "--pdo-header") {
+      if (!value(cl.pdo_out)) return usage_error("option --pdo-header needs a file name");
     } else if (a == "--xdd-profile") {
       std::string v;
       if (!value(v)) return usage_error("option --xdd-profile needs canopen or powerlink");
@@ -360,6 +372,30 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
     put(stderr, lost.text(!cl.quiet));
     if (lost.has_errors()) return 1;
     rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
+  }
+  if (!cl.esi_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table cannot be written as ESI\n");
+      return 1;
+    }
+    fieldcodec::gen::diagnostics lost;
+    lost.strict = cl.strict;
+    const std::string text = fieldcodec::gen::write_esi(dict, cl.input, lost);
+    put(stderr, lost.text(!cl.quiet));
+    if (lost.has_errors()) return 1;
+    rc |= output(cl.esi_out, text, cl.check);
+  }
+  if (!cl.pdo_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table has no PDOs\n");
+      return 1;
+    }
+    fieldcodec::gen::diagnostics checks;
+    checks.strict = cl.strict;
+    const std::string text = fieldcodec::gen::emit_pdo_layouts(dict, cl.input, checks);
+    put(stderr, checks.text(!cl.quiet));
+    if (checks.has_errors()) return 1;
+    rc |= output(cl.pdo_out, text, cl.check);
   }
   if (!cl.xdd_out.empty()) {
     if (dict.is_command_table) {

@@ -155,6 +155,7 @@ struct esi_pdo_entry {
   std::uint8_t bits = 0;
   std::string name;
   std::string data_type; ///< as the ESI writes it (USINT, BOOL, BIT2, ...); empty for a gap
+  int line = 0;
 };
 
 /// An EtherCAT PDO as an ESI describes it (ETG.2000 RxPdo/TxPdo).
@@ -162,9 +163,9 @@ struct esi_pdo {
   bool tx = false; ///< TxPdo (inputs, device to master) or RxPdo (outputs)
   std::uint16_t index = 0;
   std::string name;
-  bool fixed = false;     ///< the mapping cannot be changed
-  bool mandatory = false; ///< always assigned
-  int sm = -1;            ///< the sync manager it is assigned to by default, -1: none
+  bool fixed = false;                  ///< the mapping cannot be changed
+  bool mandatory = false;              ///< always assigned
+  int sm = -1;                         ///< the sync manager it is assigned to by default, -1: none
   std::vector<std::uint16_t> excludes; ///< PDOs that cannot be assigned with it
   key_list other_attributes;           ///< attributes kept as written (Virtual, Su, OSFac, ...)
   std::vector<esi_pdo_entry> entries;
@@ -198,13 +199,13 @@ struct esi_device {
   std::vector<std::string> fmmu;
   std::vector<esi_sync_manager> sync_managers;
   std::vector<esi_pdo> pdos;
-  bool mailbox = false;           ///< a Mailbox element
-  bool data_link_layer = false;   ///< Mailbox DataLinkLayer="true"
+  bool mailbox = false;               ///< a Mailbox element
+  bool data_link_layer = false;       ///< Mailbox DataLinkLayer="true"
   std::vector<std::string> protocols; ///< CoE, FoE, EoE, SoE, VoE, AoE as present
-  key_list coe;                   ///< the CoE element's attributes as written
-  std::uint32_t eeprom_bytes = 0; ///< Eeprom/ByteSize, 0 when none
-  std::string config_data;        ///< Eeprom/ConfigData (hex) as written
-  std::string bootstrap;          ///< Eeprom/BootStrap (hex) as written
+  key_list coe;                       ///< the CoE element's attributes as written
+  std::uint32_t eeprom_bytes = 0;     ///< Eeprom/ByteSize, 0 when none
+  std::string config_data;            ///< Eeprom/ConfigData (hex) as written
+  std::string bootstrap;              ///< Eeprom/BootStrap (hex) as written
 };
 
 /// One row of a command table.

@@ -61,6 +61,22 @@ void add_mandatory_objects(dictionary &d);
 [[nodiscard]] std::string write_xdd(const dictionary &d, bus_profile profile,
                                     const std::string &file, diagnostics &diag);
 
+/// Write a dictionary as an ESI (ETG.2000 EtherCATInfo) describing one device: its dictionary
+/// (DataTypes, Objects), its PDOs (those of the ESI read, else from the mapping objects and the
+/// sync manager assignments 1C10h+n) and, when the dictionary was read from an ESI, its sync
+/// managers, FMMUs, mailbox and EEPROM data. What an ESI cannot hold is reported to `diag`.
+[[nodiscard]] std::string write_esi(const dictionary &d, const std::string &file,
+                                    diagnostics &diag);
+
+/// The PDO layouts header (--pdo-header): namespace fieldcodec::dictionaries::<stem>::pdos with
+/// one `canopen::pdo::static_mapping` per PDO (an ESI's RxPdo/TxPdo descriptions, else the
+/// default values of the mapping objects 1600h-17FFh and 1A00h-1BFFh with 32-bit entries), made
+/// by make_static_mapping with the dictionary (checked by the compiler) where the library's
+/// checks pass for it, else for lengths only, with a warning to `diag` naming the entry and the
+/// problem. The header includes <fieldcodec/dictionaries/<stem>.hpp>.
+[[nodiscard]] std::string emit_pdo_layouts(const dictionary &d, const std::string &file,
+                                           diagnostics &diag);
+
 /// Emit the C++ header.
 [[nodiscard]] std::string emit_header(const dictionary &d);
 /// Receives the header in pieces (consecutive, each non-empty).

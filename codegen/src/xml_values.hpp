@@ -45,8 +45,7 @@ bool check_value_range(const xml_place &place, const entry &e);
                                              std::vector<std::string> &other_languages);
 
 /// The XDD reader on a document read already (read_esi reads an XDD given as .xml with it).
-[[nodiscard]] std::optional<dictionary> read_xdd_document(const xml::document &doc,
-                                                          const std::string &file,
-                                                          diagnostics &diag);
+[[nodiscard]] std::optional<dictionary>
+read_xdd_document(const xml::document &doc, const std::string &file, diagnostics &diag);
 
 } // namespace fieldcodec::gen
