@@ -121,7 +121,7 @@ struct store {
     return sdo::abort_code::none;
   }
 };
-static_assert(sdo::object_store<store>);
+static_assert(co::object_store<store>);
 
 void check_client_frame(const co::can_frame &f, bool segment) {
   FUZZ_CHECK(f.is_valid() && !f.rtr && f.dlc == 8 && f.id == channel.request_id);

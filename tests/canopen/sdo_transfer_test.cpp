@@ -93,7 +93,7 @@ constexpr od::entry test_entries[] = {
 constexpr od::dictionary test_dict{test_entries};
 static_assert(test_dict.is_valid());
 
-constexpr auto test_layout = sdo::make_layout<std::size(test_entries)>(test_dict);
+constexpr auto test_layout = co::make_layout<std::size(test_entries)>(test_dict);
 
 /// A client and a server on one in-memory bus. Frames travel in order; a burst is delivered
 /// frame by frame. `fault` may change the frames of a burst on their way (lose, repeat,
@@ -101,10 +101,10 @@ constexpr auto test_layout = sdo::make_layout<std::size(test_entries)>(test_dict
 struct bus {
   static constexpr std::uint8_t node = 5;
   std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(test_dict));
-  sdo::dictionary_store<> store{test_dict, test_layout, storage};
+      std::vector<std::uint8_t>(co::dictionary_store<>::storage_size(test_dict));
+  co::dictionary_store<> store{test_dict, test_layout, storage};
   std::vector<std::uint8_t> server_buffer = std::vector<std::uint8_t>(1024);
-  sdo::server<sdo::dictionary_store<>> server{node, store, server_buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, server_buffer};
   sdo::client client{node};
   std::uint32_t now = 0;
   std::size_t frames = 0;
@@ -422,7 +422,7 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
   }
   SUBCASE("a server without block transfer refuses it cleanly") {
     std::vector<std::uint8_t> buf(64);
-    sdo::server<sdo::dictionary_store<>> plain(5, b.store, buf, 1000, {.block = false});
+    sdo::server<co::dictionary_store<>> plain(5, b.store, buf, 1000, {.block = false});
     auto r = plain.on_frame(F(0x605, {0xC6, 0x09, 0x20, 0x00, 20, 0, 0, 0}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
     CHECK(plain.error()->code == errc::unknown_command);
