@@ -209,6 +209,9 @@ TEST_CASE("esi: the PDO layouts, checked against the dictionary where they can b
   REQUIRE(o.dict);
   gen::diagnostics diag;
   const std::string h = gen::emit_pdo_layouts(*o.dict, "drive.xml", diag);
+  // the generator's layout is kept as written: a committed header passes clang-format's check
+  CHECK(h.find("// clang-format off\n#pragma once\n") != std::string::npos);
+  CHECK(h.ends_with("::pdos\n// clang-format on\n"));
   CHECK(h.find("// RxPDO 0x1600 \"Outputs\" (Sm 2, fixed, mandatory): 2 entries, 48 bits\n"
                "inline constexpr canopen::pdo::mapping_entry rxpdo_1600_entries[]{{0x6040, 0, "
                "16}, {0x607A, 0, 32}};\n"

@@ -3,6 +3,7 @@
 // canopen::pdo::make_static_mapping: with the dictionary, checked by the compiler against
 // it (objects, PDO mapping, access, lengths) and read with each object's signedness; a
 // layout that fails those checks is checked for lengths only (the comment says why).
+// clang-format off
 #pragma once
 
 #include <fieldcodec/canopen/pdo.hpp>
@@ -101,3 +102,4 @@ inline constexpr auto txpdo_1a17 = canopen::pdo::make_static_mapping(
     dictionary, canopen::pdo::direction::tpdo, txpdo_1a17_entries, 64);
 
 } // namespace fieldcodec::dictionaries::xenax_canopen::pdos
+// clang-format on
