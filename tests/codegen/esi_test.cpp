@@ -65,7 +65,9 @@ void check_same(const gen::dictionary &a, const gen::dictionary &b) {
     CHECK(x.other_keys == y.other_keys);
   }
   REQUIRE(a.objects.size() == b.objects.size());
-  for (const auto &[index, info] : a.objects) {
+  for (const auto &object : a.objects) {
+    const auto index = object.first; // CAPTURE's lambda cannot name a structured binding (clang 14)
+    const auto &info = object.second;
     CAPTURE(index);
     const auto it = b.objects.find(index);
     REQUIRE(it != b.objects.end());

@@ -81,7 +81,9 @@ void check_same(const gen::dictionary &a, const gen::dictionary &b) {
     CHECK(x.obj_flags == y.obj_flags);
   }
   REQUIRE(a.objects.size() == b.objects.size());
-  for (const auto &[index, info] : a.objects) {
+  for (const auto &object : a.objects) {
+    const auto index = object.first; // CAPTURE's lambda cannot name a structured binding (clang 14)
+    const auto &info = object.second;
     CAPTURE(index);
     const auto it = b.objects.find(index);
     REQUIRE(it != b.objects.end());
@@ -426,7 +428,9 @@ TEST_CASE("xdd: the XENAX dictionaries written as XDD read back equal (manual 2.
       {"../dictionaries/xenax_powerlink.eds", gen::bus_profile::powerlink},
       {"../dictionaries/xenax_canopen.eds", gen::bus_profile::canopen},
       {"../dictionaries/xenax_ethercat.eds", gen::bus_profile::canopen}};
-  for (const auto &[f, profile] : files) {
+  for (const auto &file : files) {
+    const char *const f = file.first; // not a structured binding: CAPTURE's lambda names it
+    const gen::bus_profile profile = file.second;
     CAPTURE(f);
     const outcome o = read(f);
     REQUIRE(o.dict);
