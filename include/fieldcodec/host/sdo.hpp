@@ -22,6 +22,7 @@
 #include <fieldcodec/host/bus.hpp>
 #include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/engineering.hpp>
 
 #include <chrono>
 #include <cstddef>
@@ -51,6 +52,8 @@ struct sdo_error {
   canopen::sdo::abort_code abort = canopen::sdo::abort_code::none;
   od::address address{};
   bool bus_failed = false;
+  /// A value refused before any frame (host::remote_node): issue != none, code == value.code.
+  od::value_error value{};
   std::string what; ///< one line naming node, object, abort code and its text
   sdo_error() = default;
   sdo_error(errc e) : code(e) {} // NOLINT: plain errors propagate into it
