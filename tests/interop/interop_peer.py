@@ -10,7 +10,7 @@ unmodified) runs. Every check prints one line "ok  <step>: <what>"; the first fa
 "SKIPPED: ..." and exits 77 (CTest's SKIP_RETURN_CODE for these tests).
 
 usage: interop_peer.py PART --bridge EXE --root REPO [--eds CORPUS_EDS] --dictionaries D...
-  PART: sdo_server | sdo_client | node | pdo
+  PART: sdo_server | sdo_client | node | pdo | errors
 """
 import argparse
 import os
@@ -785,8 +785,36 @@ def part_pdo(args):
     finally:
         s.close()
 
+
+# --- the node's CiA 301 rules and error behaviour, seen by python ----------------------------------
+
+def part_errors(args):
+    if "corpus" not in args.dictionaries:
+        print("SKIPPED: the error checks use the corpus dictionary (1006h, 1016h, 1019h; "
+              "../shared/eds-corpus absent)")
+        sys.exit(SKIP)
+    node_id = 9
+    s = Setup(args, "corpus", node_id)
+    try:
+        node = s.network.add_node(node_id, args.eds)
+        # 1019h only while 1006h is 0 (CiA 301): abort 0800 0022h otherwise
+        node.sdo.download(0x1019, 0, bytes([8]))
+        node.sdo.download(0x1006, 0, (10000).to_bytes(4, "little"))
+        expect_abort("1019h", 0x08000022, lambda: node.sdo.download(0x1019, 0, bytes([16])))
+        expect_abort("1019h", 0x08000022, lambda: node.sdo.download(0x1019, 0, bytes([8])))
+        check(node.sdo.upload(0x1019, 0) == bytes([8]), "1019h", "the refused value was stored")
+        node.sdo.download(0x1006, 0, bytes(4))
+        node.sdo.download(0x1019, 0, bytes([16]))
+        check(node.sdo.upload(0x1019, 0) == bytes([16]), "1019h", "1019h = 16 not stored")
+        node.sdo.download(0x1019, 0, bytes([0]))
+        ok("1019h", "python's downloads of 1019h abort with 0800 0022h while 1006h = 10000 us "
+           "(the value stays 8) and are taken with 1006h = 0")
+    finally:
+        s.close()
+
+
 PARTS = {"sdo_server": part_sdo_server, "sdo_client": part_sdo_client, "node": part_node,
-         "pdo": part_pdo}
+         "pdo": part_pdo, "errors": part_errors}
 
 
 def main():

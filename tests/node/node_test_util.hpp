@@ -112,7 +112,7 @@ constexpr od::entry var(std::uint16_t index, std::uint8_t sub, data_type t, acce
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
-inline constexpr std::size_t entry_count = 98;
+inline constexpr std::size_t entry_count = 99;
 
 /// The dictionary of node `n` (node-ID-relative defaults resolved for n).
 constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
@@ -131,6 +131,7 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1003, 3, u32, ro, 0),
       var(0x1003, 4, u32, ro, 0),
       var(0x1005, 0, u32, rw, 0x80),
+      var(0x1006, 0, u32, rw, 0),
       var(0x1007, 0, u32, rw, 0),
       {.index = 0x1008,
        .type = data_type::visible_string,
