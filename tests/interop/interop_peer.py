@@ -809,6 +809,27 @@ def part_errors(args):
         node.sdo.download(0x1019, 0, bytes([0]))
         ok("1019h", "python's downloads of 1019h abort with 0800 0022h while 1006h = 10000 us "
            "(the value stays 8) and are taken with 1006h = 0")
+        # EMCY 8130h names the lost node: python is node 20 and sends heartbeats, then stops
+        import can
+        python_id = 20
+        node.sdo.download(0x1016, 1, ((python_id << 16) | 150).to_bytes(4, "little"))
+        beat = can.Message(arbitration_id=0x700 + python_id, is_extended_id=False, data=[0x05])
+        for _ in range(3):
+            s.network.bus.send(beat)
+            time.sleep(0.03)
+        wait_until(lambda: any(x.code == 0x8130 for x in node.emcy.log), "emcy 8130h",
+                   "no EMCY 8130h after python's heartbeat stopped")
+        e = [x for x in node.emcy.log if x.code == 0x8130][-1]
+        check(e.data[0] == python_id and e.data[1:] == bytes(4), "emcy 8130h",
+              f"manufacturer bytes {e.data.hex()}, expected {python_id:02x}00000000")
+        check(node.sdo.upload(0x1003, 1) == bytes([0x30, 0x81, python_id, 0]), "emcy 8130h",
+              f"1003h sub 1 = {node.sdo.upload(0x1003, 1).hex()}")
+        s.network.bus.send(beat)
+        wait_until(lambda: node.emcy.log[-1].code == 0, "emcy 8130h",
+                   "no error reset after python's heartbeat came back")
+        ok("emcy 8130h", f"python's heartbeat (node {python_id}) stops: python's EmcyConsumer "
+           f"gets 8130h with manufacturer bytes {e.data.hex()} (1003h sub 1 alike); the "
+           "error reset when it resumes")
     finally:
         s.close()
 

@@ -32,9 +32,10 @@
 //
 // The node owns 1001h (error register) and 1003h (pre-defined error field) and writes them
 // whenever its EMCY producer changes, and it raises and clears these EMCY codes itself:
-// 8130h (a heartbeat consumer or life guarding lost its node), 8210h / 8220h (an RPDO too short
-// / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays active
-// while its condition lasts and clears when it is over.
+// 8130h (a heartbeat consumer or life guarding lost its node; the first manufacturer-specific
+// byte, EMCY byte 3, holds the lost node's ID, 0 for life guarding), 8210h / 8220h (an RPDO too
+// short / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays
+// active while its condition lasts and clears when it is over.
 //
 // NMT: frames are taken per CiA 301 Table 48 (node::allowed): in stopped only NMT and node
 // guarding are answered and the heartbeat is produced; SDO transfers of the servers end
@@ -718,20 +719,24 @@ private:
   constexpr void update_errors(std::uint32_t now) noexcept {
     if (!started_) return;
     const auto pdo = pdo_.rpdo_errors();
-    const unsigned on = (consumer_.any_lost() || life_.state() == guard_state::lost ? 1U : 0U) |
+    const std::uint8_t lost = consumer_.lost_node();
+    const unsigned on = (lost != 0U || life_.state() == guard_state::lost ? 1U : 0U) |
                         (pdo.too_short ? 2U : 0U) | (pdo.too_long ? 4U : 0U) |
                         (sync_.length_error() ? 8U : 0U) | (pdo.timed_out ? 16U : 0U);
     if (on == own_errors_) return;
     for (std::size_t i = 0; i < std::size(managed_codes); ++i) {
       const unsigned bit = 1U << i;
-      if (((on ^ own_errors_) & bit) != 0U) change_error(i, (on & bit) != 0U, now);
+      if (((on ^ own_errors_) & bit) != 0U) change_error(i, (on & bit) != 0U, now, lost);
     }
   }
-  /// Raise (`on`) or clear managed_codes[i].
-  constexpr void change_error(std::size_t i, bool on, std::uint32_t now) noexcept {
+  /// Raise (`on`) or clear managed_codes[i]; 8130h carries `lost` (the node-ID of the first
+  /// lost heartbeat producer, 0 for life guarding) in its first manufacturer-specific byte.
+  constexpr void change_error(std::size_t i, bool on, std::uint32_t now,
+                              std::uint8_t lost) noexcept {
     const auto bit = static_cast<std::uint8_t>(1U << i);
-    const status r =
-        on ? emcy_.raise_error(managed_codes[i], now) : emcy_.clear_error(managed_codes[i], now);
+    const std::array<std::uint8_t, 5> manufacturer{i == 0U ? lost : std::uint8_t{0}};
+    const status r = on ? emcy_.raise_error(managed_codes[i], now, 0, manufacturer)
+                        : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
     take_frames(frames(emcy_.sent()));
