@@ -830,6 +830,20 @@ def part_errors(args):
         ok("emcy 8130h", f"python's heartbeat (node {python_id}) stops: python's EmcyConsumer "
            f"gets 8130h with manufacturer bytes {e.data.hex()} (1003h sub 1 alike); the "
            "error reset when it resumes")
+        # error behaviour: no 1029h in this dictionary, so a communication error in operational
+        # enters pre-operational (CiA 301); python sees it in the node's heartbeat
+        node.sdo.download(0x1017, 0, (50).to_bytes(2, "little"))
+        node.nmt.state = "OPERATIONAL"
+        wait_until(lambda: node.nmt.wait_for_heartbeat(TIMEOUT) == "OPERATIONAL",
+                   "error behaviour", "python's heartbeat consumer never saw OPERATIONAL")
+        s.network.bus.send(beat)  # python's heartbeat once more, then silence
+        wait_until(lambda: node.nmt.wait_for_heartbeat(TIMEOUT) == "PRE-OPERATIONAL",
+                   "error behaviour", "the node stayed operational after losing python's "
+                   "heartbeat")
+        check(node_state(s.bridge, "error behaviour") == "pre-operational", "error behaviour",
+              "the bridge's state")
+        ok("error behaviour", "python's heartbeat lost in operational: python's NMT master sees "
+           "the node's heartbeat go from OPERATIONAL to PRE-OPERATIONAL (1029h absent: default 0)")
     finally:
         s.close()
 

@@ -112,7 +112,7 @@ constexpr od::entry var(std::uint16_t index, std::uint8_t sub, data_type t, acce
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
-inline constexpr std::size_t entry_count = 99;
+inline constexpr std::size_t entry_count = 102;
 
 /// The dictionary of node `n` (node-ID-relative defaults resolved for n).
 constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
@@ -153,6 +153,9 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1018, 3, u32, ro, 0x0001'0000U),
       var(0x1018, 4, u32, ro, 0),
       var(0x1019, 0, u8, rw, 0),
+      var(0x1029, 0, u8, ro, 2),
+      var(0x1029, 1, u8, rw, 0),
+      var(0x1029, 2, u8, rw, 0),
       var(0x1200, 0, u8, ro, 2),
       var(0x1200, 1, u32, ro, 0x600U + n),
       var(0x1200, 2, u32, ro, 0x580U + n),
@@ -249,6 +252,7 @@ inline constexpr node::capacity caps = node::capacity_for(dict5);
 static_assert(caps.rpdos == 2 && caps.tpdos == 2 && caps.mapped == 4);
 static_assert(caps.heartbeat_consumers == 3 && caps.error_history == 4);
 static_assert(caps.sdo_servers == 2 && caps.sdo_clients == 1);
+static_assert(caps.error_classes == 2);
 
 using store_type = co::dictionary_store<>;
 using device_type = node::device<store_type, caps>;

@@ -1,6 +1,7 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
-// life guarding, EMCY producer, SYNC consumer, PDO engine and SDO channels, with frames routed
+// life guarding, EMCY producer, SYNC consumer, PDO engine, SDO channels and the error behaviour
+// (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -22,7 +23,8 @@
 // downloads and RPDOs reach the store through the device (device::access). Each service owns
 // its communication objects (the SYNC consumer 1005h, 1007h, 1019h; life guarding 100Ch,
 // 100Dh; the EMCY producer 1001h, 1003h, 1014h, 1015h; the heartbeat producer 1017h and
-// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh) and has the
+// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh; the error
+// behaviour 1029h) and has the
 // three members the device calls for every service in turn (each_service): check_write (the
 // CiA 301 rules of its objects), written (follow a stored value) and load (read them all at
 // start and after a reset). A write is checked by the owning service, stored by the store
@@ -36,6 +38,12 @@
 // byte, EMCY byte 3, holds the lost node's ID, 0 for life guarding), 8210h / 8220h (an RPDO too
 // short / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays
 // active while its condition lasts and clears when it is over.
+//
+// Error behaviour (1029h): a communication error — a heartbeat consumer losing its node, life
+// guarding losing its master, or a bus-off the driver reports through report_error(1, now) —
+// first sends its EMCY, then enters the state 1029h sub 1 asks for: 0 (the default, also
+// without 1029h) pre-operational when operational, 1 no change, 2 stopped. The application
+// reports its own error classes (1029h sub 2..) the same way.
 //
 // NMT: frames are taken per CiA 301 Table 48 (node::allowed): in stopped only NMT and node
 // guarding are answered and the heartbeat is produced; SDO transfers of the servers end
@@ -51,6 +59,7 @@
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/node/deadlines.hpp>
 #include <fieldcodec/canopen/node/emcy_producer.hpp>
+#include <fieldcodec/canopen/node/error_behaviour.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
 #include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
@@ -100,6 +109,7 @@ struct capacity {
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
+  std::size_t error_classes = 1; ///< sub-indices of 1029h (error behaviour) served
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -114,6 +124,7 @@ struct capacity {
   c.error_history = 0;
   c.sdo_servers = 1;
   c.sdo_clients = 0;
+  c.error_classes = 1;
   for (const od::entry &e : dict) {
     const std::uint16_t i = e.index;
     if (e.sub == 1U) {
@@ -127,6 +138,7 @@ struct capacity {
     if (mapping && e.sub > c.mapped) c.mapped = e.sub;
     if (i == 0x1016U && e.sub > c.heartbeat_consumers) c.heartbeat_consumers = e.sub;
     if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
+    if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -265,6 +277,7 @@ public:
       std::conditional_t<C.sdo_crc_table, crc::ccitt16_with_table, crc::ccitt16_no_table>>;
   using emcy_type = emcy_producer<C.active_errors, C.error_history, C.emcy_queue>;
   using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
+  using errors_type = error_behaviour<C.error_classes>;
 
   /// A node `node` (1..127) over `store` (borrowed, already holding its power-on values, e.g.
   /// from init_defaults). Nothing is sent before start().
@@ -375,15 +388,19 @@ public:
     if (!started_ || s == nmt::state::boot_up) return finish(now);
     take(producer_.poll(now, s));
     (void)consumer_.poll(now);
+    bool lost = false;
     for (const auto &h : consumer_.events()) {
       event e{event::kind::heartbeat};
       e.heartbeat = h;
       push_event(e);
+      lost = lost || h.what == heartbeat_event::kind::lost;
     }
     const auto before = life_.state();
     if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
       push_event({event::kind::life_guard_lost});
+      lost = true;
     }
+    if (lost) error_found(errors_type::communication, now);
     const auto sdo = sdo_.poll(now);
     if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
     take(pdo_.poll(now));
@@ -433,6 +450,18 @@ public:
     take_frames(frames(emcy_.sent()));
     return finish(now);
   }
+  /// An error of class `sub` of 1029h was found (1 = communication error: e.g. the CAN driver
+  /// reports bus-off; 2.. the device profile's or the application's classes): the node enters
+  /// the state 1029h sub `sub` asks for (error_behaviour; a class 1029h does not have: enter
+  /// pre-operational from operational). The node finds heartbeat and life guarding losses
+  /// itself. Errors: invalid_argument (sub 0), bad_state (not started).
+  [[nodiscard]] constexpr result<step> report_error(std::uint8_t sub, std::uint32_t now) noexcept {
+    if (sub == 0U) return errc::invalid_argument;
+    if (!started_ || nmt_.state() == nmt::state::boot_up) return errc::bad_state;
+    begin(now);
+    error_found(sub, now);
+    return finish(now);
+  }
   /// A local NMT state change (the device's error behaviour, or no NMT master).
   /// Errors: those of nmt_slave::enter.
   [[nodiscard]] constexpr result<step> enter(nmt::state s, std::uint32_t now) noexcept {
@@ -462,6 +491,7 @@ public:
   [[nodiscard]] constexpr const life_guard &guarding() const noexcept { return life_; }
   [[nodiscard]] constexpr const emcy_type &emcy() const noexcept { return emcy_; }
   [[nodiscard]] constexpr const sync_consumer &sync() const noexcept { return sync_; }
+  [[nodiscard]] constexpr const errors_type &errors() const noexcept { return errors_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
   [[nodiscard]] constexpr const sdo_type &sdo() const noexcept { return sdo_; }
   /// Frames or events that did not fit their lists (a sizing error; always 0).
@@ -645,6 +675,7 @@ private:
     f(self.consumer_);
     f(self.pdo_);
     f(self.sdo_);
+    f(self.errors_);
   }
 
   /// Read every service's objects from the store (start, NMT resets).
@@ -709,6 +740,17 @@ private:
     return abort_code::none;
   }
 
+  // ----- error behaviour (1029h) ----------------------------------------------------------
+
+  /// An error of class `sub` (1029h): its EMCY goes out first (the node's own codes, while the
+  /// state still lets EMCY through), then the node enters the state 1029h asks for.
+  constexpr void error_found(std::uint8_t sub, std::uint32_t now) noexcept {
+    const auto to = errors_.target(sub, nmt_.state());
+    if (!to) return;
+    update_errors(now);
+    if (nmt_.enter(*to)) state_changed(now);
+  }
+
   // ----- EMCY ------------------------------------------------------------------------------
 
   /// Raise or clear the node-managed codes as their conditions are now: bit i of own_errors_
@@ -762,6 +804,7 @@ private:
   nmt::guard_responder guard_;
   emcy_type emcy_;
   sync_consumer sync_{};
+  errors_type errors_{};
   access access_;
   pdo_type pdo_;
   sdo_type sdo_;
