@@ -340,10 +340,24 @@ struct rig {
     CHECK(m.type == sdo::message_type::initiate_download_response);
     return abort_code::none;
   }
+  /// The frames the last accepted set_send sent.
+  std::vector<co::can_frame> set_frames;
   abort_code set_u(std::uint16_t index, std::uint8_t sub, std::uint32_t value, std::size_t width) {
     std::array<std::uint8_t, 4> b{};
     for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
     return dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width));
+  }
+  /// The same with device::set(a, value, now): the frames its step sends are set_frames.
+  abort_code set_send(std::uint16_t index, std::uint8_t sub, std::uint32_t value,
+                      std::size_t width) {
+    std::array<std::uint8_t, 4> b{};
+    for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
+    set_frames.clear();
+    auto r = dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width), now);
+    if (!r) return r.error();
+    set_frames = list(r.value().send);
+    deadline = r.value().deadline;
+    return abort_code::none;
   }
 };
 

@@ -13,7 +13,8 @@
 //   or several (a receive FIFO): auto r = dev.on_frames(rx, now); send(r.last);
 //                                rx = rx.subspan(r.consumed);  // until rx is empty
 //   at the deadline (or every tick): send(dev.poll(now));
-//   dev.set({0x6041, 0}, bytes);                    // the application's own values
+//   send(dev.set({0x6041, 0}, bytes, now).value()); // the application's own values (and
+//                                                   //   the event-driven TPDOs they make due)
 //   for (const node::event &e : dev.events()) ...   // what the last call did
 //
 // Every call returns canopen::step<nmt::state>: the frames to send (valid until the next call),
@@ -407,15 +408,33 @@ public:
 
   /// The application writes `value` to `a`: the store's checks except access, no write hook
   /// (canopen::dictionary_store::set), plus the node's rules and effects for communication
-  /// objects; event-driven TPDOs mapping `a` become due (poll() sends them). Times the node
+  /// objects; event-driven TPDOs mapping `a` become due and the next call sends them (poll,
+  /// or set with `now` below). No call itself: the step before stays valid. Times the node
   /// needs (e.g. a new heartbeat period) count from the `now` of the last call.
   [[nodiscard]] constexpr abort_code set(od::address a,
                                          std::span<const std::uint8_t> value) noexcept {
-    if (const auto c = check(a, value); c != abort_code::none) return c;
-    const auto c = store_->set(a, value);
-    if (c != abort_code::none) return c;
+    if (const auto c = store_value(a, value); c != abort_code::none) return c;
     follow(a, value);
     return abort_code::none;
+  }
+  /// set(a, value) at `now` as a call like the others: its step sends the event-driven TPDOs
+  /// (254, 255) that are due, this value's and those of earlier set(a, value) calls, unless
+  /// their inhibit time holds them back (a later call sends them, by the step's deadline); a
+  /// type 0 TPDO waits for the next SYNC. Several objects of one TPDO: write all but the last
+  /// with set(a, value) and the last with this one, so that the TPDO carries all of them. The
+  /// frames of the step before are no longer valid once the value is stored: send them first.
+  /// The error: the abort code of the refusal (nothing stored, nothing sent, the step before
+  /// still valid).
+  [[nodiscard]] constexpr result<step, abort_code>
+  set(od::address a, std::span<const std::uint8_t> value, std::uint32_t now) noexcept {
+    if (const auto c = store_value(a, value); c != abort_code::none) return c;
+    begin(now);
+    follow(a, value);
+    if (started_ && nmt_.state() != nmt::state::boot_up) {
+      take(pdo_.poll(now));
+      pdo_events();
+    }
+    return finish(now);
   }
   /// The current value of `a` (see canopen::dictionary_store::value).
   [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
@@ -688,6 +707,13 @@ private:
     each_service(*this, [&](auto &service) {
       if (const status st = service.load(*store_, now); !st && config_) config_ = st;
     });
+  }
+
+  /// The application's write (set): the owning service's check, then the store's set.
+  [[nodiscard]] constexpr abort_code store_value(od::address a,
+                                                 std::span<const std::uint8_t> value) noexcept {
+    if (const auto c = check(a, value); c != abort_code::none) return c;
+    return store_->set(a, value);
   }
 
   /// The CiA 301 rules of the communication objects: the check of the service that owns `a`.
