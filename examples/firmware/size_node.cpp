@@ -26,9 +26,9 @@ constexpr node::capacity caps = [] {
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);
 
-using store_type = co::dictionary_store<>;
+using store_type = co::dictionary_store<co::accept_writes, io::kinds>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
-store_type store{dict, layout, storage};
+constinit store_type store{dict, layout, storage};
 node::device<store_type, caps> dev(store, 0x22);
 
 co::can_frame receive_frame() {

@@ -5,6 +5,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -36,7 +37,7 @@ sdo::abort_code code_of(const sdo::step &s) {
   return m.value().abort;
 }
 
-constexpr od::entry test_entries[] = {
+constexpr od::entry_spec test_entries_spec[] = {
     {.index = 0x1000,
      .type = data_type::unsigned32,
      .access_type = od::access::ro,
@@ -90,6 +91,7 @@ constexpr od::entry test_entries[] = {
      .high = od::signed_number(20)},
     {.index = 0x3001, .type = data_type::domain}, // no size: not storable
 };
+constexpr auto test_entries = od::entries_of<test_entries_spec>;
 constexpr od::dictionary test_dict{test_entries};
 static_assert(test_dict.is_valid());
 
