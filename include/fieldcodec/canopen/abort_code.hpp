@@ -1,6 +1,6 @@
-// fieldcodec — the CiA 301 abort codes (SDO abort transfer; also the answers of object stores,
-// write hooks and the PDO engine): one table {code, errc, text}, used by the SDO client and
-// server, the object store, the node and dpq/.
+// fieldcodec — the CiA 301 abort codes (and the two CoE adds for complete access) (SDO abort
+// transfer; also the answers of object stores, write hooks and the PDO engine): one table {code,
+// errc, text}, used by the SDO client and server, the object store, the node and dpq/.
 #pragma once
 
 #include <fieldcodec/core/result.hpp>
@@ -12,7 +12,8 @@
 
 namespace fieldcodec::canopen::sdo {
 
-/// An SDO abort code. The named values are those of CiA 301; any other 32-bit value a peer
+/// An SDO abort code. The named values are those of CiA 301 and the two that CANopen over
+/// EtherCAT adds for complete access (ETG.1000.6); any other 32-bit value a peer
 /// sends is kept as it is (is_known() tells them apart). `none` (0) is never sent: it means
 /// "no abort" where a function answers with an abort code (stores, write hooks).
 enum class abort_code : std::uint32_t {
@@ -27,6 +28,8 @@ enum class abort_code : std::uint32_t {
   unsupported_access = 0x06010000U,
   read_write_only = 0x06010001U,
   write_read_only = 0x06010002U,
+  sub0_must_be_zero = 0x06010003U,           ///< CoE complete access (ETG.1000.6)
+  complete_access_unsupported = 0x06010004U, ///< CoE complete access (ETG.1000.6)
   no_object = 0x06020000U,
   not_mappable = 0x06040041U,
   pdo_too_long = 0x06040042U,
@@ -58,7 +61,7 @@ struct abort_info {
   std::string_view text;
 };
 
-/// Every CiA 301 abort code, in numeric order.
+/// Every named abort code (CiA 301 and the two of CoE complete access), in numeric order.
 inline constexpr abort_info abort_codes[] = {
     {abort_code::toggle_not_alternated, errc::bad_toggle, "toggle bit did not alternate"},
     {abort_code::timeout, errc::timeout, "SDO protocol timed out"},
@@ -72,6 +75,9 @@ inline constexpr abort_info abort_codes[] = {
     {abort_code::unsupported_access, errc::access_denied, "access to this object not supported"},
     {abort_code::read_write_only, errc::access_denied, "read of a write-only object"},
     {abort_code::write_read_only, errc::access_denied, "write to a read-only object"},
+    {abort_code::sub0_must_be_zero, errc::bad_state,
+     "sub-index cannot be written: sub-index 0 must be 0 for write access"},
+    {abort_code::complete_access_unsupported, errc::access_denied, "complete access not supported"},
     {abort_code::no_object, errc::unknown_object, "object not in the object dictionary"},
     {abort_code::not_mappable, errc::invalid_argument, "object cannot be mapped into a PDO"},
     {abort_code::pdo_too_long, errc::too_long, "mapped objects exceed the PDO length"},

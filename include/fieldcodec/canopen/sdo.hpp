@@ -368,6 +368,62 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
 #endif
 
 namespace detail {
+// The fields of byte 0, for readers that take a message's bytes in place (the SDO client).
+/// The command specifier (bits 7..5).
+[[nodiscard]] constexpr unsigned specifier(std::uint8_t b0) noexcept { return b0 >> 5U; }
+/// The command specifier of message type `t` (for constants: the table is not linked).
+[[nodiscard]] constexpr unsigned specifier_of(message_type t) noexcept {
+  return commands[command_for(t)].bits >> 5U;
+}
+/// A segment (layout::segment): toggle (bit 4), data bytes (7 − bits 3..1), last (bit 0).
+[[nodiscard]] constexpr bool segment_toggle(std::uint8_t b0) noexcept {
+  return (b0 & toggle_bit) != 0U;
+}
+[[nodiscard]] constexpr std::uint8_t segment_size(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>(7U - ((b0 >> 1U) & 7U));
+}
+[[nodiscard]] constexpr bool segment_last(std::uint8_t b0) noexcept { return (b0 & 0x01U) != 0U; }
+/// An initiate (layout::initiate): expedited (bit 1), size indicated (bit 0).
+[[nodiscard]] constexpr bool initiate_expedited(std::uint8_t b0) noexcept {
+  return (b0 & 0x02U) != 0U;
+}
+[[nodiscard]] constexpr bool initiate_size_indicated(std::uint8_t b0) noexcept {
+  return (b0 & 0x01U) != 0U;
+}
+/// An expedited initiate's data bytes: 4 − bits 3..2 when the size is indicated, else 4 (what
+/// read_expedited_data gives as `size`).
+[[nodiscard]] constexpr std::uint8_t expedited_size(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>(initiate_size_indicated(b0) ? 4U - ((b0 >> 2U) & 3U) : 4U);
+}
+
+// The readers of the layouts: each fills the members of its layout from the 8 bytes (`type` is
+// the caller's). decode_by_table reads through them.
+constexpr void read_segment(const payload &p, message &m) noexcept {
+  m.toggle = segment_toggle(p[0]);
+  m.last = segment_last(p[0]);
+  m.data_size = segment_size(p[0]);
+  for (std::size_t i = 0; i < 7U; ++i) { // not a copy of run-time length: no call of memcpy
+    if (i < m.data_size) m.data[i] = p[1U + i];
+  }
+}
+constexpr void read_toggle(const payload &p, message &m) noexcept {
+  m.toggle = segment_toggle(p[0]);
+}
+constexpr void read_initiate(const payload &p, message &m) noexcept {
+  m.address = get_address(p);
+  m.expedited = initiate_expedited(p[0]);
+  m.size_indicated = initiate_size_indicated(p[0]);
+  if (m.expedited) {
+    read_expedited_data(p, m);
+  } else if (m.size_indicated) {
+    m.size = get_u32(p);
+  }
+}
+constexpr void read_abort(const payload &p, message &m) noexcept {
+  m.address = get_address(p);
+  m.abort = static_cast<abort_code>(get_u32(p));
+}
+
 /// decode through the command table: every command (decode takes expedited initiates first, by
 /// straight code that gives the same message).
 FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message>
@@ -381,28 +437,11 @@ decode_by_table(const payload &p, direction d) noexcept {
   message &m = r.value();
   m.type = c->type;
   switch (c->lay) {
-  case detail::layout::segment:
-    m.toggle = (b0 & detail::toggle_bit) != 0U;
-    m.last = (b0 & 0x01U) != 0U;
-    m.data_size = static_cast<std::uint8_t>(7U - ((b0 >> 1U) & 7U));
-    for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = p[1U + i];
-    break;
-  case detail::layout::toggle: m.toggle = (b0 & detail::toggle_bit) != 0U; break;
-  case detail::layout::initiate:
-    m.address = detail::get_address(p);
-    m.expedited = (b0 & 0x02U) != 0U;
-    m.size_indicated = (b0 & 0x01U) != 0U;
-    if (m.expedited) {
-      read_expedited_data(p, m);
-    } else if (m.size_indicated) {
-      m.size = detail::get_u32(p);
-    }
-    break;
+  case detail::layout::segment: read_segment(p, m); break;
+  case detail::layout::toggle: read_toggle(p, m); break;
+  case detail::layout::initiate: read_initiate(p, m); break;
   case detail::layout::address: m.address = detail::get_address(p); break;
-  case detail::layout::abort:
-    m.address = detail::get_address(p);
-    m.abort = static_cast<abort_code>(detail::get_u32(p));
-    break;
+  case detail::layout::abort: read_abort(p, m); break;
   case detail::layout::block_initiate:
     m.address = detail::get_address(p);
     m.crc = (b0 & 0x04U) != 0U;
@@ -428,6 +467,18 @@ decode_by_table(const payload &p, direction d) noexcept {
   }
   return r;
 }
+
+/// The byte-0 keys (command_index's) of the commands a server sends: bit k set when key k is
+/// one. Computed from the table, so is_server_message answers without linking it.
+inline constexpr std::uint32_t to_client_keys = [] {
+  std::uint32_t keys = 0;
+  for (unsigned k = 0; k < 32U; ++k) {
+    if (command_index[static_cast<std::size_t>(direction::to_client)][k] != no_command) {
+      keys |= 1U << k;
+    }
+  }
+  return keys;
+}();
 } // namespace detail
 
 /// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
@@ -460,6 +511,13 @@ FIELDCODEC_SDO_INLINE [[nodiscard]] constexpr result<message> decode(const paylo
   // data then runs only after the straight path (70 -> 64 instructions in the benchmark).
   if (r.has_value()) r.value().expedited = false;
   return r;
+}
+
+/// True when `byte0` begins a message a server sends: what decode(…, direction::to_client)
+/// does not refuse with unknown_command (one bit of a constant, no table).
+[[nodiscard]] constexpr bool is_server_message(std::uint8_t byte0) noexcept {
+  const unsigned key = (detail::specifier(byte0) << 2U) | (byte0 & 3U);
+  return ((detail::to_client_keys >> key) & 1U) != 0U;
 }
 
 /// A segment of a sub-block: byte 0 = last << 7 | sequence, then 7 data bytes (all 7 are sent;

@@ -70,12 +70,15 @@ struct configuration {
   if (node < 1U || node > 127U) return errc::invalid_argument;
   const std::size_t n = item.value.size();
   if (n == 0U || n > 8U) return errc::bad_length;
-  std::uint64_t v = 0;
-  for (std::size_t i = 0; i < n; ++i) v |= std::uint64_t{item.value[i]} << (8U * i);
-  const std::uint64_t max = n == 8U ? ~std::uint64_t{0} : (std::uint64_t{1} << (8U * n)) - 1U;
-  if (v > max - node) return errc::overflow;
-  v += node;
-  for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(v >> (8U * i));
+  // x + node-ID byte by byte, little-endian, with the carry (no 64-bit arithmetic on a small
+  // controller); a carry out of the top byte does not fit the width
+  unsigned carry = node;
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned sum = item.value[i] + carry;
+    out[i] = static_cast<std::uint8_t>(sum);
+    carry = sum >> 8U;
+  }
+  if (carry != 0U) return errc::overflow;
   return n;
 }
 

@@ -93,6 +93,7 @@ public:
     if (busy() || client_->busy()) return errc::bad_state;
     config_ = c;
     dcf_ = {};
+    load_ = &configurator::load_item;
     count_ = c.items.size();
     return begin(now, node != 0U ? node : c.node_id);
   }
@@ -108,6 +109,7 @@ public:
     config_ = {};
     dcf_ = dcf;
     dcf_at_ = 4;
+    load_ = &configurator::load_entry;
     count_ = n;
     return begin(now, 0);
   }
@@ -172,6 +174,18 @@ private:
   }
 
   [[nodiscard]] constexpr const config_item &item() const noexcept { return current_; }
+  // The item at at_ into current_: from the list, or the next entry of the concise DCF (only a
+  // program that runs one links its reader).
+  [[nodiscard]] constexpr bool load_item() noexcept {
+    current_ = config_.items[at_];
+    return true;
+  }
+  [[nodiscard]] constexpr bool load_entry() noexcept {
+    const auto e = read_concise_entry(dcf_, dcf_at_); // checked when it started
+    if (!e) return false;
+    current_ = {e.value().address, e.value().value, 0, {}};
+    return true;
+  }
 
   [[nodiscard]] constexpr step begin(std::uint32_t now, std::uint8_t node) noexcept {
     node_ = node;
@@ -198,12 +212,8 @@ private:
     }
     attempts_ = 0;
     state_ = config_state::writing;
-    if (dcf_.empty()) {
-      current_ = config_.items[at_];
-    } else {
-      const auto e = read_concise_entry(dcf_, dcf_at_); // checked when it started
-      if (!e) return fail(config_failure::bad_item, e.error(), canopen::sdo::abort_code::none);
-      current_ = {e.value().address, e.value().value, 0, {}};
+    if (!(this->*load_)()) {
+      return fail(config_failure::bad_item, errc::truncated, canopen::sdo::abort_code::none);
     }
     auto v = resolved_value(item(), node_, scratch_);
     if (!v) return fail(config_failure::bad_item, v.error(), canopen::sdo::abort_code::none);
@@ -275,6 +285,7 @@ private:
   std::size_t dcf_at_ = 0;              ///< offset of its next entry
   std::size_t count_ = 0;               ///< items or entries
   config_item current_{};
+  bool (configurator::*load_)() = &configurator::load_item;
   std::uint8_t node_ = 0;
   std::size_t at_ = 0;
   std::uint8_t attempts_ = 0;

@@ -518,22 +518,22 @@ private:
     pending_ = r;
     pending_purpose_ = p;
   }
-  constexpr void fail(drive_failure f, errc e) noexcept {
+  /// The machine stops in `s` with the error `f`: what the drive showed, no mode bits, no
+  /// motion, no deadline.
+  constexpr void stop_with(drive_state s, drive_failure f, errc e) noexcept {
     error_ = drive_error{f, e, seen_, statusword_, 0, false, {}, {}, mode_.value_or(0)};
-    state_ = drive_state::failed;
+    state_ = s;
     mode_bits_ = 0;
     motion_.reset();
     deadline_.reset();
+  }
+  constexpr void fail(drive_failure f, errc e) noexcept {
+    stop_with(drive_state::failed, f, e);
     if (pending_purpose_ != purpose::read_error_code) pending_.reset();
   }
   constexpr void enter_fault() noexcept {
-    error_ =
-        drive_error{drive_failure::fault, errc::bad_state, seen_, statusword_, 0, false, emcy_, {},
-                    mode_.value_or(0)};
-    state_ = drive_state::fault;
-    mode_bits_ = 0;
-    motion_.reset();
-    deadline_.reset();
+    stop_with(drive_state::fault, drive_failure::fault, errc::bad_state);
+    error_->emcy = emcy_;
     if (opt_.read_error_code) {
       if (outstanding_) {
         error_read_queued_ = true;
