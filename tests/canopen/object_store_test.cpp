@@ -423,8 +423,8 @@ TEST_CASE("store: node-ID-relative limits and defaults in 32-bit comparisons, as
   // the defaults for node 0x22: 0xA2, 32734 (0x7FDE), and 0x90 + 0x22 = 0xB2 within 0xA2..0x112
   constexpr auto l = co::make_layout<std::size(relative_specs)>(relative_dict);
   std::vector<std::uint8_t> storage(l.storage_size());
-  co::dictionary_store<co::accept_writes, od::kinds_of(relative_dict.entries())> s{
-      relative_dict, l, storage};
+  co::dictionary_store<co::accept_writes, od::kinds_of(relative_dict.entries())> s{relative_dict, l,
+                                                                                   storage};
   REQUIRE(s.init_defaults(0x22).has_value());
   CHECK(s.value({0x1014, 0}).value()[0] == 0xA2);
   CHECK(s.value({0x2000, 0}).value()[0] == 0xB2);

@@ -166,10 +166,13 @@ od::number random_number(fieldcodec::test::xorshift &r) {
 }
 
 bool same_value(const od::number &got, const od::number &want, bool in_width) {
-  if (!in_width || (want.kind != od::number_kind::signed_ && want.kind != od::number_kind::unsigned_))
+  if (!in_width ||
+      (want.kind != od::number_kind::signed_ && want.kind != od::number_kind::unsigned_))
     return got == want;
-  const bool neg = want.kind == od::number_kind::signed_ && static_cast<std::int64_t>(want.bits) < 0;
-  const bool got_neg = got.kind == od::number_kind::signed_ && static_cast<std::int64_t>(got.bits) < 0;
+  const bool neg =
+      want.kind == od::number_kind::signed_ && static_cast<std::int64_t>(want.bits) < 0;
+  const bool got_neg =
+      got.kind == od::number_kind::signed_ && static_cast<std::int64_t>(got.bits) < 0;
   return (got.kind == od::number_kind::signed_ || got.kind == od::number_kind::unsigned_) &&
          got.bits == want.bits && neg == got_neg;
 }
@@ -238,8 +241,8 @@ TEST_CASE("od::table: at run time, its entries point into it") {
 }
 
 TEST_CASE("od::descriptor of a packed entry: scaling and limits as before") {
-  static constexpr od::descriptor d{od::entry_of<scaled>, {.name = "Inj. P Limit 1"},
-                                    {{32767, 2}, {0, 0}}};
+  static constexpr od::descriptor d{
+      od::entry_of<scaled>, {.name = "Inj. P Limit 1"}, {{32767, 2}, {0, 0}}};
   static_assert(d.to_raw(4.0).value() == 1311);
   CHECK(d.to_raw(fieldcodec::decimal{50005, 1}).has_value()); // the high limit itself
   CHECK(d.to_raw(fieldcodec::decimal{50006, 1}).error() == fieldcodec::errc::out_of_range);

@@ -58,8 +58,8 @@ constexpr auto kinds_entries = od::entries_of<kinds_specs>;
 
 static_assert(od::kinds_of(kinds_entries[0]) == none);
 static_assert(od::kinds_of(kinds_entries.first(1)) == none);
-static_assert(od::kinds_of(kinds_entries[1]) == od::value_kinds{true, false, false, false, false,
-                                                                 false, false, false});
+static_assert(od::kinds_of(kinds_entries[1]) ==
+              od::value_kinds{true, false, false, false, false, false, false, false});
 static_assert(od::kinds_of(kinds_entries[2]).limits && od::kinds_of(kinds_entries[2]).node_limits);
 static_assert(od::kinds_of(kinds_entries[3]).real);
 static_assert(od::kinds_of(kinds_entries[4]).wide);
@@ -154,7 +154,9 @@ TEST_CASE("check_value: integer limits in the entry's width, as decode checks th
 
 TEST_CASE("check_value: which end, the type's rules, and what the code was not made for") {
   static constexpr od::entry_spec s[] = {
-      {.index = 1, .type = data_type::unsigned8, .low = od::unsigned_number(10),
+      {.index = 1,
+       .type = data_type::unsigned8,
+       .low = od::unsigned_number(10),
        .high = od::unsigned_number(20)},
       {.index = 2, .type = data_type::boolean},
       {.index = 3, .type = data_type::real32, .high = od::real_number(1.5)},
@@ -164,7 +166,9 @@ TEST_CASE("check_value: which end, the type's rules, and what the code was not m
        .high = od::unsigned_number(100)},
       {.index = 5, .type = data_type::time_of_day},
       {.index = 6, .type = data_type::visible_string, .size = 4},
-      {.index = 7, .type = data_type::unsigned32, .flags = od::flag::high_nodeid,
+      {.index = 7,
+       .type = data_type::unsigned32,
+       .flags = od::flag::high_nodeid,
        .high = od::unsigned_number(0x600)},
   };
   static constexpr auto e = od::entries_of<s>;
@@ -206,9 +210,9 @@ TEST_CASE("check_value: which end, the type's rules, and what the code was not m
   CHECK(od::check_value(e[5], identity, std::array<std::uint8_t, 0>{}) == value_check::invalid);
   // node-ID relative: 0x600 + node; any node: up to 0x67F
   const auto u32 = [](std::uint32_t v) {
-    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8U),
-                                       static_cast<std::uint8_t>(v >> 16U),
-                                       static_cast<std::uint8_t>(v >> 24U)};
+    return std::array<std::uint8_t, 4>{
+        static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8U),
+        static_cast<std::uint8_t>(v >> 16U), static_cast<std::uint8_t>(v >> 24U)};
   };
   CHECK(od::check_value(e[6], identity, u32(0x605), 5) == value_check::ok);
   CHECK(od::check_value(e[6], identity, u32(0x606), 5) == value_check::too_high);
