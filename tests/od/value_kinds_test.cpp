@@ -132,7 +132,8 @@ TEST_CASE("check_value: integer limits in the entry's width, as decode checks th
       const od::number near = s.low && (!s.high || r.next() % 2U == 0U) ? s.low : s.high;
       v = near.bits + (r.next() % 260U) - 130U;
     }
-    const auto in = std::span<const std::uint8_t>(le(v)).first(w);
+    const auto value_bytes = le(v); // kept alive: `in` is a view into it
+    const auto in = std::span<const std::uint8_t>(value_bytes).first(w);
     const auto node = static_cast<std::uint8_t>(r.next() % 129U); // 0: any node
     CAPTURE(od::name(s.type));
     CAPTURE(v);
