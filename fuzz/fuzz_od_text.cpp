@@ -110,16 +110,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   o.integers = (data[0] & 0x20U) != 0U ? od::radix::hex : od::radix::decimal;
   o.node = static_cast<std::uint8_t>(data[3] & 0x7FU); // 0: any node
   const bool text = (data[0] & 0x40U) != 0U;
-  od::descriptor d{};
+  od::unit_descriptor d{};
+  std::array<char, 4> capacity{}; // the packed capacity of a byte string built here
   if (which >= dictionaries.size()) {
     // every data type code, without limits (and UNICODE_STRING / OCTET_STRING capacities)
     if (!od::is_data_type(data[1])) return 0;
-    d.type = static_cast<od::data_type>(data[1]);
-    d.size = od::is_byte_string(d.type) ? data[2] : 0U;
+    od::entry_spec s{};
+    s.type = static_cast<od::data_type>(data[1]);
+    s.size = od::is_byte_string(s.type) ? data[2] : 0U;
+    FUZZ_CHECK(od::pack(s, capacity).has_value());
+    static_cast<od::entry &>(d) = od::make_entry(s, capacity.data());
   } else {
     const od::dictionary &dict = dictionaries[which];
     const std::size_t k = (std::size_t{data[1]} << 8U | data[2]) % dict.size();
-    d = dict.describe(dict.entries()[k]).value();
+    d = od::unit_descriptor(dict.describe(dict.entries()[k]).value());
     if ((data[0] & 0x08U) != 0U && which < 3U) {
       auto u = od::with_unit(d, fc::xenax::canopen_units);
       FUZZ_CHECK(u.has_value()); // every XENAX entry takes its unit

@@ -1,6 +1,8 @@
 // fieldcodec-gen — a dictionary read at run time as od tables.
 #include "od_tables.hpp"
 
+#include <fieldcodec/od/entry_spec.hpp>
+
 #include <algorithm>
 
 namespace fieldcodec::gen {
@@ -21,7 +23,7 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
   object_names_.reserve(n);
   for (const entry &e : d.entries) {
     for (std::uint16_t k = 0; k < e.count; ++k) {
-      od::descriptor x{};
+      od::entry_spec x{};
       x.index = e.index;
       x.sub = static_cast<std::uint8_t>(e.sub + k);
       x.object = e.object;
@@ -44,31 +46,42 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
       x.default_text = keep(e.default_text.str());
       std::string name = e.name;
       if (e.count > 1U) name += std::to_string(x.sub);
-      x.info.name = keep(name);
-      x.info.unit = keep(e.unit.str());
-      x.info.denotation = keep(e.denotation);
-      x.info.parameter_value = e.parameter_value;
-      x.info.parameter_text = keep(e.parameter_text.str());
-      if (e.scaled) x.scale = scaling::linear{e.scale, e.offset};
+      od::entry_info info{};
+      info.name = keep(name);
+      info.unit = keep(e.unit.str());
+      info.denotation = keep(e.denotation);
+      info.parameter_value = e.parameter_value;
+      info.parameter_text = keep(e.parameter_text.str());
+      scaling::linear scale{};
+      if (e.scaled) scale = scaling::linear{e.scale, e.offset};
       if (!o.units.empty()) {
-        if (auto u = od::with_unit(x, o.units)) {
-          x = u.value();
+        if (auto u = od::apply_unit(x, info.unit, scale, o.units)) {
+          x = u.value().spec;
+          info.unit = u.value().unit;
+          scale = u.value().scale;
         } else {
           unit_failures_.push_back({x.index, x.sub});
         }
+      }
+      // the packed columns, in storage that stays where it is (texts_ is a deque)
+      const char *extra = nullptr;
+      if (const std::size_t bytes = od::packed_size(x); bytes != 0U) {
+        std::string &packed = texts_.emplace_back(bytes, '\0');
+        (void)od::pack(x, std::span<char>(packed.data(), packed.size()));
+        extra = packed.data();
       }
       const auto obj = d.objects.find(e.index);
       const bool var =
           e.object == od::object_code::var || obj == d.objects.end() || obj->second.name.empty();
       object_names_.push_back(var ? std::string_view{} : keep(obj->second.name).view());
       if (var || obj->second.name == name) {
-        display_names_.push_back(x.info.name.view());
+        display_names_.push_back(info.name.view());
       } else {
         display_names_.push_back(keep(obj->second.name + ": " + name).view());
       }
-      entries_.push_back(static_cast<const od::entry &>(x));
-      infos_.push_back(x.info);
-      scales_.push_back(x.scale);
+      entries_.push_back(od::make_entry(x, extra));
+      infos_.push_back(info);
+      scales_.push_back(scale);
     }
   }
 }

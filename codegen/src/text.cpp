@@ -52,36 +52,11 @@ std::size_t utf8_invalid_at(std::string_view s) noexcept {
       i += 8U;
     }
     if (i >= s.size()) break;
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    std::uint32_t cp = 0;
-    if (c < 0x80U) {
+    if (static_cast<unsigned char>(s[i]) < 0x80U) {
       ++i;
       continue;
     }
-    if ((c & 0xE0U) == 0xC0U) {
-      n = 1;
-      cp = c & 0x1FU;
-    } else if ((c & 0xF0U) == 0xE0U) {
-      n = 2;
-      cp = c & 0x0FU;
-    } else if ((c & 0xF8U) == 0xF0U) {
-      n = 3;
-      cp = c & 0x07U;
-    } else {
-      return i;
-    }
-    if (i + n >= s.size()) return i;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto d = static_cast<unsigned char>(s[i + k]);
-      if ((d & 0xC0U) != 0x80U) return i;
-      cp = (cp << 6U) | (d & 0x3FU);
-    }
-    if ((n == 1 && cp < 0x80U) || (n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) ||
-        cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) {
-      return i;
-    }
-    i += n + 1U;
+    if (!utf8::next(s, i)) return i; // core/utf8: the one UTF-8 reader
   }
   return std::string_view::npos;
 }

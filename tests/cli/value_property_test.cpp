@@ -117,7 +117,7 @@ std::vector<bytes> candidates(const od::descriptor &d, lcg &g) {
     out = {le(0, 6), le(0x0FFFFFFFU, 6), le((std::uint64_t{14731} << 32U) | 45296789U, 6),
            le(std::uint64_t{0xFFFF} << 32U, 6)};
   } else if (d.type == od::data_type::visible_string) {
-    const std::size_t cap = d.size != 0U ? d.size : 40U;
+    const std::size_t cap = d.capacity() != 0U ? d.capacity() : 40U;
     out = {{},
            {'a', 'b', 'c'},
            {'"', '\\', 'x'},
@@ -129,10 +129,10 @@ std::vector<bytes> candidates(const od::descriptor &d, lcg &g) {
   } else if (d.type == od::data_type::unicode_string) {
     out = {{}, {'A', 0, 0xE9, 0}, {'"', 0, '\\', 0}, {0x3D, 0xD8, 0x00, 0xDE}};
   } else { // OCTET_STRING, DOMAIN
-    bytes r(d.size != 0U ? d.size : 16U);
+    bytes r(d.capacity() != 0U ? d.capacity() : 16U);
     for (auto &b : r) b = static_cast<std::uint8_t>(g.next());
     out = {{}, {0x00}, r};
-    if (d.size != 0U) out.push_back(bytes(d.size + 1U, 0xAB));
+    if (d.capacity() != 0U) out.push_back(bytes(d.capacity() + 1U, 0xAB));
   }
   return out;
 }
@@ -141,7 +141,7 @@ std::vector<bytes> candidates(const od::descriptor &d, lcg &g) {
 /// engineering limits on the engineering value of a scaled entry, raw limits otherwise; and a
 /// string within its capacity. (The definition the property refers to.)
 bool within(const od::descriptor &d, const bytes &b, const od::value_options &o) {
-  if (od::is_byte_string(d.type)) return d.size == 0U || b.size() <= d.size;
+  if (od::is_byte_string(d.type)) return d.capacity() == 0U || b.size() <= d.capacity();
   auto n = od::decode_value(d, b, o);
   if (!n) return false;
   if (od::is_scaled(d) && o.unit == od::value_unit::engineering) {

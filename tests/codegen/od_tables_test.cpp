@@ -39,10 +39,10 @@ TEST_CASE("od_tables: entries, names and lookups of a dictionary read at run tim
   CHECK(t.address_of("Identity Object").error() == errc::unknown_object);
   CHECK(t.address_of("limit i_force").error() == errc::unknown_object);
   // a capacity only where the file declares one (5011h Size=30), not from a default's length
-  CHECK(t.at({0x5011, 0}).value().size == 30U);
-  CHECK(t.at({0x1008, 0}).value().size == 0U);
+  CHECK(t.at({0x5011, 0}).value().capacity() == 30U);
+  CHECK(t.at({0x1008, 0}).value().capacity() == 0U);
   const gen::od_tables firmware(d, {.capacity_from_default = true});
-  CHECK(firmware.at({0x1008, 0}).value().size == 30U);
+  CHECK(firmware.at({0x1008, 0}).value().capacity() == 30U);
 }
 
 TEST_CASE("od_tables: vendor units make 6073h a scaled entry in mA") {
@@ -58,5 +58,7 @@ TEST_CASE("od_tables: vendor units make 6073h a scaled entry in mA") {
   // the tables stay valid when moved (the infos point into their own storage)
   gen::od_tables moved = std::move(t);
   CHECK(moved.at({0x6073, 0}).value().info.unit == "mA");
+  // its limits are packed anew in engineering units (HighLimit 0x7D0 raw = 20000 mA)
+  CHECK(moved.at({0x6073, 0}).value().high() == od::decimal_number(20000, 0));
   CHECK(moved.display_name({0x1018, 1}) == "Identity Object: Vendor Id");
 }

@@ -3,12 +3,15 @@
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/od/engineering.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/value_text.hpp>
 
 #include <doctest/doctest.h>
 
 #include <array>
 #include <cstdint>
+#include <deque>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +23,14 @@ namespace dpq = fieldcodec::dictionaries::dpq_parameters;
 namespace {
 
 using bytes = std::vector<std::uint8_t>;
+
+// The descriptor of `s`; its packed columns stay alive for the whole test run.
+od::descriptor described(const od::entry_spec &s) {
+  static std::deque<std::string> kept;
+  std::string &b = kept.emplace_back(od::packed_size(s), '\0');
+  REQUIRE(od::pack(s, std::span<char>(b.data(), b.size())));
+  return od::descriptor{od::make_entry(s, b.data())};
+}
 
 struct parsed {
   bool ok = false;
@@ -77,7 +88,7 @@ static_assert(parsed_raw(dpq::inj_p_limit_1, "4.001") == 1311);
 static_assert(parsed_size(dpq::inj_p_limit_1, "4.0") == 4);
 // the printed range 0…5000 (engineering units), refused with the limit named
 static_assert(parse_error(dpq::inj_p_limit_1, "6000").issue == od::value_issue::high_limit);
-static_assert(parse_error(dpq::inj_p_limit_1, "6000").limit == od::signed_number(5000));
+static_assert(parse_error(dpq::inj_p_limit_1, "6000").limit.to_int64().value() == 5000);
 static_assert(parse_error(dpq::inj_p_limit_1, "-0.01").issue == od::value_issue::low_limit);
 // hex is a raw spelling: refused in engineering units, taken with value_unit::raw
 static_assert(parse_error(dpq::inj_p_limit_1, "0x10").issue == od::value_issue::hex_is_raw);
@@ -122,7 +133,7 @@ TEST_CASE("od value text: a scaled DPQ parameter in engineering units and raw") 
   CHECK_FALSE(p.ok);
   CHECK(p.error.code == errc::out_of_range);
   CHECK(p.error.issue == od::value_issue::high_limit);
-  CHECK(p.error.limit == od::signed_number(5000));
+  CHECK(p.error.limit.to_int64().value() == 5000);
   // the same limit in raw units: round(5000 × 327.67) = 1638350
   p = parse(d, "1638351", {.unit = od::value_unit::raw});
   CHECK(p.error.issue == od::value_issue::high_limit);
@@ -139,12 +150,11 @@ TEST_CASE("od value text: a scaled DPQ parameter in engineering units and raw") 
 
 TEST_CASE("od value text: a unit after the number; raw values of a scaled entry have none") {
   // a XENAX-style unit: 10 mA per raw step (raw = EU × 0.1), limits 0…20000 mA
-  od::descriptor d{};
-  d.index = 0x6073;
-  d.type = od::data_type::unsigned16;
-  d.flags = od::flag::scaled;
-  d.low = od::signed_number(0);
-  d.high = od::signed_number(20000);
+  od::descriptor d = described({.index = 0x6073,
+                                .type = od::data_type::unsigned16,
+                                .flags = od::flag::scaled,
+                                .low = od::signed_number(0),
+                                .high = od::signed_number(20000)});
   d.info.unit = "mA";
   d.scale = {{1, 1}, {0, 0}};
   CHECK(format(d, {0x96, 0x00}) == "1500 mA");
@@ -161,7 +171,7 @@ TEST_CASE("od value text: a unit after the number; raw values of a scaled entry 
   CHECK(parse(d, "150 mA", {.unit = od::value_unit::raw}).error.issue == od::value_issue::unit);
   p = parse(d, "20010");
   CHECK(p.error.issue == od::value_issue::high_limit);
-  CHECK(p.error.limit == od::signed_number(20000));
+  CHECK(p.error.limit.to_int64().value() == 20000);
 }
 
 TEST_CASE("od value text: integers, hex with the same meaning, limits, fields") {
@@ -202,13 +212,12 @@ TEST_CASE("od value text: integers, hex with the same meaning, limits, fields") 
 }
 
 TEST_CASE("od value text: node-ID-relative limits are the target node's") {
-  od::descriptor d{};
-  d.index = 0x1400;
-  d.sub = 1;
-  d.type = od::data_type::unsigned32;
-  d.flags = od::flag::low_nodeid | od::flag::high_nodeid;
-  d.low = od::unsigned_number(0x200);
-  d.high = od::unsigned_number(0x200);
+  const od::descriptor d = described({.index = 0x1400,
+                                      .sub = 1,
+                                      .type = od::data_type::unsigned32,
+                                      .flags = od::flag::low_nodeid | od::flag::high_nodeid,
+                                      .low = od::unsigned_number(0x200),
+                                      .high = od::unsigned_number(0x200)});
   CHECK(parse(d, "0x205", {.node = 5}).ok);
   auto p = parse(d, "0x206", {.node = 5});
   CHECK(p.error.issue == od::value_issue::high_limit);
@@ -218,10 +227,8 @@ TEST_CASE("od value text: node-ID-relative limits are the target node's") {
 }
 
 TEST_CASE("od value text: strings, capacity and characters") {
-  od::descriptor s{};
-  s.index = 0x5011;
-  s.type = od::data_type::visible_string;
-  s.size = 30;
+  od::descriptor s =
+      described({.index = 0x5011, .type = od::data_type::visible_string, .size = 30});
   CHECK(parse(s, "LINAX").value == bytes{'L', 'I', 'N', 'A', 'X'});
   CHECK(parse(s, "\"LINAX\"").value == bytes{'L', 'I', 'N', 'A', 'X'});
   CHECK(format(s, {'L', 'I', 'N', 'A', 'X', 0, 0}) == "\"LINAX\""); // NUL padding dropped
@@ -277,8 +284,11 @@ TEST_CASE("od value text: REAL, BOOLEAN, TIME") {
   CHECK(parse(f, "1.5 V").error.issue == od::value_issue::unit);
   f.info.unit = "V";
   CHECK(format(f, parse(f, "1.5 V").value) == "1.5 V");
-  f.low = od::real_number(-10.0);
-  f.high = od::real_number(10.0);
+  const od::entry_info unit_v = f.info;
+  f = described({.type = od::data_type::real32,
+                 .low = od::real_number(-10.0),
+                 .high = od::real_number(10.0)});
+  f.info = unit_v;
   CHECK(parse(f, "10.5").error.issue == od::value_issue::high_limit);
   od::descriptor g{};
   g.type = od::data_type::real64;

@@ -17,16 +17,18 @@ namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 using fieldcodec::errc;
 
 namespace {
-constexpr od::descriptor with_units(od::address a) {
+constexpr od::unit_descriptor with_units(od::address a) {
   return od::with_unit(xcan::dictionary.at(a).value(), fieldcodec::xenax::canopen_units).value();
 }
-// 6073h: 10 mA per raw step, HighLimit 0x7D0 = 20000 mA
-constexpr od::descriptor limit = with_units({0x6073, 0});
-static_assert(od::is_scaled(limit));
-static_assert(limit.info.unit == "mA");
-static_assert(limit.high == od::decimal_number(20000, 0));
-static_assert(limit.low == od::decimal_number(0, 0));
-constexpr std::int64_t raw_of(const od::descriptor &d, std::string_view text) {
+// 6073h: 10 mA per raw step, HighLimit 0x7D0 = 20000 mA. (The unit_descriptor is made inside
+// each constant expression: g++ 12 refuses a constexpr variable whose entry points into itself.)
+constexpr od::address limit{0x6073, 0};
+static_assert(od::is_scaled(with_units(limit)));
+static_assert(with_units(limit).info.unit == "mA");
+static_assert(with_units(limit).high() == od::decimal_number(20000, 0));
+static_assert(with_units(limit).low() == od::decimal_number(0, 0));
+constexpr std::int64_t raw_of(od::address a, std::string_view text) {
+  const od::unit_descriptor d = with_units(a);
   std::array<std::uint8_t, 8> out{};
   auto n = od::parse_value(d, text, out);
   return n ? static_cast<std::int64_t>(out[0] | (out[1] << 8U)) : -1;
@@ -35,9 +37,8 @@ static_assert(raw_of(limit, "1500 mA") == 150);
 static_assert(raw_of(limit, "20000") == 2000);
 static_assert(raw_of(limit, "20010") == -1);
 // positions only get their unit
-constexpr od::descriptor target = with_units({0x607A, 0});
-static_assert(!od::is_scaled(target));
-static_assert(target.info.unit == "inc");
+static_assert(!od::is_scaled(with_units({0x607A, 0})));
+static_assert(with_units({0x607A, 0}).info.unit == "inc");
 // sub-index 0 of an ARRAY counts its entries: no unit; the entries get theirs
 static_assert(with_units({0x607D, 0}).info.unit.empty());
 static_assert(with_units({0x607D, 1}).info.unit == "inc");
@@ -48,11 +49,13 @@ static_assert(with_units({0x5003, 0x0C}).info.unit == "mA");
 TEST_CASE("xenax::canopen_units: 6073h in mA through od's value path") {
   std::array<char, 64> text{};
   const std::array<std::uint8_t, 2> raw150{0x96, 0x00};
-  auto n = od::format_value(limit, raw150, text);
+  const od::unit_descriptor d = with_units(limit);
+  auto n = od::format_value(d, raw150, text);
   REQUIRE(n);
   CHECK(std::string_view(text.data(), n.value()) == "1500 mA");
   // a rule with a scale for an entry that cannot take it
-  od::descriptor s = xcan::dictionary.at({0x6073, 0}).value();
+  od::descriptor s{};
+  s.index = 0x6073;
   s.type = od::data_type::real32;
   CHECK(od::with_unit(s, fieldcodec::xenax::canopen_units).error() == errc::invalid_argument);
   // the dictionary's own unit wins

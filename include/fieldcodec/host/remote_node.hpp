@@ -163,7 +163,7 @@ private:
 
   /// `d` with its vendor unit (od::with_unit). Errors: invalid_argument (the rule does not fit
   /// the entry; nothing sent).
-  result<od::descriptor, sdo_error> with_units(const od::descriptor &d) const {
+  result<od::unit_descriptor, sdo_error> with_units(const od::descriptor &d) const {
     auto u = od::with_unit(d, units_);
     if (u) return u.value();
     sdo_error e(u.error());

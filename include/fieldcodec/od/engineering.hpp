@@ -30,9 +30,11 @@
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/number.hpp>
 #include <fieldcodec/od/value.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -266,7 +268,7 @@ encode_bytes_value(const descriptor &d, std::span<const std::uint8_t> value,
   if (n.error() == errc::type_mismatch) e.issue = value_issue::type;
   if (n.error() == errc::too_long) {
     e.issue = value_issue::capacity;
-    e.capacity = d.size;
+    e.capacity = d.capacity();
   }
   if (n.error() == errc::bad_character) {
     e.issue = value_issue::character;
@@ -301,40 +303,111 @@ struct unit_rule {
   }
 };
 
-/// `d` with the unit and scale of the first rule of `rules` that matches it. A descriptor with
-/// a unit of its own keeps it (the dictionary wins), and so does one without a matching rule.
-/// A rule's scale makes an integer entry scaled: its raw limits become engineering limits
-/// (exact decimals at the entry's new eu_places), so values go through encode_value /
-/// decode_value like any scaled entry's. Errors: invalid_argument (a scale for an entry that
-/// is not an integer, already scaled, or has node-ID-relative limits), those of
-/// round_trip_places and to_eu_decimal.
-[[nodiscard]] constexpr result<descriptor> with_unit(descriptor d,
+/// What a unit rule makes of one entry: its spec (limits in engineering units and flag::scaled
+/// when the rule has a scale), its unit and its scale.
+struct unit_spec {
+  entry_spec spec{};
+  text unit{};
+  scaling::linear scale{};
+};
+
+/// `s` (an entry whose own unit is `unit` and scale `scale`) under the first rule of `rules`
+/// that matches it. An entry with a unit of its own keeps it (the dictionary wins), and so does
+/// one without a matching rule. A rule's scale makes an integer entry scaled: its raw limits
+/// become engineering limits (exact decimals at the entry's new eu_places). Errors:
+/// invalid_argument (a scale for an entry that is not an integer, already scaled, or has
+/// node-ID-relative limits), those of round_trip_places and to_eu_decimal.
+[[nodiscard]] constexpr result<unit_spec> apply_unit(const entry_spec &s, text unit,
+                                                     const scaling::linear &scale,
                                                      std::span<const unit_rule> rules) noexcept {
-  if (!d.info.unit.empty()) return d;
+  unit_spec out{s, unit, scale};
+  if (!unit.empty()) return out;
+  const entry probe = make_entry(s, nullptr); // address and object code only
   for (const unit_rule &r : rules) {
-    if (!r.matches(d)) continue;
+    if (!r.matches(probe)) continue;
     const bool identity =
         equal(r.scale.scale, decimal{1, 0}) && equal(r.scale.offset, decimal{0, 0});
     if (!identity) {
-      if (!is_integer(d.type) || d.has(flag::scaled) || d.has(flag::low_nodeid) ||
-          d.has(flag::high_nodeid)) {
+      if (!is_integer(s.type) ||
+          (s.flags & (flag::scaled | flag::low_nodeid | flag::high_nodeid)) != 0U) {
         return errc::invalid_argument;
       }
       FIELDCODEC_TRY(const unsigned places, scaling::round_trip_places(r.scale));
-      number *const limits[] = {&d.low, &d.high};
+      number *const limits[] = {&out.spec.low, &out.spec.high};
       for (number *limit : limits) {
         if (!*limit) continue;
         FIELDCODEC_TRY(const std::int64_t raw, limit->to_int64());
         FIELDCODEC_TRY(const decimal eu, scaling::to_eu_decimal(raw, r.scale, places));
         *limit = decimal_number(eu);
       }
-      d.flags = static_cast<std::uint16_t>(d.flags | flag::scaled);
-      d.scale = r.scale;
+      out.spec.flags = static_cast<std::uint16_t>(out.spec.flags | flag::scaled);
+      out.scale = r.scale;
     }
-    d.info.unit = r.unit;
-    return d;
+    out.unit = r.unit;
+    return out;
   }
-  return d;
+  return out;
+}
+
+/// A descriptor with a vendor unit (with_unit's result). When the unit's scale rewrote the
+/// limits, the packed columns its entry points to are kept here; a copy points at its own copy
+/// of them. Use it as a `const descriptor &` while it lives: a plain od::descriptor copied out
+/// of it may point into it.
+class unit_descriptor : public descriptor {
+public:
+  /// The bytes an integer entry's packed columns take at most: a default and two limits, each
+  /// as a packed od::number.
+  static constexpr std::size_t max_packed = 3U * packed_number_size;
+
+  constexpr unit_descriptor() noexcept = default;
+  /// `d` as it is (its entry keeps pointing at d's packed columns).
+  constexpr explicit unit_descriptor(const descriptor &d) noexcept : descriptor(d) {}
+  constexpr unit_descriptor(const unit_descriptor &o) noexcept
+      : descriptor(o), bytes_(o.bytes_), owned_(o.owned_) {
+    if (owned_) extra = bytes_.data();
+  }
+  constexpr unit_descriptor &operator=(const unit_descriptor &o) noexcept {
+    static_cast<descriptor &>(*this) = o;
+    bytes_ = o.bytes_;
+    owned_ = o.owned_;
+    if (owned_) extra = bytes_.data();
+    return *this;
+  }
+  constexpr ~unit_descriptor() = default;
+
+  /// `u.spec` packed into this descriptor's own bytes, with `info` (its unit replaced) and the
+  /// rule's scale. Errors: buffer_too_small (never for an integer entry).
+  [[nodiscard]] static constexpr result<unit_descriptor> make(const unit_spec &u,
+                                                              const entry_info &info) noexcept {
+    unit_descriptor out;
+    FIELDCODEC_TRY(const std::size_t n, pack(u.spec, std::span<char>(out.bytes_)));
+    (void)n;
+    static_cast<entry &>(out) = make_entry(u.spec, out.bytes_.data());
+    out.owned_ = true;
+    out.info = info;
+    out.info.unit = u.unit;
+    out.scale = u.scale;
+    return out;
+  }
+
+private:
+  std::array<char, max_packed> bytes_{};
+  bool owned_ = false;
+};
+
+/// `d` with the unit and scale of the first rule of `rules` that matches it (apply_unit): an
+/// entry with a scale from the rule gets new packed columns (its limits in engineering units),
+/// held by the result, so values go through encode_value / decode_value like any scaled
+/// entry's. Errors: those of apply_unit.
+[[nodiscard]] constexpr result<unit_descriptor>
+with_unit(const descriptor &d, std::span<const unit_rule> rules) noexcept {
+  FIELDCODEC_TRY(const unit_spec u, apply_unit(spec_of(d), d.info.unit, d.scale, rules));
+  if ((u.spec.flags & flag::scaled) == (d.flags & flag::scaled)) {
+    unit_descriptor same(d); // no new limits: d's packed columns serve
+    same.info.unit = u.unit;
+    return same;
+  }
+  return unit_descriptor::make(u, d.info);
 }
 
 } // namespace fieldcodec::od
