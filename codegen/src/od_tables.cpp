@@ -23,26 +23,10 @@ od_tables::od_tables(const dictionary &d, od_table_options o) {
   object_names_.reserve(n);
   for (const entry &e : d.entries) {
     for (std::uint16_t k = 0; k < e.count; ++k) {
-      od::entry_spec x{};
-      x.index = e.index;
+      od::entry_spec x = spec_of(e);
       x.sub = static_cast<std::uint8_t>(e.sub + k);
-      x.object = e.object;
-      x.type = e.type;
-      x.access_type = e.access;
-      x.pdo = e.pdo;
-      std::uint16_t flags = e.flags;
-      if (e.scaled) flags |= od::flag::scaled;
-      if (e.default_nodeid) flags |= od::flag::default_nodeid;
-      if (e.low_nodeid) flags |= od::flag::low_nodeid;
-      if (e.high_nodeid) flags |= od::flag::high_nodeid;
-      if (e.parameter_nodeid) flags |= od::flag::parameter_nodeid;
-      x.flags = flags;
-      if (od::is_byte_string(e.type)) {
-        x.size = e.size_declared || o.capacity_from_default ? e.size : 0U;
-      }
-      x.low = e.low;
-      x.high = e.high;
-      x.default_value = e.default_value;
+      x.size =
+          od::is_byte_string(e.type) && (e.size_declared || o.capacity_from_default) ? e.size : 0U;
       x.default_text = keep(e.default_text.str());
       std::string name = e.name;
       if (e.count > 1U) name += std::to_string(x.sub);
