@@ -6,6 +6,7 @@
 #include "cli_support.hpp"
 #include "host/peers.hpp"
 
+#include "skip.hpp"
 #include <doctest/doctest.h>
 
 #include <poll.h>
@@ -25,7 +26,7 @@ namespace t = fieldcodec::test;
 
 namespace {
 
-const std::string peer_dir = "../../shared/peers/python-canopen";
+const std::string peer_dir = std::string(t::shared_dir) + "/peers/python-canopen";
 
 bool python_ready() {
   if (::access((peer_dir + "/canopen/__init__.py").c_str(), R_OK) != 0) return false;
@@ -129,9 +130,10 @@ private:
 
 TEST_CASE("cli: sdo read and write against python-canopen over slcan") {
   if (!python_ready()) {
-    MESSAGE("skipped: python-canopen peer (" << peer_dir
-                                             << ") or python-can/pyserial not available");
-    return;
+    FIELDCODEC_SKIP_TEST("python", "python-canopen peer ("
+                                       << peer_dir
+                                       << ") or /usr/bin/python3 with python-can and pyserial "
+                                          "not available (Debian: python3-can python3-serial)");
   }
   t::pty_pair python_side, cli_side;
   REQUIRE(python_side.ok());
