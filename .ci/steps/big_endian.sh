@@ -12,7 +12,7 @@ build=build-ci-s390x
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/s390x-linux-gnu.cmake \
   -DDOCTEST_INCLUDE_DIR="$inc" \
-  -DFIELDCODEC_BUILD_CODEGEN=OFF -DFIELDCODEC_BUILD_EXAMPLES=OFF >/dev/null
+  -DFIELDCODEC_BUILD_CODEGEN=OFF -DFIELDCODEC_BUILD_EXAMPLES=OFF -DFIELDCODEC_WERROR=ON >/dev/null
 cmake --build "$build" -j"$(nproc)"
 # Prove the binaries really are big-endian s390x before trusting a green run.
 file_out="$(od -An -tx1 -j5 -N1 "$build"/tests/test_core | tr -d ' ')"
