@@ -51,13 +51,16 @@ bool has_key_value(const gen::key_list &keys, std::string_view key, std::string_
   return false;
 }
 
-/// The integer a number holds (integers only).
-std::optional<std::int64_t> integer_of(const od::number &n) {
+/// The integer a number holds, plus `node` when it is node-ID relative; nothing for a value
+/// that is not an integer or does not fit 64 signed bits (an UNSIGNED64 above 2^63 − 1, or the
+/// sum; never wrapped: fuzz/FINDINGS.md F24). The decoder reads configured values of PDO
+/// parameters only, which have 32 bits.
+std::optional<std::int64_t> configured_value(const od::number &n, std::uint8_t node) {
   auto i = n.to_int64();
-  if (i) return i.value();
-  auto u = n.to_uint64();
-  if (u) return static_cast<std::int64_t>(u.value());
-  return std::nullopt;
+  if (!i) return std::nullopt;
+  std::int64_t sum = 0;
+  if (__builtin_add_overflow(i.value(), std::int64_t{node}, &sum)) return std::nullopt;
+  return sum;
 }
 } // namespace
 
@@ -136,9 +139,7 @@ void node_dictionary::build(std::uint8_t node) {
       if (e.scaled) d.scale = scaling::linear{e.scale, e.offset};
       const od::number &v = e.parameter_value ? e.parameter_value : e.default_value;
       const bool relative = e.parameter_value ? e.parameter_nodeid : e.default_nodeid;
-      if (auto i = integer_of(v)) {
-        d.configured = *i + (relative ? node : 0);
-      }
+      d.configured = configured_value(v, relative ? node : std::uint8_t{0});
       objects_.push_back(std::move(d));
     }
   }

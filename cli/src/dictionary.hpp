@@ -37,7 +37,9 @@ struct object_desc {
   std::optional<scaling::linear> scale; ///< EU = raw / scale + offset (DPQ)
   /// A unit factor the device manual gives (XENAX 6073h: 10 mA per raw step): EU = raw × factor
   std::optional<decimal> factor;
-  std::optional<std::int64_t> configured; ///< DCF ParameterValue, else the default (node resolved)
+  /// DCF ParameterValue, else the default (node resolved); empty when not an integer of 64
+  /// signed bits
+  std::optional<std::int64_t> configured;
 };
 
 class node_dictionary {

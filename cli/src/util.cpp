@@ -1,6 +1,8 @@
 // fieldcodec CLI — small text helpers.
 #include "util.hpp"
 
+#include "text.hpp"
+
 #include <fieldcodec/core/decimal.hpp>
 
 #include <charconv>
@@ -56,8 +58,22 @@ json_object &json_object::raw(std::string_view k, std::string_view json) {
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";
-  for (const char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
     const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x80U) {
+      // JSON text is UTF-8 and so is the terminal: a byte that does not start a well-formed
+      // sequence (a log line or a device's string in another encoding) becomes U+FFFD, the
+      // replacement character (fuzz/FINDINGS.md F22). A string value's bytes stay in "raw".
+      const std::size_t n = gen::utf8_length_at(s, i);
+      if (n == 0U) {
+        out += "\xEF\xBF\xBD";
+      } else {
+        out.append(s.substr(i, n));
+        i += n - 1U;
+      }
+      continue;
+    }
     switch (c) {
     case '"': out += "\\\""; break;
     case '\\': out += "\\\\"; break;

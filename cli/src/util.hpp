@@ -30,7 +30,8 @@ private:
   std::string body_;
 };
 
-/// The JSON string literal of `s` (quotes included; control characters escaped).
+/// The JSON string literal of `s` (quotes included; control characters escaped; bytes that are
+/// not well-formed UTF-8 replaced by U+FFFD, so the result is always valid UTF-8).
 [[nodiscard]] std::string json_string(std::string_view s);
 
 /// "2B 00 18 05" (separator " ") or "2B001805" (separator "").

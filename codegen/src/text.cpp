@@ -37,6 +37,37 @@ bool iequals(std::string_view a, std::string_view b) noexcept {
   return true;
 }
 
+std::size_t utf8_length_at(std::string_view s, std::size_t i) noexcept {
+  if (i >= s.size()) return 0;
+  const auto c = static_cast<unsigned char>(s[i]);
+  if (c < 0x80U) return 1;
+  std::size_t n = 0;
+  std::uint32_t cp = 0;
+  if ((c & 0xE0U) == 0xC0U) {
+    n = 1;
+    cp = c & 0x1FU;
+  } else if ((c & 0xF0U) == 0xE0U) {
+    n = 2;
+    cp = c & 0x0FU;
+  } else if ((c & 0xF8U) == 0xF0U) {
+    n = 3;
+    cp = c & 0x07U;
+  } else {
+    return 0;
+  }
+  if (i + n >= s.size()) return 0;
+  for (std::size_t k = 1; k <= n; ++k) {
+    const auto d = static_cast<unsigned char>(s[i + k]);
+    if ((d & 0xC0U) != 0x80U) return 0;
+    cp = (cp << 6U) | (d & 0x3FU);
+  }
+  if ((n == 1 && cp < 0x80U) || (n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) ||
+      cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) {
+    return 0;
+  }
+  return n + 1U;
+}
+
 bool valid_utf8(std::string_view s) noexcept {
   std::size_t i = 0;
   while (i < s.size()) {
@@ -48,36 +79,9 @@ bool valid_utf8(std::string_view s) noexcept {
       i += 8U;
     }
     if (i >= s.size()) break;
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    std::uint32_t cp = 0;
-    if (c < 0x80U) {
-      ++i;
-      continue;
-    }
-    if ((c & 0xE0U) == 0xC0U) {
-      n = 1;
-      cp = c & 0x1FU;
-    } else if ((c & 0xF0U) == 0xE0U) {
-      n = 2;
-      cp = c & 0x0FU;
-    } else if ((c & 0xF8U) == 0xF0U) {
-      n = 3;
-      cp = c & 0x07U;
-    } else {
-      return false;
-    }
-    if (i + n >= s.size()) return false;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto d = static_cast<unsigned char>(s[i + k]);
-      if ((d & 0xC0U) != 0x80U) return false;
-      cp = (cp << 6U) | (d & 0x3FU);
-    }
-    if ((n == 1 && cp < 0x80U) || (n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) ||
-        cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) {
-      return false;
-    }
-    i += n + 1U;
+    const std::size_t n = utf8_length_at(s, i);
+    if (n == 0U) return false;
+    i += n;
   }
   return true;
 }
@@ -182,8 +186,11 @@ int_parse parse_int(std::string_view s) {
       const char *what = base == 16  ? "a hexadecimal digit"
                          : base == 8 ? "an octal digit"
                                      : "a digit";
-      r.error = std::string("expected ") + what + ", got '" + std::string(1, c) + "' in '" +
-                std::string(s) + "'";
+      // the whole character, not its first byte: a diagnostic is UTF-8 text like its input
+      // (fuzz/FINDINGS.md F23)
+      const std::size_t n = utf8_length_at(s, k);
+      r.error = std::string("expected ") + what + ", got '" +
+                std::string(s.substr(k, n == 0U ? 1U : n)) + "' in '" + std::string(s) + "'";
       r.error_pos = k;
       r.suffix = false;
       return r;

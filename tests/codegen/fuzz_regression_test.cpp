@@ -195,3 +195,30 @@ TEST_CASE("fuzz F20: a file name with a line break or a non-UTF-8 byte keeps the
   CHECK(h.starts_with("// Generated from caf\xC3\xA9 \"1\".eds by"));
   CHECK(h.find("source_file = \"caf\xC3\xA9 \\\"1\\\".eds\";") != std::string::npos);
 }
+
+// F23 (fuzz_cli_dictionary, `--dict` of the CLI): a number with a non-ASCII character among its
+// digits ("DataType=0xÀ0005", a Latin-1 file converted to UTF-8) was reported as "got '\xC3'":
+// the first byte of the character alone, so the diagnostic the CLI prints was not UTF-8.
+TEST_CASE("fuzz F23: a diagnostic quotes a whole character") {
+  gen::diagnostics diag;
+  (void)read("[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x\xC3\x80"
+             "0007\nAccessType=ro\n",
+             false, diag);
+  REQUIRE(diag.has_errors());
+  bool found = false;
+  for (const auto &x : diag.all()) {
+    CHECK(gen::valid_utf8(x.message));
+    found = found || x.message.find("got '\xC3\x80'") != std::string::npos;
+  }
+  CHECK(found);
+  // the primitive: the length of the character at a position, 0 where none starts
+  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 1) == 2U);
+  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 3) == 3U);
+  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 6) == 4U);
+  CHECK(gen::utf8_length_at("a\xC3\x80", 2) == 0U);        // a continuation byte
+  CHECK(gen::utf8_length_at("\xC3", 0) == 0U);             // cut
+  CHECK(gen::utf8_length_at("\xC0\x80", 0) == 0U);         // overlong
+  CHECK(gen::utf8_length_at("\xED\xA0\x80", 0) == 0U);     // a surrogate
+  CHECK(gen::utf8_length_at("\xF4\x90\x80\x80", 0) == 0U); // beyond U+10FFFF
+  CHECK(gen::utf8_length_at("ab", 2) == 0U);               // past the end
+}
