@@ -220,8 +220,9 @@ public:
   }
 
   /// Fill every slot with the entry's default for `node` (node-ID relative defaults resolved):
-  /// numbers from the numeric default (zero without one), byte strings from the default text
-  /// (its length is the value's length). Errors: buffer_too_small (storage or layout do not
+  /// numbers from the numeric default; without one, or with one outside the entry's limits,
+  /// zero, or the limit nearest to zero when zero is outside them; byte strings from the default
+  /// text (its length is the value's length). Errors: buffer_too_small (storage or layout do not
   /// fit the dictionary), too_long (a default text longer than its entry's capacity: cut, the
   /// other entries are filled).
   [[nodiscard]] constexpr status init_defaults(std::uint8_t node) noexcept {
@@ -433,12 +434,21 @@ private:
       set_length(slot, n);
       return fits;
     }
+    // a scaled entry's limits need its descriptor
+    const auto desc = dict_.describe(e);
+    if (!desc) return true;
     if (auto d = e.default_for(node_)) {
-      // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
-      if (auto desc = dict_.describe(e)) {
-        (void)od::encode(desc.value(), d.value(), slot, byte_order::little, node_);
-      }
+      if (od::encode(desc.value(), d.value(), slot, byte_order::little, node_)) return true;
     }
+    // No default, or one outside the limits: zero when the entry accepts it, else the limit
+    // nearest to zero, so that the store never holds a value its own checks refuse (a
+    // write-only 1..8 parameter without a default held 0; fuzz/FINDINGS.md F25).
+    if (od::encode(desc.value(), od::signed_number(0), slot, byte_order::little, node_))
+      return true;
+    const auto high = e.high_for(node_);
+    const auto high_d = high ? high.value().to_decimal() : result<decimal>(errc::unknown_object);
+    const auto nearest = high_d && high_d.value().mantissa < 0 ? high : e.low_for(node_);
+    if (nearest) (void)od::encode(desc.value(), nearest.value(), slot, byte_order::little, node_);
     return true;
   }
 
