@@ -31,7 +31,7 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace node = fieldcodec::canopen::node;
 namespace od = fieldcodec::od;
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 
 // ---------------------------------------------------------------------------------------------
 // PDO engine: node 5 with two synchronous TPDOs (type 1: every SYNC) of four objects and 8 bytes
@@ -102,7 +102,7 @@ constexpr std::array<od::entry, 54> sorted_pdo_entries = [] {
 }();
 constexpr od::dictionary pdo_dict{sorted_pdo_entries};
 static_assert(pdo_dict.is_valid());
-constexpr auto pdo_layout = sdo::make_layout<sorted_pdo_entries.size()>(pdo_dict);
+constexpr auto pdo_layout = co::make_layout<sorted_pdo_entries.size()>(pdo_dict);
 
 /// Where the value of `index` (sub 0) starts in a node's storage.
 constexpr std::size_t slot(std::uint16_t index) {

@@ -92,9 +92,9 @@ constexpr std::array<od::entry, 2 * value_count> make_block_entries() {
 }
 constexpr auto block_entries = make_block_entries();
 constexpr od::dictionary block_dict{block_entries};
-constexpr auto block_layout = sdo::make_layout<2 * value_count>(block_dict);
+constexpr auto block_layout = co::make_layout<2 * value_count>(block_dict);
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 
 /// The values of the objects (the hand-written side reads them where the store keeps them).
 std::vector<std::uint8_t> g_block_storage(block_layout.storage_size());
@@ -108,7 +108,7 @@ std::array<std::uint8_t, 2 * block_bytes> g_download_buffer{};
 std::array<std::array<std::uint8_t, block_bytes>, value_count> g_download_data{};
 
 const std::uint8_t *stored_value(std::uint8_t object) {
-  return g_block_storage.data() + block_layout.offsets[object] + sdo::length_prefix;
+  return g_block_storage.data() + block_layout.offsets[object] + co::length_prefix;
 }
 
 constexpr od::address object_address(std::uint8_t object) {

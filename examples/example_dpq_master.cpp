@@ -28,13 +28,13 @@ namespace p = fieldcodec::dictionaries::dpq_parameters;
 namespace {
 
 constexpr std::uint8_t node = 5;
-constexpr auto layout = sdo::make_layout<p::dictionary.size()>(p::dictionary);
+constexpr auto layout = co::make_layout<p::dictionary.size()>(p::dictionary);
 
 struct simulated_dpq {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout.storage_size());
-  sdo::dictionary_store<> store{p::dictionary, layout, storage};
+  co::dictionary_store<> store{p::dictionary, layout, storage};
   std::array<std::uint8_t, 64> buffer{};
-  sdo::server<sdo::dictionary_store<>> server{node, store, buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, buffer};
   simulated_dpq() { (void)store.init_defaults(node); }
 };
 

@@ -14,6 +14,7 @@
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/master/boot.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 #include <fieldcodec/xenax/homing.hpp>
 
 #include <array>
@@ -35,13 +36,13 @@ constexpr std::uint8_t node = 5;
 
 // ----- the simulated XENAX -------------------------------------------------------------------
 
-constexpr auto layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 
 struct simulated_xenax {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout.storage_size());
-  sdo::dictionary_store<> store{xcan::dictionary, layout, storage};
+  co::dictionary_store<> store{xcan::dictionary, layout, storage};
   std::array<std::uint8_t, 256> buffer{};
-  sdo::server<sdo::dictionary_store<>> server{node, store, buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, buffer};
   co::nmt::state nmt = co::nmt::state::pre_operational;
   ds402::state state = ds402::state::switch_on_disabled;
   std::uint16_t previous_cw = 0;
@@ -211,7 +212,7 @@ int main() {
               b.frames);
 
   // 2. the cyclic task: 1 ms cycle, RPDO 1 carries the controlword, TPDO 1 the statusword
-  master::drive axis({.vendor = master::drive_vendor::xenax, .target_over_sdo = true});
+  master::drive axis({.profile = xenax::profile, .target_over_sdo = true});
   std::uint16_t statusword = xenax_drive.statusword();
   std::array<std::uint8_t, 4> sdo_buffer{};
   const auto cycle = [&]() {

@@ -41,12 +41,12 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace ds402 = fieldcodec::ds402;
 namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 
-inline constexpr auto layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+inline constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 inline constexpr node::capacity capacity = node::capacity_for(xcan::dictionary);
 
 class drive {
 public:
-  using store_type = sdo::dictionary_store<>;
+  using store_type = co::dictionary_store<>;
   using device_type = node::device<store_type, capacity>;
   using step = device_type::step;
 

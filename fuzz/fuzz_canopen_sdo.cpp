@@ -34,6 +34,7 @@
 //   a block upload — the sub-block the client asks for). With corruption: no crash, both
 //   sides end (no machine is left busy), and the object's value keeps within its capacity.
 #include "check.hpp"
+#include "sdo_store.hpp"
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
@@ -60,68 +61,8 @@ namespace {
 constexpr std::uint8_t node = 5;
 constexpr sdo::channel channel = sdo::channel::default_for(node).value();
 
-/// Reads bytes from the input, zero when exhausted.
-struct reader {
-  std::span<const std::uint8_t> in;
-  std::uint8_t byte() {
-    if (in.empty()) return 0;
-    const std::uint8_t b = in[0];
-    in = in.subspan(1);
-    return b;
-  }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | (byte() << 8U)); }
-  [[nodiscard]] bool empty() const { return in.empty(); }
-};
-
-/// Two objects; 0x2000:1 holds up to `capacity` bytes, 0x2001:0 exactly 4. Parts are staged
-/// and the value changes only with the last part.
-struct store {
-  std::vector<std::uint8_t> value;
-  std::size_t capacity = 0;
-  std::array<std::uint8_t, 4> word{};
-  std::vector<std::uint8_t> staging;
-  std::size_t completed = 0; ///< writes that completed
-
-  [[nodiscard]] static sdo::abort_code known(od::address a) {
-    if ((a.index == 0x2000 && a.sub == 1) || (a.index == 0x2001 && a.sub == 0)) {
-      return sdo::abort_code::none;
-    }
-    return sdo::abort_code::no_object;
-  }
-  sdo::abort_code read(od::address a, std::size_t offset, std::span<std::uint8_t> out,
-                       std::size_t &total) const {
-    if (auto c = known(a); c != sdo::abort_code::none) return c;
-    const std::span<const std::uint8_t> v =
-        a.index == 0x2000 ? std::span<const std::uint8_t>(value) : std::span(word);
-    FUZZ_CHECK(offset <= v.size());
-    const std::size_t n = std::min(out.size(), v.size() - offset);
-    std::copy_n(v.begin() + static_cast<std::ptrdiff_t>(offset), n, out.begin());
-    total = v.size();
-    return sdo::abort_code::none;
-  }
-  sdo::abort_code begin_write(od::address a, std::optional<std::uint32_t>) {
-    staging.clear();
-    return known(a);
-  }
-  sdo::abort_code write(od::address a, std::size_t offset, std::span<const std::uint8_t> in,
-                        bool last) {
-    if (auto c = known(a); c != sdo::abort_code::none) return c;
-    if (offset == 0) staging.clear();
-    FUZZ_CHECK(offset == staging.size()); // parts arrive in order
-    staging.insert(staging.end(), in.begin(), in.end());
-    if (!last) return sdo::abort_code::none;
-    if (a.index == 0x2000) {
-      if (staging.size() > capacity) return sdo::abort_code::length_too_high;
-      value = staging;
-    } else {
-      if (staging.size() != 4) return sdo::abort_code::length_too_low;
-      std::copy(staging.begin(), staging.end(), word.begin());
-    }
-    ++completed;
-    return sdo::abort_code::none;
-  }
-};
-static_assert(sdo::object_store<store>);
+using fuzz_sdo::reader;
+using fuzz_sdo::store;
 
 void check_client_frame(const co::can_frame &f, bool segment) {
   FUZZ_CHECK(f.is_valid() && !f.rtr && f.dlc == 8 && f.id == channel.request_id);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -65,6 +66,16 @@ std::optional<chosen> final_value(const entry &e) {
   return value_of(e, false);
 }
 
+/// The entry (index, sub) of `d`, or nullptr.
+const entry *find_entry(const dictionary &d, std::uint16_t index, std::uint8_t sub) {
+  const auto it = std::lower_bound(d.entries.begin(), d.entries.end(), od::address{index, sub},
+                                   [](const entry &e, const od::address &a) {
+                                     return od::address{e.index, e.sub} < a;
+                                   });
+  if (it == d.entries.end() || it->index != index || it->sub != sub) return nullptr;
+  return &*it;
+}
+
 std::string item_name(const dictionary &d, const entry &e) {
   const auto o = d.objects.find(e.index);
   if (e.object == od::object_code::var || o == d.objects.end() || o->second.name.empty()) {
@@ -121,12 +132,7 @@ public:
 
 private:
   [[nodiscard]] const entry *find(std::uint16_t index, std::uint8_t sub) const {
-    const auto it = std::lower_bound(d_.entries.begin(), d_.entries.end(), od::address{index, sub},
-                                     [](const entry &e, const od::address &a) {
-                                       return od::address{e.index, e.sub} < a;
-                                     });
-    if (it == d_.entries.end() || it->index != index || it->sub != sub) return nullptr;
-    return &*it;
+    return find_entry(d_, index, sub);
   }
 
   /// The value the list writes for `e` in this mode.
@@ -151,8 +157,31 @@ private:
     i.flags =
         static_cast<std::uint8_t>((v.node_relative ? master::config_flag::node_relative : 0U) |
                                   (od::readable(e.access) ? 0U : master::config_flag::no_verify));
-    i.name = item_name(d_, e);
+    i.name = is_pdo_map(e.index) && e.sub != 0U ? mapping_name(e, v) : item_name(d_, e);
     l.items.push_back(std::move(i));
+  }
+
+  /// A PDO mapping entry is named by what it maps, not by its sub-object's name: an EDS often
+  /// names 1601h sub 1 after its default content ("Controlword") while the DCF maps another
+  /// object there. "RPDO 2 mapping: entry 1 = Target Position (607Ah sub 0, 32 bits)"; the object
+  /// part is the address alone when the dictionary does not have it; "entry 3 = empty" for 0; a
+  /// value that is no mapping (not 4 plain bytes) keeps the sub-object's name.
+  [[nodiscard]] std::string mapping_name(const entry &e, const chosen &v) const {
+    const auto o = d_.objects.find(e.index);
+    std::string name =
+        o != d_.objects.end() && !o->second.name.empty() ? o->second.name : hex(e.index, 4) + "h";
+    if (v.node_relative || v.bytes.size() != 4U) return item_name(d_, e); // not a mapping value
+    name += ": entry " + std::to_string(e.sub) + " = ";
+    std::uint32_t m = 0;
+    for (std::size_t i = 0; i < 4U; ++i) m |= std::uint32_t{v.bytes[i]} << (8U * i);
+    if (m == 0U) return name + "empty";
+    const auto index = static_cast<std::uint16_t>(m >> 16U);
+    const auto sub = static_cast<std::uint8_t>(m >> 8U);
+    const std::string where =
+        hex(index, 4) + "h sub " + std::to_string(sub) + ", " + std::to_string(m & 0xFFU) + " bits";
+    const entry *mapped = find(index, sub);
+    if (mapped == nullptr) return name + where;
+    return name + item_name(d_, *mapped) + " (" + where + ")";
   }
 
   [[nodiscard]] std::uint32_t identity_value(std::uint16_t index, std::uint8_t sub) const {
@@ -255,7 +284,138 @@ void append_bytes(std::string &o, const std::vector<std::uint8_t> &v, std::size_
   }
 }
 
+/// The final value of (index, sub) as an unsigned number of `size` bytes; 0 when the entry is
+/// absent or has no such value.
+std::uint32_t unsigned_value(const dictionary &d, std::uint16_t index, std::uint8_t sub,
+                             std::size_t size) {
+  const entry *e = find_entry(d, index, sub);
+  if (e == nullptr) return 0;
+  const auto v = final_value(*e);
+  if (!v || v->node_relative || v->bytes.size() != size) return 0;
+  std::uint32_t r = 0;
+  for (std::size_t i = 0; i < size; ++i) r |= std::uint32_t{v->bytes[i]} << (8U * i);
+  return r;
+}
+
+/// The value of a DOMAIN sub-object as the master holds it: its UploadFile (the file a read of
+/// it returns, relative to the DCF), else its ParameterValue / DefaultValue.
+bool domain_value(const entry &e, const std::string &file, nmt_slave_row &row, diagnostics &diag) {
+  for (const auto &[key, value] : e.other_keys) {
+    if (key != "UploadFile") continue;
+    const std::filesystem::path path =
+        std::filesystem::path(file).parent_path() / std::filesystem::path(value);
+    std::string bytes;
+    if (const char *why = read_bytes(path.string(), bytes); why != nullptr) {
+      diag.error(file, e.line, 1,
+                 "1F22h sub " + std::to_string(e.sub) + ": UploadFile '" + value + "': " + why);
+      return false;
+    }
+    row.concise_dcf.assign(bytes.begin(), bytes.end());
+    row.dcf_source = value;
+    return true;
+  }
+  const std::string &text =
+      !e.parameter_text.str().empty() ? e.parameter_text.str() : e.default_text.str();
+  row.concise_dcf.assign(text.begin(), text.end());
+  if (!text.empty())
+    row.dcf_source = e.parameter_text.str().empty() ? "DefaultValue" : "ParameterValue";
+  return true;
+}
+
+/// The top of a generated master header, up to and inside namespace
+/// fieldcodec::dictionaries::<stem>::<inner>.
+std::string preamble(const dictionary &d, const std::string &what, const std::string &inner) {
+  std::string o = "// Generated by fieldcodec-gen from " + d.source_name + ": " + what +
+                  " (docs/master.md).\n// Do not edit.\n// clang-format off\n#pragma once\n\n";
+  o += "#include <fieldcodec/master/config.hpp>\n\n#include <cstdint>\n#include <span>\n\n";
+  o += "namespace fieldcodec::dictionaries::" + stem_identifier(d.stem) + "::" + inner + " {\n\n";
+  // the library's master/, also when a dictionary is itself named "master"
+  o += "namespace master = ::fieldcodec::master;\n\n";
+  return o;
+}
+
 } // namespace
+
+std::vector<nmt_slave_row> build_nmt_slaves(const dictionary &d, const std::string &file,
+                                            diagnostics &diag) {
+  std::vector<nmt_slave_row> rows;
+  for (unsigned n = 1; n <= 127U; ++n) {
+    const auto node = static_cast<std::uint8_t>(n);
+    nmt_slave_row row;
+    row.node = node;
+    auto &o = row.objects;
+    o.assignment = unsigned_value(d, 0x1F81, node, 4);
+    if (o.assignment == 0U) continue;
+    o.expected = {unsigned_value(d, 0x1F84, node, 4), unsigned_value(d, 0x1F85, node, 4),
+                  unsigned_value(d, 0x1F86, node, 4), unsigned_value(d, 0x1F87, node, 4),
+                  unsigned_value(d, 0x1F88, node, 4)};
+    o.software_version = unsigned_value(d, 0x1F55, node, 4);
+    o.configuration_date = unsigned_value(d, 0x1F26, node, 4);
+    o.configuration_time = unsigned_value(d, 0x1F27, node, 4);
+    o.restore_sub = static_cast<std::uint8_t>(unsigned_value(d, 0x1F8A, node, 1));
+    // the consumer time: the master's 1016h entry that names this node
+    for (const entry &e : d.entries) {
+      if (e.index != 0x1016U || e.sub == 0U) continue;
+      const std::uint32_t v = unsigned_value(d, 0x1016, e.sub, 4);
+      if (((v >> 16U) & 0x7FU) == n && (v & 0xFFFFU) != 0U) {
+        o.consumer_time_ms = static_cast<std::uint16_t>(v);
+      }
+    }
+    if (const entry *e = find_entry(d, 0x1F22, node); e != nullptr) {
+      if (!domain_value(*e, file, row, diag)) continue;
+      if (!row.concise_dcf.empty()) {
+        if (const auto c = master::check_concise_dcf(row.concise_dcf); !c) {
+          diag.error(file, e->line, 1,
+                     "1F22h sub " + std::to_string(n) + " (" + row.dcf_source +
+                         "): not a concise DCF: " + std::string(to_string(c.error())));
+          continue;
+        }
+      }
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string emit_nmt_slaves(const dictionary &d, const std::vector<nmt_slave_row> &rows) {
+  std::string o = preamble(d, "the NMT slaves of a CiA 302 master", "slaves");
+  o += "/// Per slave in node order: 1F81h, 1F84h..1F88h, 1F22h, the 1016h consumer time, 1F55h,\n"
+       "/// 1F26h, 1F27h, 1F8Ah (0 or empty: not set).\n";
+  if (rows.empty()) {
+    o += "inline constexpr std::span<const master::nmt_slave> slaves{};\n";
+  } else {
+    o += "namespace detail {\n";
+    for (const auto &r : rows) {
+      if (r.concise_dcf.empty()) continue;
+      o += "/// 1F22h sub " + std::to_string(r.node) + " (" + r.dcf_source + ")\n";
+      o += "inline constexpr std::uint8_t dcf" + std::to_string(r.node) + "[] = {\n    ";
+      append_bytes(o, r.concise_dcf, 12);
+      o += "};\n";
+    }
+    o += "inline constexpr master::nmt_slave slaves[] = {\n";
+    for (const auto &r : rows) {
+      const auto &s = r.objects;
+      o += "    {" + std::to_string(r.node) + ", {0x" + hex(s.assignment, 8) + "U, {0x" +
+           hex(s.expected.device_type, 8) + "U, 0x" + hex(s.expected.vendor_id, 8) + "U, 0x" +
+           hex(s.expected.product_code, 8) + "U, 0x" + hex(s.expected.revision, 8) + "U, 0x" +
+           hex(s.expected.serial, 8) + "U}, ";
+      if (r.concise_dcf.empty()) {
+        o += "{}";
+      } else {
+        o += "detail::dcf";
+        o += std::to_string(r.node);
+      }
+      o += ", " + std::to_string(s.consumer_time_ms) + ", 0x" + hex(s.software_version, 8) +
+           "U, 0x" + hex(s.configuration_date, 8) + "U, 0x" + hex(s.configuration_time, 8) + "U, " +
+           std::to_string(s.restore_sub) + "}},\n";
+    }
+    o += "};\n} // namespace detail\n\n";
+    o += "inline constexpr std::span<const master::nmt_slave> slaves{detail::slaves};\n";
+  }
+  o += "\n} // namespace fieldcodec::dictionaries::" + stem_identifier(d.stem) +
+       "::slaves\n// clang-format on\n";
+  return o;
+}
 
 config_list build_config_list(const dictionary &d, config_values values, const std::string &file,
                               diagnostics &diag) {
@@ -263,13 +423,8 @@ config_list build_config_list(const dictionary &d, config_values values, const s
 }
 
 std::string emit_config_list(const dictionary &d, const config_list &l) {
-  std::string o;
   const std::string ns = stem_identifier(d.stem);
-  o += "// Generated by fieldcodec-gen from " + d.source_name +
-       ": the configuration list (docs/master.md).\n// Do not edit.\n// clang-format off\n#pragma "
-       "once\n\n";
-  o += "#include <fieldcodec/master/config.hpp>\n\n#include <cstdint>\n#include <span>\n\n";
-  o += "namespace fieldcodec::dictionaries::" + ns + "::config {\n\n";
+  std::string o = preamble(d, "the configuration list", "config");
   o += "/// The DCF's node-ID ([DeviceComissioning] NodeID; 0: none).\n";
   o += "inline constexpr std::uint8_t node_id = " + std::to_string(l.node_id) + ";\n\n";
   o += "/// 1000h and 1018h sub 1..4 to compare at boot (0: not checked).\n";
@@ -292,7 +447,13 @@ std::string emit_config_list(const dictionary &d, const config_list &l) {
     for (std::size_t i = 0; i < l.items.size(); ++i) {
       const auto &it = l.items[i];
       o += "    {{0x" + hex(it.address.index, 4) + ", 0x" + hex(it.address.sub, 2) + "}, ";
-      o += it.value.empty() ? std::string("{}") : "v" + std::to_string(i);
+      // appended piece by piece: GCC 12 -O2 warns (restrict) about "v" + std::to_string(i) here
+      if (it.value.empty()) {
+        o += "{}";
+      } else {
+        o += 'v';
+        o += std::to_string(i);
+      }
       o += ", ";
       std::string flags;
       if ((it.flags & master::config_flag::node_relative) != 0U) {

@@ -46,4 +46,24 @@ struct config_list {
 /// out with a comment when node-relative items have no node-ID to resolve them).
 [[nodiscard]] std::string emit_config_list(const dictionary &d, const config_list &l);
 
+/// One slave of a CiA 302 master DCF: its node-ID and what the master's objects hold for it.
+struct nmt_slave_row {
+  std::uint8_t node = 0;
+  master::slave_objects objects{}; ///< concise_dcf empty: the bytes are in `concise_dcf`
+  std::vector<std::uint8_t> concise_dcf;
+  std::string dcf_source; ///< where the concise DCF came from ("./x.bin"), for the header
+};
+
+/// The slaves of the master DCF `d` (read from `file`; an UploadFile of 1F22h is read relative to
+/// its directory): every node 1..127 whose 1F81h sub-object has a value other than 0, with 1F84h
+/// to 1F88h, 1F22h, the consumer time of the 1016h entry naming it, 1F55h, 1F26h, 1F27h and
+/// 1F8Ah. Errors (in `diag`): a concise DCF that cannot be read or is malformed.
+[[nodiscard]] std::vector<nmt_slave_row>
+build_nmt_slaves(const dictionary &d, const std::string &file, diagnostics &diag);
+
+/// The C++ header of a master's slaves: namespace fieldcodec::dictionaries::<stem>::slaves with
+/// `slaves` (std::span<const master::nmt_slave>, node order).
+[[nodiscard]] std::string emit_nmt_slaves(const dictionary &d,
+                                          const std::vector<nmt_slave_row> &rows);
+
 } // namespace fieldcodec::gen

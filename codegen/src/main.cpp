@@ -65,6 +65,12 @@ options:
                       the values the list writes: ParameterValue where it differs
                       from DefaultValue (parameter, the default), or DefaultValue
                       of every writable entry (default)
+      --nmt-slaves FILE
+                      write the slaves of a CiA 302 master DCF to FILE: per node
+                      with a 1F81h value, its assignment, expected identity
+                      (1F84h..1F88h), concise DCF (1F22h, its UploadFile or
+                      value), consumer time (1016h), 1F55h, 1F26h, 1F27h, 1F8Ah
+                      (docs/master.md)
       --strict        treat warnings as errors
   -q, --quiet         do not print warnings
   -h, --help          show this text
@@ -179,6 +185,7 @@ struct command_line {
   std::string header_out;
   std::string eds_out;
   std::string config_out;
+  std::string slaves_out;
   fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
   std::string name;
   bool check = false;
@@ -211,6 +218,8 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
     } else if (a == "--config-list") {
       if (!value(cl.config_out)) return usage_error("option --config-list needs a file name");
+    } else if (a == "--nmt-slaves") {
+      if (!value(cl.slaves_out)) return usage_error("option --nmt-slaves needs a file name");
     } else if (a == "--config-values") {
       std::string v;
       if (!value(v)) return usage_error("option --config-values needs parameter or default");
@@ -277,6 +286,18 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
     put(stderr, diag.text(!cl.quiet));
     if (diag.has_errors()) return 1;
     rc |= output(cl.config_out, fieldcodec::gen::emit_config_list(dict, list), cl.check);
+  }
+  if (!cl.slaves_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table has no NMT slaves\n");
+      return 1;
+    }
+    fieldcodec::gen::diagnostics diag;
+    diag.strict = cl.strict;
+    auto rows = fieldcodec::gen::build_nmt_slaves(dict, cl.input, diag);
+    put(stderr, diag.text(!cl.quiet));
+    if (diag.has_errors()) return 1;
+    rc |= output(cl.slaves_out, fieldcodec::gen::emit_nmt_slaves(dict, rows), cl.check);
   }
   if (!cl.header_out.empty()) {
     // The emitter writes one od::entry per sub-index: the runs of --compact-arrays are expanded

@@ -10,6 +10,7 @@
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/master/configurator.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 
 namespace co = fieldcodec::canopen;
 namespace pdo = fieldcodec::canopen::pdo;
@@ -54,7 +55,7 @@ int main() {
   fw::tx_register[1] = static_cast<std::uint8_t>(config.state());
 
   // the cyclic task
-  master::drive axis({.vendor = master::drive_vendor::xenax});
+  master::drive axis({.profile = fieldcodec::xenax::profile});
   (void)axis.switch_mode(fieldcodec::ds402::mode::profile_position, fw::tick);
   (void)axis.enable(fw::tick);
   std::array<std::uint8_t, 4> sdo_buffer{};

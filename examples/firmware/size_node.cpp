@@ -18,7 +18,7 @@ namespace {
 // The node reads no names: a dictionary of the lean entries alone keeps the descriptive table
 // (io::infos, 14 kB here) out of the image.
 constexpr fieldcodec::od::dictionary dict{io::entries};
-constexpr auto layout = sdo::make_layout<io::entries.size()>(dict);
+constexpr auto layout = co::make_layout<io::entries.size()>(dict);
 constexpr node::capacity caps = [] {
   node::capacity c = node::capacity_for(dict);
   c.sdo_buffer = 64; // expedited and segmented of any size; block sub-blocks of 9 segments
@@ -26,7 +26,7 @@ constexpr node::capacity caps = [] {
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
 store_type store{dict, layout, storage};
 node::device<store_type, caps> dev(store, 0x22);

@@ -1,4 +1,4 @@
-// The object store by position (sdo::positioned_store, issue 18 round 4): position() once, then
+// The object store by position (co::positioned_store, issue 18 round 4): position() once, then
 // read_at / write_at do what read / write of the address do; the slot flags a layout carries
 // (access, byte string, "any bits valid") say what read() and write() would have found in the
 // entry; and the writes that skip od::decode for "any bits valid" entries skip only what
@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+namespace co = fieldcodec::canopen;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 using fieldcodec::byte_order;
@@ -53,12 +54,12 @@ constexpr od::entry entries[] = {
     {.index = 0x200A, .type = od::data_type::time_of_day},
 };
 constexpr od::dictionary dict{entries};
-constexpr auto layout = sdo::make_layout<std::size(entries)>(dict);
+constexpr auto layout = co::make_layout<std::size(entries)>(dict);
 
-using sdo::slot_flag::any_bits;
-using sdo::slot_flag::byte_string;
-using sdo::slot_flag::readable;
-using sdo::slot_flag::writable;
+using co::slot_flag::any_bits;
+using co::slot_flag::byte_string;
+using co::slot_flag::readable;
+using co::slot_flag::writable;
 // what each entry is, taken once at compile time
 static_assert(layout.flags[0] == (readable | byte_string));
 static_assert(layout.flags[1] == (readable | writable | any_bits));
@@ -81,22 +82,22 @@ struct rng : fieldcodec::test::xorshift {
 
 TEST_CASE("store by position: position, address_at, and no_position") {
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> store{dict, layout, storage};
+  co::dictionary_store<> store{dict, layout, storage};
   for (std::size_t i = 0; i < std::size(entries); ++i) {
     const od::address a{entries[i].index, entries[i].sub};
     CHECK(store.position(a) == i);
     CHECK(store.address_at(i) == a);
   }
-  CHECK(store.position({0x2000, 1}) == sdo::no_position);
-  CHECK(store.position({0x3000, 0}) == sdo::no_position);
+  CHECK(store.position({0x2000, 1}) == co::no_position);
+  CHECK(store.position({0x3000, 0}) == co::no_position);
   std::array<std::uint8_t, 4> out{};
   std::size_t total = 0;
-  CHECK(store.read_at(sdo::no_position, 0, out, total) == abort_code::no_object);
+  CHECK(store.read_at(co::no_position, 0, out, total) == abort_code::no_object);
   CHECK(store.read_at(std::size(entries), 0, out, total) == abort_code::no_object);
-  CHECK(store.write_at(sdo::no_position, 0, out, true) == abort_code::no_object);
+  CHECK(store.write_at(co::no_position, 0, out, true) == abort_code::no_object);
   // a store whose storage does not fit its layout answers general_error, by position as well
   std::vector<std::uint8_t> small(4);
-  sdo::dictionary_store<> broken{dict, layout, small};
+  co::dictionary_store<> broken{dict, layout, small};
   CHECK(broken.read_at(1, 0, out, total) == abort_code::general_error);
   CHECK(broken.write_at(1, 0, std::span<const std::uint8_t>(out).first(2), true) ==
         abort_code::general_error);
@@ -108,7 +109,7 @@ TEST_CASE("store: a layout whose flags are not the entries' slot_flags does not 
   auto hand_made = layout;
   hand_made.flags = {};
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> store{dict, hand_made, storage};
+  co::dictionary_store<> store{dict, hand_made, storage};
   CHECK(store.init_defaults(3).error() == fieldcodec::errc::buffer_too_small);
   std::array<std::uint8_t, 4> out{};
   std::size_t total = 0;
@@ -117,11 +118,11 @@ TEST_CASE("store: a layout whose flags are not the entries' slot_flags does not 
         abort_code::general_error);
   // one flag off is enough
   auto one_off = layout;
-  one_off.flags[1] = static_cast<std::uint8_t>(one_off.flags[1] ^ sdo::slot_flag::writable);
-  sdo::dictionary_store<> store2{dict, one_off, storage};
+  one_off.flags[1] = static_cast<std::uint8_t>(one_off.flags[1] ^ co::slot_flag::writable);
+  co::dictionary_store<> store2{dict, one_off, storage};
   CHECK(store2.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
   // make_layout's own flags fit
-  sdo::dictionary_store<> good{dict, layout, storage};
+  co::dictionary_store<> good{dict, layout, storage};
   CHECK(good.init_defaults(3).has_value());
 }
 
@@ -130,8 +131,8 @@ TEST_CASE("store by position: read_at / write_at == read / write, random values 
   std::vector<std::uint8_t> s2(layout.storage_size());
   std::array<std::uint8_t, 8> staging1{};
   std::array<std::uint8_t, 8> staging2{};
-  sdo::dictionary_store<> by_address{dict, layout, s1, staging1};
-  sdo::dictionary_store<> by_position{dict, layout, s2, staging2};
+  co::dictionary_store<> by_address{dict, layout, s1, staging1};
+  co::dictionary_store<> by_position{dict, layout, s2, staging2};
   REQUIRE(by_address.init_defaults(3).has_value());
   REQUIRE(by_position.init_defaults(3).has_value());
   rng r{0x5eed};
@@ -179,7 +180,7 @@ TEST_CASE("store: an 'any bits' entry takes every value od::decode takes, withou
   rng r{42};
   std::size_t checked = 0;
   for (const auto &e : fieldcodec::dictionaries::xenax_canopen::dictionary) {
-    if ((sdo::slot_flags(e) & any_bits) == 0U) continue;
+    if ((co::slot_flags(e) & any_bits) == 0U) continue;
     for (int k = 0; k < 64; ++k) {
       std::array<std::uint8_t, 8> v{};
       for (auto &b : v) b = static_cast<std::uint8_t>(r.next());
@@ -194,7 +195,7 @@ TEST_CASE("store: an 'any bits' entry takes every value od::decode takes, withou
   CHECK(checked > 64U * 20U);
   // and the store checks the others as before: limits, BOOLEAN, NaN
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> store{dict, layout, storage};
+  co::dictionary_store<> store{dict, layout, storage};
   REQUIRE(store.init_defaults(1).has_value());
   CHECK(store.write_at(3, 0, std::array<std::uint8_t, 1>{6}, true) == abort_code::value_too_high);
   CHECK(store.write_at(4, 0, std::array<std::uint8_t, 1>{2}, true) == abort_code::invalid_value);
@@ -224,19 +225,19 @@ struct counting_hook {
 
 TEST_CASE("store plain_at: which values are plain, and that they are what read_at / write_at "
           "copy") {
-  // (sdo::plain_store, round 5: the PDO engine copies plain values between storage and frames)
+  // (co::plain_store, round 5: the PDO engine copies plain values between storage and frames)
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> store{dict, layout, storage};
+  co::dictionary_store<> store{dict, layout, storage};
   REQUIRE(store.init_defaults(3).has_value());
   std::size_t calls = 0;
   std::vector<std::uint8_t> hooked_storage(layout.storage_size());
-  sdo::dictionary_store<counting_hook> hooked{
+  co::dictionary_store<counting_hook> hooked{
       dict, layout, hooked_storage, {}, counting_hook{&calls}};
   REQUIRE(hooked.init_defaults(3).has_value());
   CHECK(store.plain_storage().data() == storage.data());
   CHECK(store.plain_storage().size() == storage.size());
   // {offset, size, readable, writable} for each entry of the table above
-  const std::array<sdo::plain_slot, std::size(entries)> expected{{
+  const std::array<co::plain_slot, std::size(entries)> expected{{
       {0, 0, false, false},                 // VISIBLE_STRING: a length, not plain
       {layout.offsets[1], 2, true, true},   // u16
       {layout.offsets[2], 4, false, true},  // i32 write-only
@@ -254,22 +255,22 @@ TEST_CASE("store plain_at: which values are plain, and that they are what read_a
     CAPTURE(i);
     CHECK(store.plain_at(i) == expected[i]);
     // with a write hook nothing is written by a copy: the hook must see every value
-    sdo::plain_slot h = expected[i];
+    co::plain_slot h = expected[i];
     h.writable = false;
     CHECK(hooked.plain_at(i) == h);
   }
-  CHECK(store.plain_at(sdo::no_position) == sdo::plain_slot{});
-  CHECK(store.plain_at(std::size(entries)) == sdo::plain_slot{});
+  CHECK(store.plain_at(co::no_position) == co::plain_slot{});
+  CHECK(store.plain_at(std::size(entries)) == co::plain_slot{});
   std::vector<std::uint8_t> small(4);
-  sdo::dictionary_store<> broken{dict, layout, small};
-  CHECK(broken.plain_at(1) == sdo::plain_slot{});
+  co::dictionary_store<> broken{dict, layout, small};
+  CHECK(broken.plain_at(1) == co::plain_slot{});
 
   // the promise: a readable slot holds the bytes read_at copies (CANopen order on every host);
   // write_at of a writable slot's size stores the bytes there as they are and takes any value
   rng r{0x5EED'0005ULL};
   for (int round = 0; round < 2000; ++round) {
     const std::size_t i = r.next() % std::size(entries);
-    const sdo::plain_slot p = store.plain_at(i);
+    const co::plain_slot p = store.plain_at(i);
     if (p.size == 0U) continue;
     std::array<std::uint8_t, 8> v{};
     for (auto &b : v) b = static_cast<std::uint8_t>(r.next());

@@ -39,7 +39,7 @@ constexpr od::entry entries[] = {
     {.index = 0x2003, .type = od::data_type::octet_string, .size = 4, .default_text = "too long"},
 };
 constexpr od::dictionary dict{entries};
-constexpr auto layout = sdo::make_layout<std::size(entries)>(dict);
+constexpr auto layout = co::make_layout<std::size(entries)>(dict);
 
 // The layout is computed at compile time: byte strings take a 4-byte length and their
 // capacity, numbers their width.
@@ -49,7 +49,7 @@ static_assert(layout.offsets[2] == 24 + 2);
 static_assert(layout.offsets[3] == 26 + 4 + 300);
 static_assert(layout.offsets[4] == 330 + 1);
 static_assert(layout.storage_size() == 331 + 4 + 4);
-static_assert(layout.storage_size() == sdo::dictionary_store<>::storage_size(dict));
+static_assert(layout.storage_size() == co::dictionary_store<>::storage_size(dict));
 
 std::string_view text(std::span<const std::uint8_t> b) {
   return {reinterpret_cast<const char *>(b.data()), b.size()};
@@ -69,7 +69,7 @@ struct recorder {
 
 TEST_CASE("store: defaults, strings with their default text, reads in parts") {
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> s{dict, layout, storage};
+  co::dictionary_store<> s{dict, layout, storage};
   // a default text longer than its capacity is cut and reported
   CHECK(s.init_defaults(5) == errc::too_long);
   CHECK(s.node() == 5);
@@ -92,7 +92,7 @@ TEST_CASE("store: defaults, strings with their default text, reads in parts") {
   CHECK(s.read({0x2000, 1}, 0, out, total) == abort_code::no_sub_index);
   // a storage too small for the layout
   std::vector<std::uint8_t> small(10);
-  sdo::dictionary_store<> t{dict, layout, small};
+  co::dictionary_store<> t{dict, layout, small};
   CHECK(t.init_defaults(5) == errc::buffer_too_small);
   CHECK(t.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
 }
@@ -100,7 +100,7 @@ TEST_CASE("store: defaults, strings with their default text, reads in parts") {
 TEST_CASE("store: writes in parts become visible only when complete") {
   std::vector<std::uint8_t> storage(layout.storage_size());
   std::vector<std::uint8_t> staging(300);
-  sdo::dictionary_store<> s{dict, layout, storage, staging};
+  co::dictionary_store<> s{dict, layout, storage, staging};
   (void)s.init_defaults(1);
   const std::array<std::uint8_t, 5> a{1, 2, 3, 4, 5};
   CHECK(s.begin_write({0x2001, 0}, 10) == abort_code::none);
@@ -119,7 +119,7 @@ TEST_CASE("store: writes in parts become visible only when complete") {
   CHECK(s.write({0x2001, 0}, 299, a, true) == abort_code::length_too_high);
   // without a staging area, a value in parts is refused with out of memory
   std::vector<std::uint8_t> storage2(layout.storage_size());
-  sdo::dictionary_store<> t{dict, layout, storage2};
+  co::dictionary_store<> t{dict, layout, storage2};
   (void)t.init_defaults(1);
   CHECK(t.write({0x2001, 0}, 0, a, false) == abort_code::out_of_memory);
   CHECK(t.write({0x2001, 0}, 0, a, true) == abort_code::none); // one part: fine
@@ -142,10 +142,10 @@ TEST_CASE("store: writes in parts become visible only when complete") {
 TEST_CASE("store: the write hook sees every SDO write and may refuse it") {
   std::vector<std::uint8_t> storage(layout.storage_size());
   std::vector<od::address> seen;
-  sdo::dictionary_store<recorder> s{dict, layout, storage, {}, recorder{&seen}};
+  co::dictionary_store<recorder> s{dict, layout, storage, {}, recorder{&seen}};
   (void)s.init_defaults(1);
   std::vector<std::uint8_t> buffer(64);
-  sdo::server<sdo::dictionary_store<recorder>> srv(1, s, buffer);
+  sdo::server<co::dictionary_store<recorder>> srv(1, s, buffer);
   sdo::client c(1);
   auto talk = [&](sdo::step st) {
     for (int i = 0; i < 100 && !st.send.empty(); ++i) {
@@ -177,10 +177,10 @@ TEST_CASE("store: the write hook sees every SDO write and may refuse it") {
 TEST_CASE("server: an object larger than its buffer, through the store's staging") {
   std::vector<std::uint8_t> storage(layout.storage_size());
   std::vector<std::uint8_t> staging(300);
-  sdo::dictionary_store<> s{dict, layout, storage, staging};
+  co::dictionary_store<> s{dict, layout, storage, staging};
   (void)s.init_defaults(1);
   std::vector<std::uint8_t> buffer(16); // far smaller than the 300-byte domain
-  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
+  sdo::server<co::dictionary_store<>> srv(1, s, buffer);
   sdo::client c(1);
   std::vector<std::uint8_t> v(300);
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::uint8_t>(i * 7);
@@ -225,7 +225,7 @@ TEST_CASE("server: an object larger than its buffer, through the store's staging
 // the manual prints none, docs/xenax.md) or the default's length.
 namespace {
 struct sdo_pair {
-  sdo::server<sdo::dictionary_store<>> &srv;
+  sdo::server<co::dictionary_store<>> &srv;
   sdo::client c{1};
 
   void talk(sdo::step st) {
@@ -252,12 +252,12 @@ struct sdo_pair {
 
 template <const auto &Dictionary>
 void check_xenax_strings(std::size_t expected_strings) {
-  constexpr auto xl = sdo::make_layout<Dictionary.size()>(Dictionary);
+  constexpr auto xl = co::make_layout<Dictionary.size()>(Dictionary);
   std::vector<std::uint8_t> storage(xl.storage_size());
-  sdo::dictionary_store<> s{Dictionary, xl, storage};
+  co::dictionary_store<> s{Dictionary, xl, storage};
   REQUIRE(s.init_defaults(1).has_value());
   std::vector<std::uint8_t> buffer(256);
-  sdo::server<sdo::dictionary_store<>> srv(1, s, buffer);
+  sdo::server<co::dictionary_store<>> srv(1, s, buffer);
   sdo_pair p{srv};
   std::size_t strings = 0, writable = 0;
   for (const auto &e : Dictionary) {
@@ -320,9 +320,9 @@ TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 
   static constexpr std::array<fieldcodec::scaling::linear, 2> scales{{{}, {{10, 0}, {0, 0}}}};
   static constexpr od::dictionary d{rel, {}, scales};
   static_assert(d.is_valid());
-  constexpr auto l = sdo::make_layout<2>(d);
+  constexpr auto l = co::make_layout<2>(d);
   std::vector<std::uint8_t> storage(l.storage_size());
-  sdo::dictionary_store<> s{d, l, storage};
+  co::dictionary_store<> s{d, l, storage};
   REQUIRE(s.init_defaults(1) == fieldcodec::status{});
   CHECK(s.value({0x1200, 1}).value()[0] == 0x01); // default 0x601 stored: within its limits
   const std::array<std::uint8_t, 4> own{0x01, 0x06, 0, 0};

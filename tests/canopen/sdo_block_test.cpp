@@ -38,7 +38,7 @@ constexpr od::entry block_entries[] = {
      .default_text = "read only"},
 };
 constexpr od::dictionary block_dict{block_entries};
-constexpr auto block_layout = sdo::make_layout<std::size(block_entries)>(block_dict);
+constexpr auto block_layout = co::make_layout<std::size(block_entries)>(block_dict);
 
 std::vector<std::uint8_t> pattern(std::size_t n, std::uint32_t seed) {
   std::vector<std::uint8_t> v(n);
@@ -57,11 +57,11 @@ enum class fault_kind { none, lose, repeat, swap };
 template <class ServerCrc = fc::crc::ccitt16_no_table, class ClientCrc = fc::crc::ccitt16_no_table>
 struct basic_bus {
   std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(block_dict));
+      std::vector<std::uint8_t>(co::dictionary_store<>::storage_size(block_dict));
   std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(5000);
-  sdo::dictionary_store<> store{block_dict, block_layout, storage, staging};
+  co::dictionary_store<> store{block_dict, block_layout, storage, staging};
   std::vector<std::uint8_t> server_buffer;
-  sdo::server<sdo::dictionary_store<>, ServerCrc> server;
+  sdo::server<co::dictionary_store<>, ServerCrc> server;
   sdo::basic_client<ClientCrc> client{5, 100};
   std::vector<co::can_frame> wire; ///< every frame either side sent, in order
   std::uint32_t now = 0;
@@ -235,12 +235,12 @@ TEST_CASE("block transfer recovers from lost, repeated and reordered segments") 
 }
 
 TEST_CASE("block download on the wire (CiA 301 7.2.4.3.9 ff) and its CRC") {
-  std::vector<std::uint8_t> storage(sdo::dictionary_store<>::storage_size(block_dict));
+  std::vector<std::uint8_t> storage(co::dictionary_store<>::storage_size(block_dict));
   std::vector<std::uint8_t> staging(64);
-  sdo::dictionary_store<> store{block_dict, block_layout, storage, staging};
+  co::dictionary_store<> store{block_dict, block_layout, storage, staging};
   REQUIRE(store.init_defaults(5).has_value());
   std::vector<std::uint8_t> buffer(21); // 3 segments per sub-block
-  sdo::server<sdo::dictionary_store<>> s(5, store, buffer);
+  sdo::server<co::dictionary_store<>> s(5, store, buffer);
   // initiate: CRC, size 9; the server answers with block size 3 and CRC
   auto r = s.on_frame(F(0x605, {0xC6, 0x00, 0x20, 0x00, 9, 0, 0, 0}), 0);
   CHECK(r.send[0] == F(0x585, {0xA4, 0x00, 0x20, 0x00, 3, 0, 0, 0}));
@@ -394,11 +394,11 @@ TEST_CASE("block download, client side: the sub-block burst and its acknowledgem
 }
 
 TEST_CASE("block upload: the protocol switch, block sizes and the end") {
-  std::vector<std::uint8_t> storage(sdo::dictionary_store<>::storage_size(block_dict));
-  sdo::dictionary_store<> store{block_dict, block_layout, storage};
+  std::vector<std::uint8_t> storage(co::dictionary_store<>::storage_size(block_dict));
+  co::dictionary_store<> store{block_dict, block_layout, storage};
   REQUIRE(store.init_defaults(5).has_value());
   std::vector<std::uint8_t> buffer(64);
-  sdo::server<sdo::dictionary_store<>> s(5, store, buffer);
+  sdo::server<co::dictionary_store<>> s(5, store, buffer);
   std::array<std::uint8_t, 64> buf{};
   SUBCASE("a small object under the threshold is answered with a normal upload") {
     sdo::client c(5);

@@ -47,12 +47,12 @@ constexpr od::entry client_entries[] = {
      .default_text = "read only"},
 };
 constexpr od::dictionary client_dict{client_entries};
-constexpr auto client_layout = sdo::make_layout<std::size(client_entries)>(client_dict);
+constexpr auto client_layout = co::make_layout<std::size(client_entries)>(client_dict);
 constexpr std::uint8_t node = 5;
 constexpr std::uint16_t response_id = 0x580U + node;
 constexpr std::uint32_t timeout_ms = 100;
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 
 std::vector<co::can_frame> list(const co::frames &fs) { return {fs.begin(), fs.end()}; }
 

@@ -46,12 +46,12 @@ constexpr od::entry batch_entries[] = {
     {.index = 0x2002, .type = od::data_type::domain, .size = 300},
 };
 constexpr od::dictionary batch_dict{batch_entries};
-constexpr auto batch_layout = sdo::make_layout<std::size(batch_entries)>(batch_dict);
+constexpr auto batch_layout = co::make_layout<std::size(batch_entries)>(batch_dict);
 constexpr std::uint8_t node = 5;
 constexpr std::uint16_t request_id = 0x600U + node;
 constexpr std::uint32_t timeout_ms = 100;
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 
 /// One server with its own store and buffer.
 template <class Crc>

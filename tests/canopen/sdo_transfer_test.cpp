@@ -6,6 +6,8 @@
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
 
+#include "sdo_test_dictionary.hpp"
+
 #include <doctest/doctest.h>
 
 #include <array>
@@ -36,64 +38,11 @@ sdo::abort_code code_of(const sdo::step &s) {
   return m.value().abort;
 }
 
-constexpr od::entry test_entries[] = {
-    {.index = 0x1000,
-     .type = data_type::unsigned32,
-     .access_type = od::access::ro,
-     .default_value = od::unsigned_number(0x00020192)},
-    {.index = 0x1008,
-     .type = data_type::visible_string,
-     .access_type = od::access::constant,
-     .size = 16,
-     .default_text = "XENAX Xvi 75V8S"},
-    {.index = 0x2001, .type = data_type::boolean},
-    {.index = 0x2002, .type = data_type::integer8},
-    {.index = 0x2003, .type = data_type::integer16},
-    {.index = 0x2004, .type = data_type::integer32},
-    {.index = 0x2005, .type = data_type::unsigned8},
-    {.index = 0x2006, .type = data_type::unsigned16},
-    {.index = 0x2007, .type = data_type::unsigned32},
-    {.index = 0x2008, .type = data_type::real32},
-    {.index = 0x2009, .type = data_type::visible_string, .size = 400},
-    {.index = 0x200A, .type = data_type::octet_string, .size = 600},
-    {.index = 0x200B, .type = data_type::unicode_string, .size = 64},
-    {.index = 0x200C, .type = data_type::time_of_day},
-    {.index = 0x200D, .type = data_type::time_difference},
-    {.index = 0x200F, .type = data_type::domain, .size = 1000},
-    {.index = 0x2010, .type = data_type::integer24},
-    {.index = 0x2011, .type = data_type::real64},
-    {.index = 0x2012, .type = data_type::integer40},
-    {.index = 0x2013, .type = data_type::integer48},
-    {.index = 0x2014, .type = data_type::integer56},
-    {.index = 0x2015, .type = data_type::integer64},
-    {.index = 0x2016, .type = data_type::unsigned24},
-    {.index = 0x2018, .type = data_type::unsigned40},
-    {.index = 0x2019, .type = data_type::unsigned48},
-    {.index = 0x201A, .type = data_type::unsigned56},
-    {.index = 0x201B, .type = data_type::unsigned64},
-    {.index = 0x3000,
-     .sub = 0,
-     .object = od::object_code::record,
-     .type = data_type::unsigned8,
-     .access_type = od::access::ro,
-     .default_value = od::unsigned_number(2)},
-    {.index = 0x3000,
-     .sub = 1,
-     .object = od::object_code::record,
-     .type = data_type::unsigned16,
-     .access_type = od::access::wo},
-    {.index = 0x3000,
-     .sub = 2,
-     .object = od::object_code::record,
-     .type = data_type::integer16,
-     .low = od::signed_number(-20),
-     .high = od::signed_number(20)},
-    {.index = 0x3001, .type = data_type::domain}, // no size: not storable
-};
+constexpr const auto &test_entries = sdo_test::entries; // tests/sdo_test_dictionary.hpp
 constexpr od::dictionary test_dict{test_entries};
 static_assert(test_dict.is_valid());
 
-constexpr auto test_layout = sdo::make_layout<std::size(test_entries)>(test_dict);
+constexpr auto test_layout = co::make_layout<std::size(test_entries)>(test_dict);
 
 /// A client and a server on one in-memory bus. Frames travel in order; a burst is delivered
 /// frame by frame. `fault` may change the frames of a burst on their way (lose, repeat,
@@ -101,10 +50,10 @@ constexpr auto test_layout = sdo::make_layout<std::size(test_entries)>(test_dict
 struct bus {
   static constexpr std::uint8_t node = 5;
   std::vector<std::uint8_t> storage =
-      std::vector<std::uint8_t>(sdo::dictionary_store<>::storage_size(test_dict));
-  sdo::dictionary_store<> store{test_dict, test_layout, storage};
+      std::vector<std::uint8_t>(co::dictionary_store<>::storage_size(test_dict));
+  co::dictionary_store<> store{test_dict, test_layout, storage};
   std::vector<std::uint8_t> server_buffer = std::vector<std::uint8_t>(1024);
-  sdo::server<sdo::dictionary_store<>> server{node, store, server_buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, server_buffer};
   sdo::client client{node};
   std::uint32_t now = 0;
   std::size_t frames = 0;
@@ -422,7 +371,7 @@ TEST_CASE("server: toggle errors, stray segments, block requests, timeouts, size
   }
   SUBCASE("a server without block transfer refuses it cleanly") {
     std::vector<std::uint8_t> buf(64);
-    sdo::server<sdo::dictionary_store<>> plain(5, b.store, buf, 1000, {.block = false});
+    sdo::server<co::dictionary_store<>> plain(5, b.store, buf, 1000, {.block = false});
     auto r = plain.on_frame(F(0x605, {0xC6, 0x09, 0x20, 0x00, 20, 0, 0, 0}), 0);
     CHECK(r.send[0] == F(0x585, {0x80, 0x09, 0x20, 0x00, 0x01, 0x00, 0x04, 0x05}));
     CHECK(plain.error()->code == errc::unknown_command);

@@ -31,10 +31,10 @@ using fieldcodec::to_bytes;
 namespace {
 
 constexpr auto xenax_layout =
-    sdo::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
+    co::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
         fieldcodec::dictionaries::xenax_canopen::dictionary);
 constexpr auto dpq_layout =
-    sdo::make_layout<fieldcodec::dictionaries::dpq_parameters::entries.size()>(
+    co::make_layout<fieldcodec::dictionaries::dpq_parameters::entries.size()>(
         fieldcodec::dictionaries::dpq_parameters::dictionary);
 
 template <class T>
@@ -46,12 +46,12 @@ std::vector<std::uint8_t> le(T v) {
 /// A XENAX node 5 behind an SDO server, and a client talking to it; every frame logged.
 struct xenax_bus {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(
-      sdo::dictionary_store<>::storage_size(fieldcodec::dictionaries::xenax_canopen::dictionary));
+      co::dictionary_store<>::storage_size(fieldcodec::dictionaries::xenax_canopen::dictionary));
   std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(1024);
-  sdo::dictionary_store<> store{fieldcodec::dictionaries::xenax_canopen::dictionary, xenax_layout,
-                                storage, staging};
+  co::dictionary_store<> store{fieldcodec::dictionaries::xenax_canopen::dictionary, xenax_layout,
+                               storage, staging};
   std::array<std::uint8_t, 256> buffer{};
-  sdo::server<sdo::dictionary_store<>> server{5, store, buffer};
+  sdo::server<co::dictionary_store<>> server{5, store, buffer};
   sdo::client client{5};
   std::array<std::uint8_t, 256> rx{};
   t::log_maker log;
@@ -200,12 +200,12 @@ TEST_CASE("decode: SDO transfers of a XENAX drive with its EDS, PDOs, CiA 402") 
 
 TEST_CASE("decode: DPQ parameters in engineering units, DPQ EMCY codes") {
   std::vector<std::uint8_t> storage(
-      sdo::dictionary_store<>::storage_size(fieldcodec::dictionaries::dpq_parameters::dictionary));
-  sdo::dictionary_store<> store{fieldcodec::dictionaries::dpq_parameters::dictionary, dpq_layout,
-                                storage};
+      co::dictionary_store<>::storage_size(fieldcodec::dictionaries::dpq_parameters::dictionary));
+  co::dictionary_store<> store{fieldcodec::dictionaries::dpq_parameters::dictionary, dpq_layout,
+                               storage};
   (void)store.init_defaults(3);
   std::array<std::uint8_t, 64> buffer{};
-  sdo::server<sdo::dictionary_store<>> server{3, store, buffer};
+  sdo::server<co::dictionary_store<>> server{3, store, buffer};
   sdo::client client{3};
   std::array<std::uint8_t, 64> rx{};
   t::log_maker log;

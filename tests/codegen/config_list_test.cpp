@@ -236,6 +236,112 @@ TEST_CASE("config list: ParameterValue that differs, in the CiA 301 PDO order") 
         "the PDO first");
 }
 
+TEST_CASE("config list: a mapping entry is named by what it maps, not by its EDS name") {
+  // 1601h sub 1 is named after its default content (Controlword) while the DCF maps 607Ah there
+  const char *const remapped = R"(
+[1401]
+ParameterName=RPDO 2 communication
+ObjectType=0x9
+SubNumber=2
+
+[1401sub0]
+ParameterName=Highest sub-index
+ObjectType=0x7
+DataType=0x0005
+AccessType=ro
+DefaultValue=1
+
+[1401sub1]
+ParameterName=COB-ID
+ObjectType=0x7
+DataType=0x0007
+AccessType=rw
+DefaultValue=$NODEID+0x300
+
+[1601]
+ParameterName=RPDO 2 mapping
+ObjectType=0x9
+SubNumber=4
+
+[1601sub0]
+ParameterName=Count
+ObjectType=0x7
+DataType=0x0005
+AccessType=rw
+DefaultValue=1
+ParameterValue=3
+
+[1601sub1]
+ParameterName=Controlword
+ObjectType=0x7
+DataType=0x0007
+AccessType=rw
+DefaultValue=0x60400010
+ParameterValue=0x607A0020
+
+[1601sub2]
+ParameterName=Modes of operation
+ObjectType=0x7
+DataType=0x0007
+AccessType=rw
+DefaultValue=0x60600008
+ParameterValue=0x20050108
+
+[1601sub3]
+ParameterName=Target velocity
+ObjectType=0x7
+DataType=0x0007
+AccessType=rw
+DefaultValue=0x60FF0020
+ParameterValue=0
+
+[2005]
+ParameterName=Outputs
+ObjectType=0x8
+SubNumber=2
+
+[2005sub0]
+ParameterName=Highest sub-index
+ObjectType=0x7
+DataType=0x0005
+AccessType=ro
+DefaultValue=1
+
+[2005sub1]
+ParameterName=Output 1
+ObjectType=0x7
+DataType=0x0005
+AccessType=rw
+PDOMapping=1
+DefaultValue=0
+
+[607A]
+ParameterName=Target position
+ObjectType=0x7
+DataType=0x0004
+AccessType=rw
+PDOMapping=1
+DefaultValue=0
+)";
+  gen::diagnostics diag;
+  const auto l = build(remapped, gen::config_values::parameter, diag);
+  std::vector<std::string> names;
+  for (const auto &i : l.items) {
+    if (i.address.index == 0x1601U || i.address.index == 0x1600U) names.push_back(i.name);
+  }
+  const std::vector<std::string> expect{
+      "RPDO 1 mapping: Count",
+      "RPDO 1 mapping: entry 1 = 6040h sub 0, 16 bits", // not in this dictionary
+      "RPDO 1 mapping: entry 2 = Target position (607Ah sub 0, 32 bits)",
+      "RPDO 1 mapping: Count",
+      "RPDO 2 mapping: Count",
+      "RPDO 2 mapping: entry 1 = Target position (607Ah sub 0, 32 bits)",
+      "RPDO 2 mapping: entry 2 = Outputs: Output 1 (2005h sub 1, 8 bits)",
+      "RPDO 2 mapping: entry 3 = empty",
+      "RPDO 2 mapping: Count"};
+  CHECK(names == expect);
+}
+
 TEST_CASE("config list: --config-values default writes every writable default") {
   gen::diagnostics diag;
   const auto l = build("", gen::config_values::default_, diag);
@@ -274,6 +380,155 @@ TEST_CASE("config list: the fixture of the master tests matches its checked-in h
   // regenerate with: fieldcodec-gen --config-list tests/master/generated/xenax_axis_config.hpp
   //                  tests/master/fixtures/xenax_axis.dcf
   CHECK(gen::emit_config_list(*d, l) == slurp("master/generated/xenax_axis_config.hpp"));
+}
+
+TEST_CASE("nmt slaves: the master DCF fixture matches its checked-in header") {
+  gen::diagnostics diag;
+  auto d = gen::read_file("master/fixtures/master.dcf", diag);
+  REQUIRE(d);
+  const auto rows = gen::build_nmt_slaves(*d, "master/fixtures/master.dcf", diag);
+  CHECK_FALSE(diag.has_errors());
+  REQUIRE(rows.size() == 2U); // node 7 has 0: not a slave
+  CHECK(rows[0].node == 5U);
+  CHECK(rows[0].dcf_source == "./master_axis5.bin");
+  CHECK(rows[0].concise_dcf.size() == 80U);
+  CHECK(rows[0].objects.consumer_time_ms == 500U);
+  CHECK(rows[1].node == 6U);
+  CHECK(rows[1].dcf_source == "ParameterValue");
+  CHECK(rows[1].objects.consumer_time_ms == 0U); // 1016h sub 2 names node 6 with time 0
+  // regenerate with: fieldcodec-gen --nmt-slaves tests/master/generated/master_slaves.hpp
+  //                  tests/master/fixtures/master.dcf
+  CHECK(gen::emit_nmt_slaves(*d, rows) == slurp("master/generated/master_slaves.hpp"));
+}
+
+TEST_CASE("nmt slaves: what is read from a master DCF, and what is refused") {
+  const std::string dir = "nmt_slaves_test_dir";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream good(dir + "/good.bin", std::ios::binary);
+    const char bytes[] = {1, 0, 0, 0, 0x17, 0x10, 0, 2, 0, 0, 0, 0x64, 0};
+    good.write(bytes, sizeof bytes);
+    std::ofstream bad(dir + "/bad.bin", std::ios::binary);
+    bad.write(bytes, sizeof bytes - 1); // the data ends early
+  }
+  const auto master_dcf = [](const std::string &f22) {
+    return gen::test::eds_file(R"(
+[1016]
+ParameterName=Consumer heartbeat time
+ObjectType=0x8
+DataType=0x0007
+AccessType=rw
+CompactSubObj=3
+
+[1016Value]
+NrOfEntries=2
+1=0x000301F4
+3=0x00090064
+
+[1F81]
+ParameterName=NMT slave assignment
+ObjectType=0x8
+DataType=0x0007
+AccessType=rw
+CompactSubObj=127
+
+[1F81Value]
+NrOfEntries=3
+3=0x01F40315
+9=0x00000085
+10=0
+
+[1F86]
+ParameterName=Product code
+ObjectType=0x8
+DataType=0x0007
+AccessType=rw
+CompactSubObj=127
+
+[1F86Value]
+NrOfEntries=1
+9=0x00001234
+
+[1F8A]
+ParameterName=Restore configuration
+ObjectType=0x8
+DataType=0x0005
+AccessType=rw
+CompactSubObj=127
+
+[1F8AValue]
+NrOfEntries=1
+9=3
+
+[1F22]
+ParameterName=Concise DCF
+ObjectType=0x8
+SubNumber=2
+
+[1F22sub0]
+ParameterName=Highest sub-index supported
+ObjectType=0x7
+DataType=0x0005
+AccessType=const
+DefaultValue=3
+
+[1F22sub3]
+ParameterName=Node-ID 3
+ObjectType=0x7
+DataType=0x000F
+AccessType=ro
+)" + f22 + "\n");
+  };
+  SUBCASE("an UploadFile beside the DCF, the consumer time, the other objects") {
+    gen::diagnostics diag;
+    auto d = gen::read_eds(master_dcf("UploadFile=good.bin"), dir + "/m.dcf", diag);
+    REQUIRE(d);
+    d->stem = "m";
+    const auto rows = gen::build_nmt_slaves(*d, dir + "/m.dcf", diag);
+    CHECK_FALSE(diag.has_errors());
+    REQUIRE(rows.size() == 2U);
+    CHECK(rows[0].node == 3U);
+    CHECK(rows[0].objects.assignment == 0x01F40315U);
+    CHECK(rows[0].objects.consumer_time_ms == 500U);
+    CHECK(rows[0].concise_dcf ==
+          std::vector<std::uint8_t>{1, 0, 0, 0, 0x17, 0x10, 0, 2, 0, 0, 0, 0x64, 0});
+    CHECK(rows[1].node == 9U);
+    CHECK(rows[1].objects.consumer_time_ms == 100U);
+    CHECK(rows[1].objects.expected.product_code == 0x1234U);
+    CHECK(rows[1].objects.restore_sub == 3U);
+    CHECK(rows[1].concise_dcf.empty());
+    const std::string h = gen::emit_nmt_slaves(*d, rows);
+    CHECK(h.find("namespace fieldcodec::dictionaries::m::slaves {") != std::string::npos);
+    CHECK(h.find("{9, {0x00000085U, {0x00000000U, 0x00000000U, 0x00001234U, 0x00000000U, "
+                 "0x00000000U}, {}, 100, 0x00000000U, 0x00000000U, 0x00000000U, 3}},") !=
+          std::string::npos);
+  }
+  SUBCASE("a missing file and a malformed concise DCF are errors at the 1F22h sub-object") {
+    for (const std::string f22 : {"UploadFile=missing.bin", "UploadFile=bad.bin"}) {
+      gen::diagnostics diag;
+      const std::string text = master_dcf(f22);
+      auto d = gen::read_eds(text, dir + "/m.dcf", diag);
+      REQUIRE(d);
+      const auto rows = gen::build_nmt_slaves(*d, dir + "/m.dcf", diag);
+      REQUIRE(diag.has_errors());
+      CHECK(diag.all().back().line == gen::test::line_of(text, "[1F22sub3]"));
+      CHECK(diag.all().back().message ==
+            (f22 == "UploadFile=missing.bin"
+                 ? "1F22h sub 3: UploadFile 'missing.bin': cannot open file"
+                 : "1F22h sub 3 (bad.bin): not a concise DCF: truncated input"));
+      CHECK(rows.size() == 1U); // node 9 still listed
+    }
+  }
+  SUBCASE("no slaves") {
+    gen::diagnostics diag;
+    auto d = gen::read_eds(gen::test::eds_file(objects), "n.dcf", diag);
+    REQUIRE(d);
+    d->stem = "n";
+    const auto rows = gen::build_nmt_slaves(*d, "n.dcf", diag);
+    CHECK(rows.empty());
+    CHECK(gen::emit_nmt_slaves(*d, rows).find("slaves{};") != std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("config list: every DCF of the corpus gives a well-formed list") {

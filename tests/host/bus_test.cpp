@@ -22,7 +22,7 @@ using namespace std::chrono_literals;
 
 namespace {
 
-constexpr auto layout = sdo::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
+constexpr auto layout = co::make_layout<fieldcodec::dictionaries::xenax_canopen::entries.size()>(
     fieldcodec::dictionaries::xenax_canopen::dictionary);
 
 /// A bus with a node 5 behind it, and error or foreign frames injected before its answers.
@@ -53,11 +53,11 @@ public:
 
 private:
   std::vector<std::uint8_t> storage_ = std::vector<std::uint8_t>(
-      sdo::dictionary_store<>::storage_size(fieldcodec::dictionaries::xenax_canopen::dictionary));
-  sdo::dictionary_store<> store_{fieldcodec::dictionaries::xenax_canopen::dictionary, layout,
-                                 storage_};
+      co::dictionary_store<>::storage_size(fieldcodec::dictionaries::xenax_canopen::dictionary));
+  co::dictionary_store<> store_{fieldcodec::dictionaries::xenax_canopen::dictionary, layout,
+                                storage_};
   std::array<std::uint8_t, 64> buffer_{};
-  sdo::server<sdo::dictionary_store<>> server_{5, store_, buffer_};
+  sdo::server<co::dictionary_store<>> server_{5, store_, buffer_};
 };
 
 host::frame_record line(const char *s) { return host::candump::parse_line(s).value(); }

@@ -84,7 +84,7 @@ private:
 };
 
 inline constexpr auto xenax_layout =
-    canopen::sdo::make_layout<dictionaries::xenax_canopen::entries.size()>(
+    canopen::make_layout<dictionaries::xenax_canopen::entries.size()>(
         dictionaries::xenax_canopen::dictionary);
 
 /// A CANopen node with the XENAX CANopen dictionary behind an slcan adapter: answers the
@@ -157,7 +157,7 @@ public:
   }
 
 private:
-  using store_t = canopen::sdo::dictionary_store<>;
+  using store_t = canopen::dictionary_store<>;
   static constexpr od::dictionary dict() { return dictionaries::xenax_canopen::dictionary; }
 
   std::uint32_t now() const {

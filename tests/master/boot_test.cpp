@@ -1,6 +1,6 @@
 // master::boot against the simulated XENAX of sim_device.hpp: reset, boot-up, identity,
 // configuration list, heartbeat, NMT start, and what each failure reports.
-#include "sim_device.hpp"
+#include "boot_harness.hpp"
 
 #include "master/generated/xenax_axis_config.hpp"
 
@@ -21,43 +21,7 @@ namespace {
 /// A device that matches the fixture DCF's identity.
 void make_identity(sim::device &d) { d.set_u32({0x1018, 1}, 0x21B); }
 
-struct harness {
-  sim::device dev;
-  csdo::client client;
-  master::boot machine;
-  std::uint32_t now = 5000;
-  bool heartbeats = false; ///< the device sends a heartbeat whenever the master waits
-  std::vector<co::can_frame> sent{};
-
-  harness(std::uint8_t node, master::boot_options o)
-      : dev(node), client(node, 100), machine(node, client, o) {}
-
-  void run(master::boot::step s) {
-    for (int guard = 0; guard < 1000 && machine.busy(); ++guard) {
-      std::vector<co::can_frame> replies;
-      for (const auto &f : s.send) {
-        sent.push_back(f);
-        for (const auto &r : dev.receive(f)) replies.push_back(r);
-      }
-      if (!replies.empty()) {
-        for (const auto &r : replies) s = machine.on_frame(r, now);
-        continue;
-      }
-      if (heartbeats && machine.state() == boot_state::waiting_heartbeat) {
-        now += 10;
-        s = machine.on_frame(co::nmt::encode_heartbeat(dev.node, dev.nmt).value(), now);
-        continue;
-      }
-      REQUIRE(s.deadline);
-      now = *s.deadline;
-      s = machine.poll(now);
-    }
-    for (const auto &f : s.send) {
-      sent.push_back(f);
-      (void)dev.receive(f);
-    }
-  }
-};
+using harness = sim::boot_harness;
 
 } // namespace
 

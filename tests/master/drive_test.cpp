@@ -1,5 +1,14 @@
-// master::drive, the CiA 402 drive helper, against the scripted drive of sim_drive.hpp.
+// master::drive, the CiA 402 drive helper, against the scripted drive of sim_drive.hpp; the
+// vendor rules come in as drive profiles (plain CiA 402, the XENAX's, and one made up here).
 #include "sim_drive.hpp"
+
+#include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
+#include <fieldcodec/xenax/error_code.hpp>
+#include <fieldcodec/xenax/homing.hpp>
+
+#include <array>
+#include <cstdint>
 
 #include <doctest/doctest.h>
 
@@ -299,7 +308,7 @@ TEST_CASE("drive: following error during a move") {
 }
 
 TEST_CASE("drive: a fault in the middle of a move reports 603Fh and the EMCY (XENAX)") {
-  sim::bench b({.vendor = master::drive_vendor::xenax});
+  sim::bench b({.profile = xenax::profile});
   enable_in(b, 1);
   b.dev.move_cycles = 20;
   REQUIRE(b.axis.move_to(5000, b.now));
@@ -323,7 +332,8 @@ TEST_CASE("drive: a fault in the middle of a move reports 603Fh and the EMCY (XE
   REQUIRE(e->emcy);
   CHECK(e->emcy->error_code == 0xFF32);
   CHECK(e->emcy->error_register == 0x81);
-  CHECK(e->xenax_error().value() == xenax::error_following);
+  REQUIRE(e->error_code_read);
+  CHECK(xenax::decode_error_code(e->error_code).value() == xenax::error_following);
   CHECK(b.axis.move_to(0, b.now).error() == errc::bad_state);
   CHECK(b.axis.enable(b.now).error() == errc::bad_state);
 
@@ -347,7 +357,8 @@ TEST_CASE("drive: an EMCY after the fault is attached; a non-XENAX code is not a
   REQUIRE(b.axis.error()->emcy);
   CHECK(b.axis.error()->emcy->manufacturer[4] == 5);
   CHECK(b.axis.error()->error_code == 0x8611);
-  CHECK(b.axis.error()->xenax_error().error() == errc::out_of_range);
+  CHECK(b.axis.error()->error_code_read);
+  CHECK(xenax::decode_error_code(b.axis.error()->error_code).error() == errc::out_of_range);
 }
 
 TEST_CASE("drive: fault reset gives a rising edge and retries a bounded number of times") {
@@ -384,7 +395,7 @@ TEST_CASE("drive: fault reset gives a rising edge and retries a bounded number o
 }
 
 TEST_CASE("drive: homing with a XENAX reference method") {
-  sim::bench b({.vendor = master::drive_vendor::xenax});
+  sim::bench b({.profile = xenax::profile});
   b.mode_in_pdo = true;
   enable_in(b, 6);
   b.dev.position = 777;
@@ -458,10 +469,16 @@ TEST_CASE("drive: profile velocity and cyclic synchronous targets") {
     }
   }
   SUBCASE("csp, XENAX needs bit 4") {
-    sim::bench b({.vendor = master::drive_vendor::xenax});
+    sim::bench b({.profile = xenax::profile});
     enable_in(b, 8);
     REQUIRE(b.axis.start_cyclic(10, b.now));
     CHECK(b.cycle().controlword == 0x001F);
+  }
+  SUBCASE("csv of a XENAX: no extra bit") {
+    sim::bench b({.profile = xenax::profile});
+    enable_in(b, 9);
+    REQUIRE(b.axis.start_cyclic(10, b.now));
+    CHECK(b.cycle().controlword == 0x000F);
   }
   SUBCASE("not in a cyclic mode") {
     sim::bench b;
@@ -471,27 +488,118 @@ TEST_CASE("drive: profile velocity and cyclic synchronous targets") {
   }
 }
 
-TEST_CASE("drive: XENAX jog mode -1") {
-  sim::bench b({.vendor = master::drive_vendor::xenax});
+TEST_CASE("drive: XENAX jog mode -1, a motion of its profile") {
+  sim::bench b({.profile = xenax::profile});
   b.mode_in_pdo = true;
   enable_in(b, -1);
-  REQUIRE(b.axis.jog(xenax::jog_direction::positive, b.now));
-  CHECK(b.cycle().controlword == 0x005F);
+  REQUIRE(b.axis.start_motion(xenax::jog(xenax::jog_direction::positive), b.now));
+  CHECK(b.cycle().controlword == 0x005F); // manual 5.4.1
+  CHECK(b.axis.state() == drive_state::running);
   CHECK_FALSE(b.dev.speed_zero);
-  REQUIRE(b.axis.stop_jog(b.now));
-  CHECK(b.cycle().controlword == 0x011F); // manual 5.4.1: halt, as printed for both directions
+  REQUIRE(b.axis.stop_motion(b.now));
+  auto s = b.cycle();
+  CHECK(s.controlword == 0x011F); // manual 5.4.1: halt, as printed for both directions
+  CHECK(s.state == drive_state::stopping);
+  CHECK(to_string(s.state) == "stopping");
   b.run();
   CHECK(b.axis.state() == drive_state::enabled);
   CHECK(b.last.controlword == 0x000F);
   CHECK(b.dev.speed_zero);
-  CHECK(b.axis.stop_jog(b.now).error() == errc::bad_state);
+  CHECK(b.axis.stop_motion(b.now).error() == errc::bad_state);
+
+  REQUIRE(b.axis.start_motion(xenax::jog(xenax::jog_direction::negative), b.now));
+  CHECK(b.cycle().controlword == 0x001F);
+  b.axis.stop_running(); // drops the bits at once
+  CHECK(b.cycle().controlword == 0x000F);
+  CHECK(b.axis.state() == drive_state::enabled);
+  CHECK(b.axis.stop_motion(b.now).error() == errc::bad_state);
 }
 
-TEST_CASE("drive: jog is XENAX only") {
-  sim::bench b;
-  b.mode_in_pdo = true;
-  enable_in(b, -1);
-  CHECK(b.axis.jog(xenax::jog_direction::negative, b.now).error() == errc::bad_state);
+TEST_CASE("drive: a motion the profile does not offer is refused") {
+  SUBCASE("plain CiA 402 offers none") {
+    sim::bench b;
+    b.mode_in_pdo = true;
+    enable_in(b, -1);
+    CHECK(b.axis.start_motion(xenax::jog(xenax::jog_direction::negative), b.now).error() ==
+          errc::invalid_argument);
+    CHECK(b.cycle().controlword == 0x000F);
+  }
+  SUBCASE("the XENAX's profile, a motion it does not list") {
+    sim::bench b({.profile = xenax::profile});
+    b.mode_in_pdo = true;
+    enable_in(b, -1);
+    auto m = xenax::jog(xenax::jog_direction::positive);
+    m.start_bits = 0x0070;
+    CHECK(b.axis.start_motion(m, b.now).error() == errc::invalid_argument);
+  }
+  SUBCASE("not in the motion's mode") {
+    sim::bench b({.profile = xenax::profile});
+    enable_in(b, 1);
+    CHECK(b.axis.start_motion(xenax::jog(xenax::jog_direction::positive), b.now).error() ==
+          errc::bad_state);
+  }
+}
+
+namespace {
+// A made-up drive family: the generic machine takes any vendor's rules as data. Its CSV runs
+// with manufacturer bit 11, and its mode -3 ("spindle") starts with bit 4, stops with bits 4 and
+// 8 and reports standstill with statusword bits 12 and 14.
+constexpr ds402::manufacturer_motion spindle{-3, 0x0010, 0x0110, 0x5000};
+constexpr ds402::manufacturer_motion spindle_motions[] = {spindle};
+constexpr ds402::drive_profile other_vendor{{0, 0x0800, 0, 0}, spindle_motions};
+static_assert(other_vendor.valid());
+static_assert(!ds402::manufacturer_motion{1, 0x10, 0x10, 0x1000}.valid());  // standard mode
+static_assert(!ds402::manufacturer_motion{-3, 0x18, 0x10, 0x1000}.valid()); // command bit 3
+static_assert(!ds402::manufacturer_motion{-3, 0x10, 0x10, 0}.valid());      // nothing to wait for
+static_assert(ds402::cia402_profile.valid() && ds402::cia402_profile.motions.empty());
+} // namespace
+
+TEST_CASE("drive: another vendor's profile") {
+  SUBCASE("its csv bit") {
+    sim::bench b({.profile = other_vendor});
+    enable_in(b, 9);
+    REQUIRE(b.axis.start_cyclic(10, b.now));
+    CHECK(b.cycle().controlword == 0x080F);
+    b.axis.stop_running();
+    CHECK(b.cycle().controlword == 0x000F);
+  }
+  SUBCASE("its spindle motion stops when both stopped bits show") {
+    sim::bench b({.profile = other_vendor, .disable_timeout_ms = 100});
+    b.mode_in_pdo = true;
+    enable_in(b, -3);
+    REQUIRE(b.axis.start_motion(spindle, b.now));
+    CHECK(b.cycle().controlword == 0x001F);
+    REQUIRE(b.axis.stop_motion(b.now));
+    CHECK(b.cycle().controlword == 0x011F);
+    b.dev.extra_status = 0x1000; // one of the two: still stopping
+    b.cycle();
+    CHECK(b.axis.state() == drive_state::stopping);
+    b.dev.extra_status = 0x5000;
+    b.cycle();
+    CHECK(b.axis.state() == drive_state::enabled);
+    CHECK(b.cycle().controlword == 0x000F);
+  }
+  SUBCASE("a spindle that never stops") {
+    sim::bench b({.profile = other_vendor, .disable_timeout_ms = 100});
+    b.mode_in_pdo = true;
+    enable_in(b, -3);
+    REQUIRE(b.axis.start_motion(spindle, b.now));
+    b.cycle();
+    REQUIRE(b.axis.stop_motion(b.now));
+    b.run();
+    CHECK(b.axis.state() == drive_state::failed);
+    CHECK(b.axis.error()->failure == drive_failure::stop_timeout);
+    CHECK(b.axis.error()->is(errc::timeout));
+    CHECK(to_string(drive_failure::stop_timeout) == "motion not stopped in time");
+    CHECK(b.axis.stop_motion(b.now).error() == errc::bad_state);
+  }
+  SUBCASE("a XENAX jog is not one of its motions") {
+    sim::bench b({.profile = other_vendor});
+    b.mode_in_pdo = true;
+    enable_in(b, -1);
+    CHECK(b.axis.start_motion(xenax::jog(xenax::jog_direction::positive), b.now).error() ==
+          errc::invalid_argument);
+  }
 }
 
 TEST_CASE("drive: an aborted target write fails the move; an EMCY with code 0 clears the last") {
@@ -524,3 +632,25 @@ TEST_CASE("drive: an SDO that never completes keeps motion commands waiting") {
   CHECK(rising_edges(b.controlwords, 0x10) == 0);
   CHECK(b.axis.sdo_pending());
 }
+
+// docs/master.md, "Drive profiles" (the block as printed there)
+namespace doc_jog {
+namespace master = fieldcodec::master;
+namespace xenax = fieldcodec::xenax;
+
+// the controlwords of a XENAX jog; 6061h (-1) comes in a TPDO with the statusword
+constexpr std::array<std::uint16_t, 3> jog_words() {
+  master::drive axis({.profile = xenax::profile});
+  (void)axis.switch_mode(xenax::mode::jog, 0);  // asks for the 6060h download
+  (void)axis.cycle(0x1237, 1, std::int8_t{-1}); // operation enabled, speed zero; the SDO goes
+  axis.sdo_done({}, 2);                         // the caller's client ran it
+  (void)axis.cycle(0x1237, 3, std::int8_t{-1}); // 6061h shows jog: enabled
+  (void)axis.start_motion(xenax::jog(xenax::jog_direction::positive), 4);
+  const std::uint16_t run = axis.cycle(0x0237, 5, std::int8_t{-1}).controlword;
+  (void)axis.stop_motion(6);
+  const std::uint16_t stop = axis.cycle(0x0237, 7, std::int8_t{-1}).controlword;
+  const std::uint16_t after = axis.cycle(0x1237, 8, std::int8_t{-1}).controlword; // speed zero
+  return {run, stop, after};
+}
+static_assert(jog_words() == std::array<std::uint16_t, 3>{0x005F, 0x011F, 0x000F});
+} // namespace doc_jog

@@ -52,6 +52,7 @@ struct drive {
   bool sdo_silent = false;
   std::vector<master::sdo_request> requests{};
   bool following_error = false;
+  std::uint16_t extra_status = 0; // statusword bits of a manufacturer mode, set by the test
 
   [[nodiscard]] std::uint16_t statusword() const {
     auto w = static_cast<std::uint16_t>(ds402::state_bits(st) | ds402::sw::voltage_enabled |
@@ -69,6 +70,8 @@ struct drive {
       set(homing_error, ds402::sw::hm_error);
     } else if (mode == -1) {
       set(speed_zero, 1U << 12U);
+    } else if (mode < 0) {
+      w = static_cast<std::uint16_t>(w | extra_status);
     }
     return w;
   }

@@ -22,7 +22,7 @@ constexpr od::entry tiny_entries[] = {
     var(0x2000, 0, data_type::unsigned16, access::rw, 0, pdo_mapping::yes),
 };
 constexpr od::dictionary tiny{tiny_entries};
-constexpr auto tiny_layout = sdo::make_layout<std::size(tiny_entries)>(tiny);
+constexpr auto tiny_layout = co::make_layout<std::size(tiny_entries)>(tiny);
 constexpr node::capacity tiny_caps = [] {
   auto c = node::capacity_for(tiny);
   c.sdo_buffer = 16;
@@ -31,9 +31,9 @@ constexpr node::capacity tiny_caps = [] {
 
 constexpr bool whole_node() {
   std::array<std::uint8_t, tiny_layout.storage_size()> storage{};
-  sdo::dictionary_store<> store{tiny, tiny_layout, storage};
+  co::dictionary_store<> store{tiny, tiny_layout, storage};
   if (!store.init_defaults(10)) return false;
-  node::device<sdo::dictionary_store<>, tiny_caps> dev(store, 10);
+  node::device<co::dictionary_store<>, tiny_caps> dev(store, 10);
   auto boot = dev.start(0);
   if (!boot || boot.value().send.size() != 1 || boot.value().send[0].id != 0x70A) return false;
   // SDO: 1017h = 100 ms
@@ -59,9 +59,9 @@ static_assert(whole_node());
 /// run for the server), an NMT start.
 constexpr bool batch_node() {
   std::array<std::uint8_t, tiny_layout.storage_size()> storage{};
-  sdo::dictionary_store<> store{tiny, tiny_layout, storage};
+  co::dictionary_store<> store{tiny, tiny_layout, storage};
   if (!store.init_defaults(10)) return false;
-  node::device<sdo::dictionary_store<>, tiny_caps> dev(store, 10);
+  node::device<co::dictionary_store<>, tiny_caps> dev(store, 10);
   if (!dev.start(0)) return false;
   const auto ch = sdo::channel::default_for(10).value();
   const std::array<std::uint8_t, 2> period{100, 0};

@@ -1,4 +1,4 @@
-// node::device over a store that shows its plain values (sdo::dictionary_store: its PDO engine
+// node::device over a store that shows its plain values (co::dictionary_store: its PDO engine
 // copies a TPDO's plain objects from the store's bytes, and reads and writes the others by
 // position, RPDO objects always through the device's rules), over a user-written store with
 // positions only, and over one that models only the address interface (node_store without
@@ -21,7 +21,7 @@ namespace {
 
 /// A node_store over a dictionary_store that offers only what node_store asks for.
 using address_only = address_only_store<store_type>;
-static_assert(node::node_store<address_only> && !sdo::positioned_store<address_only>);
+static_assert(node::node_store<address_only> && !co::positioned_store<address_only>);
 static_assert(device_type::pdo_type::by_position);
 static_assert(!node::device<address_only, caps>::pdo_type::by_position);
 using positions_only = positions_only_store<store_type>;

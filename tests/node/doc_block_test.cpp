@@ -22,15 +22,15 @@ constexpr std::uint32_t now = 0;
 constexpr std::array<std::uint8_t, 2> bytes{0x37, 0x02};
 
 void the_block() {
+  namespace co = fieldcodec::canopen;
   namespace node = fieldcodec::canopen::node;
-  namespace sdo = fieldcodec::canopen::sdo;
   namespace gen = fieldcodec::dictionaries::xenax_canopen;
 
-  constexpr auto layout = sdo::make_layout<gen::entries.size()>(gen::dictionary);
+  constexpr auto layout = co::make_layout<gen::entries.size()>(gen::dictionary);
   std::array<std::uint8_t, layout.storage_size()> storage{};
-  sdo::dictionary_store<> store{gen::dictionary, layout, storage};
+  co::dictionary_store<> store{gen::dictionary, layout, storage};
   (void)store.init_defaults(node_id); // the power-on values
-  node::device<sdo::dictionary_store<>, node::capacity_for(gen::dictionary)> dev(store, node_id);
+  node::device<co::dictionary_store<>, node::capacity_for(gen::dictionary)> dev(store, node_id);
 
   send(dev.start(now).value()); // boot-up, pre-operational
   // every received frame:    send(dev.on_frame(frame, now));

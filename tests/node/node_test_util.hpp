@@ -26,9 +26,9 @@ namespace od = fieldcodec::od;
 using fieldcodec::errc;
 using sdo::abort_code;
 
-/// A store over `Store` that offers only the address interface (sdo::object_store and what
+/// A store over `Store` that offers only the address interface (co::object_store and what
 /// node::node_store adds), not positions: a user-written store that predates
-/// sdo::positioned_store, which engines and devices must use by address.
+/// co::positioned_store, which engines and devices must use by address.
 template <class Store>
 class address_only_store {
 public:
@@ -60,7 +60,7 @@ private:
 };
 
 /// A store over `Store` that offers the address interface and positions
-/// (sdo::positioned_store) but does not show where values live (not sdo::plain_store): a
+/// (co::positioned_store) but does not show where values live (not co::plain_store): a
 /// user-written store with positions, which engines serve by read_at / write_at.
 template <class Store>
 class positions_only_store : public address_only_store<Store> {
@@ -81,7 +81,7 @@ private:
   Store *p_;
 };
 
-/// A store over `Store` with positions that shows plain values (sdo::plain_store) where its
+/// A store over `Store` with positions that shows plain values (co::plain_store) where its
 /// storage is shorter than the store's: slots that reach past `room` bytes are broken promises,
 /// which an engine must not copy.
 template <class Store>
@@ -90,7 +90,7 @@ public:
   short_plain_store(Store &s, std::size_t room)
       : positions_only_store<Store>(s), s_(&s), room_(room) {}
   [[nodiscard]] std::span<std::uint8_t> plain_storage() { return s_->plain_storage().first(room_); }
-  [[nodiscard]] sdo::plain_slot plain_at(std::size_t at) const { return s_->plain_at(at); }
+  [[nodiscard]] co::plain_slot plain_at(std::size_t at) const { return s_->plain_at(at); }
 
 private:
   Store *s_;
@@ -242,14 +242,14 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
 inline constexpr auto entries5 = make_entries(5);
 inline constexpr od::dictionary dict5{entries5};
 static_assert(dict5.is_valid());
-inline constexpr auto layout5 = sdo::make_layout<entry_count>(dict5);
+inline constexpr auto layout5 = co::make_layout<entry_count>(dict5);
 
 inline constexpr node::capacity caps = node::capacity_for(dict5);
 static_assert(caps.rpdos == 2 && caps.tpdos == 2 && caps.mapped == 4);
 static_assert(caps.heartbeat_consumers == 3 && caps.error_history == 4);
 static_assert(caps.sdo_servers == 2 && caps.sdo_clients == 1);
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 using device_type = node::device<store_type, caps>;
 
 /// Frames as a vector.
@@ -271,7 +271,7 @@ template <std::uint8_t N = 5>
 struct rig {
   static constexpr auto entries = make_entries(N);
   static constexpr od::dictionary dict{entries};
-  static constexpr auto layout = sdo::make_layout<entry_count>(dict);
+  static constexpr auto layout = co::make_layout<entry_count>(dict);
 
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout.storage_size());
   std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(4000);

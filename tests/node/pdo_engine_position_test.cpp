@@ -1,5 +1,5 @@
 // The PDO engine by position (issue 18, round 4): over a store that models
-// sdo::positioned_store the engine looks each mapped object up once, when a mapping is loaded
+// co::positioned_store the engine looks each mapped object up once, when a mapping is loaded
 // (reload, or a write of mapping sub 0), and then reads and writes it with read_at / write_at.
 // A store that models only the address interface (read / begin_write / write) still works, by
 // address, as before. The differential test runs both on the same random configurations,
@@ -145,7 +145,7 @@ constexpr std::array<od::entry, n_entries> entries = [] {
 }();
 constexpr od::dictionary dict{entries};
 static_assert(dict.is_valid());
-constexpr auto layout = sdo::make_layout<n_entries>(dict);
+constexpr auto layout = co::make_layout<n_entries>(dict);
 
 /// The application's write hook: refuses 2001h = 0x..42 (RPDO data like SDO data).
 struct refuse_42 {
@@ -155,20 +155,20 @@ struct refuse_42 {
                                                              : abort_code::none;
   }
 };
-using store_type = sdo::dictionary_store<refuse_42>;
+using store_type = co::dictionary_store<refuse_42>;
 /// A store without a write hook: RPDO objects that take any bits are copied, not written.
-using plain_type = sdo::dictionary_store<>;
+using plain_type = co::dictionary_store<>;
 
 /// A user-written store that models only the address interface: the engine must use it by
 /// address.
 using address_only = test_node::address_only_store<store_type>;
 
-static_assert(sdo::positioned_store<store_type>);
-static_assert(sdo::positioned_store<sdo::dictionary_store<>>);
-static_assert(sdo::object_store<address_only> && !sdo::positioned_store<address_only>);
-static_assert(sdo::plain_store<store_type> && sdo::plain_store<plain_type>);
-static_assert(sdo::positioned_store<test_node::positions_only_store<store_type>> &&
-              !sdo::plain_store<test_node::positions_only_store<store_type>>);
+static_assert(co::positioned_store<store_type>);
+static_assert(co::positioned_store<co::dictionary_store<>>);
+static_assert(co::object_store<address_only> && !co::positioned_store<address_only>);
+static_assert(co::plain_store<store_type> && co::plain_store<plain_type>);
+static_assert(co::positioned_store<test_node::positions_only_store<store_type>> &&
+              !co::plain_store<test_node::positions_only_store<store_type>>);
 
 using fast_engine = node::pdo_engine<store_type, 2, 2, 8>;
 using address_engine = node::pdo_engine<address_only, 2, 2, 8>;
@@ -200,7 +200,7 @@ enum class path { copy, position, address };
 /// Round5: the round-5 engine (the reference for what the engine derives from its parameters).
 template <path P, class Hook = refuse_42, bool Round5 = false>
 struct side {
-  using store_t = sdo::dictionary_store<Hook>;
+  using store_t = co::dictionary_store<Hook>;
   using view_t = std::conditional_t<P == path::address, test_node::address_only_store<store_t>,
                                     test_node::positions_only_store<store_t>>;
   using reached_t = std::conditional_t<P == path::copy, store_t, view_t>;
@@ -263,15 +263,15 @@ coverage seen;
 bool has_run(const auto &side, pdo::direction d, std::size_t k) {
   const auto &c = d == pdo::direction::rpdo ? side.engine.rpdo(k) : side.engine.tpdo(k);
   std::size_t bit = 0;
-  std::optional<sdo::plain_slot> last;
+  std::optional<co::plain_slot> last;
   for (const auto &m : c.entries()) {
     const std::size_t at = side.store.position({m.index, m.sub});
-    const auto p = at == sdo::no_position ? sdo::plain_slot{} : side.store.plain_at(at);
+    const auto p = at == co::no_position ? co::plain_slot{} : side.store.plain_at(at);
     const bool plain = !m.is_dummy() && bit % 8U == 0U && m.bits % 8U == 0U && p.size != 0U &&
                        p.size * 8U == m.bits &&
                        (d == pdo::direction::rpdo ? p.writable : p.readable);
     if (plain && last && last->offset + last->size == p.offset) return true;
-    last = plain ? std::optional<sdo::plain_slot>(p) : std::nullopt;
+    last = plain ? std::optional<co::plain_slot>(p) : std::nullopt;
     bit += m.bits;
   }
   return false;
@@ -592,7 +592,7 @@ TEST_CASE("pdo engine compiled == by position == by address: random mappings, re
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     CAPTURE(seed);
     run<refuse_42>(seed * 0x9E3779B97F4A7C15ULL, 2500);
-    run<sdo::accept_writes>(seed * 0xD1B54A32D192ED03ULL, 2500);
+    run<co::accept_writes>(seed * 0xD1B54A32D192ED03ULL, 2500);
   }
   MESSAGE("frames ", seen.frames, ", received ", seen.received, ", with refusals ", seen.refused,
           ", too short ", seen.too_short, ", remapped ", seen.remapped, ", off byte boundaries ",
@@ -623,7 +623,7 @@ TEST_CASE("pdo engine compiled == by position == by address: random mappings, re
 }
 
 TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the new mapping", Hook,
-                   refuse_42, sdo::accept_writes) {
+                   refuse_42, co::accept_writes) {
   side<path::copy, Hook> s;
   REQUIRE(s.engine.reload().has_value());
   s.engine.set_operational(true, 0);
@@ -636,7 +636,7 @@ TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the ne
   CHECK(st.send[0].dlc == 6);
   CHECK(st.send[0].data[0] == 0x22); // 0x11 << 1: the entries after the BOOLEAN are off by a bit
   using plan = typename std::remove_cvref_t<decltype(s.engine)>::plan;
-  constexpr bool plain_rx = std::is_same_v<Hook, sdo::accept_writes>; // no hook to ask
+  constexpr bool plain_rx = std::is_same_v<Hook, co::accept_writes>; // no hook to ask
   // the BOOLEAN of 1 bit and the two entries it puts off byte boundaries: by position
   CHECK(s.engine.compiled_plan(pdo::direction::tpdo, 0) == plan{0, 0, 3});
   // RPDO 1: 2001h u16 and 2002h u32, adjacent in storage and frame: a run of 6 bytes, copied
@@ -699,10 +699,10 @@ TEST_CASE("pdo engine by position: an object the store lacks is refused / not se
   const od::dictionary small{std::span<const od::entry>(small_entries).first(n)};
   std::vector<std::uint8_t> storage(store_type::storage_size(small));
   REQUIRE(n == n_entries - 1U);
-  const auto lay = sdo::make_layout<n_entries - 1U>(small);
+  const auto lay = co::make_layout<n_entries - 1U>(small);
   store_type store{small, lay, storage};
   REQUIRE(store.init_defaults(1).has_value());
-  CHECK(store.position({0x2002, 0}) == sdo::no_position);
+  CHECK(store.position({0x2002, 0}) == co::no_position);
   fast_engine e(store, dict); // RPDO 1 maps 2001h and 2002h
   REQUIRE(e.reload().has_value());
   e.set_operational(true, 0);
@@ -733,7 +733,7 @@ TEST_CASE("pdo engine by position: an object the store lacks is refused / not se
 
 TEST_CASE("pdo engine compiled: adjacent objects are one copy, odd lengths are cut, an object "
           "mapped twice into an RPDO is written entry by entry") {
-  side<path::copy, sdo::accept_writes> s;
+  side<path::copy, co::accept_writes> s;
   using plan = decltype(s.engine)::plan;
   REQUIRE(s.engine.reload().has_value());
   s.engine.set_operational(true, 0);
@@ -825,7 +825,7 @@ TEST_CASE("pdo engine compiled: a plain slot past the store's plain_storage is n
   const auto s2002 = store.plain_at(store.position({0x2002, 0}));
   REQUIRE(s2002.offset == s2001.offset + 2U);
   using short_store = test_node::short_plain_store<plain_type>;
-  static_assert(sdo::plain_store<short_store>);
+  static_assert(co::plain_store<short_store>);
   short_store view{store, s2001.offset + 2U + 3U}; // 2002h would need one byte more
   node::pdo_engine<short_store, 2, 2, 8> e(view, dict);
   REQUIRE(e.reload().has_value());
@@ -863,7 +863,7 @@ constexpr std::array<od::entry, 13> far_entries(std::uint32_t big) {
 constexpr auto far_probe = far_entries(1);
 constexpr std::uint32_t far_big = [] {
   // 2001h follows 1F00h: with 1F00h of 1 byte it would start at offsets[13] (the total)
-  const auto l = sdo::make_layout<13>(od::dictionary{far_probe});
+  const auto l = co::make_layout<13>(od::dictionary{far_probe});
   return 0xFFFEU - (l.offsets[13] - 1U);
 }();
 constexpr auto far_base = far_entries(far_big);
@@ -876,7 +876,7 @@ constexpr std::array<od::entry, 15> far_list = [] {
 }();
 constexpr od::dictionary far_dict{far_list};
 static_assert(far_dict.is_valid());
-constexpr auto far_layout = sdo::make_layout<15>(far_dict);
+constexpr auto far_layout = co::make_layout<15>(far_dict);
 static_assert(far_layout.offsets[13] == 0xFFFEU && far_layout.offsets[14] == 0x10000U);
 
 } // namespace
@@ -885,10 +885,10 @@ TEST_CASE("pdo engine compiled: a value past the first 64 kB of the store goes b
   // the compiled mapping keeps 16-bit storage offsets: 2001h (0xFFFE..0xFFFF) is copied, 2002h
   // (from 0x10000) is read and written by position; the frames and values are the same
   std::vector<std::uint8_t> storage(far_layout.storage_size());
-  sdo::dictionary_store<> store{far_dict, far_layout, storage};
+  co::dictionary_store<> store{far_dict, far_layout, storage};
   REQUIRE(store.init_defaults(1).has_value());
   REQUIRE(store.plain_at(store.position({0x2002, 0})).offset == 0x10000U);
-  node::pdo_engine<sdo::dictionary_store<>, 1, 1, 8> e(store, far_dict);
+  node::pdo_engine<co::dictionary_store<>, 1, 1, 8> e(store, far_dict);
   REQUIRE(e.reload().has_value());
   e.set_operational(true, 0);
   using plan = decltype(e)::plan;

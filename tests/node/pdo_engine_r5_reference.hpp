@@ -11,7 +11,7 @@
 
 namespace fieldcodec::canopen::node::r5 {
 
-template <sdo::object_store Store, std::size_t MaxRpdo, std::size_t MaxTpdo,
+template <canopen::object_store Store, std::size_t MaxRpdo, std::size_t MaxTpdo,
           std::size_t MaxEntries = 8>
 class pdo_engine {
   static_assert(MaxEntries >= 1U && MaxEntries <= pdo::max_entries);
@@ -21,10 +21,10 @@ public:
   /// State in the steps: whether PDOs are exchanged (NMT operational).
   using step = canopen::step<bool>;
   /// Whether the engine reaches the mapped objects by position (the store models
-  /// sdo::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
+  /// canopen::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
   /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
-  static constexpr bool by_position = sdo::positioned_store<Store>;
-  /// Whether the engine compiles each mapping into copies (the store models sdo::plain_store):
+  static constexpr bool by_position = canopen::positioned_store<Store>;
+  /// Whether the engine compiles each mapping into copies (the store models canopen::plain_store):
   /// when a mapping is loaded, every entry whose object the store keeps plain (plain_at:
   /// readable for a TPDO, writable for an RPDO) on whole bytes becomes a copy between the
   /// store's bytes and the frame's — adjacent ones merged, then cut into copies of 8, 4, 2 and
@@ -32,7 +32,7 @@ public:
   /// others (1-bit BOOLEANs and entries after them off byte boundaries, limits or a scale to
   /// check, a write hook, byte strings, objects the store lacks, and every entry of an RPDO
   /// that maps one object twice) keep read_at / write_at, in mapping order, after the copies.
-  static constexpr bool by_copy = sdo::plain_store<Store>;
+  static constexpr bool by_copy = canopen::plain_store<Store>;
 
   /// How a PDO's mapping was compiled (by_copy): `copied` entries in `copies` copies of 1, 2, 4
   /// or 8 bytes, the other `per_object` entries by read_at / write_at (dummies are neither).
@@ -367,7 +367,7 @@ private:
     std::array<object_step, MaxEntries> object{};
   };
   /// Where each mapped object is in the store (positioned stores; empty otherwise): entry k of
-  /// the mapping is at at[k], sdo::no_position for a dummy or an object the store lacks; and,
+  /// the mapping is at at[k], canopen::no_position for a dummy or an object the store lacks; and,
   /// by_copy, the compiled mapping. Set by load_mapping, the only place that changes a mapping,
   /// so it never goes stale.
   struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
@@ -572,7 +572,7 @@ private:
       at.whole_bytes = true;
       for (std::size_t k = 0; k < c.count; ++k) {
         const pdo::mapping_entry &m = c.map[k];
-        at.at[k] = m.is_dummy() ? sdo::no_position : store_->position({m.index, m.sub});
+        at.at[k] = m.is_dummy() ? canopen::no_position : store_->position({m.index, m.sub});
         if (m.bits % 8U != 0U) at.whole_bytes = false;
       }
       if constexpr (by_copy) compile(c, at, d);
@@ -594,7 +594,7 @@ private:
     bool twice = false;
     for (std::size_t k = 0; rx && k < c.count; ++k) {
       for (std::size_t j = 0; j < k; ++j) {
-        if (at.at[k] != sdo::no_position && at.at[k] == at.at[j]) twice = true;
+        if (at.at[k] != canopen::no_position && at.at[k] == at.at[j]) twice = true;
       }
     }
     struct run {
@@ -610,8 +610,8 @@ private:
     for (std::size_t k = 0; k < c.count; ++k) {
       const pdo::mapping_entry &m = c.map[k];
       if (!m.is_dummy()) {
-        sdo::plain_slot s{};
-        if (!twice && at.at[k] != sdo::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
+        canopen::plain_slot s{};
+        if (!twice && at.at[k] != canopen::no_position && (bit % 8U) == 0U && (m.bits % 8U) == 0U) {
           s = store_->plain_at(at.at[k]);
         }
         // (a slot that would reach past the storage is a broken promise: not copied)
@@ -669,7 +669,7 @@ private:
       for (std::size_t k = 0; k < t.c.count; ++k) {
         const pdo::mapping_entry &m = t.c.map[k];
         const std::size_t n = m.bits / 8U;
-        if (p.at[k] != sdo::no_position) {
+        if (p.at[k] != canopen::no_position) {
           std::size_t total = 0;
           if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(t.data.data() + byte, n),
                               total) != abort_code::none) {
@@ -694,7 +694,7 @@ private:
                                                          std::size_t offset) noexcept {
     const pdo::mapping_entry &m = t.c.map[k];
     const std::size_t at = t.pos.at[k];
-    if (at == sdo::no_position) return false;
+    if (at == canopen::no_position) return false;
     const std::size_t n = (m.bits + 7U) / 8U;
     std::size_t total = 0;
     if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
@@ -809,7 +809,7 @@ private:
     const pdo::mapping_entry &m = r.c.map[k];
     const std::size_t at = r.pos.at[k];
     // the store has no such object: refused, as its write would refuse it
-    if (at == sdo::no_position) return abort_code::general_error;
+    if (at == canopen::no_position) return abort_code::general_error;
     const std::size_t n = (m.bits + 7U) / 8U;
     if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
       return store_->write_at(at, 0, data.subspan(offset / 8U, n), true);

@@ -343,9 +343,9 @@ struct guard_hook {
 TEST_CASE("rpdo: the application's write hook sees RPDO data and may refuse one object") {
   std::vector<std::uint8_t> storage(layout5.storage_size());
   int seen = 0;
-  sdo::dictionary_store<guard_hook> store{dict5, layout5, storage, {}, guard_hook{&seen}};
+  co::dictionary_store<guard_hook> store{dict5, layout5, storage, {}, guard_hook{&seen}};
   REQUIRE(store.init_defaults(5).has_value());
-  node::device<sdo::dictionary_store<guard_hook>, caps> dev(store, 5);
+  node::device<co::dictionary_store<guard_hook>, caps> dev(store, 5);
   (void)dev.start(0);
   (void)dev.on_frame(F(0, {0x01, 5}), 0);
   (void)dev.on_frame(F(0x205, {0xAD, 0x0B, 0, 0, 0x34, 0x12}), 0);

@@ -91,7 +91,7 @@ TEST_CASE("sdo channels: the default channel without 1200h, one more server, a c
       var(0x1280, 3, data_type::unsigned8, access::rw, 3),
   };
   static constexpr od::dictionary dict{entries};
-  constexpr auto layout = sdo::make_layout<std::size(entries)>(dict);
+  constexpr auto layout = co::make_layout<std::size(entries)>(dict);
   std::vector<std::uint8_t> storage(layout.storage_size());
   store_type store{dict, layout, storage};
   REQUIRE(store.init_defaults(9).has_value());

@@ -8,7 +8,7 @@ using namespace test_node;
 namespace xcan = fieldcodec::dictionaries::xenax_canopen;
 
 namespace {
-constexpr auto xlayout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+constexpr auto xlayout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 constexpr node::capacity xcaps = node::capacity_for(xcan::dictionary);
 // XENAX CAN bus manual 9.1: RPDO/TPDO 1, 2 and 17..24; 1016h, 1003h and extra SDO channels are
 // not in the dictionary

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+namespace co = fieldcodec::canopen;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 namespace xcan = fieldcodec::dictionaries::xenax_canopen;
@@ -52,9 +53,9 @@ TEST_CASE("5011h, 5012h, 5020h, 5021h carry their printed lengths (3.4.9-3.4.12,
 }
 
 TEST_CASE("a store over the CAN dictionary serves the strings with their capacity") {
-  constexpr auto layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+  constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
   std::vector<std::uint8_t> storage(layout.storage_size());
-  sdo::dictionary_store<> store{xcan::dictionary, layout, storage};
+  co::dictionary_store<> store{xcan::dictionary, layout, storage};
   REQUIRE(store.init_defaults(1).has_value());
   // 5020h TES keeps its printed default "no error" (l. 1110)
   const auto tes = store.value({0x5020, 0}).value();

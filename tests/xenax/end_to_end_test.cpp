@@ -54,13 +54,13 @@ constexpr auto map_tpdo1 =
     pdo::make_static_mapping(xcan::dictionary, pdo::direction::tpdo, pdo1_tx_map);
 
 // A XENAX as far as these examples need it.
-constexpr auto xcan_layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+constexpr auto xcan_layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
 
 struct simulated_xenax {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(xcan_layout.storage_size());
-  sdo::dictionary_store<> store{xcan::dictionary, xcan_layout, storage};
+  co::dictionary_store<> store{xcan::dictionary, xcan_layout, storage};
   std::array<std::uint8_t, 256> sdo_buffer{};
-  sdo::server<sdo::dictionary_store<>> server{node, store, sdo_buffer};
+  sdo::server<co::dictionary_store<>> server{node, store, sdo_buffer};
   co::nmt::state nmt = co::nmt::state::pre_operational;
   ds402::state state = ds402::state::switch_on_disabled;
   std::uint16_t previous_cw = 0;

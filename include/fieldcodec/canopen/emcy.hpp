@@ -7,7 +7,9 @@
 #include <fieldcodec/core/result.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::canopen::emcy {
@@ -107,6 +109,25 @@ struct message {
   friend constexpr bool operator==(const message &, const message &) = default;
 };
 
+/// The 8 bytes of an EMCY message [error code LE, error register, 5 manufacturer bytes]: the
+/// data of a CAN EMCY frame and of a CoE emergency (canopen/coe/service.hpp).
+[[nodiscard]] constexpr std::array<std::uint8_t, 8> encode_payload(const message &m) noexcept {
+  std::array<std::uint8_t, 8> p{};
+  p[0] = static_cast<std::uint8_t>(m.error_code & 0xFFU);
+  p[1] = static_cast<std::uint8_t>(m.error_code >> 8U);
+  p[2] = m.error_register;
+  for (std::size_t i = 0; i < 5U; ++i) p[3U + i] = m.manufacturer[i];
+  return p;
+}
+/// The message in 8 EMCY bytes (the reverse of encode_payload).
+[[nodiscard]] constexpr message decode_payload(std::span<const std::uint8_t, 8> p) noexcept {
+  message m;
+  m.error_code = static_cast<std::uint16_t>(p[0] | (p[1] << 8U));
+  m.error_register = p[2];
+  for (std::size_t i = 0; i < 5U; ++i) m.manufacturer[i] = p[3U + i];
+  return m;
+}
+
 /// EMCY of `node`: 0x080+node DLC 8 [code LE, register, 5 manufacturer bytes].
 /// Errors: invalid_argument (node not 1..127).
 [[nodiscard]] constexpr result<can_frame> encode(std::uint8_t node, const message &m) noexcept {
@@ -115,10 +136,7 @@ struct message {
   can_frame f;
   f.id = id.value();
   f.dlc = 8;
-  f.data[0] = static_cast<std::uint8_t>(m.error_code & 0xFFU);
-  f.data[1] = static_cast<std::uint8_t>(m.error_code >> 8U);
-  f.data[2] = m.error_register;
-  for (std::size_t i = 0; i < 5U; ++i) f.data[3U + i] = m.manufacturer[i];
+  f.data = encode_payload(m);
   return f;
 }
 
@@ -135,11 +153,8 @@ struct received {
     return errc::unexpected_frame;
   }
   FIELDCODEC_TRY_STATUS(expect_data(f, 8));
-  received r{static_cast<std::uint8_t>(f.id - cob_id::emcy_base), {}};
-  r.m.error_code = static_cast<std::uint16_t>(f.data[0] | (f.data[1] << 8U));
-  r.m.error_register = f.data[2];
-  for (std::size_t i = 0; i < 5U; ++i) r.m.manufacturer[i] = f.data[3U + i];
-  return r;
+  return received{static_cast<std::uint8_t>(f.id - cob_id::emcy_base),
+                  decode_payload(std::span<const std::uint8_t, 8>(f.data))};
 }
 
 } // namespace fieldcodec::canopen::emcy

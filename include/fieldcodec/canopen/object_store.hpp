@@ -1,5 +1,7 @@
-// fieldcodec — the object store an SDO server reads and writes, and dictionary_store, a store
-// over an od::dictionary with caller-owned storage.
+// fieldcodec — canopen::object_store, the values of a node's objects as the SDO server, the PDO
+// engine and the node read and write them, and canopen::dictionary_store, a store over an
+// od::dictionary with caller-owned storage. Its answers are CiA 301 abort codes
+// (canopen/abort_code.hpp).
 //
 // A store serves values in parts (offset + chunk) so that no buffer of the server caps the size
 // of an object, and it never shows a value half-written: a value becomes visible only when the
@@ -17,15 +19,15 @@
 //       a part of the value, in order from offset 0; with `last` the value is complete and
 //       becomes visible (or is refused, and the old value stays);
 //
-// each answering abort_code::none on success. The SDO server passes a value that fits its
+// each answering sdo::abort_code::none on success. The SDO server passes a value that fits its
 // buffer as one part (offset 0, last), so a store without a staging area still takes every
 // object up to the server's buffer size.
 //
 // A store may also name its objects by position, so that a caller that reaches the same objects
 // again and again (the PDO engine, at every SYNC and RPDO) looks each one up once
-// (sdo::positioned_store; optional, detected at compile time):
+// (canopen::positioned_store; optional, detected at compile time):
 //
-//   std::size_t position(od::address a) const;      // sdo::no_position when there is no `a`
+//   std::size_t position(od::address a) const;      // canopen::no_position when there is no `a`
 //   od::address address_at(std::size_t at) const;   // the address position() named
 //   sdo::abort_code read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
 //                           std::size_t &total) const;
@@ -36,11 +38,11 @@
 // same abort codes, same hook); a position stays valid as long as the store.
 //
 // A positioned store may also show where plain values live, so that the PDO engine compiles a
-// mapping into copies between its storage and the frame (sdo::plain_store; optional, detected
+// mapping into copies between its storage and the frame (canopen::plain_store; optional, detected
 // at compile time):
 //
 //   std::span<std::uint8_t> plain_storage();            // the bytes plain values live in
-//   sdo::plain_slot plain_at(std::size_t at) const;     // where the value at `at` lives there
+//   canopen::plain_slot plain_at(std::size_t at) const;     // where the value at `at` lives there
 //
 // A plain_slot of `size` bytes (size 0: not plain) at `offset` in plain_storage() promises, for
 // as long as the store lives: `readable` — read_at(at, 0, out, total) with out.size() == size
@@ -51,7 +53,7 @@
 // do not overlap.
 #pragma once
 
-#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/abort_code.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/core/result.hpp>
@@ -68,15 +70,15 @@
 #include <span>
 #include <type_traits>
 
-namespace fieldcodec::canopen::sdo {
+namespace fieldcodec::canopen {
 
 template <class S>
 concept object_store = requires(S &s, const S &cs, od::address a, std::size_t offset,
                                 std::span<std::uint8_t> out, std::span<const std::uint8_t> in,
                                 std::optional<std::uint32_t> size, std::size_t &total, bool last) {
-  { cs.read(a, offset, out, total) } -> std::same_as<abort_code>;
-  { s.begin_write(a, size) } -> std::same_as<abort_code>;
-  { s.write(a, offset, in, last) } -> std::same_as<abort_code>;
+  { cs.read(a, offset, out, total) } -> std::same_as<sdo::abort_code>;
+  { s.begin_write(a, size) } -> std::same_as<sdo::abort_code>;
+  { s.write(a, offset, in, last) } -> std::same_as<sdo::abort_code>;
 };
 
 /// What position() answers for an address the store does not have.
@@ -91,11 +93,11 @@ concept positioned_store = object_store<S> &&
              bool last) {
   { cs.position(a) } -> std::same_as<std::size_t>;
   { cs.address_at(at) } -> std::same_as<od::address>;
-  { cs.read_at(at, offset, out, total) } -> std::same_as<abort_code>;
-  { s.write_at(at, offset, in, last) } -> std::same_as<abort_code>;
+  { cs.read_at(at, offset, out, total) } -> std::same_as<sdo::abort_code>;
+  { s.write_at(at, offset, in, last) } -> std::same_as<sdo::abort_code>;
 };
 
-/// Where a store keeps a plain value (sdo::plain_store; see above): `size` bytes at `offset` in
+/// Where a store keeps a plain value (canopen::plain_store; see above): `size` bytes at `offset` in
 /// plain_storage(), read and / or written there as they are. size 0: not plain (use read_at /
 /// write_at).
 struct plain_slot {
@@ -178,9 +180,9 @@ template <std::size_t N>
 
 /// The write hook of a store that takes every valid value.
 struct accept_writes {
-  [[nodiscard]] constexpr abort_code operator()(const od::entry &,
-                                                std::span<const std::uint8_t>) const noexcept {
-    return abort_code::none;
+  [[nodiscard]] constexpr sdo::abort_code operator()(const od::entry &,
+                                                     std::span<const std::uint8_t>) const noexcept {
+    return sdo::abort_code::none;
   }
 };
 
@@ -194,7 +196,7 @@ struct accept_writes {
 /// Writes (by SDO now, by RPDO through the same `write`) are checked — access type, length
 /// (exact for fixed-size types, at most the capacity for byte strings), limits, and the rules
 /// of od::decode / od::decode_bytes — and then offered to the write hook `OnWrite`:
-///   abort_code on_write(const od::entry &e, std::span<const std::uint8_t> value)
+///   sdo::abort_code on_write(const od::entry &e, std::span<const std::uint8_t> value)
 /// which sees the complete new value before anyone else and may refuse it with an abort code
 /// (the old value stays). A value is stored only when complete: a value that arrives in several
 /// parts (larger than the SDO server's buffer) is collected in the caller-owned `staging` area
@@ -253,37 +255,37 @@ public:
     return result;
   }
 
-  [[nodiscard]] constexpr abort_code read(od::address a, std::size_t offset,
-                                          std::span<std::uint8_t> out,
-                                          std::size_t &total) const noexcept {
+  [[nodiscard]] constexpr sdo::abort_code read(od::address a, std::size_t offset,
+                                               std::span<std::uint8_t> out,
+                                               std::size_t &total) const noexcept {
     return read_located(locate(a), offset, out, total);
   }
 
-  [[nodiscard]] constexpr abort_code begin_write(od::address a,
-                                                 std::optional<std::uint32_t> size) noexcept {
+  [[nodiscard]] constexpr sdo::abort_code begin_write(od::address a,
+                                                      std::optional<std::uint32_t> size) noexcept {
     const located l = locate(a);
-    if (l.code != abort_code::none) return l.code;
-    if (!od::writable(l.e->access_type)) return abort_code::write_read_only;
+    if (l.code != sdo::abort_code::none) return l.code;
+    if (!od::writable(l.e->access_type)) return sdo::abort_code::write_read_only;
     staged_ = 0;
     staged_address_ = a;
-    if (!size) return abort_code::none;
+    if (!size) return sdo::abort_code::none;
     if (od::is_byte_string(l.e->type)) {
-      return *size > l.e->size ? abort_code::length_too_high : abort_code::none;
+      return *size > l.e->size ? sdo::abort_code::length_too_high : sdo::abort_code::none;
     }
-    if (*size > l.e->width()) return abort_code::length_too_high;
-    if (*size < l.e->width()) return abort_code::length_too_low;
-    return abort_code::none;
+    if (*size > l.e->width()) return sdo::abort_code::length_too_high;
+    if (*size < l.e->width()) return sdo::abort_code::length_too_low;
+    return sdo::abort_code::none;
   }
 
   /// Out of line (g++, clang): an SDO server inlines the flush of its buffer, a call of write,
   /// into its segment loop, and with the whole of write inlined there g++ stopped inlining that
   /// loop (block download: +20 % Ir). write_at, the PDO engine's, keeps it inline.
-  [[nodiscard, gnu::noinline]] constexpr abort_code
+  [[nodiscard, gnu::noinline]] constexpr sdo::abort_code
   write(od::address a, std::size_t offset, std::span<const std::uint8_t> part, bool last) noexcept {
     return write_located(locate(a), a, offset, part, last);
   }
 
-  // ----- by position (sdo::positioned_store): the entry's position in dictionary() ---------
+  // ----- by position (canopen::positioned_store): the entry's position in dictionary() ---------
 
   /// The position of `a` in dictionary(), no_position when the dictionary has no `a`.
   [[nodiscard]] constexpr std::size_t position(od::address a) const noexcept {
@@ -297,21 +299,21 @@ public:
   }
   /// read() of the entry at `at`, without looking it up. A position that is not one
   /// (no_position, past the dictionary) answers no_object.
-  [[nodiscard]] constexpr abort_code read_at(std::size_t at, std::size_t offset,
-                                             std::span<std::uint8_t> out,
-                                             std::size_t &total) const noexcept {
+  [[nodiscard]] constexpr sdo::abort_code read_at(std::size_t at, std::size_t offset,
+                                                  std::span<std::uint8_t> out,
+                                                  std::size_t &total) const noexcept {
     return read_located(locate_at(at), offset, out, total);
   }
   /// write() of the entry at `at`, without looking it up (same checks, same hook).
-  [[nodiscard]] constexpr abort_code write_at(std::size_t at, std::size_t offset,
-                                              std::span<const std::uint8_t> part,
-                                              bool last) noexcept {
+  [[nodiscard]] constexpr sdo::abort_code write_at(std::size_t at, std::size_t offset,
+                                                   std::span<const std::uint8_t> part,
+                                                   bool last) noexcept {
     const located l = locate_at(at);
-    if (l.code != abort_code::none) return l.code;
+    if (l.code != sdo::abort_code::none) return l.code;
     return write_located(l, {l.e->index, l.e->sub}, offset, part, last);
   }
 
-  // ----- plain values (sdo::plain_store) ---------------------------------------------------
+  // ----- plain values (canopen::plain_store) ---------------------------------------------------
 
   /// The caller-owned storage: fixed-size values are kept there little-endian (CANopen order)
   /// on every host, as they arrive, so a plain_at slot is the value's bytes.
@@ -339,16 +341,16 @@ public:
   [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
   value(od::address a) const noexcept {
     const located l = locate(a);
-    if (l.code == abort_code::unsupported_access) return errc::access_denied;
-    if (l.code != abort_code::none) return errc::unknown_object;
+    if (l.code == sdo::abort_code::unsupported_access) return errc::access_denied;
+    if (l.code != sdo::abort_code::none) return errc::unknown_object;
     return current(l);
   }
   /// The application sets a value (also of read-only objects): the same checks as an SDO write
   /// except access type, no write hook. Returns none or the abort code an SDO write would get.
-  [[nodiscard]] constexpr abort_code set(od::address a,
-                                         std::span<const std::uint8_t> value) noexcept {
+  [[nodiscard]] constexpr sdo::abort_code set(od::address a,
+                                              std::span<const std::uint8_t> value) noexcept {
     const located l = locate(a);
-    if (l.code != abort_code::none) return l.code;
+    if (l.code != sdo::abort_code::none) return l.code;
     return store(l, value, false);
   }
 
@@ -359,45 +361,45 @@ public:
 
 private:
   struct located {
-    abort_code code = abort_code::none;
+    sdo::abort_code code = sdo::abort_code::none;
     const od::entry *e = nullptr;
     std::span<std::uint8_t> slot{};
     std::uint8_t flags = 0; ///< slot_flag bits
   };
 
-  [[nodiscard]] constexpr abort_code read_located(const located &l, std::size_t offset,
-                                                  std::span<std::uint8_t> out,
-                                                  std::size_t &total) const noexcept {
-    if (l.code != abort_code::none) return l.code;
-    if ((l.flags & slot_flag::readable) == 0U) return abort_code::read_write_only;
+  [[nodiscard]] constexpr sdo::abort_code read_located(const located &l, std::size_t offset,
+                                                       std::span<std::uint8_t> out,
+                                                       std::size_t &total) const noexcept {
+    if (l.code != sdo::abort_code::none) return l.code;
+    if ((l.flags & slot_flag::readable) == 0U) return sdo::abort_code::read_write_only;
     const auto v = current(l);
-    if (offset > v.size()) return abort_code::general_error;
+    if (offset > v.size()) return sdo::abort_code::general_error;
     const std::size_t n = v.size() - offset < out.size() ? v.size() - offset : out.size();
     fieldcodec::copy_bytes(v.data() + offset, out.data(), n);
     total = v.size();
-    return abort_code::none;
+    return sdo::abort_code::none;
   }
 
-  [[nodiscard]] constexpr abort_code write_located(const located &l, od::address a,
-                                                   std::size_t offset,
-                                                   std::span<const std::uint8_t> part,
-                                                   bool last) noexcept {
-    if (l.code != abort_code::none) return l.code;
-    if ((l.flags & slot_flag::writable) == 0U) return abort_code::write_read_only;
+  [[nodiscard]] constexpr sdo::abort_code write_located(const located &l, od::address a,
+                                                        std::size_t offset,
+                                                        std::span<const std::uint8_t> part,
+                                                        bool last) noexcept {
+    if (l.code != sdo::abort_code::none) return l.code;
+    if ((l.flags & slot_flag::writable) == 0U) return sdo::abort_code::write_read_only;
     if (offset == 0U && last) return store(l, part, true);
     if (offset == 0U) {
       staged_ = 0;
       staged_address_ = a;
     }
-    if (staged_address_ != a || offset != staged_) return abort_code::general_error;
+    if (staged_address_ != a || offset != staged_) return sdo::abort_code::general_error;
     if ((l.flags & slot_flag::byte_string) != 0U ? offset + part.size() > l.e->size
                                                  : offset + part.size() > l.e->width()) {
-      return abort_code::length_too_high;
+      return sdo::abort_code::length_too_high;
     }
-    if (offset + part.size() > staging_.size()) return abort_code::out_of_memory;
+    if (offset + part.size() > staging_.size()) return sdo::abort_code::out_of_memory;
     for (std::size_t i = 0; i < part.size(); ++i) staging_[offset + i] = part[i];
     staged_ = offset + part.size();
-    if (!last) return abort_code::none;
+    if (!last) return sdo::abort_code::none;
     const std::size_t n = staged_;
     staged_ = 0;
     return store(l, std::span<const std::uint8_t>(staging_).first(n), true);
@@ -456,7 +458,8 @@ private:
     const std::size_t i = dict_.position(a);
     if (i >= dict_.size()) {
       located l;
-      l.code = dict_.object(a.index).empty() ? abort_code::no_object : abort_code::no_sub_index;
+      l.code = dict_.object(a.index).empty() ? sdo::abort_code::no_object
+                                             : sdo::abort_code::no_sub_index;
       return l;
     }
     return locate_at(i);
@@ -465,17 +468,17 @@ private:
   [[nodiscard]] constexpr located locate_at(std::size_t i) const noexcept {
     located l;
     if (i >= dict_.size()) {
-      l.code = abort_code::no_object;
+      l.code = sdo::abort_code::no_object;
       return l;
     }
     l.e = &dict_.entries()[i];
     if (!layout_fits()) {
-      l.code = abort_code::general_error;
+      l.code = sdo::abort_code::general_error;
       return l;
     }
     l.slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
     l.flags = flags_[i];
-    if (l.slot.empty()) l.code = abort_code::unsupported_access; // a byte string without size
+    if (l.slot.empty()) l.code = sdo::abort_code::unsupported_access; // a byte string without size
     return l;
   }
 
@@ -495,18 +498,18 @@ private:
   }
 
   /// Check a complete value, ask the hook (SDO/RPDO writes), then store it.
-  [[nodiscard]] constexpr abort_code store(const located &l, std::span<const std::uint8_t> data,
-                                           bool ask_hook) noexcept {
+  [[nodiscard]] constexpr sdo::abort_code
+  store(const located &l, std::span<const std::uint8_t> data, bool ask_hook) noexcept {
     const od::entry &e = *l.e;
     if ((l.flags & slot_flag::byte_string) != 0U) {
-      if (data.size() > e.size) return abort_code::length_too_high;
+      if (data.size() > e.size) return sdo::abort_code::length_too_high;
       auto v = od::decode_bytes(e, data);
       if (!v) {
-        return v.error() == errc::too_long ? abort_code::length_too_high
-                                           : abort_code::invalid_value;
+        return v.error() == errc::too_long ? sdo::abort_code::length_too_high
+                                           : sdo::abort_code::invalid_value;
       }
       if (ask_hook) {
-        if (const auto c = on_write_(e, v.value()); c != abort_code::none) return c;
+        if (const auto c = on_write_(e, v.value()); c != sdo::abort_code::none) return c;
       }
       const auto value = v.value(); // visible strings: trailing NULs cut
       // whole runs (a memmove and a memset at run time): a block download stores hundreds of
@@ -516,42 +519,42 @@ private:
       std::fill(out.begin() + static_cast<std::ptrdiff_t>(value.size()),
                 out.begin() + static_cast<std::ptrdiff_t>(e.size), std::uint8_t{0});
       set_length(l.slot, value.size());
-      return abort_code::none;
+      return sdo::abort_code::none;
     }
-    if (data.size() > l.slot.size()) return abort_code::length_too_high;
-    if (data.size() < l.slot.size()) return abort_code::length_too_low;
+    if (data.size() > l.slot.size()) return sdo::abort_code::length_too_high;
+    if (data.size() < l.slot.size()) return sdo::abort_code::length_too_low;
     if ((l.flags & slot_flag::any_bits) == 0U) { // od::decode cannot refuse the others' bytes
       auto desc = dict_.describe(e);             // a scaled entry's limits need its scale
-      if (!desc) return abort_code::general_error;
+      if (!desc) return sdo::abort_code::general_error;
       auto v = od::decode(desc.value(), data, byte_order::little, od::limits::check, node_);
       if (!v) {
-        if (v.error() != errc::out_of_range) return abort_code::invalid_value;
+        if (v.error() != errc::out_of_range) return sdo::abort_code::invalid_value;
         return out_of_range_code(e, data, node_);
       }
     }
     if (ask_hook) {
-      if (const auto c = on_write_(e, data); c != abort_code::none) return c;
+      if (const auto c = on_write_(e, data); c != sdo::abort_code::none) return c;
     }
     fieldcodec::copy_bytes(data.data(), l.slot.data(), l.slot.size());
-    return abort_code::none;
+    return sdo::abort_code::none;
   }
 
-  [[nodiscard]] static constexpr abort_code out_of_range_code(const od::entry &e,
-                                                              std::span<const std::uint8_t> data,
-                                                              std::uint8_t node) noexcept {
+  [[nodiscard]] static constexpr sdo::abort_code
+  out_of_range_code(const od::entry &e, std::span<const std::uint8_t> data,
+                    std::uint8_t node) noexcept {
     if (e.type == od::data_type::boolean || e.has(od::flag::scaled)) {
-      return abort_code::invalid_value;
+      return sdo::abort_code::invalid_value;
     }
     auto raw = od::decode(e, data, byte_order::little, od::limits::ignore);
-    if (!raw) return abort_code::invalid_value;
+    if (!raw) return sdo::abort_code::invalid_value;
     auto v = raw.value().to_decimal();
     auto hi = od::detail::checked_limit(e, true, node);
     auto hd = hi ? hi.value().to_decimal() : result<decimal>{errc::unknown_object};
-    if (v && hd && compare(v.value(), hd.value()) > 0) return abort_code::value_too_high;
+    if (v && hd && compare(v.value(), hd.value()) > 0) return sdo::abort_code::value_too_high;
     auto lo = od::detail::checked_limit(e, false, node);
     auto ld = lo ? lo.value().to_decimal() : result<decimal>{errc::unknown_object};
-    if (v && ld && compare(v.value(), ld.value()) < 0) return abort_code::value_too_low;
-    return abort_code::invalid_value;
+    if (v && ld && compare(v.value(), ld.value()) < 0) return sdo::abort_code::value_too_low;
+    return sdo::abort_code::invalid_value;
   }
 
   od::dictionary dict_;
@@ -570,4 +573,4 @@ static_assert(object_store<dictionary_store<>>);
 static_assert(positioned_store<dictionary_store<>>);
 static_assert(plain_store<dictionary_store<>>);
 
-} // namespace fieldcodec::canopen::sdo
+} // namespace fieldcodec::canopen

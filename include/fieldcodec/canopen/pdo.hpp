@@ -110,9 +110,11 @@ struct powerlink_mapping_entry {
   if (length < 1U || length > 64U) return errc::bad_length;
   if (length < 64U && (raw >> length) != 0U) return errc::overflow;
   if (offset + length > pdo.size() * 8U) return errc::buffer_too_small;
+#if !defined(__OPTIMIZE_SIZE__) // built for size (-Os, firmware) the loop below serves whole bytes
   if (offset % 8U == 0U && length % 8U == 0U) { // whole bytes: a little-endian store
     return store_unsigned(pdo.subspan(offset / 8U), length / 8U, raw, byte_order::little);
   }
+#endif
   // A byte at a time: at most 9 steps for 64 bits (a whole byte per step when aligned).
   std::size_t bit = offset;
   std::size_t done = 0;
@@ -149,9 +151,11 @@ struct powerlink_mapping_entry {
 unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length) noexcept {
   if (length < 1U || length > 64U) return errc::bad_length;
   if (offset + length > pdo.size() * 8U) return errc::truncated;
+#if !defined(__OPTIMIZE_SIZE__) // built for size (-Os, firmware) the loop below serves whole bytes
   if (offset % 8U == 0U && length % 8U == 0U) { // whole bytes: a little-endian load
     return load_unsigned(pdo.subspan(offset / 8U), length / 8U, byte_order::little);
   }
+#endif
   std::uint64_t v = 0;
   std::size_t bit = offset;
   std::size_t done = 0;

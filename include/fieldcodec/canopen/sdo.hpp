@@ -1,6 +1,6 @@
 // fieldcodec — the SDO message codec (CiA 301): the 8 data bytes of every SDO message
-// (expedited, segmented and block transfer, abort), the table of abort codes, and the SDO
-// channel that puts messages on CAN identifiers.
+// (expedited, segmented and block transfer, abort) and the SDO channel that puts messages on CAN
+// identifiers. The abort codes are in canopen/abort_code.hpp (included).
 //
 // The codec knows nothing about CAN identifiers: `encode(message)` gives the 8 bytes
 // (`sdo::payload`), `decode(payload, direction)` reads them, so the same codec and the transfer
@@ -32,6 +32,7 @@
 // have their own functions (encode_block_segment / decode_block_segment).
 #pragma once
 
+#include <fieldcodec/canopen/abort_code.hpp>
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/core/bytes.hpp>
@@ -47,129 +48,6 @@
 #include <type_traits>
 
 namespace fieldcodec::canopen::sdo {
-
-// ---------------------------------------------------------------------------------------------
-// Abort codes: one table {code, errc, text}, used by the client, the server and dpq/.
-
-/// An SDO abort code. The named values are those of CiA 301; any other 32-bit value a peer
-/// sends is kept as it is (is_known() tells them apart). `none` (0) is never sent: it means
-/// "no abort" where a function answers with an abort code (stores, write hooks).
-enum class abort_code : std::uint32_t {
-  none = 0,
-  toggle_not_alternated = 0x05030000U,
-  timeout = 0x05040000U,
-  unknown_command = 0x05040001U,
-  invalid_block_size = 0x05040002U,
-  invalid_sequence_number = 0x05040003U,
-  crc_error = 0x05040004U,
-  out_of_memory = 0x05040005U,
-  unsupported_access = 0x06010000U,
-  read_write_only = 0x06010001U,
-  write_read_only = 0x06010002U,
-  no_object = 0x06020000U,
-  not_mappable = 0x06040041U,
-  pdo_too_long = 0x06040042U,
-  parameter_incompatible = 0x06040043U,
-  device_incompatible = 0x06040047U,
-  hardware_error = 0x06060000U,
-  length_mismatch = 0x06070010U,
-  length_too_high = 0x06070012U,
-  length_too_low = 0x06070013U,
-  no_sub_index = 0x06090011U,
-  invalid_value = 0x06090030U,
-  value_too_high = 0x06090031U,
-  value_too_low = 0x06090032U,
-  max_less_than_min = 0x06090036U,
-  no_sdo_connection = 0x060A0023U,
-  general_error = 0x08000000U,
-  cannot_store = 0x08000020U,
-  cannot_store_local_control = 0x08000021U,
-  cannot_store_device_state = 0x08000022U,
-  no_dictionary = 0x08000023U,
-  no_data = 0x08000024U,
-};
-
-/// One row of the abort table: the code, the fieldcodec error closest to it, and a short
-/// description (fieldcodec's own wording of CiA 301).
-struct abort_info {
-  abort_code code;
-  errc error;
-  std::string_view text;
-};
-
-/// Every CiA 301 abort code, in numeric order.
-inline constexpr abort_info abort_codes[] = {
-    {abort_code::toggle_not_alternated, errc::bad_toggle, "toggle bit did not alternate"},
-    {abort_code::timeout, errc::timeout, "SDO protocol timed out"},
-    {abort_code::unknown_command, errc::unknown_command,
-     "client/server command specifier invalid or unknown"},
-    {abort_code::invalid_block_size, errc::out_of_range, "invalid block size (block mode)"},
-    {abort_code::invalid_sequence_number, errc::unexpected_frame,
-     "invalid sequence number (block mode)"},
-    {abort_code::crc_error, errc::bad_checksum, "CRC error (block mode)"},
-    {abort_code::out_of_memory, errc::buffer_too_small, "out of memory"},
-    {abort_code::unsupported_access, errc::access_denied, "access to this object not supported"},
-    {abort_code::read_write_only, errc::access_denied, "read of a write-only object"},
-    {abort_code::write_read_only, errc::access_denied, "write to a read-only object"},
-    {abort_code::no_object, errc::unknown_object, "object not in the object dictionary"},
-    {abort_code::not_mappable, errc::invalid_argument, "object cannot be mapped into a PDO"},
-    {abort_code::pdo_too_long, errc::too_long, "mapped objects exceed the PDO length"},
-    {abort_code::parameter_incompatible, errc::invalid_argument,
-     "general parameter incompatibility"},
-    {abort_code::device_incompatible, errc::aborted,
-     "general internal incompatibility in the device"},
-    {abort_code::hardware_error, errc::aborted, "access failed: hardware error"},
-    {abort_code::length_mismatch, errc::type_mismatch, "data type mismatch: length does not match"},
-    {abort_code::length_too_high, errc::too_long, "data type mismatch: length too high"},
-    {abort_code::length_too_low, errc::bad_length, "data type mismatch: length too low"},
-    {abort_code::no_sub_index, errc::unknown_object, "sub-index does not exist"},
-    {abort_code::invalid_value, errc::out_of_range, "invalid value (download only)"},
-    {abort_code::value_too_high, errc::out_of_range, "value too high (download only)"},
-    {abort_code::value_too_low, errc::out_of_range, "value too low (download only)"},
-    {abort_code::max_less_than_min, errc::out_of_range, "maximum value below minimum value"},
-    {abort_code::no_sdo_connection, errc::bad_state, "resource not available: SDO connection"},
-    {abort_code::general_error, errc::aborted, "general error"},
-    {abort_code::cannot_store, errc::aborted, "data cannot be transferred or stored"},
-    {abort_code::cannot_store_local_control, errc::aborted,
-     "data cannot be transferred or stored: local control"},
-    {abort_code::cannot_store_device_state, errc::bad_state,
-     "data cannot be transferred or stored: device state"},
-    {abort_code::no_dictionary, errc::unknown_object,
-     "no object dictionary present or generation failed"},
-    {abort_code::no_data, errc::bad_state, "no data available"},
-};
-
-namespace detail {
-/// Position of `code` in abort_codes (std::size(abort_codes) when absent). The lookups below
-/// compare positions, not pointers with nullptr: g++ -fsanitize=undefined cannot evaluate the
-/// null comparison of a pointer into a constexpr table in a constant expression.
-[[nodiscard]] constexpr std::size_t abort_position(abort_code code) noexcept {
-  std::size_t i = 0;
-  while (i < std::size(abort_codes) && abort_codes[i].code != code) ++i;
-  return i;
-}
-} // namespace detail
-
-/// The row of `code`, or nullptr for a code CiA 301 does not define (and for `none`).
-[[nodiscard]] constexpr const abort_info *find_abort(abort_code code) noexcept {
-  const std::size_t i = detail::abort_position(code);
-  return i < std::size(abort_codes) ? &abort_codes[i] : nullptr;
-}
-/// True for the codes of the CiA 301 table.
-[[nodiscard]] constexpr bool is_known(abort_code code) noexcept {
-  return detail::abort_position(code) < std::size(abort_codes);
-}
-/// The description of a code: "no abort" for none, empty for a code CiA 301 does not define.
-[[nodiscard]] constexpr std::string_view to_string(abort_code code) noexcept {
-  if (code == abort_code::none) return "no abort";
-  const std::size_t i = detail::abort_position(code);
-  return i < std::size(abort_codes) ? abort_codes[i].text : std::string_view{};
-}
-/// The fieldcodec error closest to a code; errc::aborted for a code CiA 301 does not define.
-[[nodiscard]] constexpr errc to_errc(abort_code code) noexcept {
-  const std::size_t i = detail::abort_position(code);
-  return i < std::size(abort_codes) ? abort_codes[i].error : errc::aborted;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Messages
@@ -490,6 +368,62 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
 #endif
 
 namespace detail {
+// The fields of byte 0, for readers that take a message's bytes in place (the SDO client).
+/// The command specifier (bits 7..5).
+[[nodiscard]] constexpr unsigned specifier(std::uint8_t b0) noexcept { return b0 >> 5U; }
+/// The command specifier of message type `t` (for constants: the table is not linked).
+[[nodiscard]] constexpr unsigned specifier_of(message_type t) noexcept {
+  return commands[command_for(t)].bits >> 5U;
+}
+/// A segment (layout::segment): toggle (bit 4), data bytes (7 − bits 3..1), last (bit 0).
+[[nodiscard]] constexpr bool segment_toggle(std::uint8_t b0) noexcept {
+  return (b0 & toggle_bit) != 0U;
+}
+[[nodiscard]] constexpr std::uint8_t segment_size(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>(7U - ((b0 >> 1U) & 7U));
+}
+[[nodiscard]] constexpr bool segment_last(std::uint8_t b0) noexcept { return (b0 & 0x01U) != 0U; }
+/// An initiate (layout::initiate): expedited (bit 1), size indicated (bit 0).
+[[nodiscard]] constexpr bool initiate_expedited(std::uint8_t b0) noexcept {
+  return (b0 & 0x02U) != 0U;
+}
+[[nodiscard]] constexpr bool initiate_size_indicated(std::uint8_t b0) noexcept {
+  return (b0 & 0x01U) != 0U;
+}
+/// An expedited initiate's data bytes: 4 − bits 3..2 when the size is indicated, else 4 (what
+/// read_expedited_data gives as `size`).
+[[nodiscard]] constexpr std::uint8_t expedited_size(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>(initiate_size_indicated(b0) ? 4U - ((b0 >> 2U) & 3U) : 4U);
+}
+
+// The readers of the layouts: each fills the members of its layout from the 8 bytes (`type` is
+// the caller's). decode_by_table reads through them.
+constexpr void read_segment(const payload &p, message &m) noexcept {
+  m.toggle = segment_toggle(p[0]);
+  m.last = segment_last(p[0]);
+  m.data_size = segment_size(p[0]);
+  for (std::size_t i = 0; i < 7U; ++i) { // not a copy of run-time length: no call of memcpy
+    if (i < m.data_size) m.data[i] = p[1U + i];
+  }
+}
+constexpr void read_toggle(const payload &p, message &m) noexcept {
+  m.toggle = segment_toggle(p[0]);
+}
+constexpr void read_initiate(const payload &p, message &m) noexcept {
+  m.address = get_address(p);
+  m.expedited = initiate_expedited(p[0]);
+  m.size_indicated = initiate_size_indicated(p[0]);
+  if (m.expedited) {
+    read_expedited_data(p, m);
+  } else if (m.size_indicated) {
+    m.size = get_u32(p);
+  }
+}
+constexpr void read_abort(const payload &p, message &m) noexcept {
+  m.address = get_address(p);
+  m.abort = static_cast<abort_code>(get_u32(p));
+}
+
 /// decode through the command table: every command (decode takes expedited initiates first, by
 /// straight code that gives the same message).
 FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message>
@@ -503,28 +437,11 @@ decode_by_table(const payload &p, direction d) noexcept {
   message &m = r.value();
   m.type = c->type;
   switch (c->lay) {
-  case detail::layout::segment:
-    m.toggle = (b0 & detail::toggle_bit) != 0U;
-    m.last = (b0 & 0x01U) != 0U;
-    m.data_size = static_cast<std::uint8_t>(7U - ((b0 >> 1U) & 7U));
-    for (std::size_t i = 0; i < m.data_size; ++i) m.data[i] = p[1U + i];
-    break;
-  case detail::layout::toggle: m.toggle = (b0 & detail::toggle_bit) != 0U; break;
-  case detail::layout::initiate:
-    m.address = detail::get_address(p);
-    m.expedited = (b0 & 0x02U) != 0U;
-    m.size_indicated = (b0 & 0x01U) != 0U;
-    if (m.expedited) {
-      read_expedited_data(p, m);
-    } else if (m.size_indicated) {
-      m.size = detail::get_u32(p);
-    }
-    break;
+  case detail::layout::segment: read_segment(p, m); break;
+  case detail::layout::toggle: read_toggle(p, m); break;
+  case detail::layout::initiate: read_initiate(p, m); break;
   case detail::layout::address: m.address = detail::get_address(p); break;
-  case detail::layout::abort:
-    m.address = detail::get_address(p);
-    m.abort = static_cast<abort_code>(detail::get_u32(p));
-    break;
+  case detail::layout::abort: read_abort(p, m); break;
   case detail::layout::block_initiate:
     m.address = detail::get_address(p);
     m.crc = (b0 & 0x04U) != 0U;
@@ -550,6 +467,18 @@ decode_by_table(const payload &p, direction d) noexcept {
   }
   return r;
 }
+
+/// The byte-0 keys (command_index's) of the commands a server sends: bit k set when key k is
+/// one. Computed from the table, so is_server_message answers without linking it.
+inline constexpr std::uint32_t to_client_keys = [] {
+  std::uint32_t keys = 0;
+  for (unsigned k = 0; k < 32U; ++k) {
+    if (command_index[static_cast<std::size_t>(direction::to_client)][k] != no_command) {
+      keys |= 1U << k;
+    }
+  }
+  return keys;
+}();
 } // namespace detail
 
 /// Read the 8 bytes of a message sent in direction `d` (see the table at the top). Reserved
@@ -582,6 +511,13 @@ FIELDCODEC_SDO_INLINE [[nodiscard]] constexpr result<message> decode(const paylo
   // data then runs only after the straight path (70 -> 64 instructions in the benchmark).
   if (r.has_value()) r.value().expedited = false;
   return r;
+}
+
+/// True when `byte0` begins a message a server sends: what decode(…, direction::to_client)
+/// does not refuse with unknown_command (one bit of a constant, no table).
+[[nodiscard]] constexpr bool is_server_message(std::uint8_t byte0) noexcept {
+  const unsigned key = (detail::specifier(byte0) << 2U) | (byte0 & 3U);
+  return ((detail::to_client_keys >> key) & 1U) != 0U;
 }
 
 /// A segment of a sub-block: byte 0 = last << 7 | sequence, then 7 data bytes (all 7 are sent;

@@ -140,14 +140,17 @@ public:
     if (raw_ != nullptr) {
       if (auto s = (this->*raw_)(p)) return *s;
     }
-    auto r = decode(p, direction::to_client);
-    if (!r) return abort_with(r.error(), abort_code::unknown_command);
-    const message &m = r.value();
-    if (m.type == message_type::abort) {
-      core_.fail(errc::aborted, m.abort);
+    // A response is read in place by the state that takes it (no message is built for an
+    // expedited or segmented transfer; a block transfer's states decode theirs): first what
+    // every state refuses alike, byte 0 of no command, and an abort.
+    if (!is_server_message(p[0])) {
+      return abort_with(errc::unknown_command, abort_code::unknown_command);
+    }
+    if (detail::specifier(p[0]) == ccs_abort) {
+      core_.fail(errc::aborted, static_cast<abort_code>(detail::get_u32(p)));
       return core_.make();
     }
-    return (this->*handler_)(m);
+    return (this->*handler_)(p);
   }
 
   /// Consume several received frames in order (what a CAN driver took from its receive FIFO),
@@ -232,7 +235,7 @@ private:
   // the function that sees the raw bytes first (`raw_`), and for on_frames the function that
   // takes a run of them (`run_`, when `runs_`). Firmware that never starts a block
   // transfer never references the block functions, so the linker drops them.
-  using handler = step (basic_client::*)(const message &);
+  using handler = step (basic_client::*)(const payload &);
   using raw_handler = std::optional<step> (basic_client::*)(const payload &);
   using run_handler = std::size_t (basic_client::*)(std::span<const can_frame>, std::uint32_t);
   constexpr void expect(handler h, raw_handler raw = nullptr) noexcept {
@@ -276,25 +279,48 @@ private:
     core_.finish();
     return core_.make();
   }
-  /// An initiate response must be of `t` and name the transfer's object.
+  // The command specifiers of the responses the states read in place (from the table, as
+  // constants).
+  static constexpr unsigned ccs_upload_segment =
+      detail::specifier_of(message_type::upload_segment_response);
+  static constexpr unsigned ccs_download_segment =
+      detail::specifier_of(message_type::download_segment_response);
+  static constexpr unsigned ccs_initiate_upload =
+      detail::specifier_of(message_type::initiate_upload_response);
+  static constexpr unsigned ccs_initiate_download =
+      detail::specifier_of(message_type::initiate_download_response);
+  static constexpr unsigned ccs_abort = detail::specifier_of(message_type::abort);
+
+  /// An initiate response must have command specifier `ccs` and name the transfer's object.
+  [[nodiscard]] constexpr std::optional<step> check_initiate(const payload &p,
+                                                             unsigned ccs) noexcept {
+    if (detail::specifier(p[0]) != ccs) return unexpected();
+    return check_address(detail::get_address(p));
+  }
+  [[nodiscard]] constexpr std::optional<step> check_address(od::address a) noexcept {
+    if (a != core_.address()) return abort_with(errc::unexpected_frame, abort_code::general_error);
+    return std::nullopt;
+  }
+  /// A block transfer's response as a message (on_frame has refused bytes of no command).
+  [[nodiscard]] static constexpr message decoded(const payload &p) noexcept {
+    return decode(p, direction::to_client).value_or(message{});
+  }
+  /// The same for a block transfer's initiate response of type `t`.
   [[nodiscard]] constexpr std::optional<step> check_initiate(const message &m,
                                                              message_type t) noexcept {
     if (m.type != t) return unexpected();
-    if (m.address != core_.address()) {
-      return abort_with(errc::unexpected_frame, abort_code::general_error);
-    }
-    return std::nullopt;
+    return check_address(m.address);
   }
 
   // ----- expedited and segmented download --------------------------------------------------
 
-  [[nodiscard]] constexpr step download_expedited(const message &m) noexcept {
-    if (auto s = check_initiate(m, message_type::initiate_download_response)) return *s;
+  [[nodiscard]] constexpr step download_expedited(const payload &p) noexcept {
+    if (auto s = check_initiate(p, ccs_initiate_download)) return *s;
     count_ = tx_.size();
     return done();
   }
-  [[nodiscard]] constexpr step download_initiate(const message &m) noexcept {
-    if (auto s = check_initiate(m, message_type::initiate_download_response)) return *s;
+  [[nodiscard]] constexpr step download_initiate(const payload &p) noexcept {
+    if (auto s = check_initiate(p, ccs_initiate_download)) return *s;
     seg_tx_.start(static_cast<std::uint32_t>(tx_.size()));
     return next_download_segment();
   }
@@ -303,9 +329,9 @@ private:
     const auto chunk = tx_.subspan(seg_tx_.offset(), seg_tx_.next_length());
     return send(seg_tx_.next(message_type::download_segment_request, chunk));
   }
-  [[nodiscard]] constexpr step download_segment(const message &m) noexcept {
-    if (m.type != message_type::download_segment_response) return unexpected();
-    if (!seg_tx_.answer_matches(m.toggle)) {
+  [[nodiscard]] constexpr step download_segment(const payload &p) noexcept {
+    if (detail::specifier(p[0]) != ccs_download_segment) return unexpected();
+    if (!seg_tx_.answer_matches(detail::segment_toggle(p[0]))) {
       return abort_with(errc::bad_toggle, abort_code::toggle_not_alternated);
     }
     count_ = seg_tx_.offset();
@@ -315,32 +341,40 @@ private:
 
   // ----- expedited and segmented upload ----------------------------------------------------
 
-  [[nodiscard]] constexpr step upload_initiate(const message &m) noexcept {
-    if (auto s = check_initiate(m, message_type::initiate_upload_response)) return *s;
-    if (m.expedited) {
-      if (m.size > rx_.size()) {
-        return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
+  [[nodiscard]] constexpr step upload_initiate(const payload &p) noexcept {
+    if (auto s = check_initiate(p, ccs_initiate_upload)) return *s;
+    if (detail::initiate_expedited(p[0])) {
+      const std::uint8_t n = detail::expedited_size(p[0]);
+      if (n > rx_.size()) return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
+      for (std::size_t i = 0; i < 4U; ++i) { // not a copy of run-time length: no memcpy
+        if (i < n) rx_[i] = p[4U + i];
       }
-      const auto bytes = m.value_bytes();
-      for (std::size_t i = 0; i < m.size; ++i) rx_[i] = bytes[i];
-      count_ = m.size;
+      count_ = n;
       return done();
     }
-    if (m.size_indicated && m.size > rx_.size()) {
+    const bool indicated = detail::initiate_size_indicated(p[0]);
+    const std::uint32_t size = detail::get_u32(p);
+    if (indicated && size > rx_.size()) {
       return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
     }
-    seg_rx_.start(rx_.size(),
-                  m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt);
+    seg_rx_.start(rx_.size(), indicated ? std::optional<std::uint32_t>(size) : std::nullopt);
     expect(&basic_client::upload_segment);
     return send(upload_segment_request(seg_rx_.toggle()));
   }
-  [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
-    if (m.type != message_type::upload_segment_response) return unexpected();
+  [[nodiscard]] constexpr step upload_segment(const payload &p) noexcept {
+    if (detail::specifier(p[0]) != ccs_upload_segment) return unexpected();
     const std::size_t at = seg_rx_.count();
-    if (const auto code = seg_rx_.accept(m); code != abort_code::none) return local_abort(code);
-    for (std::size_t i = 0; i < m.data_size; ++i) rx_[at + i] = m.data[i];
+    const std::uint8_t n = detail::segment_size(p[0]);
+    const bool last = detail::segment_last(p[0]);
+    if (const auto code = seg_rx_.accept(detail::segment_toggle(p[0]), n, last);
+        code != abort_code::none) {
+      return local_abort(code);
+    }
+    for (std::size_t i = 0; i < 7U; ++i) { // not a copy of run-time length: no memcpy
+      if (i < n) rx_[at + i] = p[1U + i];
+    }
     count_ = seg_rx_.count();
-    if (m.last) return done();
+    if (last) return done();
     return send(upload_segment_request(seg_rx_.toggle()));
   }
   /// A failure the receiving or sending core detected: the errc that goes with its code.
@@ -359,7 +393,8 @@ private:
 
   // ----- block download ----------------------------------------------------------------------
 
-  [[nodiscard]] constexpr step block_download_initiate(const message &m) noexcept {
+  [[nodiscard]] constexpr step block_download_initiate(const payload &p) noexcept {
+    const message m = decoded(p);
     if (auto s = check_initiate(m, message_type::block_download_initiate_response)) return *s;
     if (m.block_size < 1U || m.block_size > max_block_size) {
       return abort_with(errc::out_of_range, abort_code::invalid_block_size);
@@ -375,7 +410,8 @@ private:
     window_ = burst_window();
     return core_.make(block_tx_.burst(ch_.request_id, window_));
   }
-  [[nodiscard]] constexpr step block_download_ack(const message &m) noexcept {
+  [[nodiscard]] constexpr step block_download_ack(const payload &p) noexcept {
+    const message m = decoded(p);
     if (m.type != message_type::block_ack) return unexpected();
     const auto r = block_tx_.on_ack(m, window_);
     count_ = block_tx_.acknowledged();
@@ -384,20 +420,21 @@ private:
     expect(&basic_client::block_download_end);
     return send(block_tx_.end());
   }
-  [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
-    if (m.type != message_type::block_end_response) return unexpected();
+  [[nodiscard]] constexpr step block_download_end(const payload &p) noexcept {
+    if (decoded(p).type != message_type::block_end_response) return unexpected();
     return done();
   }
 
   // ----- block upload ------------------------------------------------------------------------
 
-  [[nodiscard]] constexpr step block_upload_initiate(const message &m) noexcept {
-    if (m.type == message_type::initiate_upload_response) {
+  [[nodiscard]] constexpr step block_upload_initiate(const payload &p) noexcept {
+    if (detail::specifier(p[0]) == ccs_initiate_upload) {
       // protocol switch: the server answers with a normal upload (only if we allowed it)
       if (options_.switch_threshold == 0U) return unexpected();
       expect(&basic_client::upload_initiate);
-      return upload_initiate(m);
+      return upload_initiate(p);
     }
+    const message m = decoded(p);
     if (auto s = check_initiate(m, message_type::block_upload_initiate_response)) return *s;
     if (m.size_indicated && m.size > rx_.size()) {
       return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
@@ -409,7 +446,7 @@ private:
            &basic_client::block_upload_run);
     return send(block_upload_start());
   }
-  [[nodiscard]] constexpr step unexpected_message(const message &) noexcept { return unexpected(); }
+  [[nodiscard]] constexpr step unexpected_message(const payload &) noexcept { return unexpected(); }
   /// During the segments of a sub-block every frame but an abort is a segment. The common one
   /// (in sequence, not the last of the transfer or of its sub-block, within the announced size
   /// and the buffer: block_receiver::take_next) is taken without a segment_result — as
@@ -454,7 +491,8 @@ private:
     if (block_rx_.is_repeat(p)) return core_.make();
     return std::nullopt;
   }
-  [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {
+  [[nodiscard]] constexpr step block_upload_end(const payload &p) noexcept {
+    const message m = decoded(p);
     if (m.type != message_type::block_end) return unexpected();
     const auto r = block_rx_.on_end(m);
     if (r.abort != abort_code::none) return local_abort(r.abort);

@@ -134,13 +134,15 @@ public:
   /// Returns none or the abort code: toggle_not_alternated, out_of_memory (over capacity),
   /// length_too_high / length_too_low (disagrees with the announced size).
   [[nodiscard]] constexpr abort_code accept(const message &m) noexcept {
-    if (m.toggle != toggle_) return abort_code::toggle_not_alternated;
-    if (announced_ && count_ + m.data_size > *announced_) return abort_code::length_too_high;
-    if (count_ + m.data_size > capacity_) return abort_code::out_of_memory;
-    if (m.last && announced_ && count_ + m.data_size != *announced_) {
-      return abort_code::length_too_low;
-    }
-    count_ += m.data_size;
+    return accept(m.toggle, m.data_size, m.last);
+  }
+  /// The same for a segment read in place: its toggle, data bytes (0..7) and last flag.
+  [[nodiscard]] constexpr abort_code accept(bool toggle, std::size_t size, bool last) noexcept {
+    if (toggle != toggle_) return abort_code::toggle_not_alternated;
+    if (announced_ && count_ + size > *announced_) return abort_code::length_too_high;
+    if (count_ + size > capacity_) return abort_code::out_of_memory;
+    if (last && announced_ && count_ + size != *announced_) return abort_code::length_too_low;
+    count_ += size;
     toggle_ = !toggle_;
     return abort_code::none;
   }

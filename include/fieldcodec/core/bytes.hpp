@@ -154,6 +154,15 @@ load_signed(std::span<const std::uint8_t> in, std::size_t width, byte_order orde
   if (width < 1U || width > 8U) return errc::bad_length;
   if (value > unsigned_max(width)) return errc::overflow;
   if (out.size() < width) return errc::buffer_too_small;
+#if defined(__OPTIMIZE_SIZE__)
+  if (!__builtin_constant_p(width)) { // -Os and a run-time width: one compact loop
+    for (std::size_t i = 0; i < width; ++i) {
+      out[order == byte_order::big ? width - 1U - i : i] = static_cast<std::uint8_t>(value);
+      value >>= 8U;
+    }
+    return {};
+  }
+#endif
   switch (width) { // a constant width (after inlining) selects one unrolled body
   case 1: detail::store_fixed<1>(out, value, order); break;
   case 2: detail::store_fixed<2>(out, value, order); break;

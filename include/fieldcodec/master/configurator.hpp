@@ -8,6 +8,7 @@
 //   for every frame: s = run.on_frame(frame, now);  when s.deadline passes: s = run.poll(now)
 //   send s.send; run.state() == done / failed: run.error() names the item, its object's name,
 //   the abort code and the attempts.
+//   run.start_concise(concise_dcf_bytes, now) runs the entries of a concise DCF (1F22h format).
 //
 // The client belongs to the caller (a boot-up machine shares it); while the configurator runs
 // nothing else may use it. Pure: no heap, no I/O, time passed in.
@@ -47,6 +48,17 @@ enum class config_failure : std::uint8_t {
   bad_item,        ///< the item cannot be sent (node-relative without a node-ID, overflow ...)
 };
 
+/// A short, stable text for a configuration failure (for reports; the texts do not change
+/// between versions).
+[[nodiscard]] constexpr std::string_view to_string(config_failure f) noexcept {
+  switch (f) {
+  case config_failure::transfer_failed: return "transfer failed";
+  case config_failure::verify_mismatch: return "read-back differs";
+  case config_failure::bad_item: return "item cannot be sent";
+  }
+  return "?";
+}
+
 /// What failed: the item (position, object, name), why, and how often it was tried.
 struct config_error {
   config_failure failure = config_failure::transfer_failed;
@@ -80,11 +92,26 @@ public:
                                              std::uint8_t node = 0) noexcept {
     if (busy() || client_->busy()) return errc::bad_state;
     config_ = c;
-    node_ = node != 0U ? node : c.node_id;
-    at_ = 0;
-    error_.reset();
-    out_count_ = 0;
-    return next_item(now);
+    dcf_ = {};
+    load_ = &configurator::load_item;
+    count_ = c.items.size();
+    return begin(now, node != 0U ? node : c.node_id);
+  }
+  /// Start downloading the entries of a concise DCF (object 1F22h format, config.hpp) in order,
+  /// with the same retries, timeout and verify; a failed entry is named by its position and
+  /// address (a concise DCF has no names). The whole DCF is checked before anything is sent;
+  /// `dcf` must stay valid while the configurator runs. Errors: bad_state (running, or the
+  /// client is busy), truncated / bad_length (check_concise_dcf).
+  [[nodiscard]] constexpr result<step> start_concise(std::span<const std::uint8_t> dcf,
+                                                     std::uint32_t now) noexcept {
+    if (busy() || client_->busy()) return errc::bad_state;
+    FIELDCODEC_TRY(const std::uint32_t n, check_concise_dcf(dcf));
+    config_ = {};
+    dcf_ = dcf;
+    dcf_at_ = 4;
+    load_ = &configurator::load_entry;
+    count_ = n;
+    return begin(now, 0);
   }
 
   /// Consume a received frame (frames of other services are ignored).
@@ -146,7 +173,27 @@ private:
     if (opt_.timeout_ms != 0U) deadline_ = now + opt_.timeout_ms;
   }
 
-  [[nodiscard]] constexpr const config_item &item() const noexcept { return config_.items[at_]; }
+  [[nodiscard]] constexpr const config_item &item() const noexcept { return current_; }
+  // The item at at_ into current_: from the list, or the next entry of the concise DCF (only a
+  // program that runs one links its reader).
+  [[nodiscard]] constexpr bool load_item() noexcept {
+    current_ = config_.items[at_];
+    return true;
+  }
+  [[nodiscard]] constexpr bool load_entry() noexcept {
+    const auto e = read_concise_entry(dcf_, dcf_at_); // checked when it started
+    if (!e) return false;
+    current_ = {e.value().address, e.value().value, 0, {}};
+    return true;
+  }
+
+  [[nodiscard]] constexpr step begin(std::uint32_t now, std::uint8_t node) noexcept {
+    node_ = node;
+    at_ = 0;
+    error_.reset();
+    out_count_ = 0;
+    return next_item(now);
+  }
 
   [[nodiscard]] constexpr step fail(config_failure f, errc e,
                                     canopen::sdo::abort_code code) noexcept {
@@ -158,13 +205,16 @@ private:
   }
 
   [[nodiscard]] constexpr step next_item(std::uint32_t now) noexcept {
-    if (at_ >= config_.items.size()) {
+    if (at_ >= count_) {
       state_ = config_state::done;
       deadline_.reset();
       return make();
     }
     attempts_ = 0;
     state_ = config_state::writing;
+    if (!(this->*load_)()) {
+      return fail(config_failure::bad_item, errc::truncated, canopen::sdo::abort_code::none);
+    }
     auto v = resolved_value(item(), node_, scratch_);
     if (!v) return fail(config_failure::bad_item, v.error(), canopen::sdo::abort_code::none);
     value_ = v.value();
@@ -231,6 +281,11 @@ private:
   canopen::sdo::client *client_;
   config_options opt_;
   configuration config_{};
+  std::span<const std::uint8_t> dcf_{}; ///< a concise DCF runs (else config_.items)
+  std::size_t dcf_at_ = 0;              ///< offset of its next entry
+  std::size_t count_ = 0;               ///< items or entries
+  config_item current_{};
+  bool (configurator::*load_)() = &configurator::load_item;
   std::uint8_t node_ = 0;
   std::size_t at_ = 0;
   std::uint8_t attempts_ = 0;

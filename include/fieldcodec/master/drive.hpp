@@ -2,7 +2,7 @@
 // task with the statusword it received (TPDO) and returning the controlword to send (RPDO), the
 // target value of the active mode and, when needed, one SDO transfer for the caller to run.
 //
-//   master::drive axis({.vendor = master::drive_vendor::xenax});
+//   master::drive axis({.profile = profile});   // ds402::cia402_profile or a vendor's
 //   (void)axis.enable(now);
 //   every cycle:
 //     auto out = axis.cycle(statusword, now, mode_display);   // mode_display: 6061h if mapped
@@ -12,6 +12,9 @@
 //
 // Pure: no heap, no I/O, no clock (now is the caller's millisecond counter, wrap-around safe).
 // It knows words, not frames: the caller's PDO mapping puts them on the bus (docs/master.md).
+// It knows CiA 402 and no vendor: what a drive family does beyond CiA 402 (bits a cyclic mode
+// needs, manufacturer motions such as a jog) comes in as a ds402::drive_profile the vendor's
+// folder supplies; the default is plain CiA 402.
 #pragma once
 
 #include <fieldcodec/canopen/emcy.hpp>
@@ -19,13 +22,11 @@
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/ds402/controlword.hpp>
+#include <fieldcodec/ds402/drive_profile.hpp>
 #include <fieldcodec/ds402/modes.hpp>
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/ds402/statusword.hpp>
 #include <fieldcodec/od/address.hpp>
-#include <fieldcodec/xenax/error_code.hpp>
-#include <fieldcodec/xenax/homing.hpp>
-#include <fieldcodec/xenax/modes.hpp>
 
 #include <array>
 #include <cstddef>
@@ -83,8 +84,9 @@ enum class drive_state : std::uint8_t {
   switching_mode, ///< 6060h written, waiting for 6061h
   moving,         ///< profile position: set-point handshake, then until target reached
   homing,         ///< homing started, until attained or error
-  running,        ///< profile velocity / cyclic synchronous / jog: runs until told otherwise
-  stopping_jog,   ///< jog halted, waiting for speed zero
+  running,        ///< profile velocity / cyclic synchronous / a manufacturer motion: runs
+                  ///< until told otherwise
+  stopping,       ///< a manufacturer motion stopped, waiting for its stopped bits
   fault,          ///< the drive is in fault (error() says which, 603Fh and the EMCY)
   failed,         ///< the last command failed (error() says why); the drive may still be enabled
 };
@@ -101,7 +103,7 @@ enum class drive_state : std::uint8_t {
   case drive_state::moving: return "moving";
   case drive_state::homing: return "homing";
   case drive_state::running: return "running";
-  case drive_state::stopping_jog: return "stopping jog";
+  case drive_state::stopping: return "stopping";
   case drive_state::fault: return "fault";
   case drive_state::failed: return "failed";
   }
@@ -125,6 +127,7 @@ enum class drive_failure : std::uint8_t {
   homing_timeout,             ///< homing not attained in time
   left_operation_enabled,     ///< the drive left operation enabled without a fault
   sdo_failed,                 ///< an SDO transfer the machine asked for failed
+  stop_timeout,               ///< a manufacturer motion did not show its stopped bits in time
 };
 
 [[nodiscard]] constexpr std::string_view to_string(drive_failure f) noexcept {
@@ -144,6 +147,7 @@ enum class drive_failure : std::uint8_t {
   case drive_failure::homing_timeout: return "homing not attained in time";
   case drive_failure::left_operation_enabled: return "drive left operation enabled";
   case drive_failure::sdo_failed: return "SDO transfer failed";
+  case drive_failure::stop_timeout: return "motion not stopped in time";
   }
   return "?";
 }
@@ -154,29 +158,20 @@ struct drive_error {
   errc code = errc::bad_state;  ///< timeout for the timeouts, aborted/... for SDO failures
   ds402::state seen{};          ///< the drive's state when it happened
   std::uint16_t statusword = 0; ///< the statusword when it happened
-  std::uint16_t error_code = 0; ///< 603Fh (fault; 0 until read)
+  std::uint16_t error_code = 0; ///< 603Fh (fault; 0 until read; a manufacturer-specific code
+                                ///< is decoded by the vendor's module)
   bool error_code_read = false; ///< 603Fh was read
   std::optional<canopen::emcy::message> emcy{};      ///< the EMCY that came with a fault
   std::optional<canopen::sdo::transfer_error> sdo{}; ///< sdo_failed: the transfer's error
   std::int8_t mode = 0;                              ///< mode failures: the mode 6061h showed
 
   [[nodiscard]] constexpr bool is(errc e) const noexcept { return code == e; }
-  /// XENAX: the error number in 603Fh (0xFF00 + n). Errors: out_of_range (not a XENAX code),
-  /// bad_state (603Fh not read).
-  [[nodiscard]] constexpr result<std::uint8_t> xenax_error() const noexcept {
-    if (!error_code_read) return errc::bad_state;
-    return xenax::decode_error_code(error_code);
-  }
-};
-
-/// Which vendor's mode-specific rules apply.
-enum class drive_vendor : std::uint8_t {
-  cia402, ///< CiA 402 as written
-  xenax,  ///< Jenny Science XENAX: jog mode −1, CSP needs bit 4 (0x1F), 603Fh = 0xFF00 + n
 };
 
 struct drive_options {
-  drive_vendor vendor = drive_vendor::cia402;
+  /// What the drive does beyond CiA 402 (ds402/drive_profile.hpp): plain CiA 402 by default; a
+  /// vendor's folder supplies its own.
+  ds402::drive_profile profile = ds402::cia402_profile;
   std::uint32_t enable_timeout_ms = 1000;
   std::uint32_t disable_timeout_ms = 1000;
   std::uint32_t reset_timeout_ms = 500; ///< per attempt, from the rising edge
@@ -260,10 +255,9 @@ public:
             purpose::write_mode);
     return {};
   }
-  [[nodiscard]] constexpr status switch_mode(ds402::mode m, std::uint32_t now) noexcept {
-    return switch_mode(static_cast<std::int8_t>(m), now);
-  }
-  [[nodiscard]] constexpr status switch_mode(xenax::mode m, std::uint32_t now) noexcept {
+  /// The same with a mode enum: `ds402::mode` or a vendor's (any scoped enum over int8_t).
+  template <ds402::int8_enum Mode>
+  [[nodiscard]] constexpr status switch_mode(Mode m, std::uint32_t now) noexcept {
     return switch_mode(static_cast<std::int8_t>(m), now);
   }
 
@@ -319,48 +313,55 @@ public:
     }
     return {};
   }
-  [[nodiscard]] constexpr status home(std::uint32_t now, xenax::reference_method m) noexcept {
-    return home(now, static_cast<std::int8_t>(m));
+  /// The same with a vendor's method enum (any scoped enum over int8_t).
+  template <ds402::int8_enum Method>
+  [[nodiscard]] constexpr status home(std::uint32_t now, Method m) noexcept {
+    return home(now, std::optional<std::int8_t>(static_cast<std::int8_t>(m)));
   }
 
   /// Cyclic synchronous position / velocity / torque: start sending `target` every cycle (set
-  /// a new one with set_target). XENAX CSP also needs bit 4 (0x1F). Errors: bad_state (not
-  /// enabled in a cyclic synchronous mode).
+  /// a new one with set_target), with the bits the profile asks for in that mode (e.g. CSP with
+  /// bit 4, 0x1F). Errors: bad_state (not enabled in a cyclic synchronous mode).
   [[nodiscard]] constexpr status start_cyclic(std::int32_t target, std::uint32_t now) noexcept {
     if (state_ != drive_state::enabled || !mode_ ||
         (*mode_ != 8 && *mode_ != 9 && *mode_ != 10 && *mode_ != 11)) {
       return errc::bad_state;
     }
     target_ = target;
-    mode_bits_ =
-        (opt_.vendor == drive_vendor::xenax && *mode_ == 8) ? xenax::cw::start : std::uint16_t{0};
+    mode_bits_ = opt_.profile.cyclic_bits_for(*mode_);
     start(drive_state::running, now, 0);
     return {};
   }
   /// The target of this cycle (cyclic synchronous modes; also updates pv without SDO).
   constexpr void set_target(std::int32_t target) noexcept { target_ = target; }
 
-  /// XENAX jog (mode −1): 0x1F negative / 0x5F positive. Errors: bad_state (not a XENAX, not
-  /// enabled in jog mode).
-  [[nodiscard]] constexpr status jog(xenax::jog_direction d, std::uint32_t now) noexcept {
-    if (opt_.vendor != drive_vendor::xenax || !ready_for_motion(std::int8_t{-1})) {
-      return errc::bad_state;
-    }
-    mode_bits_ = static_cast<std::uint16_t>(xenax::jog_start(d) & ~ds402::cw::command_mask);
+  /// A motion of a manufacturer-specific mode the profile offers (a jog): its start bits
+  /// until stop_motion(). Errors: invalid_argument (not one of the profile's motions), bad_state
+  /// (not enabled in the motion's mode).
+  [[nodiscard]] constexpr status start_motion(const ds402::manufacturer_motion &m,
+                                              std::uint32_t now) noexcept {
+    if (!opt_.profile.offers(m) || !m.valid()) return errc::invalid_argument;
+    if (!ready_for_motion(m.mode)) return errc::bad_state;
     start(drive_state::running, now, 0);
+    motion_ = m;
+    mode_bits_ = m.start_bits;
     return {};
   }
-  /// XENAX jog: stop (0x11F) until speed zero (bit 12), then back to enabled.
-  /// Errors: bad_state (not jogging).
-  [[nodiscard]] constexpr status stop_jog(std::uint32_t now) noexcept {
-    if (state_ != drive_state::running || mode_ != std::int8_t{-1}) return errc::bad_state;
-    mode_bits_ = static_cast<std::uint16_t>(xenax::jog_stop & ~ds402::cw::command_mask);
-    start(drive_state::stopping_jog, now, opt_.disable_timeout_ms);
+  /// Stop the manufacturer motion: its stop bits until the statusword shows its stopped bits,
+  /// then back to enabled (`stop_timeout` after disable_timeout_ms). Errors: bad_state (no
+  /// manufacturer motion runs).
+  [[nodiscard]] constexpr status stop_motion(std::uint32_t now) noexcept {
+    if (state_ != drive_state::running || !motion_) return errc::bad_state;
+    mode_bits_ = motion_->stop_bits;
+    start(drive_state::stopping, now, opt_.disable_timeout_ms);
     return {};
   }
-  /// Leave pv / cyclic mode running: back to enabled (mode bits cleared, halt untouched).
+  /// Leave pv / cyclic mode / a manufacturer motion running: back to enabled at once (mode bits
+  /// cleared, halt untouched). stop_motion() stops a manufacturer motion the profile's way and
+  /// waits until it has stopped.
   constexpr void stop_running() noexcept {
     if (state_ == drive_state::running) {
+      motion_.reset();
       mode_bits_ = 0;
       state_ = drive_state::enabled;
       deadline_.reset();
@@ -401,7 +402,7 @@ public:
     case drive_state::moving: moving(now); break;
     case drive_state::homing: homing(now); break;
     case drive_state::running: check_enabled(); break;
-    case drive_state::stopping_jog: stopping_jog(now); break;
+    case drive_state::stopping: stopping(now); break;
     }
     return make();
   }
@@ -463,7 +464,7 @@ public:
     case drive_state::switching_mode:
     case drive_state::moving:
     case drive_state::homing:
-    case drive_state::stopping_jog: return true;
+    case drive_state::stopping: return true;
     default: return false;
     }
   }
@@ -492,7 +493,7 @@ private:
   }
   [[nodiscard]] constexpr bool in_motion() const noexcept {
     return state_ == drive_state::moving || state_ == drive_state::homing ||
-           state_ == drive_state::running || state_ == drive_state::stopping_jog;
+           state_ == drive_state::running || state_ == drive_state::stopping;
   }
   [[nodiscard]] constexpr bool ready_for_motion(std::int8_t m) const noexcept {
     return state_ == drive_state::enabled && seen_ == ds402::state::operation_enabled &&
@@ -506,6 +507,7 @@ private:
   }
 
   constexpr void start(drive_state s, std::uint32_t now, std::uint32_t timeout_ms) noexcept {
+    if (s != drive_state::stopping) motion_.reset(); // start_motion sets it after this
     state_ = s;
     error_.reset();
     started_ = now;
@@ -516,21 +518,23 @@ private:
     pending_ = r;
     pending_purpose_ = p;
   }
-  constexpr void fail(drive_failure f, errc e) noexcept {
+  /// The machine stops in `s` with the error `f`: what the drive showed, no mode bits, no
+  /// motion, no deadline.
+  constexpr void stop_with(drive_state s, drive_failure f, errc e) noexcept {
     error_ = drive_error{f, e, seen_, statusword_, 0, false, {}, {}, mode_.value_or(0)};
-    state_ = drive_state::failed;
-    hold_command(); // already in the cycle that fails: not the walk's last command (F26)
+    state_ = s;
     mode_bits_ = 0;
+    motion_.reset();
     deadline_.reset();
+  }
+  constexpr void fail(drive_failure f, errc e) noexcept {
+    stop_with(drive_state::failed, f, e);
+    hold_command(); // already in the cycle that fails: not the walk's last command (F26)
     if (pending_purpose_ != purpose::read_error_code) pending_.reset();
   }
   constexpr void enter_fault() noexcept {
-    error_ =
-        drive_error{drive_failure::fault, errc::bad_state, seen_, statusword_, 0, false, emcy_, {},
-                    mode_.value_or(0)};
-    state_ = drive_state::fault;
-    mode_bits_ = 0;
-    deadline_.reset();
+    stop_with(drive_state::fault, drive_failure::fault, errc::bad_state);
+    error_->emcy = emcy_;
     if (opt_.read_error_code) {
       if (outstanding_) {
         error_read_queued_ = true;
@@ -725,15 +729,16 @@ private:
     }
     if (reached(now)) fail(drive_failure::homing_timeout, errc::timeout);
   }
-  constexpr void stopping_jog(std::uint32_t now) noexcept {
+  constexpr void stopping(std::uint32_t now) noexcept {
     check_enabled();
-    if (state_ != drive_state::stopping_jog) return;
-    if ((statusword_ & xenax::sw::bit12) != 0U) { // speed zero
+    if (state_ != drive_state::stopping) return;
+    if ((statusword_ & motion_->stopped_bits) == motion_->stopped_bits) {
       state_ = drive_state::enabled;
+      motion_.reset();
       mode_bits_ = 0;
       deadline_.reset();
     } else if (reached(now)) {
-      fail(drive_failure::quick_stop_timeout, errc::timeout);
+      fail(drive_failure::stop_timeout, errc::timeout);
     }
   }
 
@@ -751,7 +756,7 @@ private:
       pending_.reset();
     }
     s.state = state_;
-    s.deadline = deadline_;
+    if (deadline_) s.deadline = *deadline_; // (a disengaged optional is not copied: constexpr)
     return s;
   }
 
@@ -775,6 +780,7 @@ private:
   bool mode_from_pdo_ = false;
   std::uint32_t started_ = 0;
   std::optional<std::uint32_t> deadline_{};
+  std::optional<ds402::manufacturer_motion> motion_{}; ///< running or stopping
   std::optional<drive_error> error_{};
   std::optional<canopen::emcy::message> emcy_{};
   std::optional<sdo_request> pending_{};

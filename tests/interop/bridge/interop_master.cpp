@@ -5,9 +5,9 @@
 //
 // usage: interop_master xenax NODE
 //
-// Standard input: candump-style frames (ID#DATA) from the bus, and "!run" to start. Standard
-// output: frames to the bus, then one line "= ok" or "= FAILED <step>: <why>". Progress lines
-// ("ok  <step>: ...") go to standard error.
+// Standard input: candump-style frames (ID#DATA) from the bus, and commands ("!run", "!boot302
+// ...", "!quit"). Standard output: frames to the bus, and after each command one line "= ok" or
+// "= FAILED <step>: <why>". Progress lines ("ok  <step>: ...") go to standard error.
 //
 // What runs, after "!run":
 //   1. configure   a configurator (verify on) writes 6081h = 50000, 6083h = 200000 and the
@@ -20,6 +20,12 @@
 //                  handshake in the words, until target reached.
 // The cyclic task runs every 10 ms; every step has a deadline (at most ~17 s in all when every
 // step runs into its own).
+//
+// "!boot302 ASSIGNMENT CONSUMER DEVTYPE VENDOR PRODUCT REVISION SERIAL SOFTWARE DATE TIME
+// RESTORE DCF" (hex numbers; DCF: the concise DCF in hex, "-" for none) boots the node with
+// master::boot from these CiA 302 objects (1F81h, the 1016h consumer time, 1F84h..1F88h, 1F55h,
+// 1F26h, 1F27h, 1F8Ah, 1F22h) and answers "= ok <status>" (booted, or L: initially
+// operational) or "= FAILED <status>: <failure> ..." with the CiA 302-2 letter.
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
@@ -27,9 +33,11 @@
 #include <fieldcodec/ds402/statusword.hpp>
 #include <fieldcodec/host/candump.hpp>
 #include <fieldcodec/host/frame_record.hpp>
+#include <fieldcodec/master/boot.hpp>
 #include <fieldcodec/master/config.hpp>
 #include <fieldcodec/master/configurator.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 #include <fieldcodec/xenax/modes.hpp>
 
 #include <poll.h>
@@ -42,7 +50,9 @@
 #include <cstdlib>
 #include <functional>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -92,10 +102,12 @@ void transmit_all(const Frames &fs) {
   for (const co::can_frame f : fs) transmit(f);
 }
 
-/// Reads standard input for at most `wait_ms`: frames go to `on_frame`; "!run" sets `run`.
-/// Returns false when standard input is closed or unreadable.
-bool read_input(int wait_ms, const std::function<void(const co::can_frame &)> &on_frame, bool &run,
-                std::string &pending) {
+/// Reads standard input for at most `wait_ms`: frames go to `on_frame`; a command line ("!...",
+/// not "!quit") goes to `command` when that is empty (the peer sends one command at a time and
+/// waits for its answer). Returns false when standard input is closed or unreadable, or on
+/// "!quit".
+bool read_input(int wait_ms, const std::function<void(const co::can_frame &)> &on_frame,
+                std::string &command, std::string &pending) {
   pollfd p{STDIN_FILENO, POLLIN, 0};
   const int ready = ::poll(&p, 1, wait_ms);
   if (ready < 0) return false;
@@ -108,11 +120,11 @@ bool read_input(int wait_ms, const std::function<void(const co::can_frame &)> &o
   while ((eol = pending.find('\n')) != std::string::npos) {
     const std::string line = pending.substr(0, eol);
     pending.erase(0, eol + 1U);
-    if (line == "!run") {
-      run = true;
-    } else if (line == "!quit") {
+    if (line == "!quit") {
       return false;
-    } else if (!line.empty() && line[0] != '!') {
+    } else if (!line.empty() && line[0] == '!') {
+      if (command.empty()) command = line;
+    } else if (!line.empty()) {
       auto r = fieldcodec::host::candump::parse_frame(line);
       if (!r) continue;
       auto f = fieldcodec::host::to_canopen(r.value());
@@ -131,7 +143,7 @@ public:
   std::optional<std::string> run() {
     if (auto e = configure()) return e;
     if (auto e = read_statusword()) return e;
-    master::drive axis({.vendor = master::drive_vendor::xenax,
+    master::drive axis({.profile = fieldcodec::xenax::profile,
                         .enable_timeout_ms = 2000,
                         .mode_timeout_ms = 2000,
                         .set_point_timeout_ms = 2000,
@@ -165,6 +177,54 @@ public:
     return std::nullopt;
   }
 
+  /// "!boot302 ...": master::boot from CiA 302 objects; the failure, or nothing.
+  std::optional<std::string> boot302(const std::string &command, std::string &status) {
+    std::istringstream in(command.substr(std::string("!boot302").size()));
+    std::vector<std::uint32_t> v;
+    std::string word;
+    for (int i = 0; i < 11 && in >> word; ++i)
+      v.push_back(static_cast<std::uint32_t>(std::stoul(word, nullptr, 16)));
+    std::string hex;
+    if (v.size() != 11U || !(in >> hex)) return "boot302: expected 11 numbers and the concise DCF";
+    std::vector<std::uint8_t> dcf;
+    for (std::size_t i = 0; hex != "-" && i + 1U < hex.size(); i += 2U) {
+      dcf.push_back(static_cast<std::uint8_t>(std::stoul(hex.substr(i, 2), nullptr, 16)));
+    }
+    master::slave_objects o;
+    o.assignment = v[0];
+    o.consumer_time_ms = static_cast<std::uint16_t>(v[1]);
+    o.expected = {v[2], v[3], v[4], v[5], v[6]};
+    o.software_version = v[7];
+    o.configuration_date = v[8];
+    o.configuration_time = v[9];
+    o.restore_sub = static_cast<std::uint8_t>(v[10]);
+    o.concise_dcf = dcf;
+    master::boot b(node_, client_,
+                   {.boot_timeout_ms = 2000,
+                    .read_retries = 2,
+                    .config = {.retries = 1, .timeout_ms = 1000, .verify = true}});
+    auto s = b.start(o, now_ms());
+    if (!s) return "boot302: start refused: " + std::string(fieldcodec::to_string(s.error()));
+    transmit_all(s.value().send);
+    if (auto e = run_machine(b, "boot302", 10000)) return e;
+    status = std::string(master::to_string(b.status()));
+    if (const auto e = b.error()) {
+      std::string why = status + ": " + std::string(master::to_string(e->failure)) + " (" +
+                        std::string(fieldcodec::to_string(e->code));
+      if (e->failure == master::boot_failure::identity_mismatch) {
+        char x[64];
+        std::snprintf(x, sizeof x, ", %s expected %08X actual %08X",
+                      std::string(master::to_string(e->field)).c_str(),
+                      static_cast<unsigned>(e->expected), static_cast<unsigned>(e->actual));
+        why += x;
+      }
+      if (e->config) why += ", entry " + std::to_string(e->config->item);
+      return why + ")";
+    }
+    progress("boot302: " + status + " (" + std::to_string(dcf.size()) + " bytes of concise DCF)");
+    return std::nullopt;
+  }
+
   bool stopped() const { return stopped_; }
 
 private:
@@ -174,9 +234,27 @@ private:
     return b;
   }
 
+  /// Feeds `m` (a machine with on_frame, poll and busy) the bus and its deadlines until it ends;
+  /// the failure when it does not end within `limit_ms` or the peer goes.
+  template <class Machine>
+  std::optional<std::string> run_machine(Machine &m, const std::string &step,
+                                         std::uint32_t limit_ms) {
+    const auto deadline = now_ms() + limit_ms;
+    while (m.busy()) {
+      if (now_ms() - deadline < 0x80000000U) {
+        return step + ": no end within " + std::to_string(limit_ms) + " ms";
+      }
+      if (!wait(5, [&](const co::can_frame &f) { transmit_all(m.on_frame(f, now_ms()).send); })) {
+        return step + ": the peer has gone";
+      }
+      transmit_all(m.poll(now_ms()).send);
+    }
+    return std::nullopt;
+  }
+
   /// Waits for input up to `wait_ms`; false when the peer has gone.
   bool wait(int wait_ms, const std::function<void(const co::can_frame &)> &on_frame) {
-    bool ignored = false;
+    std::string ignored; // the peer sends no command while one runs
     if (!read_input(wait_ms, on_frame, ignored, pending_)) {
       stopped_ = true;
       return false;
@@ -190,13 +268,7 @@ private:
     auto s = cfg.start(c, now_ms());
     if (!s) return "configure: start refused: " + std::string(fieldcodec::to_string(s.error()));
     transmit_all(s.value().send);
-    const auto deadline = now_ms() + 3000U;
-    while (cfg.busy()) {
-      if (now_ms() - deadline < 0x80000000U) return "configure: no end within 3 s";
-      if (!wait(5, [&](const co::can_frame &f) { transmit_all(cfg.on_frame(f, now_ms()).send); }))
-        return "configure: the peer has gone";
-      transmit_all(cfg.poll(now_ms()).send);
-    }
+    if (auto e = run_machine(cfg, "configure", 3000)) return e;
     if (cfg.state() != master::config_state::done) {
       const auto e = cfg.error().value_or(master::config_error{});
       char abort[12];
@@ -214,14 +286,7 @@ private:
     auto s = client_.upload({0x6041, 0}, buf, now_ms());
     if (!s) return "statusword: upload refused";
     transmit_all(s.value().send);
-    const auto deadline = now_ms() + 2000U;
-    while (client_.busy()) {
-      if (now_ms() - deadline < 0x80000000U) return "statusword: no answer within 2 s";
-      if (!wait(5,
-                [&](const co::can_frame &f) { transmit_all(client_.on_frame(f, now_ms()).send); }))
-        return "statusword: the peer has gone";
-      transmit_all(client_.poll(now_ms()).send);
-    }
+    if (auto e = run_machine(client_, "statusword", 2000)) return e;
     if (client_.state() != sdo::transfer_state::done || client_.received().size() != 2U) {
       return "statusword: the upload of 6041h failed";
     }
@@ -306,21 +371,28 @@ int main(int argc, char **argv) {
   }
   const auto node = static_cast<std::uint8_t>(std::atoi(argv[2]));
   now_ms();
-  // Wait for "!run" (frames before it are not ours).
+  // One command after the other until "!quit" (frames between commands are not ours); the
+  // bridge stays on the bus meanwhile (the peer may still read the drive's data).
   std::string pending;
-  bool run = false;
-  while (!run) {
-    if (!read_input(
-            100, [](const co::can_frame &) {}, run, pending))
-      return 2;
-  }
   session s(node, pending);
-  const auto failure = s.run();
-  put_line(failure ? "= FAILED " + *failure : "= ok");
-  // Stay on the bus until the peer says !quit (it may still read the drive's data).
-  bool ignored = false;
-  while (!s.stopped() && read_input(
-                             100, [](const co::can_frame &) {}, ignored, pending)) {
+  bool failed = false;
+  while (!s.stopped()) {
+    std::string command;
+    if (!read_input(
+            100, [](const co::can_frame &) {}, command, pending))
+      break;
+    if (command.empty()) continue;
+    std::optional<std::string> failure;
+    std::string status;
+    if (command == "!run") {
+      failure = s.run();
+    } else if (command.rfind("!boot302 ", 0) == 0) {
+      failure = s.boot302(command, status);
+    } else {
+      failure = "unknown command '" + command + "'";
+    }
+    failed = failed || failure.has_value();
+    put_line(failure ? "= FAILED " + *failure : "= ok " + status);
   }
-  return failure ? 1 : 0;
+  return failed ? 1 : 0;
 }

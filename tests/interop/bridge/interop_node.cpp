@@ -464,10 +464,10 @@ constexpr co::node::capacity capacity() {
 
 template <const od::dictionary &Dict, std::size_t N>
 int serve(std::uint8_t node) {
-  static constexpr auto layout = sdo::make_layout<N>(Dict);
+  static constexpr auto layout = co::make_layout<N>(Dict);
   static std::vector<std::uint8_t> storage(layout.storage_size());
   static std::vector<std::uint8_t> staging(65536);
-  static sdo::dictionary_store<> store{Dict, layout, storage, staging};
+  static co::dictionary_store<> store{Dict, layout, storage, staging};
   if (auto s = store.init_defaults(node); !s) {
     std::fprintf(stderr, "interop_node: init_defaults: %s\n",
                  std::string(fieldcodec::to_string(s.error())).c_str());

@@ -10,6 +10,8 @@
 
 namespace fieldcodec::dictionaries::xenax_axis::config {
 
+namespace master = ::fieldcodec::master;
+
 /// The DCF's node-ID ([DeviceComissioning] NodeID; 0: none).
 inline constexpr std::uint8_t node_id = 5;
 
@@ -30,7 +32,7 @@ inline constexpr master::config_item items[] = {
     {{0x1800, 0x01}, v0, master::config_flag::node_relative, "Transmit PDO Comm Param 1: COB-ID"},
     {{0x1800, 0x02}, v1, 0, "Transmit PDO Comm Param 1: Transmission Type"},
     {{0x1A00, 0x00}, v2, 0, "Transmit PDO Mapping Param 1: Number of mapped objects"},
-    {{0x1A00, 0x01}, v3, 0, "Transmit PDO Mapping Param 1: Mapped object 1"},
+    {{0x1A00, 0x01}, v3, 0, "Transmit PDO Mapping Param 1: entry 1 = 6064h sub 0, 32 bits"},
     {{0x1A00, 0x00}, v4, 0, "Transmit PDO Mapping Param 1: Number of mapped objects"},
     {{0x1800, 0x01}, v5, master::config_flag::node_relative, "Transmit PDO Comm Param 1: COB-ID"},
     {{0x6065, 0x00}, v6, 0, "Following Position Error Window"},

@@ -167,12 +167,12 @@ inline constexpr std::uint32_t id = 0x0000'07FFU;      ///< 11-bit CAN-ID
 // ---------------------------------------------------------------------------------------------
 // The store of a node
 
-/// What the node (node::device) needs of a store: the sdo::object_store parts interface, plus
+/// What the node (node::device) needs of a store: the canopen::object_store parts interface, plus
 /// the application's own write (`set`: no access check, no write hook), the current value, the
 /// dictionary, and restoring the power-on values of a range of objects (NMT resets).
-/// sdo::dictionary_store is one.
+/// canopen::dictionary_store is one.
 template <class S>
-concept node_store = sdo::object_store<S> &&
+concept node_store = canopen::object_store<S> &&
     requires(S &s, const S &cs, od::address a, std::span<const std::uint8_t> v, std::uint16_t i) {
   { s.set(a, v) } -> std::same_as<abort_code>;
   { cs.value(a) } -> std::same_as<result<std::span<const std::uint8_t>>>;
@@ -182,7 +182,7 @@ concept node_store = sdo::object_store<S> &&
 
 /// Read a value of at most 4 bytes through a store's parts interface (nullopt when the object
 /// is missing, unreadable or longer).
-template <sdo::object_store Store>
+template <canopen::object_store Store>
 [[nodiscard]] constexpr std::optional<std::uint32_t> read_u32(const Store &s,
                                                               od::address a) noexcept {
   std::array<std::uint8_t, 4> b{};

@@ -4,9 +4,9 @@
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
-//   sdo::dictionary_store<> store{dict, layout, storage};
+//   canopen::dictionary_store<> store{dict, layout, storage};
 //   (void)store.init_defaults(5);
-//   node::device<sdo::dictionary_store<>, node::capacity_for(dict)> dev(store, 5);
+//   node::device<canopen::dictionary_store<>, node::capacity_for(dict)> dev(store, 5);
 //   send(dev.start(now).value());                   // boot-up, pre-operational
 //   on every received frame: send(dev.on_frame(frame, now));
 //   or several (a receive FIFO): auto r = dev.on_frames(rx, now); send(r.last);
@@ -35,7 +35,7 @@
 // NMT: frames are taken per CiA 301 Table 48 (node::allowed): in stopped only NMT and node
 // guarding are answered and the heartbeat is produced; SDO transfers of the servers end
 // silently on stop. Reset communication restores the writable entries of 1000h–1FFFh to their
-// defaults (sdo::dictionary_store::restore_defaults), forgets errors and history, reloads every
+// defaults (canopen::dictionary_store::restore_defaults), forgets errors and history, reloads every
 // service and sends the boot-up message; reset node also restores 2000h–FFFFh first. Both are
 // reported as events so that the application re-applies what it keeps elsewhere.
 #pragma once
@@ -63,6 +63,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <type_traits>
 
 namespace fieldcodec::canopen::node {
@@ -148,6 +149,23 @@ struct event {
   friend constexpr bool operator==(const event &, const event &) = default;
 };
 
+/// A short, stable text for a device event (for logs; the texts do not change between
+/// versions). The event's details have their own: to_string(e.state), to_string(e.heartbeat.what),
+/// to_string(e.pdo.what).
+[[nodiscard]] constexpr std::string_view to_string(event::kind k) noexcept {
+  switch (k) {
+  case event::kind::nmt_state: return "NMT state changed";
+  case event::kind::reset_application: return "reset application";
+  case event::kind::reset_communication: return "reset communication";
+  case event::kind::heartbeat: return "heartbeat consumer event";
+  case event::kind::life_guard_lost: return "life guarding lost";
+  case event::kind::life_guard_resumed: return "life guarding resumed";
+  case event::kind::pdo: return "PDO event";
+  case event::kind::sync: return "SYNC received";
+  }
+  return "?";
+}
+
 /// The node-managed EMCY codes (see above).
 namespace managed_code {
 inline constexpr std::uint16_t guarding = 0x8130U;    ///< life guard or heartbeat error
@@ -193,21 +211,21 @@ public:
     // by position, when the store has positions (the PDO engine then looks each mapped object
     // up once): the same reads and the same writes through the device's rules
     [[nodiscard]] constexpr std::size_t
-    position(od::address a) const noexcept requires sdo::positioned_store<Store> {
+    position(od::address a) const noexcept requires canopen::positioned_store<Store> {
       return d_->store_->position(a);
     }
     [[nodiscard]] constexpr od::address
-    address_at(std::size_t at) const noexcept requires sdo::positioned_store<Store> {
+    address_at(std::size_t at) const noexcept requires canopen::positioned_store<Store> {
       return d_->store_->address_at(at);
     }
     [[nodiscard]] constexpr abort_code
     read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
-            std::size_t &total) const noexcept requires sdo::positioned_store<Store> {
+            std::size_t &total) const noexcept requires canopen::positioned_store<Store> {
       return d_->store_->read_at(at, offset, out, total);
     }
     [[nodiscard]] constexpr abort_code
     write_at(std::size_t at, std::size_t offset, std::span<const std::uint8_t> part,
-             bool last) noexcept requires sdo::positioned_store<Store> {
+             bool last) noexcept requires canopen::positioned_store<Store> {
       return d_->write_object(d_->store_->address_at(at), offset, part, last, at);
     }
     // plain values (the PDO engine then copies a TPDO's plain objects from the store's bytes):
@@ -215,12 +233,12 @@ public:
     // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
     // would skip
     [[nodiscard]] constexpr std::span<std::uint8_t>
-    plain_storage() noexcept requires sdo::plain_store<Store> {
+    plain_storage() noexcept requires canopen::plain_store<Store> {
       return d_->store_->plain_storage();
     }
-    [[nodiscard]] constexpr sdo::plain_slot
-    plain_at(std::size_t at) const noexcept requires sdo::plain_store<Store> {
-      sdo::plain_slot p = d_->store_->plain_at(at);
+    [[nodiscard]] constexpr canopen::plain_slot
+    plain_at(std::size_t at) const noexcept requires canopen::plain_store<Store> {
+      canopen::plain_slot p = d_->store_->plain_at(at);
       p.writable = false;
       return p;
     }
@@ -412,7 +430,7 @@ public:
   // ----- the application -------------------------------------------------------------------
 
   /// The application writes `value` to `a`: the store's checks except access, no write hook
-  /// (sdo::dictionary_store::set), plus the node's rules and effects for communication
+  /// (canopen::dictionary_store::set), plus the node's rules and effects for communication
   /// objects; event-driven TPDOs mapping `a` become due (poll() sends them). Times the node
   /// needs (e.g. a new heartbeat period) count from the `now` of the last call.
   [[nodiscard]] constexpr abort_code set(od::address a,
@@ -423,7 +441,7 @@ public:
     follow(a, value);
     return abort_code::none;
   }
-  /// The current value of `a` (see sdo::dictionary_store::value).
+  /// The current value of `a` (see canopen::dictionary_store::value).
   [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
   value(od::address a) const noexcept {
     return store_->value(a);
@@ -697,7 +715,7 @@ private:
   /// positioned store (the store's write_at is used), or no_position (its write).
   [[nodiscard]] constexpr abort_code write_object(od::address a, std::size_t offset,
                                                   std::span<const std::uint8_t> part, bool last,
-                                                  std::size_t at = sdo::no_position) noexcept {
+                                                  std::size_t at = canopen::no_position) noexcept {
     const bool whole = offset == 0U && last;
     if (whole) {
       if (const auto c = check(a, part); c != abort_code::none) return c;
@@ -708,9 +726,9 @@ private:
       return abort_code::length_too_high;
     }
     abort_code c = abort_code::none;
-    if constexpr (sdo::positioned_store<Store>) {
-      c = at == sdo::no_position ? store_->write(a, offset, part, last)
-                                 : store_->write_at(at, offset, part, last);
+    if constexpr (canopen::positioned_store<Store>) {
+      c = at == canopen::no_position ? store_->write(a, offset, part, last)
+                                     : store_->write_at(at, offset, part, last);
     } else {
       (void)at;
       c = store_->write(a, offset, part, last);

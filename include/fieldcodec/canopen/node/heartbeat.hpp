@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 namespace fieldcodec::canopen::node {
 
@@ -123,6 +124,19 @@ struct heartbeat_event {
   nmt::state s = nmt::state::boot_up;
   friend constexpr bool operator==(const heartbeat_event &, const heartbeat_event &) = default;
 };
+
+/// A short, stable text for a heartbeat consumer event (for logs; the texts do not change
+/// between versions).
+[[nodiscard]] constexpr std::string_view to_string(heartbeat_event::kind k) noexcept {
+  switch (k) {
+  case heartbeat_event::kind::started: return "heartbeat started";
+  case heartbeat_event::kind::state_changed: return "NMT state changed";
+  case heartbeat_event::kind::boot_up: return "boot-up";
+  case heartbeat_event::kind::lost: return "heartbeat lost";
+  case heartbeat_event::kind::resumed: return "heartbeat resumed";
+  }
+  return "?";
+}
 
 /// How many of the monitors are active and lost (the consumer's state in its steps).
 struct consumer_summary {

@@ -48,7 +48,7 @@ inline constexpr std::uint16_t count = 0x80U;
 
 /// `Crc`: how the servers compute the CRC of block transfers (core/crc.hpp; the clients always
 /// compute it without a table, so that they stay `sdo::client`).
-template <sdo::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer,
+template <canopen::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer,
           class Crc = crc::ccitt16_no_table>
 class sdo_channels {
   static_assert(Servers >= 1U, "a node has at least its default SDO server");
