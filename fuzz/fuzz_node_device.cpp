@@ -51,7 +51,7 @@ namespace {
 
 using fuzz_input::reader;
 
-using store_type = sdo::dictionary_store<>;
+using store_type = co::dictionary_store<>;
 
 /// The communication objects an SDO write targets (sub-indices beyond an object's own are
 /// refused by the store, which is worth feeding too).
@@ -67,7 +67,7 @@ template <class Device>
 class rig {
 public:
   template <std::size_t N>
-  rig(od::dictionary dict, const sdo::store_layout<N> &layout, std::span<std::uint8_t> storage,
+  rig(od::dictionary dict, const co::store_layout<N> &layout, std::span<std::uint8_t> storage,
       std::uint8_t n, node::options o)
       : dict_(dict), store_(dict, layout, storage), node_(n), dev_(init(store_, n), n, o) {
     // the entries that hold COB-IDs the node sends on: SDO server -> client, SDO client ->
@@ -289,7 +289,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   o.sdo_timeout_ms = 500;
   o.sdo.block = (data[0] & 4U) != 0U;
   if ((data[0] & 1U) == 0U) {
-    static constexpr auto layout = sdo::make_layout<xcan::dictionary.size()>(xcan::dictionary);
+    static constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
     static std::array<std::uint8_t, layout.storage_size()> storage;
     storage.fill(0);
     rig<node::device<store_type, node::capacity_for(xcan::dictionary)>> r(xcan::dictionary, layout,
@@ -297,7 +297,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     r.run(in);
   } else {
     static constexpr od::dictionary dict{io::entries};
-    static constexpr auto layout = sdo::make_layout<io::entries.size()>(dict);
+    static constexpr auto layout = co::make_layout<io::entries.size()>(dict);
     static std::array<std::uint8_t, layout.storage_size()> storage;
     storage.fill(0);
     rig<node::device<store_type, node::capacity_for(dict)>> r(dict, layout, storage, n, o);

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace sdo = fieldcodec::canopen::sdo;
+namespace canopen = fieldcodec::canopen;
 namespace od = fieldcodec::od;
 
 // F25 (fuzz_node_device, XENAX CAN dictionary): 5002h:01 (CO Clear Output Number, write-only,
@@ -46,9 +46,9 @@ TEST_CASE("fuzz F25: a value without a valid default starts within its limits") 
   }};
   static constexpr od::dictionary dict{entries};
   static_assert(dict.is_valid());
-  constexpr auto layout = sdo::make_layout<entries.size()>(dict);
+  constexpr auto layout = canopen::make_layout<entries.size()>(dict);
   std::vector<std::uint8_t> storage(layout.storage_size(), 0xEE);
-  sdo::dictionary_store<> s{dict, layout, storage};
+  canopen::dictionary_store<> s{dict, layout, storage};
   REQUIRE(s.init_defaults(5) == fieldcodec::status{});
   CHECK(s.value({0x2000, 0}).value()[0] == 1);     // the low limit, nearest to zero
   const auto v2001 = s.value({0x2001, 0}).value(); // the high limit, nearest to zero
