@@ -29,12 +29,14 @@
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/ds402/drive_profile.hpp>
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/ds402/statusword.hpp>
 #include <fieldcodec/master/boot.hpp>
 #include <fieldcodec/master/config.hpp>
 #include <fieldcodec/master/configurator.hpp>
 #include <fieldcodec/master/drive.hpp>
+#include <fieldcodec/xenax/drive_profile.hpp>
 
 #include <array>
 #include <cstddef>
@@ -276,7 +278,8 @@ bool holds(ds402::state s, ds402::command c) {
 
 void run_drive(reader &in, std::uint8_t options) {
   master::drive_options o;
-  o.vendor = (options & 1U) != 0U ? master::drive_vendor::xenax : master::drive_vendor::cia402;
+  // plain CiA 402, or the XENAX's profile (a CSP bit, jog as a manufacturer motion)
+  o.profile = (options & 1U) != 0U ? fieldcodec::xenax::profile : ds402::cia402_profile;
   o.target_over_sdo = (options & 2U) != 0U;
   o.read_error_code = (options & 4U) != 0U;
   o.reset_attempts = static_cast<std::uint8_t>(options >> 3U & 3U);
@@ -401,13 +404,14 @@ void run_drive(reader &in, std::uint8_t options) {
       d.on_emcy(m);
       break;
     }
-    default: { // XENAX jog
+    default: { // XENAX jog: a manufacturer motion (refused when the profile has none)
       if ((op & 0x10U) != 0U) {
-        (void)d.jog((op & 0x20U) != 0U ? fieldcodec::xenax::jog_direction::positive
-                                       : fieldcodec::xenax::jog_direction::negative,
-                    now);
+        (void)d.start_motion(
+            fieldcodec::xenax::jog((op & 0x20U) != 0U ? fieldcodec::xenax::jog_direction::positive
+                                                      : fieldcodec::xenax::jog_direction::negative),
+            now);
       } else {
-        (void)d.stop_jog(now);
+        (void)d.stop_motion(now);
       }
       break;
     }
