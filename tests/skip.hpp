@@ -1,8 +1,9 @@
 // A doctest case that cannot run on this machine (the python canopen peer, the EDS corpus in
-// ../shared, a vcan interface) says why with a "SKIPPED:" line and returns. Under CI=true it
-// fails with the same message instead, unless $FIELDCODEC_CI_MAY_SKIP lists its kind (.ci/run
-// keeps that list and the reasons): CI must not pass by skipping. The same rule for the tests
-// CTest runs through a script: tests/run_test.sh.
+// ../shared, a vcan interface) says why with a "SKIPPED (kind): why" line and returns
+// (tests/skip_report.py lists these lines after a run). Under CI=true it fails with the same
+// message instead, unless $FIELDCODEC_CI_MAY_SKIP lists its kind (.ci/run keeps that list and
+// the reasons): CI must not pass by skipping. The same rule for the tests CTest runs through a
+// script: tests/run_test.sh.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -38,9 +39,9 @@ inline constexpr std::string_view shared_dir = FIELDCODEC_SHARED_DIR;
 #define FIELDCODEC_SKIP_TEST(kind, why)                                                            \
   do {                                                                                             \
     if (::fieldcodec::test::may_skip(kind)) {                                                      \
-      MESSAGE("SKIPPED: " << why);                                                                 \
+      MESSAGE("SKIPPED (" << kind << "): " << why);                                                \
       return;                                                                                      \
     }                                                                                              \
-    FAIL("SKIPPED: " << why << " -- and CI=true: a test that needs '" << kind                      \
+    FAIL("SKIPPED (" << kind << "): " << why << " -- and CI=true: a test that needs '" << kind     \
                      << "' may not skip (FIELDCODEC_CI_MAY_SKIP does not list it)");               \
   } while (false)
