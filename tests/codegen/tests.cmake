@@ -18,13 +18,19 @@ add_test(NAME codegen_drift
 
 # Every real EDS/DCF of the shared corpus is read and its header compiles. Without the corpus
 # folder the test says so and is skipped (a failure under CI=true, tests/run_test.sh).
-set(FIELDCODEC_EDS_CORPUS "${FIELDCODEC_SHARED_DIR}/eds-corpus" CACHE PATH
-  "Folder of real EDS/DCF files for the corpus test")
-if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
+# FIELDCODEC_EDS_CORPUS names another folder; empty (the default) follows FIELDCODEC_SHARED_DIR,
+# also when that changes after the first configure.
+set(FIELDCODEC_EDS_CORPUS "" CACHE PATH
+  "Folder of real EDS/DCF files for the corpus test (empty: FIELDCODEC_SHARED_DIR/eds-corpus)")
+set(fieldcodec_eds_corpus "${FIELDCODEC_EDS_CORPUS}")
+if(NOT fieldcodec_eds_corpus)
+  set(fieldcodec_eds_corpus "${FIELDCODEC_SHARED_DIR}/eds-corpus")
+endif()
+if(EXISTS "${fieldcodec_eds_corpus}")
   add_test(NAME codegen_corpus
     COMMAND ${CMAKE_COMMAND}
       -DGEN=$<TARGET_FILE:fieldcodec-gen>
-      -DCORPUS=${FIELDCODEC_EDS_CORPUS}
+      -DCORPUS=${fieldcodec_eds_corpus}
       -DCXX=${CMAKE_CXX_COMPILER}
       -DINCLUDE_DIR=${PROJECT_SOURCE_DIR}/include
       -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_corpus
@@ -32,7 +38,7 @@ if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
 else()
   add_test(NAME codegen_corpus
     COMMAND sh ${PROJECT_SOURCE_DIR}/tests/run_test.sh corpus skip
-      "EDS corpus not found at ${FIELDCODEC_EDS_CORPUS}")
+      "EDS corpus not found at ${fieldcodec_eds_corpus}")
   set_tests_properties(codegen_corpus PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 
