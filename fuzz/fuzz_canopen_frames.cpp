@@ -24,6 +24,7 @@
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/host/socketcan.hpp>
 
 #include <algorithm>

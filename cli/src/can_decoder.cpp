@@ -7,6 +7,7 @@
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/dpq/emergency.hpp>
 #include <fieldcodec/host/candump.hpp>

@@ -1,7 +1,8 @@
-// The frames of a burst of block segments (canopen/step.hpp frames::block_segments) against
+// The frames of a burst of block segments (canopen/sdo_transfer.hpp sdo::block_segments) against
 // sdo::encode_block_segment, which they were built with before issue 18's services benchmark:
 // the segment is now written straight into the frame, and every frame must stay the same.
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
 
@@ -54,9 +55,9 @@ constexpr co::can_frame reference_segment(std::uint16_t id, std::span<const std:
 
 constexpr std::uint8_t bytes10[10] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
 // CiA 301 7.2.4.3.12: the last segment carries 0x80 | seqno, unused bytes are zero.
-static_assert(co::frames::block_segments(0x585, bytes10, 2, true)[1] ==
+static_assert(co::sdo::block_segments(0x585, bytes10, 2, true)[1] ==
               co::can_frame{0x585, false, 8, {0x82, 8, 9, 10, 0, 0, 0, 0}});
-static_assert(co::frames::block_segments(0x585, bytes10, 2, false)[0] ==
+static_assert(co::sdo::block_segments(0x585, bytes10, 2, false)[0] ==
               co::can_frame{0x585, false, 8, {0x01, 1, 2, 3, 4, 5, 6, 7}});
 
 } // namespace
@@ -79,7 +80,7 @@ TEST_CASE("a burst's frames (operator[] and copy_to) equal encode_block_segment'
       const auto window = std::span<const std::uint8_t>(data).first(size);
       for (const bool ends : {false, true}) {
         const auto burst =
-            co::frames::block_segments(0x5FF, window, static_cast<std::uint8_t>(count), ends);
+            co::sdo::block_segments(0x5FF, window, static_cast<std::uint8_t>(count), ends);
         REQUIRE(burst.size() == count);
         std::size_t i = 0;
         for (const co::can_frame f : burst) {
@@ -127,7 +128,7 @@ bool copy_matches(const co::frames &fs, std::size_t first, std::size_t room) {
 
 constexpr bool copy_in_constant_expression() {
   std::array<co::can_frame, 3> out{};
-  const auto burst = co::frames::block_segments(0x585, bytes10, 2, true);
+  const auto burst = co::sdo::block_segments(0x585, bytes10, 2, true);
   return burst.copy_to(out) == 2U && out[0] == burst[0] && out[1] == burst[1] &&
          out[2] == co::can_frame{};
 }
@@ -154,7 +155,7 @@ TEST_CASE(
         const auto window = std::span<const std::uint8_t>(data).subspan(offset, size);
         for (const bool ends : {false, true}) {
           const auto burst =
-              co::frames::block_segments(0x5FF, window, static_cast<std::uint8_t>(count), ends);
+              co::sdo::block_segments(0x5FF, window, static_cast<std::uint8_t>(count), ends);
           // the whole burst at once, into exactly enough and into more room
           if (!copy_matches(burst, 0, count)) ++failures;
           if (!copy_matches(burst, 0, count + 5U)) ++failures;
@@ -181,7 +182,7 @@ TEST_CASE(
 TEST_CASE("copy_to in pieces gives the whole burst in order") {
   std::array<std::uint8_t, 7U * 127U> data{};
   for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 31U + 1U);
-  const auto burst = co::frames::block_segments(0x585, data, 127, true);
+  const auto burst = co::sdo::block_segments(0x585, data, 127, true);
   std::vector<co::can_frame> queue;
   std::array<co::can_frame, 5> room{}; // a transmit queue that frees 5 places at a time
   std::size_t i = 0;
@@ -263,7 +264,7 @@ TEST_CASE("encode_block_segment equals the round-4 encoder for every sequence nu
   for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 7U);
   for (const std::size_t size : {data.size(), data.size() - 3U}) {
     const auto window = std::span<const std::uint8_t>(data).first(size);
-    const auto burst = co::frames::block_segments(0x581, window, 127, true);
+    const auto burst = co::sdo::block_segments(0x581, window, 127, true);
     std::vector<co::can_frame> queue(127, co::can_frame{0x7FF, true, 3, {9, 9, 9, 9, 9, 9, 9, 9}});
     CHECK(burst.copy_to(queue) == 127U);
     for (std::size_t j = 0; j < 127U; ++j) {
@@ -271,4 +272,49 @@ TEST_CASE("encode_block_segment equals the round-4 encoder for every sequence nu
       CHECK(queue[j] == reference_segment(0x581, window, 127, true, j));
     }
   }
+}
+
+// frames::burst is generic (step.hpp knows no SDO): any maker, frames made when they are read.
+namespace {
+/// Frame i of the test burst: on the burst's id, data[0] = i, data[1] = the data's byte i (or 0),
+/// data[2] = the flag.
+constexpr void test_maker(const co::frames &b, std::size_t first,
+                          std::span<co::can_frame> out) noexcept {
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::size_t i = first + j;
+    co::can_frame f;
+    f.id = b.burst_id();
+    f.dlc = 3;
+    f.data[0] = static_cast<std::uint8_t>(i);
+    f.data[1] = i < b.burst_data().size() ? b.burst_data()[i] : std::uint8_t{0};
+    f.data[2] = b.burst_flag() ? 1U : 0U;
+    out[j] = f;
+  }
+}
+constexpr std::array<std::uint8_t, 3> burst_bytes{7, 8, 9};
+} // namespace
+
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker).size() == 5U);
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker).is_burst());
+static_assert(co::frames::burst(0x123, burst_bytes, 5, true, &test_maker)[2].data[1] == 9U);
+
+TEST_CASE("a burst of any maker: operator[], iteration and copy_to give the maker's frames") {
+  const auto b = co::frames::burst(0x321, burst_bytes, 4, false, &test_maker);
+  CHECK(b.burst_id() == 0x321U);
+  CHECK(b.burst_data().size() == 3U);
+  CHECK_FALSE(b.burst_flag());
+  std::size_t i = 0;
+  for (const co::can_frame &f : b) {
+    CHECK(f.id == 0x321U);
+    CHECK(f.data[0] == i);
+    CHECK(f.data[1] == (i < 3U ? burst_bytes[i] : 0U));
+    CHECK(f.data[2] == 0U);
+    ++i;
+  }
+  CHECK(i == 4U);
+  std::array<co::can_frame, 3> q{};
+  CHECK(b.copy_to(q, 2) == 2U); // frames 2 and 3
+  CHECK(q[0] == b[2]);
+  CHECK(q[1] == b[3]);
+  CHECK(b.copy_to(q, 4) == 0U);
 }

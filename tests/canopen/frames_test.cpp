@@ -4,6 +4,7 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 
 #include <doctest/doctest.h>
 

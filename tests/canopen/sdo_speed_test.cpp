@@ -130,6 +130,14 @@ fc::result<sdo::payload> reference_encode_expedited(const sdo::message &m) {
   return p;
 }
 
+// The message the constructors before issue 18 built from `bytes` (at most `max` of them; one
+// more in data_size when there were more, so that encode refused them).
+sdo::message with_bytes(sdo::message m, std::span<const std::uint8_t> bytes, std::size_t max) {
+  m.data_size = static_cast<std::uint8_t>(bytes.size() > max ? max + 1U : bytes.size());
+  for (std::size_t i = 0; i < bytes.size() && i < max; ++i) m.data[i] = bytes[i];
+  return m;
+}
+
 // The expedited constructors before issue 18: a message through encode().
 fc::result<sdo::payload> reference_expedited(sdo::message_type t, fc::od::address a,
                                              std::span<const std::uint8_t> bytes,
@@ -140,7 +148,7 @@ fc::result<sdo::payload> reference_expedited(sdo::message_type t, fc::od::addres
   m.address = a;
   m.expedited = true;
   m.size_indicated = size_indicated;
-  return reference_encode_expedited(sdo::detail::with_bytes(m, bytes, 4));
+  return reference_encode_expedited(with_bytes(m, bytes, 4));
 }
 
 struct rng : fieldcodec::test::xorshift {

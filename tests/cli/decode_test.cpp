@@ -7,6 +7,7 @@
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>

@@ -2,7 +2,8 @@
 // copies a TPDO's plain objects from the store's bytes, and reads and writes the others by
 // position, RPDO objects always through the device's rules), over a user-written store with
 // positions only, and over one that models only the address interface (node_store without
-// positions: by address, as before) sends, answers and stores the same: random RPDOs, SYNCs,
+// positions: by address, as before), and a device with capacity::pdo_copies off (one by one)
+// sends, answers and stores the same: random RPDOs, SYNCs,
 // RTRs, application values, SDO writes of mapped objects, and remappings of RPDOs and TPDOs
 // over SDO while operational.
 #include "node_test_util.hpp"
@@ -28,6 +29,14 @@ using positions_only = positions_only_store<store_type>;
 static_assert(device_type::pdo_type::by_copy);
 static_assert(node::device<positions_only, caps>::pdo_type::by_position &&
               !node::device<positions_only, caps>::pdo_type::by_copy);
+/// capacity::pdo_copies off: the same store, its mapped objects one by one (by position).
+inline constexpr node::capacity one_by_one_caps = [] {
+  node::capacity c = caps;
+  c.pdo_copies = false;
+  return c;
+}();
+static_assert(node::device<store_type, one_by_one_caps>::pdo_type::by_position &&
+              !node::device<store_type, one_by_one_caps>::pdo_type::by_copy);
 
 struct rng : fieldcodec::test::xorshift {
   using xorshift::xorshift;
@@ -50,6 +59,19 @@ struct view_rig {
 };
 using plain_rig = view_rig<address_only>;
 
+/// A device with capacity::pdo_copies off over a dictionary_store.
+struct one_by_one_rig {
+  std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout5.storage_size());
+  std::vector<std::uint8_t> staging = std::vector<std::uint8_t>(4000);
+  store_type store{dict5, layout5, storage, staging};
+  node::device<store_type, one_by_one_caps> dev;
+  one_by_one_rig() : dev(init(store), 5) {}
+  static store_type &init(store_type &s) {
+    REQUIRE(s.init_defaults(5).has_value());
+    return s;
+  }
+};
+
 /// An SDO expedited download request to node 5.
 co::can_frame sdo_write(std::uint16_t index, std::uint8_t sub, std::uint32_t value,
                         std::size_t width) {
@@ -69,24 +91,31 @@ TEST_CASE("device: a store with positions and one without do the same") {
     rig<> fast;
     plain_rig plain;
     view_rig<positions_only> pos;
+    one_by_one_rig one;
     std::uint32_t now = 0;
     std::size_t tpdos = 0;
-    const auto same = [&](const auto &a, const auto &b, const auto &c) {
+    const auto same = [&](const auto &a, const auto &b, const auto &c, const auto &d) {
       REQUIRE(a.send.size() == b.send.size());
       REQUIRE(a.send.size() == c.send.size());
+      REQUIRE(a.send.size() == d.send.size());
       for (std::size_t i = 0; i < a.send.size(); ++i) {
         CHECK(a.send[i] == b.send[i]);
         CHECK(a.send[i] == c.send[i]);
+        CHECK(a.send[i] == d.send[i]);
         if (a.send[i].id == 0x185U || a.send[i].id == 0x285U) ++tpdos;
       }
       CHECK(a.deadline == b.deadline);
       CHECK(a.deadline == c.deadline);
+      CHECK(a.deadline == d.deadline);
       CHECK(fast.storage == plain.storage);
       CHECK(fast.storage == pos.storage);
+      CHECK(fast.storage == one.storage);
     };
-    same(fast.dev.start(now).value(), plain.dev.start(now).value(), pos.dev.start(now).value());
+    same(fast.dev.start(now).value(), plain.dev.start(now).value(), pos.dev.start(now).value(),
+         one.dev.start(now).value());
     const auto feed = [&](const co::can_frame &f) {
-      same(fast.dev.on_frame(f, now), plain.dev.on_frame(f, now), pos.dev.on_frame(f, now));
+      same(fast.dev.on_frame(f, now), plain.dev.on_frame(f, now), pos.dev.on_frame(f, now),
+           one.dev.on_frame(f, now));
     };
     feed(F(0, {0x01, 5}));
     std::size_t rpdos = 0;
@@ -112,6 +141,7 @@ TEST_CASE("device: a store with positions and one without do the same") {
         const auto c = fast.dev.set({0x2100, 0}, b);
         CHECK(c == plain.dev.set({0x2100, 0}, b));
         CHECK(c == pos.dev.set({0x2100, 0}, b));
+        CHECK(c == one.dev.set({0x2100, 0}, b));
       } else if (op < 9) { // remap RPDO 1 over SDO while operational (the CiA 301 sequence)
         const std::uint32_t objects[] = {0x2000'0020U, 0x2001'0010U, 0x2003'0008U,
                                          0x2004'0020U, 0x2002'0008U, 0x6040'0010U};
@@ -140,7 +170,7 @@ TEST_CASE("device: a store with positions and one without do the same") {
         feed(sdo_write(0x1A01, 0, n, 1));
         feed(sdo_write(0x1801, 1, 0x285U, 4));
       } else {
-        same(fast.dev.poll(now), plain.dev.poll(now), pos.dev.poll(now));
+        same(fast.dev.poll(now), plain.dev.poll(now), pos.dev.poll(now), one.dev.poll(now));
       }
     }
     CHECK(rpdos > 100U);

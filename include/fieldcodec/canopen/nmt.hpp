@@ -76,9 +76,12 @@ struct message {
 
 /// Heartbeat of `node` in state `s`: 0x700+node DLC 1 [s]. Errors: invalid_argument (node).
 [[nodiscard]] constexpr result<can_frame> encode_heartbeat(std::uint8_t node, state s) noexcept {
-  auto id = cob_id::nmt_error(node);
-  if (!id) return id.error();
-  return make_frame(id.value(), {static_cast<std::uint8_t>(s)});
+  if (!is_node_id(node)) return errc::invalid_argument;
+  can_frame f;
+  f.id = static_cast<std::uint16_t>(cob_id::nmt_error_base + node);
+  f.dlc = 1;
+  f.data[0] = static_cast<std::uint8_t>(s);
+  return f;
 }
 /// Boot-up message of `node`: 0x700+node DLC 1 [00].
 [[nodiscard]] constexpr result<can_frame> encode_boot_up(std::uint8_t node) noexcept {
@@ -128,11 +131,12 @@ struct heartbeat {
 /// state. Errors: invalid_argument (node, or state boot_up).
 [[nodiscard]] constexpr result<can_frame> encode_guard_response(std::uint8_t node, state s,
                                                                 bool toggle) noexcept {
-  if (s == state::boot_up) return errc::invalid_argument;
-  auto id = cob_id::nmt_error(node);
-  if (!id) return id.error();
-  return make_frame(id.value(),
-                    {static_cast<std::uint8_t>(static_cast<unsigned>(s) | (toggle ? 0x80U : 0U))});
+  if (s == state::boot_up || !is_node_id(node)) return errc::invalid_argument;
+  can_frame f;
+  f.id = static_cast<std::uint16_t>(cob_id::nmt_error_base + node);
+  f.dlc = 1;
+  f.data[0] = static_cast<std::uint8_t>(static_cast<unsigned>(s) | (toggle ? 0x80U : 0U));
+  return f;
 }
 
 struct guard_response {

@@ -262,6 +262,88 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   m.size = 4U - n;
   m.value = get_u32(p) & (0xFFFF'FFFFU >> (8U * n));
 }
+
+// The writers of the layouts: byte 0 is `bits` (a command's bits from `commands`) with the
+// flags of the layout, then its fields. encode(message) and the named constructors below both
+// write through them, so each layout is written in one place; a named constructor passes its
+// command's bits as a constant (command_bits) and builds no message.
+
+/// The bits of the command of type `t` (0 for block_segment, which has none).
+[[nodiscard]] constexpr unsigned command_bits(message_type t) noexcept {
+  const std::size_t i = command_for(t);
+  return i < std::size(commands) ? commands[i].bits : 0U;
+}
+[[nodiscard]] constexpr payload write_address(unsigned b0, od::address a) noexcept {
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(b0);
+  put_address(p, a);
+  return p;
+}
+/// layout::segment: `bytes` (at most 7; exactly 7 unless `last`) and their count in byte 0.
+[[nodiscard]] constexpr result<payload>
+write_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+  const std::size_t n = bytes.size();
+  if (n > 7U) return errc::too_long;
+  if (!last && n != 7U) return errc::bad_length;
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(bits | (toggle ? toggle_bit : 0U) | ((7U - n) << 1U) |
+                                   (last ? 1U : 0U));
+  for (std::size_t i = 0; i < n; ++i) p[1U + i] = bytes[i];
+  return p;
+}
+/// layout::toggle, and layout::command_only (toggle false).
+[[nodiscard]] constexpr payload write_toggle(unsigned bits, bool toggle) noexcept {
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(bits | (toggle ? toggle_bit : 0U));
+  return p;
+}
+/// An initiate that is not expedited (layout::initiate, size flag 0x01) or a block initiate
+/// (layout::block_initiate, size flag 0x02, `bits` with the CRC flag): the address and, when
+/// indicated, the size.
+[[nodiscard]] constexpr payload write_sized(unsigned bits, unsigned size_flag, od::address a,
+                                            bool size_indicated, std::uint32_t size) noexcept {
+  payload p = write_address(bits | (size_indicated ? size_flag : 0U), a);
+  if (size_indicated) put_u32(p, size);
+  return p;
+}
+/// layout::abort.
+[[nodiscard]] constexpr payload write_abort(unsigned bits, od::address a,
+                                            abort_code code) noexcept {
+  payload p = write_address(bits, a);
+  put_u32(p, static_cast<std::uint32_t>(code));
+  return p;
+}
+/// layout::block_response and layout::block_upload (`bits` with the CRC flag): the address,
+/// the block size (1..127) and the protocol switch threshold (block_upload only: 0 otherwise).
+[[nodiscard]] constexpr result<payload> write_block_size(unsigned bits, od::address a,
+                                                         std::uint8_t block_size,
+                                                         std::uint8_t threshold) noexcept {
+  if (!valid_block_size(block_size)) return errc::out_of_range;
+  payload p = write_address(bits, a);
+  p[4] = block_size;
+  p[5] = threshold;
+  return p;
+}
+/// layout::block_ack: the last good sequence number (0..127) and the next block size (1..127).
+[[nodiscard]] constexpr result<payload> write_block_ack(unsigned bits, std::uint8_t sequence,
+                                                        std::uint8_t block_size) noexcept {
+  if (sequence > max_block_size || !valid_block_size(block_size)) return errc::out_of_range;
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(bits);
+  p[1] = sequence;
+  p[2] = block_size;
+  return p;
+}
+/// layout::block_end: the unused bytes of the last segment (0..7) and the CRC.
+[[nodiscard]] constexpr result<payload> write_block_end(unsigned bits, std::uint8_t unused,
+                                                        std::uint16_t checksum) noexcept {
+  if (unused > 7U) return errc::out_of_range;
+  payload p{};
+  p[0] = static_cast<std::uint8_t>(bits | (static_cast<unsigned>(unused) << 2U));
+  p[1] = static_cast<std::uint8_t>(checksum & 0xFFU);
+  p[2] = static_cast<std::uint8_t>(checksum >> 8U);
+  return p;
+}
 } // namespace detail
 
 /// The 8 bytes of `m`. Unused bytes are zero.
@@ -273,10 +355,10 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
 /// in `value`; an initiate that is not expedited with `value` or `data_size` set: its data goes
 /// in the segments).
 [[nodiscard]] constexpr result<payload> encode(const message &m) noexcept {
-  payload p{};
   if (m.type == message_type::block_segment) {
     if (m.sequence == 0U || m.sequence > max_block_size) return errc::out_of_range;
     if (m.data_size > 7U) return errc::too_long;
+    payload p{};
     p[0] = static_cast<std::uint8_t>((m.last ? 0x80U : 0U) | m.sequence);
     for (std::size_t i = 0; i < m.data_size; ++i) p[1U + i] = m.data[i];
     return p;
@@ -284,73 +366,42 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   const std::size_t ci = detail::command_for(m.type);
   if (ci == std::size(detail::commands)) return errc::invalid_argument;
   const detail::command *c = &detail::commands[ci];
-  unsigned b0 = c->bits;
+  const unsigned bits = c->bits;
+  const unsigned crc = m.crc ? 0x04U : 0U;
   switch (c->lay) {
   case detail::layout::segment:
     if (m.data_size > 7U) return errc::too_long;
-    if (!m.last && m.data_size != 7U) return errc::bad_length;
-    b0 |= (m.toggle ? detail::toggle_bit : 0U) | ((7U - m.data_size) << 1U) | (m.last ? 1U : 0U);
-    for (std::size_t i = 0; i < m.data_size; ++i) p[1U + i] = m.data[i];
-    break;
-  case detail::layout::toggle: b0 |= m.toggle ? detail::toggle_bit : 0U; break;
+    return detail::write_segment(bits, m.toggle, m.bytes(), m.last);
+  case detail::layout::toggle: return detail::write_toggle(bits, m.toggle);
   case detail::layout::initiate:
-    detail::put_address(p, m.address);
     if (m.expedited) {
       if (m.data_size != 0U) return errc::invalid_argument;
       if (m.size == 0U) return errc::bad_length;
       if (m.size > 4U) return errc::too_long;
       if (!m.size_indicated && m.size != 4U) return errc::bad_length;
       if (m.size < 4U && (m.value >> (8U * m.size)) != 0U) return errc::out_of_range;
-      b0 |= m.size_indicated ? ((4U - m.size) << 2U) | 0x03U : 0x02U;
+      payload p = detail::write_address(
+          bits | (m.size_indicated ? ((4U - m.size) << 2U) | 0x03U : 0x02U), m.address);
       detail::put_u32(p, m.value);
-    } else {
-      // data for a transfer that is not expedited goes in segments: refuse it here rather
-      // than send an initiate without it
-      if (m.value != 0U || m.data_size != 0U) return errc::invalid_argument;
-      if (m.size_indicated) {
-        b0 |= 0x01U;
-        detail::put_u32(p, m.size);
-      }
+      return p;
     }
-    break;
-  case detail::layout::address: detail::put_address(p, m.address); break;
-  case detail::layout::abort:
-    detail::put_address(p, m.address);
-    detail::put_u32(p, static_cast<std::uint32_t>(m.abort));
-    break;
+    // data for a transfer that is not expedited goes in segments: refuse it here rather than
+    // send an initiate without it
+    if (m.value != 0U || m.data_size != 0U) return errc::invalid_argument;
+    return detail::write_sized(bits, 0x01U, m.address, m.size_indicated, m.size);
+  case detail::layout::address: return detail::write_address(bits, m.address);
+  case detail::layout::abort: return detail::write_abort(bits, m.address, m.abort);
   case detail::layout::block_initiate:
-    detail::put_address(p, m.address);
-    b0 |= (m.crc ? 0x04U : 0U) | (m.size_indicated ? 0x02U : 0U);
-    if (m.size_indicated) detail::put_u32(p, m.size);
-    break;
+    return detail::write_sized(bits | crc, 0x02U, m.address, m.size_indicated, m.size);
   case detail::layout::block_response:
+    return detail::write_block_size(bits | crc, m.address, m.block_size, 0);
   case detail::layout::block_upload:
-    if (!detail::valid_block_size(m.block_size)) return errc::out_of_range;
-    detail::put_address(p, m.address);
-    b0 |= m.crc ? 0x04U : 0U;
-    p[4] = m.block_size;
-    if (c->lay == detail::layout::block_upload) p[5] = m.switch_threshold;
-    break;
-  case detail::layout::block_ack:
-    if (m.sequence > max_block_size || !detail::valid_block_size(m.block_size)) {
-      return errc::out_of_range;
-    }
-    p[1] = m.sequence;
-    p[2] = m.block_size;
-    break;
-  case detail::layout::block_end:
-    if (m.unused > 7U) return errc::out_of_range;
-    b0 |= static_cast<unsigned>(m.unused) << 2U;
-    {
-      const auto crc_bytes = to_bytes<std::uint16_t>(m.checksum, byte_order::little);
-      p[1] = crc_bytes[0];
-      p[2] = crc_bytes[1];
-    }
-    break;
-  case detail::layout::command_only: break;
+    return detail::write_block_size(bits | crc, m.address, m.block_size, m.switch_threshold);
+  case detail::layout::block_ack: return detail::write_block_ack(bits, m.sequence, m.block_size);
+  case detail::layout::block_end: return detail::write_block_end(bits, m.unused, m.checksum);
+  case detail::layout::command_only: return detail::write_toggle(bits, false);
   }
-  p[0] = static_cast<std::uint8_t>(b0);
-  return p;
+  return errc::invalid_argument;
 }
 
 // `decode(payload, direction)` is the straight path of expedited initiates plus a call of the
@@ -537,12 +588,6 @@ FIELDCODEC_SDO_INLINE [[nodiscard]] constexpr result<message> decode(const paylo
 // ----- named constructors ---------------------------------------------------------------------
 
 namespace detail {
-[[nodiscard]] constexpr message with_bytes(message m, std::span<const std::uint8_t> bytes,
-                                           std::size_t max) noexcept {
-  m.data_size = static_cast<std::uint8_t>(bytes.size() > max ? max + 1U : bytes.size());
-  for (std::size_t i = 0; i < bytes.size() && i < max; ++i) m.data[i] = bytes[i];
-  return m;
-}
 static_assert(commands[command_for(message_type::initiate_download_request)].bits == 0x20U &&
               commands[command_for(message_type::initiate_download_request)].lay ==
                   layout::initiate &&
@@ -565,31 +610,9 @@ static_assert(commands[command_for(message_type::initiate_download_request)].bit
   for (std::size_t i = 0; i < bytes.size(); ++i) p[4U + i] = bytes[i];
   return p;
 }
-[[nodiscard]] constexpr result<payload> initiate(message_type t, od::address a, std::uint32_t size,
-                                                 bool size_indicated) noexcept {
-  message m;
-  m.type = t;
-  m.address = a;
-  m.size_indicated = size_indicated;
-  m.size = size_indicated ? size : 0U;
-  return encode(m);
-}
-[[nodiscard]] constexpr result<payload>
-segment(message_type t, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
-  if (bytes.size() > 7U) return errc::too_long;
-  message m;
-  m.type = t;
-  m.toggle = toggle;
-  m.last = last;
-  return encode(with_bytes(m, bytes, 7));
-}
-[[nodiscard]] constexpr payload simple(message_type t, od::address a, bool toggle) noexcept {
-  message m;
-  m.type = t;
-  m.address = a;
-  m.toggle = toggle;
-  return encode(m).value(); // these types cannot fail
-}
+/// The bits of command `T` as a constant (what a named constructor writes).
+template <message_type T>
+inline constexpr unsigned bits_of = command_bits(T);
 } // namespace detail
 
 // client -> server
@@ -608,32 +631,34 @@ expedited_download_unsized(od::address a, std::span<const std::uint8_t> bytes) n
 /// Initiate a segmented download of `size` bytes (0x21), or without size indication (0x20).
 [[nodiscard]] constexpr payload initiate_download(od::address a, std::uint32_t size,
                                                   bool size_indicated = true) noexcept {
-  return detail::initiate(message_type::initiate_download_request, a, size, size_indicated).value();
+  return detail::write_sized(detail::bits_of<message_type::initiate_download_request>, 0x01U, a,
+                             size_indicated, size);
 }
 /// A download segment: 0..7 bytes (exactly 7 unless last).
 /// Errors: too_long (> 7 bytes), bad_length (fewer than 7 in a non-last segment).
 [[nodiscard]] constexpr result<payload>
 download_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
-  return detail::segment(message_type::download_segment_request, toggle, bytes, last);
+  return detail::write_segment(detail::bits_of<message_type::download_segment_request>, toggle,
+                               bytes, last);
 }
 /// Initiate upload (0x40).
 [[nodiscard]] constexpr payload initiate_upload(od::address a) noexcept {
-  return detail::simple(message_type::initiate_upload_request, a, false);
+  return detail::write_address(detail::bits_of<message_type::initiate_upload_request>, a);
 }
 /// Upload segment request (0x60 / 0x70).
 [[nodiscard]] constexpr payload upload_segment_request(bool toggle) noexcept {
-  return detail::simple(message_type::upload_segment_request, {}, toggle);
+  return detail::write_toggle(detail::bits_of<message_type::upload_segment_request>, toggle);
 }
 
 // server -> client
 
 /// Initiate download response (0x60).
 [[nodiscard]] constexpr payload download_response(od::address a) noexcept {
-  return detail::simple(message_type::initiate_download_response, a, false);
+  return detail::write_address(detail::bits_of<message_type::initiate_download_response>, a);
 }
 /// Download segment response (0x20 / 0x30).
 [[nodiscard]] constexpr payload download_segment_response(bool toggle) noexcept {
-  return detail::simple(message_type::download_segment_response, {}, toggle);
+  return detail::write_toggle(detail::bits_of<message_type::download_segment_response>, toggle);
 }
 /// Expedited upload response with size indication (0x4F, 0x4B, 0x47, 0x43).
 /// Errors: bad_length (no bytes), too_long (more than 4 bytes).
@@ -650,23 +675,21 @@ expedited_upload_response_unsized(od::address a, std::span<const std::uint8_t> b
 /// indication (0x40).
 [[nodiscard]] constexpr payload upload_response(od::address a, std::uint32_t size,
                                                 bool size_indicated = true) noexcept {
-  return detail::initiate(message_type::initiate_upload_response, a, size, size_indicated).value();
+  return detail::write_sized(detail::bits_of<message_type::initiate_upload_response>, 0x01U, a,
+                             size_indicated, size);
 }
 /// An upload segment: 0..7 bytes (exactly 7 unless last). Errors: too_long, bad_length.
 [[nodiscard]] constexpr result<payload>
 upload_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
-  return detail::segment(message_type::upload_segment_response, toggle, bytes, last);
+  return detail::write_segment(detail::bits_of<message_type::upload_segment_response>, toggle,
+                               bytes, last);
 }
 
 // both
 
 /// Abort transfer (0x80), sent by either side.
 [[nodiscard]] constexpr payload abort(od::address a, abort_code code) noexcept {
-  message m;
-  m.type = message_type::abort;
-  m.address = a;
-  m.abort = code;
-  return encode(m).value();
+  return detail::write_abort(detail::bits_of<message_type::abort>, a, code);
 }
 
 // block transfer
@@ -674,24 +697,17 @@ upload_segment(bool toggle, std::span<const std::uint8_t> bytes, bool last) noex
 /// Block download initiate (client, 0xC0 | crc << 2 | s << 1) with the size when known.
 [[nodiscard]] constexpr payload block_download_initiate(od::address a, std::uint32_t size,
                                                         bool size_indicated, bool crc) noexcept {
-  message m;
-  m.type = message_type::block_download_initiate;
-  m.address = a;
-  m.size_indicated = size_indicated;
-  m.size = size_indicated ? size : 0U;
-  m.crc = crc;
-  return encode(m).value();
+  return detail::write_sized(detail::bits_of<message_type::block_download_initiate> |
+                                 (crc ? 0x04U : 0U),
+                             0x02U, a, size_indicated, size);
 }
 /// Block download initiate response (server, 0xA0 | crc << 2): the first block size.
 /// Errors: out_of_range (block size not 1..127).
 [[nodiscard]] constexpr result<payload>
 block_download_initiate_response(od::address a, std::uint8_t block_size, bool crc) noexcept {
-  message m;
-  m.type = message_type::block_download_initiate_response;
-  m.address = a;
-  m.block_size = block_size;
-  m.crc = crc;
-  return encode(m);
+  return detail::write_block_size(detail::bits_of<message_type::block_download_initiate_response> |
+                                      (crc ? 0x04U : 0U),
+                                  a, block_size, 0);
 }
 /// Block upload initiate (client, 0xA0 | crc << 2): block size and protocol switch threshold
 /// (0: no switch). Errors: out_of_range (block size not 1..127).
@@ -699,29 +715,21 @@ block_download_initiate_response(od::address a, std::uint8_t block_size, bool cr
                                                               std::uint8_t block_size,
                                                               std::uint8_t switch_threshold,
                                                               bool crc) noexcept {
-  message m;
-  m.type = message_type::block_upload_initiate;
-  m.address = a;
-  m.block_size = block_size;
-  m.switch_threshold = switch_threshold;
-  m.crc = crc;
-  return encode(m);
+  return detail::write_block_size(detail::bits_of<message_type::block_upload_initiate> |
+                                      (crc ? 0x04U : 0U),
+                                  a, block_size, switch_threshold);
 }
 /// Block upload initiate response (server, 0xC0 | crc << 2 | s << 1) with the size.
 [[nodiscard]] constexpr payload block_upload_initiate_response(od::address a, std::uint32_t size,
                                                                bool size_indicated,
                                                                bool crc) noexcept {
-  message m;
-  m.type = message_type::block_upload_initiate_response;
-  m.address = a;
-  m.size_indicated = size_indicated;
-  m.size = size_indicated ? size : 0U;
-  m.crc = crc;
-  return encode(m).value();
+  return detail::write_sized(detail::bits_of<message_type::block_upload_initiate_response> |
+                                 (crc ? 0x04U : 0U),
+                             0x02U, a, size_indicated, size);
 }
 /// Block upload start (client, 0xA3).
 [[nodiscard]] constexpr payload block_upload_start() noexcept {
-  return detail::simple(message_type::block_upload_start, {}, false);
+  return detail::write_toggle(detail::bits_of<message_type::block_upload_start>, false);
 }
 namespace detail {
 
@@ -758,25 +766,17 @@ constexpr void write_block_segment(payload &p, std::uint8_t sequence,
 /// of the next sub-block. Errors: out_of_range.
 [[nodiscard]] constexpr result<payload> block_ack(std::uint8_t sequence,
                                                   std::uint8_t block_size) noexcept {
-  message m;
-  m.type = message_type::block_ack;
-  m.sequence = sequence;
-  m.block_size = block_size;
-  return encode(m);
+  return detail::write_block_ack(detail::bits_of<message_type::block_ack>, sequence, block_size);
 }
 /// Block end (0xC1 | unused << 2): bytes of the last segment without data (0..7) and the CRC
 /// of the data (0 when CRC is not used). Errors: out_of_range (unused over 7).
 [[nodiscard]] constexpr result<payload> block_end(std::uint8_t unused,
                                                   std::uint16_t checksum) noexcept {
-  message m;
-  m.type = message_type::block_end;
-  m.unused = unused;
-  m.checksum = checksum;
-  return encode(m);
+  return detail::write_block_end(detail::bits_of<message_type::block_end>, unused, checksum);
 }
 /// Block end response (0xA1).
 [[nodiscard]] constexpr payload block_end_response() noexcept {
-  return detail::simple(message_type::block_end_response, {}, false);
+  return detail::write_toggle(detail::bits_of<message_type::block_end_response>, false);
 }
 
 // ---------------------------------------------------------------------------------------------

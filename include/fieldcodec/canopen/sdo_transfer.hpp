@@ -93,16 +93,12 @@ public:
   /// (download_segment_request or upload_segment_response); moves on and flips the toggle.
   [[nodiscard]] constexpr payload next(message_type type,
                                        std::span<const std::uint8_t> bytes) noexcept {
-    message m;
-    m.type = type;
-    m.toggle = toggle_;
-    m.last = next_is_last();
-    m.data_size = static_cast<std::uint8_t>(bytes.size());
-    for (std::size_t i = 0; i < bytes.size() && i < 7U; ++i) m.data[i] = bytes[i];
+    const bool last = next_is_last();
+    const auto p = detail::write_segment(detail::command_bits(type), toggle_, bytes, last);
     offset_ += static_cast<std::uint32_t>(bytes.size());
-    sent_last_ = m.last;
+    sent_last_ = last;
     toggle_ = !toggle_;
-    return encode(m).value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
+    return p.value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
   }
   /// Does the toggle the peer answered with belong to the segment just sent?
   [[nodiscard]] constexpr bool answer_matches(bool peer_toggle) const noexcept {
@@ -157,6 +153,49 @@ private:
 // ---------------------------------------------------------------------------------------------
 // Block transfer
 
+namespace detail {
+/// The maker of a burst of block segments (frames::burst; see block_segments): segments
+/// first, first + 1, … into `out`. Segment i (from 0) has sequence number i + 1 and bytes
+/// [7 i, 7 i + 7) of the data, zero-padded; the last flag on the burst's last frame when it
+/// ends the transfer; a sequence number above 127 is no segment (all zeros, as
+/// encode_block_segment refuses it). The full segments run in a loop of their own (7 bytes, not
+/// the transfer's last: a copy of constant length each).
+constexpr void make_block_segments(const frames &b, std::size_t first,
+                                   std::span<can_frame> out) noexcept {
+  const auto data = b.burst_data();
+  std::size_t full = data.size() / 7U;
+  if (b.burst_flag() && full >= b.size() && b.size() > 0U) full = b.size() - 1U;
+  if (full > max_block_size) full = max_block_size;
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::size_t i = first + j;
+    can_frame &f = out[j];
+    f.id = b.burst_id();
+    f.rtr = false;
+    f.dlc = 8;
+    if (i < full) {
+      write_block_segment(f.data, static_cast<std::uint8_t>(i + 1U), data.subspan(7U * i, 7U),
+                          false);
+    } else if (i < max_block_size) {
+      const std::size_t from = 7U * i < data.size() ? 7U * i : data.size();
+      const std::size_t n = data.size() - from > 7U ? 7U : data.size() - from;
+      write_block_segment(f.data, static_cast<std::uint8_t>(i + 1U), data.subspan(from, n),
+                          b.burst_flag() && i + 1U == b.size());
+    } else {
+      f.data = {};
+    }
+  }
+}
+} // namespace detail
+
+/// A burst of block segments: `count` (1..127) frames on `id`, segment i (from 0) carries
+/// sequence number i + 1 and bytes [7 i, 7 i + 7) of `data` (zero-padded); `ends_transfer`
+/// marks the last of them as the last segment of the transfer. The frames are made when they
+/// are read (canopen::frames, step.hpp).
+[[nodiscard]] constexpr frames block_segments(std::uint16_t id, std::span<const std::uint8_t> data,
+                                              std::uint8_t count, bool ends_transfer) noexcept {
+  return frames::burst(id, data, count, ends_transfer, &detail::make_block_segments);
+}
+
 /// The sending side of a block transfer of `size` bytes: sub-blocks of block_size() segments,
 /// retransmission from the first segment the receiver did not acknowledge, and the end message
 /// with the unused bytes of the last segment and the CRC of the data, computed by `Crc`
@@ -193,7 +232,7 @@ public:
   [[nodiscard]] constexpr frames burst(std::uint16_t id,
                                        std::span<const std::uint8_t> window) noexcept {
     in_flight_ = burst_segments();
-    return frames::block_segments(id, window, in_flight_, burst_ends_transfer());
+    return block_segments(id, window, in_flight_, burst_ends_transfer());
   }
 
   /// What an acknowledgement asks for.

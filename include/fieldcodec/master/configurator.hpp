@@ -145,9 +145,7 @@ public:
 private:
   [[nodiscard]] constexpr step make() const noexcept {
     step s;
-    if (out_count_ == 1U) s.send = canopen::frames(out_[0]);
-    if (out_count_ > 1U)
-      s.send = canopen::frames(std::span<const canopen::can_frame>(out_).first(out_count_));
+    s.send = canopen::frames(std::span<const canopen::can_frame>(out_).first(out_count_));
     s.state = state_;
     if (busy()) {
       s.deadline = deadline_;

@@ -43,6 +43,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/canopen/sync.hpp>
+#include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/host/candump.hpp>

@@ -19,12 +19,16 @@
 // the NMT state, and when to poll at the latest. What happened is in events().
 //
 // The node keeps the store and its services consistent through the store's writes: SDO
-// downloads and RPDOs reach the store through the device (device::access), which first checks
-// the CiA 301 rules of the communication objects it serves (1003h, 1005h, 1014h, 1016h, 1019h,
-// 1200h–12FFh, 1400h–1BFFh), then lets the store write (its checks and the application's write
-// hook), then follows the new value (1005h, 1007h, 100Ch, 100Dh, 1014h–1017h, 1019h, SDO and
-// PDO parameters) and marks the event-driven TPDOs that map the object. Nothing is rescanned.
-// The application writes its own values with set() (same path, no access check, no hook).
+// downloads and RPDOs reach the store through the device (device::access). Each service owns
+// its communication objects (the SYNC consumer 1005h, 1007h, 1019h; life guarding 100Ch,
+// 100Dh; the EMCY producer 1001h, 1003h, 1014h, 1015h; the heartbeat producer 1017h and
+// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh) and has the
+// three members the device calls for every service in turn (each_service): check_write (the
+// CiA 301 rules of its objects), written (follow a stored value) and load (read them all at
+// start and after a reset). A write is checked by the owning service, stored by the store
+// (its checks and the application's write hook), followed by the owning service, and the
+// event-driven TPDOs that map the object are marked. Nothing is rescanned. The application
+// writes its own values with set() (same path, no access check, no hook).
 //
 // The node owns 1001h (error register) and 1003h (pre-defined error field) and writes them
 // whenever its EMCY producer changes, and it raises and clears these EMCY codes itself:
@@ -44,12 +48,14 @@
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
 #include <fieldcodec/canopen/node/emcy_producer.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
+#include <fieldcodec/canopen/node/store.hpp>
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>
@@ -85,6 +91,11 @@ struct capacity {
   /// (crc::ccitt16_with_table: 512 bytes of flash, about half the instructions a byte) instead
   /// of without one (the default). The SDO clients compute it without a table either way.
   bool sdo_crc_table = false;
+  /// The PDO engine copies the mapped objects that the store keeps plain as runs of bytes
+  /// (pdo_engine::by_copy, the fastest way; the default) instead of reading and writing them
+  /// one by one (false: about 0.8 kB less flash on Cortex-M, each mapped object then costs a
+  /// store call per SYNC or RPDO). Same frames and stored values either way.
+  bool pdo_copies = true;
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
@@ -232,12 +243,12 @@ public:
     // reads as the store shows them; never writable, since every write of the device, an
     // RPDO's too, goes through its rules (check, follow: the services, mark), which a copy
     // would skip
-    [[nodiscard]] constexpr std::span<std::uint8_t>
-    plain_storage() noexcept requires canopen::plain_store<Store> {
+    [[nodiscard]] constexpr std::span<std::uint8_t> plain_storage() noexcept
+        requires(canopen::plain_store<Store> &&C.pdo_copies) {
       return d_->store_->plain_storage();
     }
-    [[nodiscard]] constexpr canopen::plain_slot
-    plain_at(std::size_t at) const noexcept requires canopen::plain_store<Store> {
+    [[nodiscard]] constexpr canopen::plain_slot plain_at(std::size_t at) const noexcept
+        requires(canopen::plain_store<Store> &&C.pdo_copies) {
       canopen::plain_slot p = d_->store_->plain_at(at);
       p.writable = false;
       return p;
@@ -286,54 +297,7 @@ public:
   /// A received frame: routed by COB-ID to the service it belongs to.
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
     begin(now);
-    if (!started_ || f.id > max_can_id || f.dlc > max_dlc) return finish(now);
-    if (f.id == cob_id::nmt) {
-      nmt_frame(f, now);
-      return finish(now);
-    }
-    const nmt::state s = nmt_.state();
-    if (s == nmt::state::boot_up) return finish(now);
-    if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
-      if (auto r = guard_.respond(f, s)) out_.push(r.value());
-      const auto before = life_.state();
-      (void)life_.on_request(now);
-      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
-      return finish(now);
-    }
-    if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
-      const auto r = sync_.on_frame(f, now);
-      if (r.state.received) {
-        event e{event::kind::sync};
-        e.counter = r.state.counter;
-        push_event(e);
-        take(pdo_.on_sync(r.state.counter, now));
-        pdo_events();
-      }
-      return finish(now);
-    }
-    if (allowed(s, service::sdo)) {
-      if (auto r = sdo_.on_frame(f, now)) {
-        if (r->send.is_burst()) {
-          burst_ = r->send;
-        } else {
-          take(*r);
-        }
-        return finish(now);
-      }
-    }
-    if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
-      (void)consumer_.on_frame(f, now);
-      for (const auto &h : consumer_.events()) {
-        event e{event::kind::heartbeat};
-        e.heartbeat = h;
-        push_event(e);
-      }
-      return finish(now);
-    }
-    if (allowed(s, service::pdo)) {
-      take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
-      pdo_events();
-    }
+    route(f, now);
     return finish(now);
   }
 
@@ -455,17 +419,17 @@ public:
   raise(std::uint16_t code, std::uint32_t now, std::uint8_t register_bits = 0,
         std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
     begin(now);
-    auto r = emcy_.raise(code, now, register_bits, manufacturer);
-    if (!r) return r.error();
-    take(r.value());
+    if (const status r = emcy_.raise_error(code, now, register_bits, manufacturer); !r) {
+      return r.error();
+    }
+    take_frames(frames(emcy_.sent()));
     return finish(now);
   }
   /// An application error is gone (see emcy_producer::clear).
   [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
     begin(now);
-    auto r = emcy_.clear(code, now);
-    if (!r) return r.error();
-    take(r.value());
+    if (const status r = emcy_.clear_error(code, now); !r) return r.error();
+    take_frames(frames(emcy_.sent()));
     return finish(now);
   }
   /// A local NMT state change (the device's error behaviour, or no NMT master).
@@ -516,7 +480,7 @@ private:
   }
   [[nodiscard]] constexpr step finish(std::uint32_t now) noexcept {
     update_errors(now);
-    mirror_emcy();
+    emcy_.publish(*store_);
     step s;
     s.state = nmt_.state();
     s.deadline = deadline(now);
@@ -531,7 +495,12 @@ private:
   }
   template <class Step>
   constexpr void take(const Step &s) noexcept {
-    for (const can_frame &f : s.send) out_.push(f);
+    take_frames(s.send);
+  }
+  /// The frames a service's step sends go out with the node's (one function for every
+  /// service: called from many places, not inlined into each).
+  [[gnu::noinline]] constexpr void take_frames(const frames &send) noexcept {
+    for (const can_frame &f : send) out_.push(f);
   }
   constexpr void push_event(const event &e) noexcept { events_.push(e); }
   constexpr void pdo_events() noexcept {
@@ -567,6 +536,58 @@ private:
     return d;
   }
 
+  /// on_frame's routing (the step is built once, after it).
+  constexpr void route(const can_frame &f, std::uint32_t now) noexcept {
+    if (!started_ || f.id > max_can_id || f.dlc > max_dlc) return;
+    if (f.id == cob_id::nmt) {
+      nmt_frame(f, now);
+      return;
+    }
+    const nmt::state s = nmt_.state();
+    if (s == nmt::state::boot_up) return;
+    if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
+      if (auto r = guard_.respond(f, s)) out_.push(r.value());
+      const auto before = life_.state();
+      (void)life_.on_request(now);
+      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
+      return;
+    }
+    if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
+      const auto r = sync_.on_frame(f, now);
+      if (r.state.received) {
+        event e{event::kind::sync};
+        e.counter = r.state.counter;
+        push_event(e);
+        take(pdo_.on_sync(r.state.counter, now));
+        pdo_events();
+      }
+      return;
+    }
+    if (allowed(s, service::sdo)) {
+      if (auto r = sdo_.on_frame(f, now)) {
+        if (r->send.is_burst()) {
+          burst_ = r->send;
+        } else {
+          take(*r);
+        }
+        return;
+      }
+    }
+    if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
+      (void)consumer_.on_frame(f, now);
+      for (const auto &h : consumer_.events()) {
+        event e{event::kind::heartbeat};
+        e.heartbeat = h;
+        push_event(e);
+      }
+      return;
+    }
+    if (allowed(s, service::pdo)) {
+      take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
+      pdo_events();
+    }
+  }
+
   // ----- NMT -------------------------------------------------------------------------------
 
   constexpr void nmt_frame(const can_frame &f, std::uint32_t now) noexcept {
@@ -583,8 +604,6 @@ private:
       }
       const auto comm = restored(reset::communication);
       if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
-      emcy_.reset();
-      own_errors_ = 0;
       guard_.reset();
       configure(now);
       if (!st && config_) config_ = st;
@@ -596,7 +615,6 @@ private:
   /// Send the boot-up message and enter pre-operational (or operational).
   constexpr void boot(std::uint32_t now) noexcept {
     take(nmt_.boot(options_.self_start));
-    producer_.configure(static_cast<std::uint16_t>(read(0x1017, 0).value_or(0)), now);
     state_changed(now);
   }
   constexpr void state_changed(std::uint32_t now) noexcept {
@@ -610,105 +628,53 @@ private:
     push_event(e);
   }
 
-  // ----- configuration ---------------------------------------------------------------------
+  // ----- the services and their objects ---------------------------------------------------
 
-  [[nodiscard]] constexpr std::optional<std::uint32_t> read(std::uint16_t index,
-                                                            std::uint8_t sub) const noexcept {
-    return read_u32(*store_, {index, sub});
+  /// Call f(service) for every service that owns objects, in this order (the order of their
+  /// loads: configuration() keeps the first error). A service owns its objects: it checks a
+  /// value written to them (check_write: abort_code::none for objects that are not its own),
+  /// follows a stored one (written) and reads them all from the store when the node starts or
+  /// resets (load). Adding a service to the node is a member and a line here.
+  template <class Self, class F>
+  static constexpr void each_service(Self &self, F f) noexcept {
+    f(self.sync_);
+    f(self.life_);
+    f(self.emcy_);
+    f(self.producer_);
+    f(self.consumer_);
+    f(self.pdo_);
+    f(self.sdo_);
   }
-  /// Read every service's parameters from the store.
+
+  /// Read every service's objects from the store (start, NMT resets).
   constexpr void configure(std::uint32_t now) noexcept {
     config_ = status{};
-    const od::dictionary dict = store_->dictionary();
-    // single values: follow them as if they had just been written
-    constexpr std::uint16_t singles[] = {0x1005, 0x1007, 0x100C, 0x1015, 0x1019};
-    sync_ = sync_consumer{};
-    for (const std::uint16_t i : singles) {
-      if (auto v = store_->value({i, 0})) follow_comm({i, 0}, v.value());
-    }
-    emcy_.load_cob_id(read(0x1014, 0).value_or(cob_id::emcy(node_).value_or(0)));
-    for (std::size_t i = 0; i < C.heartbeat_consumers; ++i) {
-      (void)consumer_.configure(i, 0, now);
-    }
-    for (const od::entry &e : dict.object(0x1016)) {
-      if (e.sub == 0U) continue;
-      if (e.sub > C.heartbeat_consumers) {
-        config_ = errc::too_long;
-        continue;
-      }
-      const auto v = read(0x1016, e.sub).value_or(0);
-      if (consumer_.configure(e.sub - 1U, v, now) != abort_code::none && config_) {
-        config_ = errc::invalid_argument; // a stored entry the rules refuse (duplicate node)
-      }
-    }
-    consumer_.restart();
-    life_.restart();
-    if (auto s = pdo_.reload(); !s && config_) config_ = s;
-    if (auto s = sdo_.reload(dict); !s && config_) config_ = s;
-    sdo_.stop_servers();
-    emcy_.clear_history(); // and mirror_emcy writes 1001h / 1003h
+    own_errors_ = 0;
+    each_service(*this, [&](auto &service) {
+      if (const status st = service.load(*store_, now); !st && config_) config_ = st;
+    });
   }
 
-  // ----- writes ----------------------------------------------------------------------------
-
-  /// The CiA 301 rules for the communication objects the node serves.
+  /// The CiA 301 rules of the communication objects: the check of the service that owns `a`.
   [[nodiscard]] constexpr abort_code check(od::address a,
                                            std::span<const std::uint8_t> value) const noexcept {
     const auto v = u32_of(value);
-    switch (a.index) {
-    case 0x1003: return a.sub == 0U && v && *v != 0U ? abort_code::invalid_value : abort_code::none;
-    case 0x1005: return v ? sync_consumer::check_cob_id(*v) : abort_code::none;
-    case 0x1014: return v ? emcy_.check_cob_id(*v) : abort_code::none;
-    case 0x1016:
-      if (a.sub == 0U || !v) return abort_code::none;
-      if (a.sub > C.heartbeat_consumers) {
-        return *v == 0U ? abort_code::none : abort_code::device_incompatible;
-      }
-      return consumer_.check(a.sub - 1U, *v);
-    case 0x1019: return v ? sync_consumer::check_overflow(*v) : abort_code::none;
-    default: break;
-    }
-    if (a.index >= sdo_index::server && a.index < sdo_index::client + sdo_index::count) {
-      return sdo_.check_write(a, value);
-    }
-    return pdo_.check_write(a, value);
+    abort_code c = abort_code::none;
+    if (!v || a.index < 0x1000U || a.index > 0x1FFFU) return c;
+    each_service(*this, [&](const auto &service) {
+      if (c == abort_code::none) c = service.check_write(a, *v);
+    });
+    return c;
   }
 
-  /// A value was stored at `a` (by SDO, RPDO or set()): the services follow it.
+  /// A value was stored at `a` (by SDO, RPDO or set()): the service that owns it follows it,
+  /// and the event-driven TPDOs that map it become due.
   constexpr void follow(od::address a, std::span<const std::uint8_t> value) noexcept {
-    if (a.index >= 0x1000U && a.index <= 0x1FFFU) follow_comm(a, value);
-    pdo_.mark(a);
-  }
-  constexpr void follow_comm(od::address a, std::span<const std::uint8_t> value) noexcept {
     const auto v = u32_of(value);
-    if (!v) return;
-    switch (a.index) {
-    case 0x1003:
-      if (a.sub == 0U) emcy_.clear_history();
-      return;
-    case 0x1005: (void)sync_.set_cob_id(*v); return;
-    case 0x1007: sync_.set_window_us(*v); return;
-    case 0x100C:
-    case 0x100D:
-      life_.configure(static_cast<std::uint16_t>(read(0x100C, 0).value_or(0)),
-                      static_cast<std::uint8_t>(read(0x100D, 0).value_or(0)));
-      return;
-    case 0x1014: (void)emcy_.set_cob_id(*v); return;
-    case 0x1015: emcy_.set_inhibit(static_cast<std::uint16_t>(*v)); return;
-    case 0x1016:
-      if (a.sub >= 1U && a.sub <= C.heartbeat_consumers) {
-        (void)consumer_.configure(a.sub - 1U, *v, now_);
-      }
-      return;
-    case 0x1017: producer_.configure(static_cast<std::uint16_t>(*v), now_); return;
-    case 0x1019: (void)sync_.set_overflow(*v); return;
-    default: break;
+    if (v && a.index >= 0x1000U && a.index <= 0x1FFFU) {
+      each_service(*this, [&](auto &service) { service.written(a, *v, now_); });
     }
-    if (a.index >= sdo_index::server && a.index < sdo_index::client + sdo_index::count) {
-      sdo_.written(a);
-      return;
-    }
-    pdo_.written(a, value, now_);
+    pdo_.mark(a);
   }
 
   /// The path of every SDO and RPDO write (device::access); `at`: a's position in a
@@ -744,47 +710,33 @@ private:
 
   // ----- EMCY ------------------------------------------------------------------------------
 
-  /// Raise or clear the node-managed codes as their conditions are now.
+  /// Raise or clear the node-managed codes as their conditions are now: bit i of own_errors_
+  /// is managed_codes[i], raised by the node.
+  static constexpr std::uint16_t managed_codes[] = {
+      managed_code::guarding, managed_code::rpdo_short, managed_code::rpdo_long,
+      managed_code::sync_length, managed_code::rpdo_timeout};
   constexpr void update_errors(std::uint32_t now) noexcept {
     if (!started_) return;
-    constexpr std::uint16_t codes[] = {managed_code::guarding, managed_code::rpdo_short,
-                                       managed_code::rpdo_long, managed_code::sync_length,
-                                       managed_code::rpdo_timeout};
-    const bool on[] = {consumer_.any_lost() || life_.state() == guard_state::lost,
-                       pdo_.any_too_short(), pdo_.any_too_long(), sync_.length_error(),
-                       pdo_.any_timed_out()};
-    for (std::size_t i = 0; i < std::size(codes); ++i) {
-      const auto mask = static_cast<std::uint8_t>(1U << i);
-      const bool mine = (own_errors_ & mask) != 0U;
-      if (on[i] && !mine) {
-        if (auto r = emcy_.raise(codes[i], now)) {
-          take(r.value());
-          own_errors_ = static_cast<std::uint8_t>(own_errors_ | mask);
-        }
-      } else if (!on[i] && mine) {
-        own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~mask);
-        if (auto r = emcy_.clear(codes[i], now)) take(r.value());
-      }
+    const auto pdo = pdo_.rpdo_errors();
+    const unsigned on = (consumer_.any_lost() || life_.state() == guard_state::lost ? 1U : 0U) |
+                        (pdo.too_short ? 2U : 0U) | (pdo.too_long ? 4U : 0U) |
+                        (sync_.length_error() ? 8U : 0U) | (pdo.timed_out ? 16U : 0U);
+    if (on == own_errors_) return;
+    for (std::size_t i = 0; i < std::size(managed_codes); ++i) {
+      const unsigned bit = 1U << i;
+      if (((on ^ own_errors_) & bit) != 0U) change_error(i, (on & bit) != 0U, now);
     }
   }
-  /// Write 1001h and 1003h after the EMCY producer changed.
-  constexpr void mirror_emcy() noexcept {
-    if (!emcy_.take_changed()) return;
-    (void)store_->set({0x1001, 0}, encode_le(emcy_.error_register(), 1).span());
-    const auto history = emcy_.history();
-    std::uint8_t top = 0;
-    for (const od::entry &e : store_->dictionary().object(0x1003)) {
-      if (e.sub > top) top = e.sub;
-    }
-    if (top == 0U && !store_->dictionary().contains(0x1003, 0)) return;
-    const std::size_t n = history.size() < top ? history.size() : top;
-    for (std::size_t k = 1; k <= top; ++k) {
-      const std::uint32_t v = k <= n ? history[k - 1U] : 0U;
-      (void)store_->set({0x1003, static_cast<std::uint8_t>(k)}, encode_le(v, 4).span());
-    }
-    (void)store_->set({0x1003, 0}, encode_le(static_cast<std::uint32_t>(n), 1).span());
+  /// Raise (`on`) or clear managed_codes[i].
+  constexpr void change_error(std::size_t i, bool on, std::uint32_t now) noexcept {
+    const auto bit = static_cast<std::uint8_t>(1U << i);
+    const status r =
+        on ? emcy_.raise_error(managed_codes[i], now) : emcy_.clear_error(managed_codes[i], now);
+    if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
+    if (!r) return;
+    take_frames(frames(emcy_.sent()));
+    if (on) own_errors_ = static_cast<std::uint8_t>(own_errors_ | bit);
   }
-
   // ----- members ---------------------------------------------------------------------------
 
   // one call sends at most: boot-up or heartbeat, a guarding response, each TPDO once, one

@@ -29,9 +29,13 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
@@ -114,9 +118,24 @@ public:
   [[nodiscard]] constexpr result<step>
   raise(std::uint16_t code, std::uint32_t now, std::uint8_t register_bits = 0,
         std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
+    if (const status st = raise_error(code, now, register_bits, manufacturer); !st) {
+      return st.error();
+    }
+    return make(now);
+  }
+  /// An error is gone. Errors: unknown_object (the code is not active: nothing sent).
+  [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
+    if (const status st = clear_error(code, now); !st) return st.error();
+    return make(now);
+  }
+  /// raise() and clear() without the step (what node::device calls): the frames they send are
+  /// sent() until the next call.
+  constexpr status raise_error(std::uint16_t code, std::uint32_t now,
+                               std::uint8_t register_bits = 0,
+                               std::array<std::uint8_t, 5> manufacturer = {}) noexcept {
     out_.clear();
     if (code == emcy::code::error_reset) return errc::invalid_argument;
-    if (find(code) < MaxActive) return make(now);
+    if (find(code) < MaxActive) return {};
     if (count_ == MaxActive) return errc::buffer_too_small;
     active_[count_++] = {code, static_cast<std::uint8_t>(register_bits & ~emcy::reg::reserved),
                          manufacturer};
@@ -124,11 +143,10 @@ public:
                  (std::uint32_t{manufacturer[1]} << 24U));
     changed_ = true;
     enqueue({code, error_register(), manufacturer});
-    return flush(now);
+    send_queued(now);
+    return {};
   }
-
-  /// An error is gone. Errors: unknown_object (the code is not active: nothing sent).
-  [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
+  constexpr status clear_error(std::uint16_t code, std::uint32_t now) noexcept {
     out_.clear();
     const std::size_t i = find(code);
     if (i >= MaxActive) return errc::unknown_object;
@@ -138,8 +156,11 @@ public:
     if (count_ == 0U || report_each_reset_) {
       enqueue({emcy::code::error_reset, error_register(), {}});
     }
-    return flush(now);
+    send_queued(now);
+    return {};
   }
+  /// The frames the last call sent.
+  [[nodiscard]] constexpr std::span<const can_frame> sent() const noexcept { return out_.span(); }
 
   /// Every error gone at once (one "error reset" message when any was active).
   [[nodiscard]] constexpr step clear_all(std::uint32_t now) noexcept {
@@ -173,6 +194,54 @@ public:
 
   /// With `on`, every clear() sends "error reset" (0000h) with the remaining register.
   constexpr void report_each_reset(bool on) noexcept { report_each_reset_ = on; }
+
+  // ----- its objects in a node (node::device) ------------------------------------------------
+
+  /// Would `v` be accepted for `a`? 1003h sub 0 takes only 0 (it empties the history), 1014h
+  /// as check_cob_id says (0x06090030); none for every other object.
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
+    if (a.index == 0x1003U) {
+      return a.sub == 0U && v != 0U ? abort_code::invalid_value : abort_code::none;
+    }
+    if (a.index == 0x1014U) return check_cob_id(v);
+    return abort_code::none;
+  }
+  /// `v` was stored at `a`: follow 1003h sub 0 (history emptied), 1014h and 1015h.
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
+    if (a.index == 0x1003U && a.sub == 0U) clear_history();
+    if (a.index == 0x1014U) (void)set_cob_id(v);
+    if (a.index == 0x1015U) set_inhibit(static_cast<std::uint16_t>(v));
+  }
+  /// Start afresh (boot, NMT reset: no errors, empty history, nothing queued) with 1014h and
+  /// 1015h from `store`, and note where 1003h is, for publish().
+  template <class Store>
+  constexpr status load(const Store &store, std::uint32_t) noexcept {
+    reset();
+    if (const auto v = read_u32(store, {0x1014, 0})) load_cob_id(*v);
+    if (const auto v = read_u32(store, {0x1015, 0})) set_inhibit(static_cast<std::uint16_t>(*v));
+    const auto dict = store.dictionary();
+    history_subs_ = 0;
+    for (const auto &e : dict.object(0x1003)) {
+      if (e.sub > history_subs_) history_subs_ = e.sub;
+    }
+    has_history_ = history_subs_ != 0U || dict.contains(0x1003, 0);
+    return {};
+  }
+  /// After a change (take_changed()): write the error register to 1001h and the history to
+  /// 1003h (sub 1.. newest first, the others 0, then sub 0 = the number of entries) with the
+  /// store's set().
+  template <class Store>
+  constexpr void publish(Store &store) noexcept {
+    if (!take_changed()) return;
+    (void)store.set({0x1001, 0}, encode_le(error_register(), 1).span());
+    if (!has_history_) return;
+    const std::size_t n = history_count_ < history_subs_ ? history_count_ : history_subs_;
+    for (std::size_t k = 1; k <= history_subs_; ++k) {
+      const std::uint32_t v = k <= n ? history_[k - 1U] : 0U;
+      (void)store.set({0x1003, static_cast<std::uint8_t>(k)}, encode_le(v, 4).span());
+    }
+    (void)store.set({0x1003, 0}, encode_le(static_cast<std::uint32_t>(n), 1).span());
+  }
 
   // ----- state -----------------------------------------------------------------------------
 
@@ -235,6 +304,11 @@ private:
   }
   [[nodiscard]] constexpr step flush(std::uint32_t now) noexcept {
     out_.clear();
+    send_queued(now);
+    return make(now);
+  }
+  /// Send what the queue holds and the inhibit time allows (appended to out_).
+  constexpr void send_queued(std::uint32_t now) noexcept {
     if (inhibited_ && reached(inhibit_until_, now)) inhibited_ = false;
     while (queued_ > 0U && !inhibited_) {
       can_frame f;
@@ -253,7 +327,6 @@ private:
         inhibit_until_ = now + inhibit_ms_;
       }
     }
-    return make(now);
   }
   [[nodiscard]] constexpr step make([[maybe_unused]] std::uint32_t now) const noexcept {
     return {out_.view(), error_register(), deadline()};
@@ -275,6 +348,8 @@ private:
   bool enabled_ = true;
   bool changed_ = false;
   bool report_each_reset_ = false;
+  std::uint8_t history_subs_ = 0; ///< the highest sub-index of 1003h (load)
+  bool has_history_ = false;      ///< the dictionary has 1003h (load)
 };
 
 } // namespace fieldcodec::canopen::node

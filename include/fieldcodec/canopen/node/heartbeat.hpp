@@ -20,9 +20,12 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <array>
 #include <cstddef>
@@ -53,15 +56,31 @@ public:
   /// No heartbeat until the next configure() (while initialising).
   constexpr void stop() noexcept { period_ = 0; }
 
+  // its object in a node (node::device): 1017h, any value
+  [[nodiscard]] constexpr abort_code check_write(od::address, std::uint32_t) const noexcept {
+    return abort_code::none;
+  }
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t now) noexcept {
+    if (a.index == 0x1017U) configure(static_cast<std::uint16_t>(v), now);
+  }
+  /// 1017h from `store` (0 when absent); the next heartbeat a period after `now` (the boot-up
+  /// message, sent at the same time, counts as the first).
+  template <class Store>
+  constexpr status load(const Store &store, std::uint32_t now) noexcept {
+    configure(static_cast<std::uint16_t>(read_u32(store, {0x1017, 0}).value_or(0U)), now);
+    return {};
+  }
+
   /// The heartbeat when it is due, with the state `s`. A poll later than one period sends one
   /// heartbeat (not one per missed period) and schedules the next a period after `now`.
   [[nodiscard]] constexpr step poll(std::uint32_t now, nmt::state s) noexcept {
-    if (period_ == 0U || !reached(due_, now)) return make({}, s);
-    due_ += period_;
-    if (reached(due_, now)) due_ = now + period_;
-    auto f = nmt::encode_heartbeat(node_, s);
-    if (!f) return make({}, s);
-    return make(frames(f.value()), s);
+    frames out;
+    if (period_ != 0U && reached(due_, now)) {
+      due_ += period_;
+      if (reached(due_, now)) due_ = now + period_;
+      if (const auto f = nmt::encode_heartbeat(node_, s)) out = frames(f.value());
+    }
+    return {out, s, deadline()};
   }
 
   [[nodiscard]] constexpr std::uint16_t period() const noexcept { return period_; }
@@ -71,9 +90,6 @@ public:
   }
 
 private:
-  [[nodiscard]] constexpr step make(frames f, nmt::state s) const noexcept {
-    return {f, s, deadline()};
-  }
   std::uint8_t node_;
   std::uint16_t period_ = 0;
   std::uint32_t due_ = 0;
@@ -177,6 +193,38 @@ public:
     m_[i].entry = decode_consumer_entry(value).value();
     m_[i].state = m_[i].entry.active() ? monitor_state::waiting : monitor_state::off;
     return abort_code::none;
+  }
+
+  // ----- its object in a node (node::device): 1016h sub 1..N ---------------------------------
+
+  /// Would `v` be accepted for `a`? 1016h sub 1..N as check() says; a sub-index beyond N takes
+  /// only 0 (an entry the consumer cannot serve may stay off; anything else is 0x06040047).
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
+    if (a.index != 0x1016U || a.sub == 0U) return abort_code::none;
+    if (a.sub > N) return v == 0U ? abort_code::none : abort_code::device_incompatible;
+    return check(a.sub - 1U, v);
+  }
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t now) noexcept {
+    if (a.index == 0x1016U && a.sub >= 1U && a.sub <= N) (void)configure(a.sub - 1U, v, now);
+  }
+  /// Every entry from 1016h in `store`, each monitor waiting for a first heartbeat. Errors:
+  /// too_long (1016h has more entries than N: those are not served), invalid_argument (a stored
+  /// entry check() refuses, e.g. a second entry for a node: left off).
+  template <class Store>
+  constexpr status load(const Store &store, std::uint32_t now) noexcept {
+    status st{};
+    for (std::size_t i = 0; i < N; ++i) (void)configure(i, 0, now);
+    for (const auto &e : store.dictionary().object(0x1016)) {
+      if (e.sub == 0U) continue;
+      if (e.sub > N) {
+        st = errc::too_long;
+        continue;
+      }
+      const auto v = read_u32(store, {0x1016, e.sub}).value_or(0U);
+      if (configure(e.sub - 1U, v, now) != abort_code::none && st) st = errc::invalid_argument;
+    }
+    restart();
+    return st;
   }
 
   /// Monitoring on or off (the node's NMT state: on in pre-operational and operational). Off
@@ -329,8 +377,26 @@ public:
   using step = canopen::step<guard_state>;
 
   constexpr void configure(std::uint16_t guard_ms, std::uint8_t factor) noexcept {
+    guard_ms_ = guard_ms;
+    factor_ = factor;
     life_ = std::uint32_t{guard_ms} * factor;
     state_ = life_ == 0U ? guard_state::off : guard_state::waiting;
+  }
+
+  // its objects in a node (node::device): 100Ch guard time, 100Dh life time factor
+  [[nodiscard]] constexpr abort_code check_write(od::address, std::uint32_t) const noexcept {
+    return abort_code::none;
+  }
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
+    if (a.index == 0x100CU) configure(static_cast<std::uint16_t>(v), factor_);
+    if (a.index == 0x100DU) configure(guard_ms_, static_cast<std::uint8_t>(v));
+  }
+  /// 100Ch and 100Dh from `store` (0 when absent); waiting for a first request.
+  template <class Store>
+  constexpr status load(const Store &store, std::uint32_t) noexcept {
+    configure(static_cast<std::uint16_t>(read_u32(store, {0x100C, 0}).value_or(0U)),
+              static_cast<std::uint8_t>(read_u32(store, {0x100D, 0}).value_or(0U)));
+    return {};
   }
   /// A guarding request arrived (the caller answers it with nmt::guard_responder).
   [[nodiscard]] constexpr step on_request(std::uint32_t now) noexcept {
@@ -359,6 +425,8 @@ private:
   [[nodiscard]] constexpr step make() const noexcept { return {{}, state_, deadline()}; }
   std::uint32_t life_ = 0;
   std::uint32_t due_ = 0;
+  std::uint16_t guard_ms_ = 0;
+  std::uint8_t factor_ = 0;
   guard_state state_ = guard_state::off;
 };
 

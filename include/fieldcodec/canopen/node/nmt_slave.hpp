@@ -22,7 +22,6 @@
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
 
@@ -91,13 +90,14 @@ public:
   /// bit 2 that a device without an NMT master needs). Clears pending_reset().
   [[nodiscard]] constexpr step boot(bool self_start = false) noexcept {
     pending_ = reset::none;
-    auto f = nmt::encode_boot_up(node_);
-    if (!f) {
+    frames out;
+    if (const auto f = nmt::encode_boot_up(node_)) {
+      state_ = self_start ? nmt::state::operational : nmt::state::pre_operational;
+      out = frames(f.value());
+    } else {
       error_ = f.error();
-      return make({});
     }
-    state_ = self_start ? nmt::state::operational : nmt::state::pre_operational;
-    return make(frames(f.value()));
+    return make(out);
   }
 
   /// An NMT command frame (COB-ID 0). Frames on other identifiers are not for the slave and are
@@ -106,16 +106,23 @@ public:
   /// initialising every command is ignored (error(): bad_state).
   [[nodiscard]] constexpr step on_frame(const can_frame &f,
                                         [[maybe_unused]] std::uint32_t now) noexcept {
-    if (f.id != cob_id::nmt) return make({});
+    take(f);
+    return make({});
+  }
+
+private:
+  /// on_frame's work (one step is built, at its end).
+  constexpr void take(const can_frame &f) noexcept {
+    if (f.id != cob_id::nmt) return;
     auto m = nmt::decode(f);
     if (!m) {
       error_ = m.error();
-      return make({});
+      return;
     }
-    if (m.value().node != 0U && m.value().node != node_) return make({});
+    if (m.value().node != 0U && m.value().node != node_) return;
     if (state_ == nmt::state::boot_up) {
       error_ = errc::bad_state;
-      return make({});
+      return;
     }
     error_.reset();
     switch (m.value().cs) {
@@ -132,9 +139,9 @@ public:
       if (pending_ != reset::application) pending_ = reset::communication;
       break;
     }
-    return make({});
   }
 
+public:
   /// A state change the device decides itself (its error behaviour, e.g. 1029h, or an
   /// application without NMT master). Errors: invalid_argument (boot_up: use a reset),
   /// bad_state (initialising: boot() first).

@@ -48,7 +48,10 @@
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/step.hpp>
@@ -123,19 +126,22 @@ struct pdo_event {
   return "?";
 }
 
-/// A PDO's parameters as the engine holds them.
+/// A PDO's parameters as the engine holds them. (Every member is 0 until the engine loads them:
+/// an engine's tables start as zeros, which cost a firmware image no initialising code.)
 template <std::size_t MaxEntries>
 struct pdo_config {
-  std::uint16_t number = 0;              ///< 1..512
-  std::uint32_t cob = cob_bits::invalid; ///< sub 1 as stored
-  std::uint8_t type = 255;               ///< sub 2
-  std::uint16_t inhibit = 0;             ///< sub 3, 100 µs
-  std::uint16_t event_timer = 0;         ///< sub 5, ms
-  std::uint8_t sync_start = 0;           ///< sub 6
-  std::uint8_t count = 0;                ///< mapping sub 0
-  std::uint8_t map_subs = 0;             ///< highest mapping sub-index the dictionary has
-  std::uint8_t bytes = 0;                ///< length of the mapped data
-  bool usable = true;                    ///< false: the stored configuration is broken
+  std::uint16_t number = 0;      ///< 1..512
+  std::uint32_t cob = 0;         ///< sub 1 as stored
+  std::uint8_t type = 0;         ///< sub 2
+  std::uint16_t inhibit = 0;     ///< sub 3, 100 µs
+  std::uint16_t event_timer = 0; ///< sub 5, ms
+  std::uint8_t sync_start = 0;   ///< sub 6
+  std::uint8_t count = 0;        ///< mapping sub 0
+  std::uint8_t map_subs = 0;     ///< highest mapping sub-index the dictionary has
+  std::uint8_t bytes = 0;        ///< length of the mapped data
+  /// Loaded and servable (false before the engine loaded it, or when the stored configuration
+  /// is broken: the PDO is then never sent or received).
+  bool usable = false;
   std::array<pdo::mapping_entry, MaxEntries> map{};
 
   [[nodiscard]] constexpr bool valid() const noexcept {
@@ -258,25 +264,30 @@ public:
   /// length the store will refuse itself.
   [[nodiscard]] constexpr abort_code
   check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    const auto v = u32_of(value);
+    return v ? check_write(a, *v) : abort_code::none;
+  }
+  /// The same for a value of 1..4 bytes as a number (node::device decodes it once for all its
+  /// services).
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
     const place where = locate(a.index);
     if (!where.found) return abort_code::none;
-    const auto v = u32_of(value);
-    if (!v) return abort_code::none;
-    return where.mapping ? check_mapping(slot(where), where.dir, a, *v)
-                         : check_comm(slot(where), where.dir, a.sub, *v);
+    return where.mapping ? check_mapping(slot(where), where.dir, a, v)
+                         : check_comm(slot(where), where.dir, a.sub, v);
   }
 
   /// `value` was stored at `a`: follow it.
   constexpr void written(od::address a, std::span<const std::uint8_t> value,
                          std::uint32_t now) noexcept {
+    if (const auto v = u32_of(value)) written(a, *v, now);
+  }
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t now) noexcept {
     const place where = locate(a.index);
     if (!where.found) return;
-    const auto v = u32_of(value);
-    if (!v) return;
     config &c = slot(where);
     if (where.mapping) {
       if (a.sub == 0U) {
-        c.count = static_cast<std::uint8_t>(*v);
+        c.count = static_cast<std::uint8_t>(v);
         (void)load_mapping(c, positions_of(where), where.dir);
         reindex();
       }
@@ -284,11 +295,11 @@ public:
     }
     const bool was_valid = c.valid();
     switch (a.sub) {
-    case 1: c.cob = *v; break;
-    case 2: c.type = static_cast<std::uint8_t>(*v); break;
-    case 3: c.inhibit = static_cast<std::uint16_t>(*v); break;
-    case 5: c.event_timer = static_cast<std::uint16_t>(*v); break;
-    case 6: c.sync_start = static_cast<std::uint8_t>(*v); break;
+    case 1: c.cob = v; break;
+    case 2: c.type = static_cast<std::uint8_t>(v); break;
+    case 3: c.inhibit = static_cast<std::uint16_t>(v); break;
+    case 5: c.event_timer = static_cast<std::uint16_t>(v); break;
+    case 6: c.sync_start = static_cast<std::uint8_t>(v); break;
     default: return;
     }
     // a new COB-ID, type or timer: the PDO starts afresh (a TPDO that became valid is due)
@@ -298,6 +309,11 @@ public:
       rpdo_[where.slot].restart();
     }
     reindex();
+  }
+  /// reload(), as node::device starts its services (the engine reads through its own store).
+  template <class Any>
+  constexpr status load(const Any &, std::uint32_t) noexcept {
+    return reload();
   }
 
   // ----- traffic ---------------------------------------------------------------------------
@@ -468,14 +484,25 @@ public:
     return n;
   }
   /// An RPDO's last frame was too short / too long; an RPDO's deadline passed.
-  [[nodiscard]] constexpr bool any_too_short() const noexcept {
-    return any([](const rx_slot &r) { return r.short_error; });
-  }
-  [[nodiscard]] constexpr bool any_too_long() const noexcept {
-    return any([](const rx_slot &r) { return r.long_error; });
-  }
-  [[nodiscard]] constexpr bool any_timed_out() const noexcept {
-    return any([](const rx_slot &r) { return r.timed_out; });
+  [[nodiscard]] constexpr bool any_too_short() const noexcept { return rpdo_errors().too_short; }
+  [[nodiscard]] constexpr bool any_too_long() const noexcept { return rpdo_errors().too_long; }
+  [[nodiscard]] constexpr bool any_timed_out() const noexcept { return rpdo_errors().timed_out; }
+  /// The three at once (one pass over the RPDOs).
+  struct rpdo_error_flags {
+    bool too_short = false;
+    bool too_long = false;
+    bool timed_out = false;
+  };
+  [[nodiscard]] constexpr rpdo_error_flags rpdo_errors() const noexcept {
+    rpdo_error_flags e;
+    for (std::size_t i = 0; i < rpdo_count_; ++i) {
+      const rx_slot &r = rpdo_[i];
+      if (!r.c.valid()) continue;
+      e.too_short = e.too_short || r.short_error;
+      e.too_long = e.too_long || r.long_error;
+      e.timed_out = e.timed_out || r.timed_out;
+    }
+    return e;
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!operational_) return std::nullopt;
@@ -1048,13 +1075,6 @@ private:
     events_.push({pdo_event::kind::received, pdo::direction::rpdo, c.number, refused});
   }
 
-  template <class F>
-  [[nodiscard]] constexpr bool any(F f) const noexcept {
-    for (std::size_t i = 0; i < rpdo_count_; ++i) {
-      if (rpdo_[i].c.valid() && f(rpdo_[i])) return true;
-    }
-    return false;
-  }
   constexpr void begin() noexcept {
     out_.clear();
     events_.clear();

@@ -20,7 +20,10 @@
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
@@ -95,7 +98,7 @@ public:
       }
     }
     for (std::size_t i = 0; i < Servers; ++i) connect_server(i);
-    for (std::size_t i = 0; i < clients_used(); ++i) connect_client(i);
+    for (std::size_t i = 0; i < used_clients(); ++i) connect_client(i);
     return st;
   }
 
@@ -104,11 +107,14 @@ public:
   /// Would `value` be accepted at `a` (sub 1 / sub 2 of a served SDO parameter object)?
   [[nodiscard]] constexpr abort_code
   check_write(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    const auto v = u32_of(value);
+    return v ? check_write(a, *v) : abort_code::none;
+  }
+  /// The same for a value of 1..4 bytes as a number (node::device decodes it once).
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
     if (a.sub != 1U && a.sub != 2U) return abort_code::none;
     if (!serves(a.index)) return abort_code::none;
-    const auto v = u32_of(value);
-    if (!v) return abort_code::none;
-    return check_cob_id(*v, read_u32(*store_, a), false);
+    return check_cob_id(v, read_u32(*store_, a), false);
   }
   /// `a` was written: move the channel.
   constexpr void written(od::address a) noexcept {
@@ -116,9 +122,18 @@ public:
     for (std::size_t i = 0; i < server_count_; ++i) {
       if (server_index_[i] == a.index && a.index != 0U) connect_server(i);
     }
-    for (std::size_t i = 0; i < clients_used(); ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_index_[i] == a.index) connect_client(i);
     }
+  }
+  constexpr void written(od::address a, std::uint32_t, std::uint32_t) noexcept { written(a); }
+  /// reload() from `store`'s dictionary with every server transfer ended, as node::device
+  /// starts its services.
+  template <class S>
+  constexpr status load(const S &store, std::uint32_t) noexcept {
+    const status st = reload(store.dictionary());
+    stop_servers();
+    return st;
   }
 
   // ----- traffic ---------------------------------------------------------------------------
@@ -132,7 +147,7 @@ public:
         return servers_[i].on_frame(f, now);
       }
     }
-    for (std::size_t i = 0; i < clients_used(); ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_ok_[i] && clients_[i].connection().is_response(f)) {
         return clients_[i].on_frame(f, now);
       }
@@ -161,7 +176,7 @@ public:
     for (std::size_t i = 0; i < Servers; ++i) {
       for (const can_frame &f : servers_[i].poll(now).send) out_.push(f);
     }
-    for (std::size_t i = 0; i < clients_used(); ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       for (const can_frame &f : clients_[i].poll(now).send) out_.push(f);
     }
     return {out_.view(), busy(), deadline(now)};
@@ -191,14 +206,14 @@ public:
   }
   /// The node-ID of the server client i talks to (1280h + i sub 3; 0 when not given).
   [[nodiscard]] constexpr std::uint8_t client_server_node(std::size_t i) const noexcept {
-    if (i >= client_count_) return 0;
+    if (i >= used_clients()) return 0;
     return static_cast<std::uint8_t>(read_u32(*store_, {client_index_[i], 3}).value_or(0U));
   }
   [[nodiscard]] constexpr bool busy() const noexcept {
     for (std::size_t i = 0; i < Servers; ++i) {
       if (servers_[i].busy()) return true;
     }
-    for (std::size_t i = 0; i < clients_used(); ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (clients_[i].busy()) return true;
     }
     return false;
@@ -206,7 +221,7 @@ public:
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     std::optional<std::uint32_t> d;
     for (std::size_t i = 0; i < Servers; ++i) d = earliest(d, servers_[i].deadline(), now);
-    for (std::size_t i = 0; i < clients_used(); ++i) d = earliest(d, clients_[i].deadline(), now);
+    for (std::size_t i = 0; i < used_clients(); ++i) d = earliest(d, clients_[i].deadline(), now);
     return d;
   }
   static constexpr std::size_t server_capacity() noexcept { return Servers; }
@@ -233,7 +248,7 @@ private:
     for (std::size_t i = 0; i < server_count_; ++i) {
       if (server_index_[i] == index && index != 0U) return true;
     }
-    for (std::size_t i = 0; i < clients_used(); ++i) {
+    for (std::size_t i = 0; i < used_clients(); ++i) {
       if (client_index_[i] == index) return true;
     }
     return false;
@@ -261,13 +276,19 @@ private:
   }
   constexpr void connect_client(std::size_t i) noexcept {
     std::optional<sdo::channel> ch;
-    if (i < client_count_) ch = channel_of(client_index_[i]);
+    if (i < used_clients()) ch = channel_of(client_index_[i]);
     client_ok_[i] = ch.has_value();
     if (clients_[i].busy()) (void)clients_[i].cancel(); // the channel it ran on is gone
     (void)clients_[i].set_connection(ch.value_or(sdo::channel{}));
   }
 
   static constexpr std::size_t client_slots = Clients == 0U ? 1U : Clients;
+  /// The clients in use: 0, known at compile time, for a node without clients (whose image
+  /// then holds no client code, and whose loops over the clients do not index an empty array
+  /// behind a run-time bound, which g++ 12 -O2 reports with -Warray-bounds in users' builds).
+  [[nodiscard]] constexpr std::size_t used_clients() const noexcept {
+    return Clients == 0U ? 0U : client_count_;
+  }
 
   Store *store_;
   std::uint8_t node_;
@@ -280,12 +301,6 @@ private:
   std::array<bool, client_slots> client_ok_{};
   std::size_t server_count_ = 1;
   std::size_t client_count_ = 0;
-  /// client_count_, and for a node without clients the constant 0: then the loops over the
-  /// clients are gone at compile time instead of indexing an empty array behind a run-time
-  /// bound, which g++ 12 -O2 reports (-Warray-bounds) in users' builds with -Wall.
-  [[nodiscard]] constexpr std::size_t clients_used() const noexcept {
-    return Clients == 0U ? 0U : client_count_;
-  }
   frame_list<Servers + Clients> out_{};
 };
 

@@ -19,10 +19,13 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/cob_id.hpp>
-#include <fieldcodec/canopen/node/common.hpp>
+#include <fieldcodec/canopen/node/cob_id_rules.hpp>
+#include <fieldcodec/canopen/node/deadlines.hpp>
+#include <fieldcodec/canopen/node/values.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/canopen/sync.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/od/address.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -65,28 +68,37 @@ public:
   /// 1007h, µs (0 = no window); rounded up to the caller's milliseconds.
   constexpr void set_window_us(std::uint32_t us) noexcept { window_ms_ = ms_from_us(us); }
 
+  // ----- its objects in a node (node::device) ------------------------------------------------
+
+  /// Would `v` be accepted for `a`? 1005h and 1019h as check_cob_id / check_overflow say;
+  /// none for every other object.
+  [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
+    if (a.index == 0x1005U) return check_cob_id(v);
+    if (a.index == 0x1019U) return check_overflow(v);
+    return abort_code::none;
+  }
+  /// `v` was stored at `a`: follow 1005h, 1007h, 1019h.
+  constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
+    if (a.index == 0x1005U) (void)set_cob_id(v);
+    if (a.index == 0x1007U) set_window_us(v);
+    if (a.index == 0x1019U) (void)set_overflow(v);
+  }
+  /// Start afresh from the values of 1005h, 1007h and 1019h in `store` (boot, NMT reset).
+  template <class Store>
+  constexpr status load(const Store &store, std::uint32_t now) noexcept {
+    *this = sync_consumer{};
+    constexpr std::uint16_t objects[] = {0x1005, 0x1007, 0x1019};
+    for (const std::uint16_t i : objects) {
+      if (const auto v = read_u32(store, {i, 0})) written({i, 0}, *v, now);
+    }
+    return {};
+  }
+
   [[nodiscard]] constexpr std::uint16_t cob_id() const noexcept { return id_; }
 
   /// A frame on the SYNC COB-ID (others are ignored).
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
-    if (f.id != id_ || f.rtr) return make(now, false);
-    const bool right_length = overflow_ ? (f.dlc == (*overflow_ >= 2U ? 1U : 0U)) : f.dlc <= 1U;
-    if (!right_length) {
-      length_error_ = true;
-      error_ = errc::bad_length;
-      return make(now, false);
-    }
-    std::optional<std::uint8_t> counter;
-    if (f.dlc == 1U) {
-      if (f.data[0] < 1U || f.data[0] > sync::max_counter) {
-        error_ = errc::out_of_range;
-        return make(now, false);
-      }
-      counter = f.data[0];
-    }
-    length_error_ = false;
-    error_.reset();
-    return take(counter, now);
+    return make(now, take(f, now));
   }
 
   /// The window closing is a state change (in_window becomes false).
@@ -118,12 +130,29 @@ public:
   }
 
 private:
-  [[nodiscard]] constexpr step take(std::optional<std::uint8_t> counter,
-                                    std::uint32_t now) noexcept {
+  /// on_frame's work: true when `f` is a SYNC that was taken (one step is built, at the end).
+  [[nodiscard]] constexpr bool take(const can_frame &f, std::uint32_t now) noexcept {
+    if (f.id != id_ || f.rtr) return false;
+    const bool right_length = overflow_ ? (f.dlc == (*overflow_ >= 2U ? 1U : 0U)) : f.dlc <= 1U;
+    if (!right_length) {
+      length_error_ = true;
+      error_ = errc::bad_length;
+      return false;
+    }
+    std::optional<std::uint8_t> counter;
+    if (f.dlc == 1U) {
+      if (f.data[0] < 1U || f.data[0] > sync::max_counter) {
+        error_ = errc::out_of_range;
+        return false;
+      }
+      counter = f.data[0];
+    }
+    length_error_ = false;
+    error_.reset();
     seen_ = true;
     last_ = now;
     counter_ = counter;
-    return make(now, true);
+    return true;
   }
   [[nodiscard]] constexpr step make(std::uint32_t now, bool received) const noexcept {
     return {{}, {received, received ? counter_ : std::nullopt, inside_window(now)}, deadline(now)};
