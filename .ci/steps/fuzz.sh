@@ -5,7 +5,7 @@
 # the sequence that was checked before submitting instead of gambling on a new one; long
 # exploratory runs use other seeds (fuzz/FINDINGS.md).
 #
-# Time: the harnesses share a total budget, FUZZ_TOTAL_SECONDS (default 240 s of wall time),
+# Time: the harnesses share a total budget, FUZZ_TOTAL_SECONDS (default 150 s of wall time),
 # run as many at a time as there are cores (a libFuzzer process uses one); each gets
 # budget × cores / harnesses seconds, at least 10 (FUZZ_SECONDS sets it directly). So adding a
 # harness shortens the others' runs instead of lengthening CI.
@@ -16,7 +16,8 @@ cd "$(dirname "$0")/../.."
 build=build-ci-fuzz
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DFIELDCODEC_FUZZ_ENGINE=libfuzzer -DFIELDCODEC_BUILD_TESTS=OFF -DFIELDCODEC_WERROR=ON \
-  -DFIELDCODEC_BUILD_EXAMPLES=OFF -DFIELDCODEC_BUILD_CODEGEN=OFF >/dev/null
+  -DFIELDCODEC_BUILD_EXAMPLES=OFF -DFIELDCODEC_BUILD_CODEGEN=OFF -DFIELDCODEC_BUILD_BENCH=OFF \
+  >/dev/null
 cmake --build "$build" -j"$(nproc)"
 
 harnesses=()
@@ -25,7 +26,7 @@ for h in "$build"/fuzz/fuzz_*; do
 done
 if [ "${#harnesses[@]}" -eq 0 ]; then echo "fuzz: no harness built" >&2; exit 1; fi
 jobs="$(nproc)"
-seconds="${FUZZ_SECONDS:-$(( ${FUZZ_TOTAL_SECONDS:-240} * jobs / ${#harnesses[@]} ))}"
+seconds="${FUZZ_SECONDS:-$(( ${FUZZ_TOTAL_SECONDS:-150} * jobs / ${#harnesses[@]} ))}"
 if [ "$seconds" -lt 10 ]; then seconds=10; fi
 echo "fuzz: ${#harnesses[@]} harnesses, ${seconds} s each, ${jobs} at a time"
 
