@@ -1,6 +1,8 @@
 #!/bin/sh
 # Regenerate include/fieldcodec/dictionaries/<name>.hpp from every dictionaries/*.eds, *.dcf
-# and *.csv, the EDS exports in dictionaries/export/ (DPQ) and the dictionary of the firmware
+# and *.csv, the EDS exports in dictionaries/export/ (DPQ), the XDD and ESI exports there
+# (XENAX CANopen, POWERLINK, EtherCAT), the PDO layouts headers <name>_pdos.hpp (XENAX CANopen,
+# EtherCAT) and the dictionary of the firmware
 # example (examples/firmware/io_node_dictionary.hpp from io_node.eds). With --check nothing is
 # written: the script fails (exit 1) when a checked-in header differs from what the generator
 # writes, is missing, or has no source any more.
@@ -36,6 +38,15 @@ eds_exports="dpq_parameters"
 # because CiA 301 tools refuse a communication parameter without its mapping parameter
 # (docs/dpq.md "EDS export").
 export_only_dpq_parameters="0x0000-0x17FF,0x1A00-0xFFFF"
+# XML device descriptions of the XENAX dictionaries (manual 2.4 lists Xenax_CANopen.xdd and
+# Xenax_Powerlink.xdd): name:profile, written to dictionaries/export/<name>.xdd
+xdd_exports="xenax_canopen:canopen xenax_powerlink:powerlink"
+# ESI (ETG.2000) of the XENAX EtherCAT dictionary (the manual lists Xenax_EtherCAT.xml), written
+# to dictionaries/export/<name>.xml
+esi_exports="xenax_ethercat"
+# Dictionaries whose PDO layouts are generated beside their header (<name>_pdos.hpp: the default
+# PDO mappings as compile-time layouts checked against the dictionary)
+pdo_headers="xenax_canopen xenax_ethercat"
 mkdir -p "$out"
 status=0
 expected=
@@ -66,6 +77,27 @@ for src in dictionaries/*.eds dictionaries/*.dcf dictionaries/*.csv; do
         status=1
       fi ;;
   esac
+  case " $esi_exports " in
+    *" $stem "*)
+      mkdir -p dictionaries/export
+      if ! "$gen" $check --quiet --esi "dictionaries/export/$stem.xml" "$src"; then
+        status=1
+      fi ;;
+  esac
+  case " $pdo_headers " in
+    *" $stem "*)
+      expected="$expected ${stem}_pdos.hpp"
+      if ! "$gen" $check --quiet --name "$stem" --pdo-header "$out/${stem}_pdos.hpp" "$src"; then
+        status=1
+      fi ;;
+  esac
+  for x in $xdd_exports; do
+    [ "${x%%:*}" = "$stem" ] || continue
+    mkdir -p dictionaries/export
+    if ! "$gen" $check --quiet --xdd-profile "${x#*:}" --xdd "dictionaries/export/$stem.xdd" "$src"; then
+      status=1
+    fi
+  done
 done
 # Example dictionaries generated from an EDS beside the example that uses them (the header says
 # "Regenerate with codegen/regenerate.sh"): source:name:output

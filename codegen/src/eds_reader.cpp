@@ -365,7 +365,9 @@ bool known_other_section(const std::string &u) {
   }
   // modular devices: [M1ModuleInfo], [M1FixedObjects], [M1SubExtends], [M1Comments], ...
   if (u.size() > 1U && u[0] == 'M' && u[1] >= '0' && u[1] <= '9') return true;
-  return false;
+  // what an XDD holds beyond CiA 306 ([XDD.GeneralFeatures], ...; the XDD reader's sections,
+  // which the XDD writer writes back)
+  return u.starts_with("XDD.");
 }
 
 // Sections the reader interprets.
@@ -375,31 +377,6 @@ bool interpreted_section(const std::string &u) {
       "MANDATORYOBJECTS",   "OPTIONALOBJECTS", "MANUFACTUREROBJECTS", "DEVICECOMISSIONING",
       "DEVICECOMMISSIONING"};
   return names.count(u) != 0U;
-}
-
-bool fits(od::data_type t, od::number n) {
-  if (t == od::data_type::boolean) {
-    auto u = n.to_uint64();
-    return u && u.value() <= 1U;
-  }
-  const unsigned w = od::fixed_size(t);
-  if (od::is_signed_integer(t)) {
-    auto i = n.to_int64();
-    return i && i.value() >= signed_min(w) && i.value() <= signed_max(w);
-  }
-  auto u = n.to_uint64();
-  return u && u.value() <= unsigned_max(w);
-}
-
-// `n + node` for the node-IDs 1 and 127 (the extremes), as an integer number.
-std::optional<od::number> plus_node(od::number n, std::uint8_t node) {
-  if (n.kind == od::number_kind::unsigned_) {
-    if (n.bits > ~std::uint64_t{0} - node) return std::nullopt;
-    return od::unsigned_number(n.bits + node);
-  }
-  auto i = n.to_int64();
-  if (!i || i.value() > std::numeric_limits<std::int64_t>::max() - node) return std::nullopt;
-  return od::signed_number(i.value() + node);
 }
 
 // The value keys of an entry: where a key's number, node-ID flag and text go.
@@ -816,23 +793,8 @@ private:
       diag_.warning(file_, k.line, column(k, v, 0),
                     "C integer suffix in '" + v + "' ignored (" + k.name + " of [" + s.name + "])");
     }
-    // a signed type written as its two's complement bit pattern (LowLimit=0x80000000)
-    if (od::is_signed_integer(type) && p.value.kind == od::number_kind::unsigned_) {
-      const unsigned w = od::fixed_size(type);
-      if (p.value.bits <= unsigned_max(w) &&
-          p.value.bits > static_cast<std::uint64_t>(signed_max(w))) {
-        std::uint64_t b = p.value.bits;
-        if (w < 8U) b |= ~detail::width_mask(w);
-        p.value = od::signed_number(static_cast<std::int64_t>(b));
-      } else if (p.value.bits <= static_cast<std::uint64_t>(signed_max(w))) {
-        p.value = od::signed_number(static_cast<std::int64_t>(p.value.bits));
-      }
-    }
+    p.value = integer_for_type(p.value, type);
     if (od::is_integer(type) || type == od::data_type::boolean) {
-      if (p.value.kind == od::number_kind::signed_ &&
-          static_cast<std::int64_t>(p.value.bits) >= 0 && od::is_unsigned_integer(type)) {
-        p.value = od::unsigned_number(p.value.bits);
-      }
       if (!fits(type, p.value)) {
         diag_.warning(file_, k.line, column(k, v, 0),
                       "value '" + v + "' does not fit " + std::string(od::name(type)) + " (" +

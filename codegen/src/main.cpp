@@ -32,12 +32,28 @@ constexpr const char *usage_text =
     R"(usage: fieldcodec-gen [options] INPUT
 
 Reads INPUT (.eds or .dcf: CiA 306; .csv: object or command table, see
-docs/dictionary-formats.md) and writes a constexpr C++ header and/or an EDS.
+docs/dictionary-formats.md; .xdd, .xdc or .xpd: CiA 311 CANopen or EPSG DS 311
+POWERLINK; .xml: EtherCAT ESI, ETG.2000) and writes a constexpr C++ header, an
+EDS and/or an XDD.
 
 options:
   -o, --output FILE   write the C++ header to FILE ("-" for standard output)
       --eds FILE      write the dictionary as a CiA 306 EDS/DCF to FILE ("-" for
                       standard output); for CSV object tables and EDS/DCF input
+      --xdd FILE      write the dictionary as an XDD (an XDC when it has DCF values)
+                      to FILE ("-" for standard output); what an XDD cannot hold is
+                      reported as warnings
+      --xdd-profile canopen|powerlink
+                      the XDD's profile: CiA 311 CANopen or EPSG DS 311 POWERLINK
+                      (default: the profile of an XDD/XDC input, else canopen)
+      --esi FILE      write the dictionary as an EtherCAT ESI (ETG.2000) to FILE ("-"
+                      for standard output); what an ESI cannot hold is reported
+      --pdo-header FILE
+                      write the PDO layouts to FILE: one compile-time layout per PDO,
+                      checked against the header of -o (included as
+                      <fieldcodec/dictionaries/NAME.hpp>)
+      --device DEVICE the device of an ESI that describes several: its name,
+                      PRODUCTCODE or PRODUCTCODE:REVISION (0x.../#x... or decimal)
       --name NAME     namespace name below fieldcodec::dictionaries (default: from
                       the input's file name, e.g. dpq_parameters)
       --check         do not write; exit 1 when an output file differs from what
@@ -76,7 +92,7 @@ options:
   -h, --help          show this text
       --version       show the version
 
-Without -o or --eds the input is only checked. Diagnostics are printed as
+Without -o, --eds, --xdd, --esi or --pdo-header the input is only checked. Diagnostics are printed as
 file:line:column: error|warning: message, in line order, followed by a count
 ("2 errors, 1 warning"). Exit status: 0 success, 1 errors in the input (or a
 difference under --check), 2 usage errors.
@@ -184,10 +200,15 @@ struct command_line {
   std::string input;
   std::string header_out;
   std::string eds_out;
+  std::string xdd_out;
+  std::string pdo_out;
+  std::string esi_out;
+  fieldcodec::gen::bus_profile xdd_profile = fieldcodec::gen::bus_profile::unspecified;
   std::string config_out;
   std::string slaves_out;
   fieldcodec::gen::config_values config_values = fieldcodec::gen::config_values::parameter;
   std::string name;
+  fieldcodec::gen::read_options read;
   bool check = false;
   bool strict = false;
   bool quiet = false;
@@ -216,6 +237,22 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.header_out)) return usage_error("option " + a + " needs a file name");
     } else if (a == "--eds") {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
+    } else if (a == "--xdd") {
+      if (!value(cl.xdd_out)) return usage_error("option --xdd needs a file name");
+    } else if (a == "--esi") {
+      if (!value(cl.esi_out)) return usage_error("option --esi needs a file name");
+    } else if (a == "--pdo-header") {
+      if (!value(cl.pdo_out)) return usage_error("option --pdo-header needs a file name");
+    } else if (a == "--xdd-profile") {
+      std::string v;
+      if (!value(v)) return usage_error("option --xdd-profile needs canopen or powerlink");
+      if (v == "canopen") {
+        cl.xdd_profile = fieldcodec::gen::bus_profile::canopen;
+      } else if (v == "powerlink") {
+        cl.xdd_profile = fieldcodec::gen::bus_profile::powerlink;
+      } else {
+        return usage_error("--xdd-profile '" + v + "': expected canopen or powerlink");
+      }
     } else if (a == "--config-list") {
       if (!value(cl.config_out)) return usage_error("option --config-list needs a file name");
     } else if (a == "--nmt-slaves") {
@@ -229,6 +266,10 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
         cl.config_values = fieldcodec::gen::config_values::default_;
       } else {
         return usage_error("--config-values '" + v + "': expected parameter or default");
+      }
+    } else if (a == "--device") {
+      if (!value(cl.read.device) || cl.read.device.empty()) {
+        return usage_error("option --device needs a device name or product code");
       }
     } else if (a == "--name") {
       if (!value(cl.name)) return usage_error("option --name needs a name");
@@ -335,9 +376,65 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
                          std::string(fieldcodec::od::name(e.type)) + ")");
       }
     }
+    // CiA 306 PDOMapping is 0 or 1: a direction (CSV rx/tx, XDD RPDO/TPDO, ESI R/T) is not kept
+    std::size_t directed = 0;
+    int first_line = 0;
+    for (const auto &e : dict.entries) {
+      if (e.pdo == fieldcodec::od::pdo_mapping::rx || e.pdo == fieldcodec::od::pdo_mapping::tx) {
+        if (directed++ == 0) first_line = e.line;
+      }
+    }
+    if (directed != 0U) {
+      lost.warning(cl.input, first_line, 0,
+                   std::to_string(directed) + (directed == 1U ? " entry" : " entries") +
+                       " mappable into RPDOs or TPDOs only written as PDOMapping=1 (CiA 306 "
+                       "has no PDO direction)");
+    }
     put(stderr, lost.text(!cl.quiet));
     if (lost.has_errors()) return 1;
     rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
+  }
+  if (!cl.esi_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table cannot be written as ESI\n");
+      return 1;
+    }
+    fieldcodec::gen::diagnostics lost;
+    lost.strict = cl.strict;
+    const std::string text = fieldcodec::gen::write_esi(dict, cl.input, lost);
+    put(stderr, lost.text(!cl.quiet));
+    if (lost.has_errors()) return 1;
+    rc |= output(cl.esi_out, text, cl.check);
+  }
+  if (!cl.pdo_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table has no PDOs\n");
+      return 1;
+    }
+    fieldcodec::gen::diagnostics checks;
+    checks.strict = cl.strict;
+    const std::string text = fieldcodec::gen::emit_pdo_layouts(dict, cl.input, checks);
+    put(stderr, checks.text(!cl.quiet));
+    if (checks.has_errors()) return 1;
+    rc |= output(cl.pdo_out, text, cl.check);
+  }
+  if (!cl.xdd_out.empty()) {
+    if (dict.is_command_table) {
+      put(stderr, cl.input + ": error: a command table cannot be written as XDD\n");
+      return 1;
+    }
+    auto profile = cl.xdd_profile;
+    if (profile == fieldcodec::gen::bus_profile::unspecified) {
+      profile = dict.profile == fieldcodec::gen::bus_profile::powerlink
+                    ? fieldcodec::gen::bus_profile::powerlink
+                    : fieldcodec::gen::bus_profile::canopen;
+    }
+    fieldcodec::gen::diagnostics lost;
+    lost.strict = cl.strict;
+    const std::string text = fieldcodec::gen::write_xdd(dict, profile, cl.input, lost);
+    put(stderr, lost.text(!cl.quiet));
+    if (lost.has_errors()) return 1;
+    rc |= output(cl.xdd_out, text, cl.check);
   }
   return rc;
 }
@@ -356,7 +453,7 @@ int main(int argc, char **argv) {
   if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
   fieldcodec::gen::diagnostics diag;
   diag.strict = cl.strict;
-  auto dict = fieldcodec::gen::read_file(cl.input, diag);
+  auto dict = fieldcodec::gen::read_file(cl.input, diag, cl.read);
   if (dict && !diag.has_errors()) {
     const auto &o = cl.opts;
     if (dict->is_command_table && (!o.only.empty() || o.compact_arrays || o.string_capacity ||

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -100,6 +101,9 @@ struct entry {
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};
   rare_text unit, alt_name, acceptance, section, remark; ///< CSV columns
+  /// The data type's name in an ESI (`BYTE`, `BIT2`, `STRING(10)`, `UINT32`): written back by the
+  /// ESI writer where it differs from the name of `type_code`; empty for other sources.
+  rare_text type_name;
   std::uint8_t pointer = od::no_pointer;
   od::bus_manager bus = od::bus_manager::unspecified;
   std::uint32_t obj_flags = 0;
@@ -140,6 +144,70 @@ struct other_section {
   return index >= 0x2000U && index < 0x6000U ? object_list::manufacturer : object_list::optional;
 }
 
+/// The bus an XML device description is for: an XDD/XDC names CANopen (CiA 311) or POWERLINK
+/// (EPSG DS 311), an ESI is EtherCAT (ETG.2000). `unspecified` for EDS, DCF and CSV input.
+enum class bus_profile : std::uint8_t { unspecified, canopen, powerlink, ethercat };
+
+/// One entry of an EtherCAT PDO (ESI RxPdo/TxPdo Entry): index 0 is a gap of `bits` bits.
+struct esi_pdo_entry {
+  std::uint16_t index = 0;
+  std::uint8_t sub = 0;
+  std::uint8_t bits = 0;
+  std::string name;
+  std::string data_type; ///< as the ESI writes it (USINT, BOOL, BIT2, ...); empty for a gap
+  int line = 0;
+};
+
+/// An EtherCAT PDO as an ESI describes it (ETG.2000 RxPdo/TxPdo).
+struct esi_pdo {
+  bool tx = false; ///< TxPdo (inputs, device to master) or RxPdo (outputs)
+  std::uint16_t index = 0;
+  std::string name;
+  bool fixed = false;                  ///< the mapping cannot be changed
+  bool mandatory = false;              ///< always assigned
+  int sm = -1;                         ///< the sync manager it is assigned to by default, -1: none
+  std::vector<std::uint16_t> excludes; ///< PDOs that cannot be assigned with it
+  key_list other_attributes;           ///< attributes kept as written (Virtual, Su, OSFac, ...)
+  std::vector<esi_pdo_entry> entries;
+  int line = 0;
+};
+
+/// A sync manager of an ESI device (ETG.2000 Sm).
+struct esi_sync_manager {
+  std::string type; ///< MBoxOut, MBoxIn, Outputs, Inputs
+  std::uint16_t start = 0;
+  std::uint16_t default_size = 0;
+  bool has_default_size = false;
+  std::uint8_t control = 0;
+  bool enable = true;
+};
+
+/// What an ESI (EtherCAT Slave Information, ETG.2000) says about a device beyond its object
+/// dictionary: identity, sync managers, PDOs, mailbox protocols, EEPROM.
+struct esi_device {
+  std::uint32_t vendor_id = 0;
+  std::string vendor_name;
+  std::uint32_t product_code = 0;
+  std::uint32_t revision = 0;
+  std::string type;  ///< the Type element's text (the order name)
+  std::string name;  ///< the device name (language 1033 where there are several)
+  std::string group; ///< GroupType
+  std::string group_name;
+  std::string physics;
+  std::uint32_t profile_no = 0; ///< Profile/ProfileNo (402: CiA 402), 0 when none
+  std::string add_info;         ///< Profile/AddInfo as written
+  std::vector<std::string> fmmu;
+  std::vector<esi_sync_manager> sync_managers;
+  std::vector<esi_pdo> pdos;
+  bool mailbox = false;               ///< a Mailbox element
+  bool data_link_layer = false;       ///< Mailbox DataLinkLayer="true"
+  std::vector<std::string> protocols; ///< CoE, FoE, EoE, SoE, VoE, AoE as present
+  key_list coe;                       ///< the CoE element's attributes as written
+  std::uint32_t eeprom_bytes = 0;     ///< Eeprom/ByteSize, 0 when none
+  std::string config_data;            ///< Eeprom/ConfigData (hex) as written
+  std::string bootstrap;              ///< Eeprom/BootStrap (hex) as written
+};
+
 /// One row of a command table.
 struct command {
   std::uint16_t code = 0;
@@ -171,6 +239,10 @@ struct dictionary {
   bool is_dcf = false;
   int node_id = -1; ///< [DeviceComissioning] NodeID, -1 when absent
   std::string node_name;
+  /// The bus of the XML description read (the XDD writer's default profile).
+  bus_profile profile = bus_profile::unspecified;
+  /// EtherCAT: what the ESI read says beyond the objects (nothing for other sources).
+  std::optional<esi_device> ethercat;
 };
 
 } // namespace fieldcodec::gen

@@ -79,7 +79,8 @@ const char *file_bytes::load(const std::string &path) {
   return nullptr;
 }
 
-std::optional<dictionary> read_file(const std::string &path, diagnostics &diag) {
+std::optional<dictionary> read_file(const std::string &path, diagnostics &diag,
+                                    const read_options &options) {
   file_bytes file;
   if (const char *failed = file.load(path)) {
     diag.error(path, 0, 0, failed);
@@ -95,8 +96,12 @@ std::optional<dictionary> read_file(const std::string &path, diagnostics &diag) 
     d = read_csv(bytes, path, diag);
   } else if (ext == "eds" || ext == "dcf") {
     d = read_eds(bytes, path, diag);
+  } else if (ext == "xdd" || ext == "xdc" || ext == "xpd") {
+    d = read_xdd(bytes, path, diag);
+  } else if (ext == "xml") {
+    d = read_esi(bytes, path, diag, options.device);
   } else {
-    diag.error(path, 0, 0, "expected a file ending in .eds, .dcf or .csv");
+    diag.error(path, 0, 0, "expected a file ending in .eds, .dcf, .csv, .xdd, .xdc, .xpd or .xml");
     return std::nullopt;
   }
   if (d) {

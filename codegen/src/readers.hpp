@@ -16,6 +16,19 @@ namespace fieldcodec::gen {
 [[nodiscard]] std::optional<dictionary> read_eds(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
 
+/// Read an XDD, XDC or XPD (ISO 15745 profile container: CiA 311 CANopen or EPSG DS 311
+/// POWERLINK; docs/generator.md "XDD and XDC").
+[[nodiscard]] std::optional<dictionary> read_xdd(std::string_view text, const std::string &file,
+                                                 diagnostics &diag);
+
+/// Read an ESI (EtherCAT Slave Information, ETG.2000): the object dictionary of one device and
+/// its PDOs, sync managers and mailbox (dictionary::ethercat). `device` chooses the device of a
+/// file that describes several: its Type text or Name, "<product code>" or
+/// "<product code>:<revision>" (decimal, 0x… or #x…); empty: the only one (a file with several
+/// is an error that lists them). An XDD given as .xml is read as an XDD.
+[[nodiscard]] std::optional<dictionary> read_esi(std::string_view text, const std::string &file,
+                                                 diagnostics &diag, const std::string &device = {});
+
 /// Read a CSV object or command table (docs/dictionary-formats.md).
 [[nodiscard]] std::optional<dictionary> read_csv(std::string_view text, const std::string &file,
                                                  diagnostics &diag);
@@ -29,8 +42,40 @@ void check_pdo_pairs(const dictionary &d, const std::string &file, diagnostics &
 /// no communication objects, and CANopen tools refuse an EDS without them.
 void add_mandatory_objects(dictionary &d);
 
+/// A number of entry `e` as the writers write it (and the readers read it back unchanged):
+/// signed values in decimal, values of unsigned types as `0x…` hex, reals in their shortest
+/// round-trip form, decimals as written, node-ID relative values as `$NODEID+…`.
+[[nodiscard]] std::string entry_number(const entry &e, const od::number &n, bool nodeid);
+
+/// A limit of entry `e` as the writers write it: entry_number(), except that the limits of a
+/// scaled CSV row (engineering units) are written as raw values, cut to the field's range.
+[[nodiscard]] std::string limit_number(const entry &e, const od::number &n, bool nodeid);
+
 /// Write a dictionary (object table) as a CiA 306 EDS (or DCF when it has DCF values).
 [[nodiscard]] std::string write_eds(const dictionary &d);
+
+/// Write a dictionary as an XDD (an XDC when it has DCF values) for `profile`: CiA 311 CANopen
+/// or EPSG DS 311 POWERLINK. What the XDD cannot hold (CiA 306 keys without an XDD attribute,
+/// object links, CSV columns, ...) is reported to `diag` as warnings naming it; `file` names the
+/// source in them.
+[[nodiscard]] std::string write_xdd(const dictionary &d, bus_profile profile,
+                                    const std::string &file, diagnostics &diag);
+
+/// Write a dictionary as an ESI (ETG.2000 EtherCATInfo) describing one device: its dictionary
+/// (DataTypes, Objects), its PDOs (those of the ESI read, else from the mapping objects and the
+/// sync manager assignments 1C10h+n) and, when the dictionary was read from an ESI, its sync
+/// managers, FMMUs, mailbox and EEPROM data. What an ESI cannot hold is reported to `diag`.
+[[nodiscard]] std::string write_esi(const dictionary &d, const std::string &file,
+                                    diagnostics &diag);
+
+/// The PDO layouts header (--pdo-header): namespace fieldcodec::dictionaries::<stem>::pdos with
+/// one `canopen::pdo::static_mapping` per PDO (an ESI's RxPdo/TxPdo descriptions, else the
+/// default values of the mapping objects 1600h-17FFh and 1A00h-1BFFh with 32-bit entries), made
+/// by make_static_mapping with the dictionary (checked by the compiler) where the library's
+/// checks pass for it, else for lengths only, with a warning to `diag` naming the entry and the
+/// problem. The header includes <fieldcodec/dictionaries/<stem>.hpp>.
+[[nodiscard]] std::string emit_pdo_layouts(const dictionary &d, const std::string &file,
+                                           diagnostics &diag);
 
 /// Emit the C++ header.
 [[nodiscard]] std::string emit_header(const dictionary &d);
@@ -68,7 +113,14 @@ private:
   std::string_view view_;
 };
 
-/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv). Reports unreadable files.
-[[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag);
+/// What read_file passes on to a reader.
+struct read_options {
+  std::string device; ///< the ESI device to read (read_esi)
+};
+
+/// Read `path` (EDS/DCF by extension .eds/.dcf, CSV by .csv, XDD/XDC by .xdd/.xdc/.xpd, ESI by
+/// .xml). Reports unreadable files.
+[[nodiscard]] std::optional<dictionary> read_file(const std::string &path, diagnostics &diag,
+                                                  const read_options &options = {});
 
 } // namespace fieldcodec::gen

@@ -1,5 +1,7 @@
 #include "text.hpp"
 
+#include <fieldcodec/core/bytes.hpp>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -68,7 +70,7 @@ std::size_t utf8_length_at(std::string_view s, std::size_t i) noexcept {
   return n + 1U;
 }
 
-bool valid_utf8(std::string_view s) noexcept {
+std::size_t utf8_invalid_at(std::string_view s) noexcept {
   std::size_t i = 0;
   while (i < s.size()) {
     // ASCII (nearly every byte of a dictionary) eight bytes at a time
@@ -80,13 +82,15 @@ bool valid_utf8(std::string_view s) noexcept {
     }
     if (i >= s.size()) break;
     const std::size_t n = utf8_length_at(s, i);
-    if (n == 0U) return false;
+    if (n == 0U) return i;
     i += n;
   }
-  return true;
+  return std::string_view::npos;
 }
 
-namespace {
+bool valid_utf8(std::string_view s) noexcept {
+  return utf8_invalid_at(s) == std::string_view::npos;
+}
 
 void append_utf8(std::string &out, std::uint32_t cp) {
   if (cp < 0x80U) {
@@ -94,12 +98,19 @@ void append_utf8(std::string &out, std::uint32_t cp) {
   } else if (cp < 0x800U) {
     out += static_cast<char>(0xC0U | (cp >> 6U));
     out += static_cast<char>(0x80U | (cp & 0x3FU));
-  } else {
+  } else if (cp < 0x10000U) {
     out += static_cast<char>(0xE0U | (cp >> 12U));
+    out += static_cast<char>(0x80U | ((cp >> 6U) & 0x3FU));
+    out += static_cast<char>(0x80U | (cp & 0x3FU));
+  } else {
+    out += static_cast<char>(0xF0U | (cp >> 18U));
+    out += static_cast<char>(0x80U | ((cp >> 12U) & 0x3FU));
     out += static_cast<char>(0x80U | ((cp >> 6U) & 0x3FU));
     out += static_cast<char>(0x80U | (cp & 0x3FU));
   }
 }
+
+namespace {
 
 // Windows-1252 0x80..0x9F (0 = unassigned, kept as the Latin-1 control code point)
 constexpr std::array<std::uint16_t, 32> cp1252{
@@ -109,24 +120,28 @@ constexpr std::array<std::uint16_t, 32> cp1252{
 
 } // namespace
 
-std::string to_utf8(std::string_view bytes, bool &converted) {
-  converted = false;
-  if (bytes.size() >= 3 && bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
-  if (valid_utf8(bytes)) return std::string(bytes);
-  converted = true;
+std::string latin1_to_utf8(std::string_view bytes, bool windows_1252) {
   std::string out;
   out.reserve(bytes.size() + bytes.size() / 8U);
   for (const char ch : bytes) {
     const auto c = static_cast<unsigned char>(ch);
     if (c < 0x80U) {
       out += ch;
-    } else if (c < 0xA0U && cp1252[c - 0x80U] != 0U) {
+    } else if (windows_1252 && c < 0xA0U && cp1252[c - 0x80U] != 0U) {
       append_utf8(out, cp1252[c - 0x80U]);
     } else {
       append_utf8(out, c);
     }
   }
   return out;
+}
+
+std::string to_utf8(std::string_view bytes, bool &converted) {
+  converted = false;
+  if (bytes.size() >= 3 && bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  if (valid_utf8(bytes)) return std::string(bytes);
+  converted = true;
+  return latin1_to_utf8(bytes, true);
 }
 
 std::string_view as_utf8(std::string_view bytes, std::string &storage, bool &converted) {
@@ -137,9 +152,10 @@ std::string_view as_utf8(std::string_view bytes, std::string &storage, bool &con
   return storage;
 }
 
-int_parse parse_int(std::string_view s) {
+int_parse parse_int(std::string_view s, int_syntax syntax) {
   int_parse r;
   s = trim(s);
+  const bool eds = syntax == int_syntax::eds;
   if (s.empty()) {
     r.error = "expected a number, got nothing";
     return r;
@@ -153,7 +169,7 @@ int_parse parse_int(std::string_view s) {
   }
   // C integer suffixes (0x1234LL): accepted with a note
   std::size_t end = s.size();
-  while (end > i + 1U) {
+  while (eds && end > i + 1U) {
     const char c = s[end - 1U];
     if (c == 'L' || c == 'l' || c == 'U' || c == 'u') {
       --end;
@@ -166,7 +182,10 @@ int_parse parse_int(std::string_view s) {
   if (end - i >= 2U && s[i] == '0' && (s[i + 1U] == 'x' || s[i + 1U] == 'X')) {
     base = 16;
     i += 2;
-  } else if (end - i >= 2U && s[i] == '0') {
+  } else if (!eds && end - i >= 2U && s[i] == '#' && (s[i + 1U] == 'x' || s[i + 1U] == 'X')) {
+    base = 16; // ETG.2000 (ESI) hex
+    i += 2;
+  } else if (eds && end - i >= 2U && s[i] == '0') {
     base = 8;
     ++i;
   }
@@ -216,6 +235,52 @@ int_parse parse_int(std::string_view s) {
   }
   r.ok = true;
   return r;
+}
+
+bool fits(od::data_type t, od::number n) {
+  if (t == od::data_type::boolean) {
+    auto u = n.to_uint64();
+    return u && u.value() <= 1U;
+  }
+  const unsigned w = od::fixed_size(t);
+  if (od::is_signed_integer(t)) {
+    auto i = n.to_int64();
+    return i && i.value() >= signed_min(w) && i.value() <= signed_max(w);
+  }
+  auto u = n.to_uint64();
+  return u && u.value() <= unsigned_max(w);
+}
+
+std::optional<od::number> plus_node(od::number n, std::uint8_t node) {
+  if (n.kind == od::number_kind::unsigned_) {
+    if (n.bits > ~std::uint64_t{0} - node) return std::nullopt;
+    return od::unsigned_number(n.bits + node);
+  }
+  auto i = n.to_int64();
+  if (!i || i.value() > std::numeric_limits<std::int64_t>::max() - node) return std::nullopt;
+  return od::signed_number(i.value() + node);
+}
+
+od::number integer_for_type(od::number n, od::data_type type) {
+  // a signed type written as its two's complement bit pattern (LowLimit=0x80000000)
+  if (od::is_signed_integer(type) && n.kind == od::number_kind::unsigned_) {
+    const unsigned w = od::fixed_size(type);
+    if (n.bits <= unsigned_max(w) && n.bits > static_cast<std::uint64_t>(signed_max(w))) {
+      std::uint64_t b = n.bits;
+      if (w < 8U) b |= ~detail::width_mask(w);
+      return od::signed_number(static_cast<std::int64_t>(b));
+    }
+    if (n.bits <= static_cast<std::uint64_t>(signed_max(w))) {
+      return od::signed_number(static_cast<std::int64_t>(n.bits));
+    }
+    return n;
+  }
+  if ((od::is_integer(type) || type == od::data_type::boolean) &&
+      n.kind == od::number_kind::signed_ && static_cast<std::int64_t>(n.bits) >= 0 &&
+      od::is_unsigned_integer(type)) {
+    return od::unsigned_number(n.bits);
+  }
+  return n;
 }
 
 std::optional<double> parse_real(std::string_view s) {
@@ -410,21 +475,7 @@ std::string byte_string_text(od::data_type type, std::string_view bytes) {
         }
       }
       if (u >= 0xD800U && u < 0xE000U) u = 0xFFFDU;
-      if (u < 0x80U) {
-        out += static_cast<char>(u);
-      } else if (u < 0x800U) {
-        out += static_cast<char>(0xC0U | (u >> 6U));
-        out += static_cast<char>(0x80U | (u & 0x3FU));
-      } else if (u < 0x10000U) {
-        out += static_cast<char>(0xE0U | (u >> 12U));
-        out += static_cast<char>(0x80U | ((u >> 6U) & 0x3FU));
-        out += static_cast<char>(0x80U | (u & 0x3FU));
-      } else {
-        out += static_cast<char>(0xF0U | (u >> 18U));
-        out += static_cast<char>(0x80U | ((u >> 12U) & 0x3FU));
-        out += static_cast<char>(0x80U | ((u >> 6U) & 0x3FU));
-        out += static_cast<char>(0x80U | (u & 0x3FU));
-      }
+      append_utf8(out, u);
     }
     return out;
   }

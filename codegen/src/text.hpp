@@ -30,16 +30,26 @@ namespace fieldcodec::gen {
 /// defines it), 0 when the bytes there are not one (a stray continuation byte, a cut, overlong
 /// or surrogate sequence, a byte never used in UTF-8) or i is past the end.
 [[nodiscard]] std::size_t utf8_length_at(std::string_view s, std::size_t i) noexcept;
+/// Where `s` stops being valid UTF-8: the offset of the first byte of the first invalid
+/// sequence, std::string_view::npos when all of it is valid.
+[[nodiscard]] std::size_t utf8_invalid_at(std::string_view s) noexcept;
+/// Appends code point `cp` (at most U+10FFFF) as UTF-8.
+void append_utf8(std::string &out, std::uint32_t cp);
 /// Text as UTF-8: a UTF-8 byte-order mark is dropped, valid UTF-8 is kept, anything else is
 /// taken as Windows-1252 / Latin-1 and converted (`converted` tells).
 [[nodiscard]] std::string to_utf8(std::string_view bytes, bool &converted);
+/// Bytes of ISO-8859-1 (every byte its code point) or, with `windows_1252`, of Windows-1252
+/// (0x80..0x9F its printable characters where it assigns them) as UTF-8.
+[[nodiscard]] std::string latin1_to_utf8(std::string_view bytes, bool windows_1252);
 /// The same without a copy when `bytes` are UTF-8 already: a view of `bytes` (without a
 /// byte-order mark), or of `storage`, which receives the converted text.
 [[nodiscard]] std::string_view as_utf8(std::string_view bytes, std::string &storage,
                                        bool &converted);
 
-/// An integer as EDS files write them: optional sign, `0x` hex, leading-0 octal, decimal.
-/// C suffixes (U, L, LL, UL) are accepted and reported in `suffix`.
+/// Integer syntaxes: `eds` as EDS files write them (optional sign, `0x` hex, leading-0 octal,
+/// decimal; C suffixes U, L, LL, UL accepted and reported in `suffix`); `xml` as XDD and ESI
+/// files write them (optional sign, `0x` or `#x` hex, decimal with leading zeros, no suffixes).
+enum class int_syntax : std::uint8_t { eds, xml };
 struct int_parse {
   bool ok = false;
   od::number value;  ///< signed_number for negatives and signed decimals, unsigned_number otherwise
@@ -47,7 +57,17 @@ struct int_parse {
   std::size_t error_pos = 0;
   bool suffix = false;
 };
-[[nodiscard]] int_parse parse_int(std::string_view s);
+[[nodiscard]] int_parse parse_int(std::string_view s, int_syntax syntax = int_syntax::eds);
+
+/// Whether the integer `n` is a value of the integer or BOOLEAN type `t`.
+[[nodiscard]] bool fits(od::data_type t, od::number n);
+/// `n + node` as an integer number (nothing when it overflows 64 bits).
+[[nodiscard]] std::optional<od::number> plus_node(od::number n, std::uint8_t node);
+/// An integer read for a field of `type` as the model keeps it: a signed type's value written as
+/// its two's complement bit pattern (0x80000000 for INTEGER32) becomes the negative value, other
+/// values of signed types become signed numbers, non-negative values of unsigned types unsigned
+/// numbers. Anything else is returned as it is.
+[[nodiscard]] od::number integer_for_type(od::number n, od::data_type type);
 
 /// A real number: decimal with optional exponent (std::from_chars, C locale).
 [[nodiscard]] std::optional<double> parse_real(std::string_view s);

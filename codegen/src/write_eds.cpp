@@ -42,43 +42,6 @@ std::string eds_number(const od::number &n, bool nodeid) {
 // on every EDS pass — fuzz F13).
 std::string eds_text(const std::string &s) { return std::string(trim(s)); }
 
-// A number of an entry in the form the EDS reader reads back unchanged: values of unsigned
-// types are written in hex whatever kind the source gave them (a CSV "0" is read as signed, an
-// EDS "0x0" as unsigned), so CSV -> EDS -> EDS is a fixed point (fuzz F5).
-std::string entry_number(const entry &e, const od::number &n, bool nodeid) {
-  if (n.kind == od::number_kind::signed_ && od::is_unsigned_integer(e.type) &&
-      static_cast<std::int64_t>(n.bits) >= 0) {
-    return eds_number(od::unsigned_number(n.bits), nodeid);
-  }
-  return eds_number(n, nodeid);
-}
-
-// A limit as a raw value: CSV limits of scaled entries are engineering units.
-std::string eds_limit(const entry &e, const od::number &n, bool nodeid) {
-  if (!n && !nodeid) return "";
-  if (e.scaled && !nodeid && od::is_integer(e.type)) {
-    auto d = n.to_decimal();
-    if (d) {
-      auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
-      if (raw) {
-        // An EDS limit must be a value of the object's type: a printed range wider than the
-        // field (flag range_exceeds_field) is cut to what the field can hold.
-        std::int64_t v = raw.value();
-        const auto width = od::fixed_size(e.type);
-        const scaling::field f{static_cast<std::uint8_t>(width), od::is_signed_integer(e.type)};
-        if (width >= 1U && width <= 8U) {
-          if (v < f.min()) v = f.min();
-          if (v > f.max()) v = f.max();
-        }
-        return v < 0 || od::is_signed_integer(e.type)
-                   ? std::to_string(v)
-                   : eds_number(od::unsigned_number(static_cast<std::uint64_t>(v)), false);
-      }
-    }
-  }
-  return entry_number(e, n, nodeid);
-}
-
 // A byte string's value as text: OCTET_STRING / DOMAIN as hex digits, UNICODE_STRING as UTF-8.
 // Text the reader would change (surrounding blanks, which it trims; surrounding double quotes,
 // which it removes) is written in double quotes.
@@ -114,8 +77,8 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
     o += "DefaultValue=" + entry_number(e, e.default_value, e.default_nodeid) + "\n";
   }
   if (!od::is_byte_string(e.type)) { // limits of a string are not expressible in an EDS
-    if (e.low || e.low_nodeid) o += "LowLimit=" + eds_limit(e, e.low, e.low_nodeid) + "\n";
-    if (e.high || e.high_nodeid) o += "HighLimit=" + eds_limit(e, e.high, e.high_nodeid) + "\n";
+    if (e.low || e.low_nodeid) o += "LowLimit=" + limit_number(e, e.low, e.low_nodeid) + "\n";
+    if (e.high || e.high_nodeid) o += "HighLimit=" + limit_number(e, e.high, e.high_nodeid) + "\n";
   }
   o += std::string("PDOMapping=") + (e.pdo == od::pdo_mapping::no ? "0" : "1") + "\n";
   if (od::is_byte_string(e.type) && e.size != 0U) o += "Size=" + std::to_string(e.size) + "\n";
@@ -134,6 +97,43 @@ void var_keys(std::string &o, const entry &e, bool dcf) {
 }
 
 } // namespace
+
+// A number of an entry in the form the EDS reader reads back unchanged: values of unsigned
+// types are written in hex whatever kind the source gave them (a CSV "0" is read as signed, an
+// EDS "0x0" as unsigned), so CSV -> EDS -> EDS is a fixed point (fuzz F5).
+std::string entry_number(const entry &e, const od::number &n, bool nodeid) {
+  if (n.kind == od::number_kind::signed_ && od::is_unsigned_integer(e.type) &&
+      static_cast<std::int64_t>(n.bits) >= 0) {
+    return eds_number(od::unsigned_number(n.bits), nodeid);
+  }
+  return eds_number(n, nodeid);
+}
+
+// A limit as a raw value: CSV limits of scaled entries are engineering units.
+std::string limit_number(const entry &e, const od::number &n, bool nodeid) {
+  if (!n && !nodeid) return "";
+  if (e.scaled && !nodeid && od::is_integer(e.type)) {
+    auto d = n.to_decimal();
+    if (d) {
+      auto raw = scaling::scale_to_raw(d.value(), scaling::linear{e.scale, e.offset});
+      if (raw) {
+        // An EDS limit must be a value of the object's type: a printed range wider than the
+        // field (flag range_exceeds_field) is cut to what the field can hold.
+        std::int64_t v = raw.value();
+        const auto width = od::fixed_size(e.type);
+        const scaling::field f{static_cast<std::uint8_t>(width), od::is_signed_integer(e.type)};
+        if (width >= 1U && width <= 8U) {
+          if (v < f.min()) v = f.min();
+          if (v > f.max()) v = f.max();
+        }
+        return v < 0 || od::is_signed_integer(e.type)
+                   ? std::to_string(v)
+                   : eds_number(od::unsigned_number(static_cast<std::uint64_t>(v)), false);
+      }
+    }
+  }
+  return entry_number(e, n, nodeid);
+}
 
 void add_mandatory_objects(dictionary &d) {
   auto add = [&](std::uint16_t index, od::object_code code, std::string name,

@@ -7,6 +7,9 @@
 
 #include <doctest/doctest.h>
 
+#include <array>
+#include <span>
+
 namespace dpq = fieldcodec::dictionaries::dpq_parameters;
 namespace pac = fieldcodec::dictionaries::pacontrol_commands;
 namespace xc = fieldcodec::dictionaries::xenax_canopen;
@@ -46,4 +49,44 @@ TEST_CASE("generated: XENAX strings have a capacity (issue 12.1)") {
   REQUIRE(e != nullptr);
   CHECK(e->default_text == "Servocontroller XENAX Xvi xxVx");
   CHECK(e->size >= e->default_text.size()); // its default's length at least (30)
+}
+
+// The generated PDO layouts (fieldcodec-gen --pdo-header, issue 29): the XENAX EtherCAT PDOs of
+// manual chapter 7 as compile-time layouts, checked against the dictionary by the compiler.
+#include <fieldcodec/dictionaries/xenax_canopen_pdos.hpp>
+#include <fieldcodec/dictionaries/xenax_ethercat_pdos.hpp>
+
+namespace xe_pdos = fieldcodec::dictionaries::xenax_ethercat::pdos;
+namespace xc_pdos = fieldcodec::dictionaries::xenax_canopen::pdos;
+namespace pdo = fieldcodec::canopen::pdo;
+
+// 7.1.2: TxPDO 21 (1A13h, TwinCAT): statusword, actual position, following error, actual
+// current, process status register: 16 + 32 + 32 + 16 + 32 bits
+static_assert(xe_pdos::txpdo_1a13.entries.size() == 5);
+static_assert(xe_pdos::txpdo_1a13.entries[0] == pdo::mapping_entry{0x6041, 0, 16});
+static_assert(xe_pdos::txpdo_1a13.entries[4] == pdo::mapping_entry{0x2006, 0, 32});
+static_assert(xe_pdos::txpdo_1a13.bytes() == 16);
+static_assert(xe_pdos::txpdo_1a13.signs[2] == pdo::signedness::signed_); // 60F4h INTEGER32
+// 7.1.1: RxPDO 18 (1612h): nine entries, 34 bytes
+static_assert(xe_pdos::rxpdo_1612.entries.size() == 9);
+static_assert(xe_pdos::rxpdo_1612.bytes() == 34);
+// 9.1.16: the CAN TxPDO 2 (1A01h): statusword + actual position
+static_assert(xc_pdos::txpdo_1a01.entries[1] == pdo::mapping_entry{0x6064, 0, 32});
+
+TEST_CASE("generated: the XENAX EtherCAT TxPDO 21 layout reads a process image (manual 7.1.2)") {
+  // statusword 0x0637, position -1000, following error -2, current 150 mA, PSR 9
+  const std::array<std::uint8_t, 16> image{0x37, 0x06, 0x18, 0xFC, 0xFF, 0xFF, 0xFE, 0xFF,
+                                           0xFF, 0xFF, 0x96, 0x00, 0x09, 0x00, 0x00, 0x00};
+  CHECK(xe_pdos::txpdo_1a13.get<std::uint16_t>(image, 0).value() == 0x0637U);
+  CHECK(xe_pdos::txpdo_1a13.get<std::int32_t>(image, 1).value() == -1000);
+  CHECK(xe_pdos::txpdo_1a13.get<std::int32_t>(image, 2).value() == -2);
+  CHECK(xe_pdos::txpdo_1a13.get<std::int16_t>(image, 3).value() == 150);
+  CHECK(xe_pdos::txpdo_1a13.get<std::int32_t>(image, 4).value() == 9);
+  CHECK(xe_pdos::txpdo_1a13.get(std::span(image).first(15), 4) == errc::truncated);
+  // the other way: a value of an object's type is packed, one that does not fit refused
+  std::array<std::uint8_t, 34> out{};
+  CHECK(xe_pdos::rxpdo_1612.set(out, 1, -5).has_value());
+  CHECK(out[2] == 0xFB);
+  CHECK(out[5] == 0xFF);
+  CHECK(xe_pdos::rxpdo_1612.set(out, 0, 0x10000) == errc::overflow); // controlword is 16 bits
 }

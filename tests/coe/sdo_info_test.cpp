@@ -142,7 +142,7 @@ TEST_CASE("SDO information: bad input") {
   // decode_info() returns a view into its input: each request keeps its bytes alive here.
   std::list<bytes> keep;
   const auto req = [&keep](std::initializer_list<std::uint8_t> body) {
-    bytes& b = keep.emplace_back(
+    bytes &b = keep.emplace_back(
         bytes{static_cast<std::uint8_t>(2 + body.size()), 0, 0, 0, 0, 0x13, 0x00, 0x80});
     b.insert(b.end(), body);
     return coe::decode_info(b).value();

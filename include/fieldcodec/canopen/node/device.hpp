@@ -374,14 +374,10 @@ public:
     if (!started_ || s == nmt::state::boot_up) return finish(now);
     take(producer_.poll(now, s));
     (void)consumer_.poll(now);
-    for (const auto &h : consumer_.events()) {
-      event e{event::kind::heartbeat};
-      e.heartbeat = h;
-      push_event(e);
-    }
+    consumer_events();
     const auto before = life_.state();
     if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
-      push_event({event::kind::life_guard_lost});
+      push_event(event::kind::life_guard_lost);
     }
     const auto sdo = sdo_.poll(now);
     if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
@@ -502,8 +498,17 @@ private:
   [[gnu::noinline]] constexpr void take_frames(const frames &send) noexcept {
     for (const can_frame &f : send) out_.push(f);
   }
-  constexpr void push_event(const event &e) noexcept { events_.push(e); }
-  constexpr void pdo_events() noexcept {
+  // the events and their loops: one function each, called from several places
+  [[gnu::noinline]] constexpr void push_event(const event &e) noexcept { events_.push(e); }
+  [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { events_.push(event{k}); }
+  [[gnu::noinline]] constexpr void consumer_events() noexcept {
+    for (const auto &h : consumer_.events()) {
+      event e{event::kind::heartbeat};
+      e.heartbeat = h;
+      push_event(e);
+    }
+  }
+  [[gnu::noinline]] constexpr void pdo_events() noexcept {
     for (const auto &p : pdo_.events()) {
       event e{event::kind::pdo};
       e.pdo = p;
@@ -549,7 +554,7 @@ private:
       if (auto r = guard_.respond(f, s)) out_.push(r.value());
       const auto before = life_.state();
       (void)life_.on_request(now);
-      if (before == guard_state::lost) push_event({event::kind::life_guard_resumed});
+      if (before == guard_state::lost) push_event(event::kind::life_guard_resumed);
       return;
     }
     if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
@@ -575,11 +580,7 @@ private:
     }
     if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
       (void)consumer_.on_frame(f, now);
-      for (const auto &h : consumer_.events()) {
-        event e{event::kind::heartbeat};
-        e.heartbeat = h;
-        push_event(e);
-      }
+      consumer_events();
       return;
     }
     if (allowed(s, service::pdo)) {
@@ -595,8 +596,8 @@ private:
     (void)nmt_.on_frame(f, now);
     if (nmt_.pending_reset() != reset::none) {
       const reset r = nmt_.pending_reset();
-      push_event({r == reset::application ? event::kind::reset_application
-                                          : event::kind::reset_communication});
+      push_event(r == reset::application ? event::kind::reset_application
+                                         : event::kind::reset_communication);
       status st{};
       if (r == reset::application) {
         const auto range = restored(reset::application);
