@@ -256,7 +256,7 @@ private:
       const auto v = dev_.value({e.index, e.sub});
       if (!v) continue; // no value (write-only, not stored)
       if (od::is_byte_string(e.type)) {
-        FUZZ_CHECK(e.size == 0U || v.value().size() <= e.size);
+        FUZZ_CHECK(e.capacity() == 0U || v.value().size() <= e.capacity());
         continue;
       }
       const auto n =

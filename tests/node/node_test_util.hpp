@@ -6,6 +6,7 @@
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -106,16 +107,17 @@ using od::access;
 using od::data_type;
 using od::pdo_mapping;
 
-constexpr od::entry var(std::uint16_t index, std::uint8_t sub, data_type t, access a,
-                        std::uint64_t def, pdo_mapping p = pdo_mapping::no) {
+constexpr od::entry_spec var(std::uint16_t index, std::uint8_t sub, data_type t, access a,
+                             std::uint64_t def, pdo_mapping p = pdo_mapping::no) {
   return {
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
-inline constexpr std::size_t entry_count = 98;
+inline constexpr std::size_t entry_count = 102;
 
-/// The dictionary of node `n` (node-ID-relative defaults resolved for n).
-constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
+/// The dictionary of node `n` (node-ID-relative defaults resolved for n), as specs
+/// (od::entries_of packs them).
+constexpr std::array<od::entry_spec, entry_count> make_specs(std::uint8_t n) {
   const auto u8 = data_type::unsigned8;
   const auto u16 = data_type::unsigned16;
   const auto u32 = data_type::unsigned32;
@@ -131,6 +133,7 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1003, 3, u32, ro, 0),
       var(0x1003, 4, u32, ro, 0),
       var(0x1005, 0, u32, rw, 0x80),
+      var(0x1006, 0, u32, rw, 0),
       var(0x1007, 0, u32, rw, 0),
       {.index = 0x1008,
        .type = data_type::visible_string,
@@ -152,6 +155,9 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1018, 3, u32, ro, 0x0001'0000U),
       var(0x1018, 4, u32, ro, 0),
       var(0x1019, 0, u8, rw, 0),
+      var(0x1029, 0, u8, ro, 2),
+      var(0x1029, 1, u8, rw, 0),
+      var(0x1029, 2, u8, rw, 0),
       var(0x1200, 0, u8, ro, 2),
       var(0x1200, 1, u32, ro, 0x600U + n),
       var(0x1200, 2, u32, ro, 0x580U + n),
@@ -239,7 +245,8 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
   }};
 }
 
-inline constexpr auto entries5 = make_entries(5);
+inline constexpr auto specs5 = make_specs(5);
+inline constexpr auto entries5 = od::entries_of<specs5>;
 inline constexpr od::dictionary dict5{entries5};
 static_assert(dict5.is_valid());
 inline constexpr auto layout5 = co::make_layout<entry_count>(dict5);
@@ -248,6 +255,7 @@ inline constexpr node::capacity caps = node::capacity_for(dict5);
 static_assert(caps.rpdos == 2 && caps.tpdos == 2 && caps.mapped == 4);
 static_assert(caps.heartbeat_consumers == 3 && caps.error_history == 4);
 static_assert(caps.sdo_servers == 2 && caps.sdo_clients == 1);
+static_assert(caps.error_classes == 2);
 
 using store_type = co::dictionary_store<>;
 using device_type = node::device<store_type, caps>;
@@ -269,7 +277,8 @@ constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_cod
 /// A node over the test dictionary with its own storage.
 template <std::uint8_t N = 5>
 struct rig {
-  static constexpr auto entries = make_entries(N);
+  static constexpr auto specs = make_specs(N);
+  static constexpr auto entries = od::entries_of<specs>;
   static constexpr od::dictionary dict{entries};
   static constexpr auto layout = co::make_layout<entry_count>(dict);
 
@@ -335,10 +344,24 @@ struct rig {
     CHECK(m.type == sdo::message_type::initiate_download_response);
     return abort_code::none;
   }
+  /// The frames the last accepted set_send sent.
+  std::vector<co::can_frame> set_frames;
   abort_code set_u(std::uint16_t index, std::uint8_t sub, std::uint32_t value, std::size_t width) {
     std::array<std::uint8_t, 4> b{};
     for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
     return dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width));
+  }
+  /// The same with device::set(a, value, now): the frames its step sends are set_frames.
+  abort_code set_send(std::uint16_t index, std::uint8_t sub, std::uint32_t value,
+                      std::size_t width) {
+    std::array<std::uint8_t, 4> b{};
+    for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
+    set_frames.clear();
+    auto r = dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width), now);
+    if (!r) return r.error();
+    set_frames = list(r.value().send);
+    deadline = r.value().deadline;
+    return abort_code::none;
   }
 };
 
