@@ -39,8 +39,7 @@ const cli::node_dictionary &load(const char *relative) {
   auto it = loaded.find(relative);
   if (it == loaded.end()) {
     std::string error;
-    auto d =
-        cli::node_dictionary::load(std::string(FIELDCODEC_SOURCE_DIR) + "/" + relative, 0, error);
+    auto d = cli::node_dictionary::load(std::string(FIELDCODEC_SOURCE_DIR) + "/" + relative, error);
     if (!d) {
       std::fprintf(stderr, "%s\n", error.c_str());
       std::abort();

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -75,12 +76,12 @@ void decode_with(const cli::node_dictionary &d, std::uint8_t node) {
   std::size_t objects = 0;
   for (const cli::object_desc &o : d.objects()) {
     if (++objects > 64U) break;
-    const auto lo = static_cast<std::uint8_t>(o.core.index & 0xFFU);
-    const auto hi = static_cast<std::uint8_t>(o.core.index >> 8U);
+    const auto lo = static_cast<std::uint8_t>(o.d.index & 0xFFU);
+    const auto hi = static_cast<std::uint8_t>(o.d.index >> 8U);
     const auto v = static_cast<std::uint64_t>(o.configured.value_or(0));
-    feed(frame(0x600U + node, {0x40, lo, hi, o.core.sub, 0, 0, 0, 0}));
+    feed(frame(0x600U + node, {0x40, lo, hi, o.d.sub, 0, 0, 0, 0}));
     feed(frame(0x580U + node,
-               {0x43, lo, hi, o.core.sub, static_cast<std::uint8_t>(v),
+               {0x43, lo, hi, o.d.sub, static_cast<std::uint8_t>(v),
                 static_cast<std::uint8_t>(v >> 8U), static_cast<std::uint8_t>(v >> 16U),
                 static_cast<std::uint8_t>(v >> 24U)}));
   }
@@ -106,24 +107,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     std::fclose(f);
   }
   std::string error;
-  const auto d = cli::node_dictionary::load(path, node, error);
-  if (!d) {
+  const auto loaded = cli::node_dictionary::load(path, error);
+  if (!loaded) {
     FUZZ_CHECK(!error.empty());
     FUZZ_CHECK(error.find(path) != std::string::npos);
     FUZZ_CHECK(fuzz_text::valid_utf8(error));
     return 0;
   }
+  const std::optional<cli::node_dictionary> d = loaded->for_node(node);
   const auto &objects = d->objects();
   for (std::size_t i = 0; i < objects.size(); ++i) {
-    const od::address a{objects[i].core.index, objects[i].core.sub};
+    const od::address a{objects[i].d.index, objects[i].d.sub};
     if (i > 0U) {
-      FUZZ_CHECK((od::address{objects[i - 1U].core.index, objects[i - 1U].core.sub} < a));
+      FUZZ_CHECK((od::address{objects[i - 1U].d.index, objects[i - 1U].d.sub} < a));
     }
     FUZZ_CHECK(d->find(a) == &objects[i]);
     FUZZ_CHECK(fuzz_cli::printable_utf8(objects[i].name));
-    FUZZ_CHECK(fuzz_cli::printable_utf8(objects[i].unit));
+    FUZZ_CHECK(fuzz_cli::printable_utf8(std::string_view(objects[i].d.info.unit)));
   }
-  FUZZ_CHECK(d->find({0x0000, 0}) == nullptr || objects.front().core.index == 0U);
+  FUZZ_CHECK(d->find({0x0000, 0}) == nullptr || objects.front().d.index == 0U);
   // the same dictionary for other nodes
   for (const std::uint8_t other : {std::uint8_t{1}, std::uint8_t{127}}) {
     const cli::node_dictionary o = d->for_node(other);
@@ -131,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const cli::object_desc &a = objects[i];
       const cli::object_desc &b = o.objects()[i];
-      FUZZ_CHECK(a.core.index == b.core.index && a.core.sub == b.core.sub);
+      FUZZ_CHECK(a.d.index == b.d.index && a.d.sub == b.d.sub);
       FUZZ_CHECK(a.name == b.name);
       // (a node-ID relative value near the end of the 64-bit range may fit for one node only)
       if (a.configured && b.configured) {

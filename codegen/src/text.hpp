@@ -26,10 +26,6 @@ namespace fieldcodec::gen {
 
 /// Whether `s` is valid UTF-8 (no overlong forms, no surrogates, nothing beyond U+10FFFF).
 [[nodiscard]] bool valid_utf8(std::string_view s) noexcept;
-/// The length (1..4) of the well-formed UTF-8 sequence that starts at s[i] (as valid_utf8
-/// defines it), 0 when the bytes there are not one (a stray continuation byte, a cut, overlong
-/// or surrogate sequence, a byte never used in UTF-8) or i is past the end.
-[[nodiscard]] std::size_t utf8_length_at(std::string_view s, std::size_t i) noexcept;
 /// Where `s` stops being valid UTF-8: the offset of the first byte of the first invalid
 /// sequence, std::string_view::npos when all of it is valid.
 [[nodiscard]] std::size_t utf8_invalid_at(std::string_view s) noexcept;

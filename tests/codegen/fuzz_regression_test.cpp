@@ -5,6 +5,8 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/core/utf8.hpp>
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -211,14 +213,14 @@ TEST_CASE("fuzz F23: a diagnostic quotes a whole character") {
     found = found || x.message.find("got '\xC3\x80'") != std::string::npos;
   }
   CHECK(found);
-  // the primitive: the length of the character at a position, 0 where none starts
-  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 1) == 2U);
-  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 3) == 3U);
-  CHECK(gen::utf8_length_at("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 6) == 4U);
-  CHECK(gen::utf8_length_at("a\xC3\x80", 2) == 0U);        // a continuation byte
-  CHECK(gen::utf8_length_at("\xC3", 0) == 0U);             // cut
-  CHECK(gen::utf8_length_at("\xC0\x80", 0) == 0U);         // overlong
-  CHECK(gen::utf8_length_at("\xED\xA0\x80", 0) == 0U);     // a surrogate
-  CHECK(gen::utf8_length_at("\xF4\x90\x80\x80", 0) == 0U); // beyond U+10FFFF
-  CHECK(gen::utf8_length_at("ab", 2) == 0U);               // past the end
+  // the one primitive (core/utf8): the length of the character at a position, 0 where none starts
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 1) == 2U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 3) == 3U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 6) == 4U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80", 2) == 0U);        // a continuation byte
+  CHECK(fieldcodec::utf8::sequence_length("\xC3", 0) == 0U);             // cut
+  CHECK(fieldcodec::utf8::sequence_length("\xC0\x80", 0) == 0U);         // overlong
+  CHECK(fieldcodec::utf8::sequence_length("\xED\xA0\x80", 0) == 0U);     // a surrogate
+  CHECK(fieldcodec::utf8::sequence_length("\xF4\x90\x80\x80", 0) == 0U); // beyond U+10FFFF
+  CHECK(fieldcodec::utf8::sequence_length("ab", 2) == 0U);               // past the end
 }

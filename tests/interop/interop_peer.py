@@ -849,6 +849,43 @@ def part_errors(args):
               "the bridge's state")
         ok("error behaviour", "python's heartbeat lost in operational: python's NMT master sees "
            "the node's heartbeat go from OPERATIONAL to PRE-OPERATIONAL (1029h absent: default 0)")
+        # the node as SYNC producer (1005h bit 30, 1006h, 1019h); python receives the SYNCs
+        syncs = []
+        s.network.subscribe(0x80, lambda cob, data, t: syncs.append((t, bytes(data))))
+        node.sdo.download(0x1016, 1, bytes(4))  # python is not monitored any more
+        node.sdo.download(0x1006, 0, (20000).to_bytes(4, "little"))  # 20 ms
+        node.sdo.download(0x1005, 0, (0x40000080).to_bytes(4, "little"))
+        check(node.sdo.upload(0x1005, 0) == (0x40000080).to_bytes(4, "little"), "sync producer",
+              "1005h does not read back with bit 30")
+        node.sdo.download(0x1005, 0, (0x40000080).to_bytes(4, "little"))  # the same value again
+        wait_until(lambda: len(syncs) >= 6, "sync producer", f"python got {len(syncs)} SYNCs")
+        got = list(syncs[:6])
+        gaps = sorted(round((t1 - t0) * 1000) for (t0, _), (t1, _) in zip(got, got[1:]))
+        check(all(d == b"" for _, d in got), "sync producer",
+              f"SYNC data {[d.hex() for _, d in got]}, expected none (1019h = 0)")
+        check(10 <= gaps[len(gaps) // 2] <= 200, "sync producer",
+              f"gaps {gaps} ms for 1006h = 20000 us")
+        expect_abort("sync producer", 0x06090030,
+                     lambda: node.sdo.download(0x1005, 0, (0x40000081).to_bytes(4, "little")))
+        # with a counter: 1006h = 0, 1019h = 3, 1006h = 20 ms again
+        node.sdo.download(0x1006, 0, bytes(4))
+        node.sdo.download(0x1019, 0, bytes([3]))
+        del syncs[:]
+        node.sdo.download(0x1006, 0, (20000).to_bytes(4, "little"))
+        wait_until(lambda: len(syncs) >= 5, "sync producer", f"python got {len(syncs)} SYNCs")
+        counters = [d[0] if len(d) == 1 else None for _, d in syncs[:5]]
+        check(counters[0] is not None and
+              all(b == (a % 3) + 1 for a, b in zip(counters, counters[1:])), "sync producer",
+              f"counters {counters}, expected 1, 2, 3, 1, ...")
+        node.sdo.download(0x1005, 0, (0x80).to_bytes(4, "little"))
+        s.bridge.drain()
+        n = len(syncs)
+        time.sleep(0.1)
+        check(len(syncs) <= n + 1, "sync producer", "SYNCs after bit 30 was cleared")
+        ok("sync producer", f"1005h = 40000080h, 1006h = 20000 us: python receives SYNCs "
+           f"(gaps {gaps} ms), the same 1005h again is taken, another COB-ID while generating "
+           f"is refused (06090030h); with 1019h = 3 the counters are {counters}; bit 30 cleared "
+           "stops them")
     finally:
         s.close()
 

@@ -47,6 +47,7 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 #ifdef FIELDCODEC_INTEROP_CORPUS
 #include <fieldcodec/dictionaries/interop_corpus.hpp>
@@ -56,7 +57,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -74,10 +74,8 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 
 std::uint32_t now_ms() {
-  static const auto start = std::chrono::steady_clock::now();
-  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                        std::chrono::steady_clock::now() - start)
-                                        .count());
+  static const fieldcodec::host::steady_ms clock;
+  return clock.now();
 }
 
 void put_line(const std::string &s) {

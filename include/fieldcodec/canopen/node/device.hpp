@@ -1,7 +1,7 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
-// life guarding, EMCY producer, SYNC consumer, PDO engine, SDO channels and the error behaviour
-// (1029h), with frames routed
+// life guarding, EMCY producer, SYNC consumer and (capacity::sync_producer) producer, PDO
+// engine, SDO channels and the error behaviour (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -68,6 +68,7 @@
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
 #include <fieldcodec/canopen/node/store.hpp>
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
+#include <fieldcodec/canopen/node/sync_producer.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/crc.hpp>
@@ -82,6 +83,7 @@
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <variant>
 
 namespace fieldcodec::canopen::node {
 
@@ -111,6 +113,10 @@ struct capacity {
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
   std::size_t error_classes = 1; ///< sub-indices of 1029h (error behaviour) served
+  /// The node can be the SYNC producer (1005h bit 30, 1006h; node/sync_producer.hpp). Without
+  /// it 1005h refuses bit 30 and no producer code is in the image; capacity_for sets it when
+  /// the dictionary has 1006h.
+  bool sync_producer = false;
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -140,6 +146,7 @@ struct capacity {
     if (i == 0x1016U && e.sub > c.heartbeat_consumers) c.heartbeat_consumers = e.sub;
     if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
     if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
+    if (i == 0x1006U) c.sync_producer = true;
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -287,6 +294,7 @@ public:
         emcy_(node), access_(*this), pdo_(access_, store.dictionary()),
         sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
     pdo_.report_long_rpdo(o.report_long_rpdo);
+    sync_.allow_producer(C.sync_producer);
     emcy_.report_each_reset(o.report_each_reset);
   }
   device(const device &) = delete;
@@ -388,6 +396,14 @@ public:
     const nmt::state s = nmt_.state();
     if (!started_ || s == nmt::state::boot_up) return finish(now);
     take(producer_.poll(now, s));
+    if constexpr (C.sync_producer) {
+      if (allowed(s, service::sync)) {
+        if (const auto f = sync_out_.poll(now)) {
+          out_.push(*f);
+          sync_frame(*f, now); // the node's own SYNC counts for its PDOs
+        }
+      }
+    }
     (void)consumer_.poll(now);
     bool lost = consumer_events();
     const auto before = life_.state();
@@ -590,6 +606,9 @@ private:
     d = earliest(d, emcy_.deadline(), now);
     d = earliest(d, pdo_.deadline(now), now);
     d = earliest(d, sdo_.deadline(now), now);
+    if constexpr (C.sync_producer) {
+      if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
+    }
     return d;
   }
 
@@ -610,14 +629,7 @@ private:
       return;
     }
     if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
-      const auto r = sync_.on_frame(f, now);
-      if (r.state.received) {
-        event e{event::kind::sync};
-        e.counter = r.state.counter;
-        push_event(e);
-        take(pdo_.on_sync(r.state.counter, now));
-        pdo_events();
-      }
+      sync_frame(f, now);
       return;
     }
     if (allowed(s, service::sdo)) {
@@ -639,6 +651,17 @@ private:
       take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
       pdo_events();
     }
+  }
+
+  /// A SYNC, received or the node's own: the consumer takes it, the PDOs follow.
+  constexpr void sync_frame(const can_frame &f, std::uint32_t now) noexcept {
+    const auto r = sync_.on_frame(f, now);
+    if (!r.state.received) return;
+    event e{event::kind::sync};
+    e.counter = r.state.counter;
+    push_event(e);
+    take(pdo_.on_sync(r.state.counter, now));
+    pdo_events();
   }
 
   // ----- NMT -------------------------------------------------------------------------------
@@ -676,6 +699,9 @@ private:
     emcy_.enable(allowed(s, service::emcy));
     consumer_.enable(s == nmt::state::pre_operational || s == nmt::state::operational);
     if (s == nmt::state::stopped) sdo_.stop_servers();
+    if constexpr (C.sync_producer) {
+      if (s == nmt::state::operational) sync_out_.restart_counter();
+    }
     event e{event::kind::nmt_state};
     e.state = s;
     push_event(e);
@@ -691,6 +717,7 @@ private:
   template <class Self, class F>
   static constexpr void each_service(Self &self, F f) noexcept {
     f(self.sync_);
+    if constexpr (C.sync_producer) f(self.sync_out_);
     f(self.life_);
     f(self.emcy_);
     f(self.producer_);
@@ -815,11 +842,11 @@ private:
   }
   // ----- members ---------------------------------------------------------------------------
 
-  // one call sends at most: boot-up or heartbeat, a guarding response, each TPDO once, one
+  // one call sends at most: boot-up or heartbeat, a SYNC, a guarding response, each TPDO once, one
   // frame per SDO channel, and the EMCY messages (the queue, or the raises and clears of the
   // five node-managed codes when no inhibit time holds them back)
   static constexpr std::size_t out_capacity =
-      2U + C.tpdos + C.sdo_servers + C.sdo_clients + (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
+      3U + C.tpdos + C.sdo_servers + C.sdo_clients + (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
   static constexpr std::size_t event_capacity =
       4U + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
@@ -833,6 +860,8 @@ private:
   nmt::guard_responder guard_;
   emcy_type emcy_;
   sync_consumer sync_{};
+  [[no_unique_address]] std::conditional_t<C.sync_producer, sync_producer, std::monostate>
+      sync_out_{};
   errors_type errors_{};
   access access_;
   pdo_type pdo_;
