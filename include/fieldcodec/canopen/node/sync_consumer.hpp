@@ -143,7 +143,10 @@ public:
   }
   /// The last SYNC's length did not fit 1019h.
   [[nodiscard]] constexpr bool length_error() const noexcept { return length_error_; }
-  [[nodiscard]] constexpr std::optional<errc> error() const noexcept { return error_; }
+  [[nodiscard]] constexpr std::optional<errc> error() const noexcept {
+    if (error_ == errc{}) return std::nullopt;
+    return error_;
+  }
   /// Forget the last SYNC (NMT reset).
   constexpr void restart() noexcept {
     seen_ = false;
@@ -173,7 +176,7 @@ private:
       counter = f.data[0];
     }
     length_error_ = false;
-    error_.reset();
+    error_ = errc{};
     seen_ = true;
     last_ = now;
     counter_ = counter;
@@ -190,7 +193,9 @@ private:
   std::uint32_t cob_value_ = 0;
   std::uint32_t last_ = 0;
   std::optional<std::uint8_t> counter_{};
-  std::optional<errc> error_{};
+  /// errc{} (no code of errc is 0) when there is none; a plain member for the reason given in
+  /// nmt_slave.hpp (g++ 12 -O3 -Wmaybe-uninitialized on a copied std::optional).
+  errc error_{};
   bool seen_ = false;
   bool length_error_ = false;
   bool producer_ = false;
