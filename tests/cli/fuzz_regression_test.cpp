@@ -30,10 +30,13 @@ TEST_CASE("fuzz F22: JSON strings and text lines are UTF-8 whatever the input") 
   std::vector<cli::decoded_line> lines;
   dec.malformed("605#\xFF", fieldcodec::errc::bad_digit, 3, lines);
   REQUIRE(lines.size() == 1U);
-  CHECK(cli::render_json(lines[0]) == "{\"line\":3,\"function\":\"MALFORMED\",\"error\":\"bad "
-                                      "digit\",\"input\":\"605#\\u00FF\","
-                                      "\"text\":\"line 3: bad digit: \\\"605#\\u00FF\\\"\"}");
-  CHECK(cli::render_text(lines[0]) == "-   MALFORMED line 3: bad digit: \"605#\xEF\xBF\xBD\"");
+  // the text quotes the input as the JSON does, each such byte as \u00XX
+  CHECK(cli::render_json(lines[0]) ==
+        "{\"line\":3,\"function\":\"MALFORMED\",\"error\":\"bad digit\",\"reason\":\"bad "
+        "digit\",\"column\":1,\"input\":\"605#\\u00FF\",\"text\":\"line 3: bad digit at column "
+        "1: \\\"605#\\\\u00FF\\\"\"}");
+  CHECK(cli::render_text(lines[0]) ==
+        "-   MALFORMED line 3: bad digit at column 1: \"605#\\u00FF\"");
 }
 
 // F24 (fuzz_cli_dictionary): a node-ID relative default near the end of the 64-bit range
