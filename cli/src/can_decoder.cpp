@@ -198,7 +198,8 @@ can_decoder::node_state &can_decoder::node(const node_key &key) {
   if (s.dict != nullptr) {
     for (const object_desc &o : s.dict->objects()) {
       const auto p = pdo_param_of(o.d.index);
-      if (!p || !o.configured) continue;
+      // PDO parameters are UNSIGNED8/32: a value outside 32 bits is not one (never narrowed)
+      if (!p || !o.configured || *o.configured < 0 || *o.configured > 0xFFFFFFFF) continue;
       pdo_config &c = p->rpdo ? s.rpdo[p->n] : s.tpdo[p->n];
       const auto v = static_cast<std::uint32_t>(*o.configured);
       if (!p->mapping && o.d.sub == 1) {

@@ -104,11 +104,8 @@ void node_dictionary::build() {
     const bool dcf = o.d.info.parameter_value.has_value();
     const auto v = dcf ? o.d.parameter_for(node_) : o.d.default_for(node_);
     if (v) {
-      if (auto i = v.value().to_int64()) {
-        o.configured = i.value();
-      } else if (auto u = v.value().to_uint64()) {
-        o.configured = static_cast<std::int64_t>(u.value());
-      }
+      // an UNSIGNED64 above 2^63 - 1 is no int64: none, never wrapped (fuzz/FINDINGS.md F24)
+      if (auto i = v.value().to_int64()) o.configured = i.value();
     }
     objects_.push_back(std::move(o));
   }

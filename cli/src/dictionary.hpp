@@ -35,7 +35,9 @@ enum class device_family : std::uint8_t {
 struct object_desc {
   od::descriptor d{}; ///< entry, info (name, unit) and scale; vendor units applied
   std::string name;   ///< "Identity Object: Vendor Id" for a sub-object of a record
-  std::optional<std::int64_t> configured; ///< DCF ParameterValue, else the default (node resolved)
+  /// DCF ParameterValue, else the default (node resolved); empty when it is no integer of 64
+  /// signed bits
+  std::optional<std::int64_t> configured;
 };
 
 class node_dictionary {

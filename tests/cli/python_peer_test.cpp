@@ -8,6 +8,7 @@
 #include "model.hpp"
 #include "od_tables.hpp"
 #include "readers.hpp"
+#include "skip.hpp"
 
 #include <fieldcodec/host/remote_node.hpp>
 #include <fieldcodec/host/slcan.hpp>
@@ -155,16 +156,15 @@ struct python_session {
   }
 };
 
-bool skip_without_python() {
-  if (python_ready()) return false;
-  MESSAGE("skipped: python-canopen peer (" << peer_dir << ") or python-can/pyserial not available");
-  return true;
-}
-
 } // namespace
 
 TEST_CASE("cli: sdo read and write against python-canopen over slcan") {
-  if (skip_without_python()) return;
+  if (!python_ready()) {
+    FIELDCODEC_SKIP_TEST("python", "python-canopen peer ("
+                                       << peer_dir
+                                       << ") or /usr/bin/python3 with python-can and pyserial "
+                                          "not available (Debian: python3-can python3-serial)");
+  }
   python_session session;
   REQUIRE(session.ready());
   python_peer &peer = session.peer;
@@ -240,7 +240,12 @@ std::string lower(std::string s) {
 } // namespace
 
 TEST_CASE("cli: what sdo read prints, sdo write sends back to python-canopen as the same bytes") {
-  if (skip_without_python()) return;
+  if (!python_ready()) {
+    FIELDCODEC_SKIP_TEST("python", "python-canopen peer ("
+                                       << peer_dir
+                                       << ") or /usr/bin/python3 with python-can and pyserial "
+                                          "not available (Debian: python3-can python3-serial)");
+  }
   python_session session;
   REQUIRE(session.ready());
   python_peer &peer = session.peer;
@@ -278,7 +283,12 @@ TEST_CASE("cli: what sdo read prints, sdo write sends back to python-canopen as 
 }
 
 TEST_CASE("host::remote_node against python-canopen: objects by name, values both ways") {
-  if (skip_without_python()) return;
+  if (!python_ready()) {
+    FIELDCODEC_SKIP_TEST("python", "python-canopen peer ("
+                                       << peer_dir
+                                       << ") or /usr/bin/python3 with python-can and pyserial "
+                                          "not available (Debian: python3-can python3-serial)");
+  }
   python_session session;
   REQUIRE(session.ready());
   python_peer &peer = session.peer;

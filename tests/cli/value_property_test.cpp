@@ -6,6 +6,7 @@
 #include "cli_support.hpp"
 
 #include "dictionary.hpp"
+#include "skip.hpp"
 #include "values.hpp"
 
 #include <fieldcodec/core/bytes.hpp>
@@ -288,8 +289,7 @@ TEST_CASE("property: what read prints, write sends back as the same bytes (shipp
 TEST_CASE("property: what read prints, write sends back as the same bytes (EDS corpus)") {
   const std::filesystem::path corpus = std::string(FIELDCODEC_SHARED_DIR) + "/eds-corpus";
   if (!std::filesystem::is_directory(corpus)) {
-    MESSAGE("skipped: " << corpus.string() << " is absent");
-    return;
+    FIELDCODEC_SKIP_TEST("corpus", corpus.string() << " is absent");
   }
   tally all;
   std::size_t files = 0;

@@ -231,8 +231,9 @@ public:
   }
 
   /// Fill every slot with the entry's default for `node` (node-ID relative defaults resolved):
-  /// numbers from the numeric default (zero without one), byte strings from the default text
-  /// (its length is the value's length). Errors: buffer_too_small (storage or layout do not
+  /// numbers from the numeric default; without one, or with one outside the entry's limits,
+  /// zero, or the limit nearest to zero when zero is outside them; byte strings from the default
+  /// text (its length is the value's length). Errors: buffer_too_small (storage or layout do not
   /// fit the dictionary), too_long (a default text longer than its entry's capacity: cut, the
   /// other entries are filled).
   [[nodiscard]] constexpr status init_defaults(std::uint8_t node) noexcept {
@@ -472,26 +473,75 @@ private:
       set_length(slot, n);
       return fits;
     }
-    if (!e.has(od::flag::has_default) || slot.empty()) return true;
-    // an out-of-limit default, or one that does not fit the field for this node, stays zero
-    if (e.has(od::flag::default_number)) {
-      if constexpr (Kinds.numbers) {
-        if (auto d = e.default_for(node_)) {
-          (void)od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, d.value(), slot,
-                                   byte_order::little, node_);
+    if (slot.empty()) return true;
+    if (e.has(od::flag::has_default)) {
+      if (e.has(od::flag::default_number)) {
+        if constexpr (Kinds.numbers) {
+          if (auto d = e.default_for(node_)) {
+            (void)od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, d.value(),
+                                     slot, byte_order::little, node_);
+          }
         }
+      } else if (slot.size() == od::fixed_size(e.type)) {
+        // in the entry's own width: the value's bytes as CANopen sends them
+        const std::size_t w = slot.size();
+        std::uint64_t v = load_le(e.extra + e.default_at(), w);
+        if (!e.has(od::flag::default_nodeid) || plus_node(e, w, v)) store_le(slot.data(), v, w);
       }
-      return true;
     }
-    // in the entry's own width: the value's bytes as CANopen sends them
-    const std::size_t w = slot.size();
-    std::uint64_t v = load_le(e.extra + e.default_at(), w);
-    if (e.has(od::flag::default_nodeid) && !plus_node(e, w, v)) return true;
-    store_le(slot.data(), v, w);
-    if (od::check_value<Kinds>(e, scale_at(i), slot, node_) != od::value_check::ok) {
+    within_limits(i, slot);
+    return true;
+  }
+
+  /// Whether entry i's own checks accept what `slot` holds.
+  [[nodiscard]] constexpr bool accepted(std::size_t i,
+                                        std::span<const std::uint8_t> slot) const noexcept {
+    return od::check_value<Kinds>(dict_.entries()[i], scale_at(i), slot, node_) ==
+           od::value_check::ok;
+  }
+
+  /// Keep entry i's slot within its own limits: a default it refuses (out of its limits, or
+  /// beyond its field for this node) or no default at all leaves zero when the entry accepts
+  /// zero, else the limit nearest to zero (a low limit above zero, or a high limit below it). The
+  /// store never holds a value its own checks refuse: a write-only 1..8 parameter without a default
+  /// held 0 (fuzz/FINDINGS.md F25).
+  constexpr void within_limits(std::size_t i, std::span<std::uint8_t> slot) noexcept {
+    if (accepted(i, slot)) return;
+    std::fill(slot.begin(), slot.end(), std::uint8_t{0});
+    if constexpr (Kinds.limits) {
+      const od::entry &e = dict_.entries()[i];
+      const od::value_check zero = od::check_value<Kinds>(e, scale_at(i), slot, node_);
+      if (zero == od::value_check::ok) return;
+      // zero above the high limit: the high one is nearest; below the low limit: the low one
+      const bool high_first = zero == od::value_check::too_high;
+      for (const bool second : {false, true}) {
+        const bool high = second != high_first;
+        if (!e.has(high ? od::flag::has_high : od::flag::has_low)) continue;
+        if (e.has(od::flag::limits_number)) {
+          if constexpr (Kinds.numbers) {
+            const auto l = high ? e.high_for(node_) : e.low_for(node_);
+            if (!l || !od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, l.value(),
+                                          slot, byte_order::little, node_)) {
+              continue;
+            }
+          } else {
+            continue;
+          }
+        } else {
+          const std::size_t w = slot.size();
+          if (w != od::fixed_size(e.type)) continue;
+          const std::size_t at =
+              e.limits_at() + (high && e.has(od::flag::has_low) ? e.limit_size() : 0U);
+          std::uint64_t v = load_le(e.extra + at, w);
+          if (e.has(high ? od::flag::high_nodeid : od::flag::low_nodeid) && !plus_node(e, w, v)) {
+            continue;
+          }
+          store_le(slot.data(), v, w);
+        }
+        if (accepted(i, slot)) return;
+      }
       std::fill(slot.begin(), slot.end(), std::uint8_t{0});
     }
-    return true;
   }
 
   /// A node-ID-relative default: node_ added to the `w`-byte integer `v`. False when the entry

@@ -291,7 +291,8 @@ private:
 
   static constexpr std::size_t client_slots = Clients == 0U ? 1U : Clients;
   /// The clients in use: 0, known at compile time, for a node without clients (whose image
-  /// then holds no client code).
+  /// then holds no client code, and whose loops over the clients do not index an empty array
+  /// behind a run-time bound, which g++ 12 -O2 reports with -Warray-bounds in users' builds).
   [[nodiscard]] constexpr std::size_t used_clients() const noexcept {
     return Clients == 0U ? 0U : client_count_;
   }
