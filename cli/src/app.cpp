@@ -9,8 +9,11 @@
 #include "values.hpp"
 
 #include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/node/device.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/network.hpp>
 #include <fieldcodec/host/pacontrol_link.hpp>
 #include <fieldcodec/host/sdo.hpp>
 #include <fieldcodec/host/slcan.hpp>
@@ -19,9 +22,13 @@
 #include <fieldcodec/pacontrol/codes.hpp>
 #include <fieldcodec/pacontrol/command.hpp>
 
+#include <poll.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <iostream>
 #include <istream>
 #include <map>
 #include <memory>
@@ -47,6 +54,7 @@ commands:
   sdo write       write an object of a node (SDO download)
   nmt             send an NMT command
   dump            read every readable object of a node into a DCF
+  serve           simulate a node from an EDS/DCF (values set from standard input)
   pacontrol send  send a command to a PA-CONTROL over RS232 and show the answer
 
 'fieldcodec help COMMAND' (or 'fieldcodec COMMAND --help') describes a command.
@@ -175,6 +183,29 @@ options:
   --block             use block transfer
   --progress          show the progress line also when standard error is no terminal
   --quiet             no progress line
+)";
+
+constexpr const char *serve_help =
+    R"(usage: fieldcodec serve NODE --dict FILE (--can IFACE | --slcan PORT) [OPTIONS]
+
+Simulates node NODE (1..127) with the objects of FILE (EDS or DCF): boot-up,
+NMT, heartbeat (1017h), node guarding, SDO (expedited, segmented, block), PDOs,
+SYNC and EMCY as a CiA 301 device does, until interrupted (Ctrl-C) or after
+--duration seconds. The objects start with their DCF values or EDS defaults.
+
+Standard input sets values, one per line: INDEX[:SUB] VALUE, VALUE as 'sdo read'
+prints it (1500 mA, 0x000F, "text"; checked against the object's limits and
+capacity), or --raw numbers with 'raw INDEX[:SUB] VALUE'. 'INDEX[:SUB]' alone
+prints the value. Empty lines and lines starting with # are skipped.
+
+Standard output: one line per value set or asked for (as 'sdo read' prints it),
+'written: ' and that line for every value the network writes (SDO, RPDO), and
+'NMT: STATE' for every NMT state the node enters.
+
+options:
+  --duration S        stop after S seconds
+exit status: 0, 2 usage error or a refused input line (the node keeps
+running), 3 the interface or port failed, 5 the dictionary could not be read.
 )";
 
 constexpr const char *pacontrol_send_help =
@@ -764,6 +795,226 @@ int cmd_nmt(const std::vector<std::string> &args, context c) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// serve
+
+/// What a simulated node holds: node::device over a dictionary_store of the dictionary loaded at
+/// run time. Capacity for the dictionaries devices describe (CiA 301 allows more; a dictionary
+/// beyond it is served in part, with a warning).
+constexpr canopen::node::capacity serve_capacity{.rpdos = 32,
+                                                 .tpdos = 32,
+                                                 .mapped = 64,
+                                                 .heartbeat_consumers = 32,
+                                                 .sdo_servers = 8,
+                                                 .sdo_clients = 0,
+                                                 .sdo_buffer = 889,
+                                                 .sdo_crc_table = false,
+                                                 .pdo_copies = true,
+                                                 .active_errors = 16,
+                                                 .error_history = 16,
+                                                 .emcy_queue = 8,
+                                                 .error_classes = 8,
+                                                 .sync_producer = true};
+
+/// The network's writes the store took (its write hook), for `written:` lines.
+struct write_log {
+  std::vector<std::pair<od::address, std::vector<std::uint8_t>>> *out = nullptr;
+  canopen::sdo::abort_code operator()(const od::entry &e, std::span<const std::uint8_t> v) const {
+    out->emplace_back(od::address{e.index, e.sub}, std::vector<std::uint8_t>(v.begin(), v.end()));
+    return canopen::sdo::abort_code::none;
+  }
+};
+
+/// Lines of standard input without blocking: std::cin by poll() on descriptor 0; any other
+/// stream (the tests' strings) is read whole, it never blocks.
+class line_source {
+public:
+  explicit line_source(std::istream &in) : in_(in), fd_(&in == &std::cin) {}
+  /// The complete lines that arrived; false once the input has ended and every line was given.
+  bool take(std::vector<std::string> &lines) {
+    if (ended_) return false;
+    if (!fd_) {
+      std::string l;
+      while (std::getline(in_, l)) lines.push_back(l);
+      ended_ = true;
+      return true;
+    }
+    for (;;) {
+      pollfd p{0, POLLIN, 0};
+      if (::poll(&p, 1, 0) <= 0) break;
+      char buf[4096];
+      const ssize_t n = ::read(0, buf, sizeof buf);
+      if (n <= 0) {
+        ended_ = true;
+        break;
+      }
+      pending_.append(buf, static_cast<std::size_t>(n));
+    }
+    for (std::size_t nl; (nl = pending_.find('\n')) != std::string::npos;) {
+      lines.push_back(pending_.substr(0, nl));
+      pending_.erase(0, nl + 1U);
+    }
+    if (ended_ && !pending_.empty()) lines.push_back(std::exchange(pending_, {}));
+    return true;
+  }
+
+private:
+  std::istream &in_;
+  bool fd_;
+  bool ended_ = false;
+  std::string pending_;
+};
+
+int cmd_serve(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, join({"--dict", "--duration"}, transport_values), transport_flags, o,
+                     error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << serve_help << transport_help;
+    return exit_ok;
+  }
+  if (o.positional.size() != 1U) return c.usage("expected NODE");
+  std::uint8_t node = 0;
+  if (!parse_node(o.positional[0], false, node)) {
+    return c.usage("bad node '" + o.positional[0] + "' (1..127)");
+  }
+  if (o.values.count("--dict") != 1U) {
+    return c.usage(o.given("--dict") ? "--dict given twice" : "give the dictionary: --dict FILE");
+  }
+  std::uint64_t duration = 0;
+  if (o.given("--duration") &&
+      (!parse_uint(o.get("--duration"), 1U << 30U, duration) || duration == 0U)) {
+    return c.usage("bad --duration " + o.get("--duration") + " (1..2^30 seconds)");
+  }
+  const std::string file = o.get("--dict");
+  auto loaded = node_dictionary::load(file, error);
+  if (!loaded) return c.fail(exit_dictionary, error);
+  const node_dictionary values = loaded->for_node(node); // what stdin and stdout show
+  const auto tables = values.device_tables();            // what the device stores
+  const od::dictionary dict = tables->view();
+  std::vector<std::uint32_t> offsets(dict.size() + 1U);
+  (void)canopen::make_layout(dict, offsets);
+  std::vector<std::uint8_t> storage(offsets.back());
+  std::vector<std::uint8_t> staging(65536);
+  std::vector<std::pair<od::address, std::vector<std::uint8_t>>> written;
+  using store_t = canopen::dictionary_store<write_log>;
+  store_t store{dict, std::span<const std::uint32_t>(offsets), storage, staging,
+                write_log{&written}};
+  if (const status s = store.init_defaults(node); !s) {
+    // too_long: a default text longer than its object's size (cut; served)
+    if (s.error() != errc::too_long) return c.fail(exit_dictionary, file + ": cannot be served");
+    c.err << "fieldcodec: serve: " << file
+          << ": a default text is longer than its object's size (cut)\n";
+  }
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+
+  auto dev = std::make_unique<canopen::node::device<store_t, serve_capacity>>(store, node);
+  const device_family family = values.family();
+  value_context ctx;
+  auto line_of = [&](od::address a, std::span<const std::uint8_t> bytes) {
+    const object_desc *d = values.find(a);
+    const auto f = format_value(d, a, bytes, family, ctx, false);
+    return address_text(a) + (d != nullptr ? " " + d->name : std::string()) + " = " + f.text;
+  };
+  host::network net(*bus);
+  const auto id = net.add(*dev, [&](const auto &, std::uint32_t) {
+    for (const auto &[a, bytes] : written) c.out << "written: " << line_of(a, bytes) << "\n";
+    written.clear();
+    for (const auto &e : dev->events()) {
+      if (e.what == canopen::node::event::kind::nmt_state) {
+        c.out << "NMT: " << canopen::nmt::to_string(e.state) << "\n";
+      }
+    }
+    c.out.flush();
+  });
+  auto started = net.send(id, dev->start(net.now()));
+  if (!started) return c.fail(exit_io, started.error().what);
+  c.out << "NMT: " << canopen::nmt::to_string(started.value()) << "\n" << std::flush;
+  if (!dev->configuration()) {
+    c.err << "fieldcodec: serve: " << file << ": served in part ("
+          << to_string(dev->configuration().error())
+          << "): more PDOs, mapping entries or SDO channels than serve runs\n";
+  }
+
+  // one stdin line: set a value, or show it
+  std::size_t line_no = 0;
+  int result = exit_ok;
+  auto refuse = [&](const std::string &what) {
+    c.fail(exit_usage, "input line " + std::to_string(line_no) + ": " + what + " (not set)");
+    result = exit_usage;
+  };
+  auto apply = [&](std::string_view l) {
+    ++line_no;
+    while (!l.empty() && (l.back() == '\r' || l.back() == ' ' || l.back() == '\t'))
+      l.remove_suffix(1);
+    while (!l.empty() && (l.front() == ' ' || l.front() == '\t')) l.remove_prefix(1);
+    if (l.empty() || l.front() == '#') return;
+    bool raw = false;
+    if (l.rfind("raw ", 0) == 0) {
+      raw = true;
+      l.remove_prefix(4);
+      while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
+    }
+    const auto space = l.find_first_of(" \t");
+    const std::string where(l.substr(0, space));
+    std::string_view text = space == std::string_view::npos ? std::string_view{} : l.substr(space);
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    od::address a{};
+    if (!parse_address(where, a)) {
+      return refuse("bad object '" + capped(where) + "' (INDEX[:SUB] in hex, e.g. 1018:1)");
+    }
+    const object_desc *d = values.find(a);
+    if (d == nullptr) return refuse(address_text(a) + ": not in " + file);
+    if (text.empty()) {
+      if (raw) return refuse(address_text(a) + ": 'raw' needs a VALUE");
+      auto v = dev->value(a);
+      if (!v) return refuse(address_text(a) + ": " + std::string(to_string(v.error())));
+      c.out << line_of(a, v.value()) << "\n" << std::flush;
+      return;
+    }
+    const auto v = parse_value(*d, text, node, raw);
+    if (!v.ok) return refuse(address_text(a) + " " + d->name + ": " + v.error);
+    auto s = dev->set(a, v.bytes, net.now());
+    if (!s) {
+      return refuse(address_text(a) + " " + d->name + ": " +
+                    std::string(canopen::sdo::to_string(s.error())));
+    }
+    written.clear(); // set() asks no hook; nothing of the network's is pending here
+    c.out << line_of(a, dev->value(a).value()) << "\n" << std::flush;
+    if (auto r = net.send(id, s.value()); !r) {
+      result = c.fail(exit_io, r.error().what);
+    }
+  };
+
+  interrupted = 0;
+  auto old_int = std::signal(SIGINT, on_interrupt);
+  auto old_term = std::signal(SIGTERM, on_interrupt);
+  line_source input(c.in);
+  std::vector<std::string> lines;
+  const auto start = std::chrono::steady_clock::now();
+  while (interrupted == 0 && result != exit_io) {
+    if (duration != 0U &&
+        std::chrono::steady_clock::now() - start >= std::chrono::seconds(duration)) {
+      break;
+    }
+    if (input.take(lines)) {
+      for (const std::string &l : lines) apply(l);
+      lines.clear();
+    }
+    if (auto r = net.run_once(std::chrono::milliseconds(50)); !r) {
+      result = c.fail(exit_io, r.error().what);
+    }
+  }
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
 // dump
 
 /// Consecutive SDO timeouts after which `dump` takes the node as silent and stops.
@@ -1057,6 +1308,7 @@ int run(const std::vector<std::string> &args, std::istream &in, std::ostream &ou
   if (cmd == "monitor") return cmd_monitor(args, c);
   if (cmd == "nmt") return cmd_nmt(args, c);
   if (cmd == "dump") return cmd_dump(args, c);
+  if (cmd == "serve") return cmd_serve(args, c);
   if (cmd == "sdo" || cmd == "pacontrol") {
     const std::string sub = args.size() > 1U ? args[1] : "";
     if (cmd == "sdo" && (sub == "read" || sub == "write")) {

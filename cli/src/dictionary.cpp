@@ -111,6 +111,10 @@ void node_dictionary::build() {
   }
 }
 
+std::shared_ptr<const gen::od_tables> node_dictionary::device_tables() const {
+  return std::make_shared<const gen::od_tables>(*model_, gen::od_table_options{true, {}});
+}
+
 const object_desc *node_dictionary::find(od::address a) const {
   auto it = std::lower_bound(objects_.begin(), objects_.end(), a,
                              [](const object_desc &o, od::address x) {

@@ -59,6 +59,10 @@ public:
   [[nodiscard]] device_family family() const { return family_; }
   [[nodiscard]] const std::string &path() const { return path_; }
   [[nodiscard]] std::uint8_t node() const { return node_; }
+  /// The tables a simulated device of this dictionary serves (`fieldcodec serve`): values as
+  /// they travel (no vendor units: the store holds raw numbers) and byte strings with room for
+  /// their declared size or, without one, their default text.
+  [[nodiscard]] std::shared_ptr<const gen::od_tables> device_tables() const;
   /// The generator's model (for writing a DCF).
   [[nodiscard]] const gen::dictionary &model() const { return *model_; }
 

@@ -162,18 +162,27 @@ struct store_layout {
   [[nodiscard]] constexpr std::size_t storage_size() const noexcept { return offsets[N]; }
 };
 
+/// The layout of `dict` written into `offsets` (dict.size() + 1 of them: where each entry's value
+/// starts, then the total size), for a dictionary loaded at run time. False (nothing written)
+/// when `offsets` has another size.
+[[nodiscard]] constexpr bool make_layout(od::dictionary dict,
+                                         std::span<std::uint32_t> offsets) noexcept {
+  if (offsets.size() != dict.size() + 1U) return false;
+  std::uint32_t at = 0;
+  for (std::size_t i = 0; i < dict.size(); ++i) {
+    offsets[i] = at;
+    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
+  }
+  offsets[dict.size()] = at;
+  return true;
+}
+
 /// The layout of `dict`, which must have exactly N entries (a mismatch leaves the layout empty:
 /// every access then answers general_error).
 template <std::size_t N>
 [[nodiscard]] constexpr store_layout<N> make_layout(od::dictionary dict) noexcept {
   store_layout<N> l;
-  if (dict.size() != N) return l;
-  std::uint32_t at = 0;
-  for (std::size_t i = 0; i < N; ++i) {
-    l.offsets[i] = at;
-    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
-  }
-  l.offsets[N] = at;
+  (void)make_layout(dict, std::span<std::uint32_t>(l.offsets));
   return l;
 }
 
@@ -219,6 +228,14 @@ public:
         fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
               slots_agree(dict, layout.offsets) &&
               od::covers(Kinds, od::kinds_of(dict.entries()))) {}
+  /// The same with a layout made at run time (make_layout(dict, offsets), for a dictionary
+  /// loaded at run time); `offsets` is borrowed and must outlive the store.
+  constexpr dictionary_store(od::dictionary dict, std::span<const std::uint32_t> offsets,
+                             std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
+                             OnWrite on_write = {}) noexcept
+      : dict_(dict), offsets_(offsets), storage_(storage), staging_(staging), on_write_(on_write),
+        fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
+              slots_agree(dict, offsets) && od::covers(Kinds, od::kinds_of(dict.entries()))) {}
 
   /// The kinds of values this store serves.
   static constexpr od::value_kinds kinds = Kinds;
@@ -439,8 +456,13 @@ private:
   template <std::size_t N>
   [[nodiscard]] static constexpr bool
   slots_agree(od::dictionary dict, const std::array<std::uint32_t, N> &offsets) noexcept {
-    if (dict.size() + 1U != N) return false;
-    for (std::size_t i = 0; i + 1U < N; ++i) {
+    return slots_agree(dict, std::span<const std::uint32_t>(offsets));
+  }
+  [[nodiscard]] static constexpr bool slots_agree(od::dictionary dict,
+                                                  std::span<const std::uint32_t> offsets) noexcept {
+    const std::size_t n = offsets.size();
+    if (dict.size() + 1U != n) return false;
+    for (std::size_t i = 0; i + 1U < n; ++i) {
       if (offsets[i + 1U] < offsets[i] ||
           offsets[i + 1U] - offsets[i] != slot_size(dict.entries()[i])) {
         return false;
