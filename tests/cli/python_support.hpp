@@ -58,9 +58,9 @@ private:
 /// The python peer as a child process with pipes for its standard input and output.
 class python_peer {
 public:
-  /// `script` (a path under tests/) with the arguments PORT EDS 5.
+  /// `script` (a path under tests/) with the arguments PORT EDS 5 [MODE] (`mode` when given).
   python_peer(const std::string &port, const std::string &eds,
-              const std::string &script = "cli/canopen_peer.py") {
+              const std::string &script = "cli/canopen_peer.py", const std::string &mode = {}) {
     int in[2], out[2];
     if (::pipe(in) != 0 || ::pipe(out) != 0) return;
     posix_spawn_file_actions_t fa;
@@ -74,9 +74,11 @@ public:
     env.push_back(const_cast<char *>(pp.c_str()));
     for (char **e = environ; *e != nullptr; ++e) env.push_back(*e);
     env.push_back(nullptr);
-    const char *argv[] = {
-        "/usr/bin/python3", script.c_str(), port.c_str(), eds.c_str(), "5", nullptr};
-    if (::posix_spawn(&pid_, "/usr/bin/python3", &fa, nullptr, const_cast<char **>(argv),
+    std::vector<const char *> argv = {"/usr/bin/python3", script.c_str(), port.c_str(), eds.c_str(),
+                                      "5"};
+    if (!mode.empty()) argv.push_back(mode.c_str());
+    argv.push_back(nullptr);
+    if (::posix_spawn(&pid_, "/usr/bin/python3", &fa, nullptr, const_cast<char **>(argv.data()),
                       env.data()) != 0) {
       pid_ = -1;
     }

@@ -1,7 +1,10 @@
 // host::network: one loop for any number of machines over an in-memory bus — a node::device and
 // an SDO client sharing a network, frames from the bus dispatched, deadlines polled, filters;
 // bad input: a machine's failed start, an unknown machine, a bus that fails to send, error
-// frames (a warning passes, bus-off stops), a receive failure, a condition never met.
+// frames (a warning passes, bus-off stops), a receive failure, a condition never met. And the
+// example's node (examples/serve_node.hpp, the lines docs/host.md shows).
+#include "../../examples/serve_node.hpp"
+
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
@@ -16,25 +19,7 @@
 #include <deque>
 #include <vector>
 
-// docs/host.md, "Running machines: host::network" (tests/docs_check/run.cmake compares the lines)
-namespace doc {
-namespace host = fieldcodec::host;
-namespace node = fieldcodec::canopen::node;
-namespace x = fieldcodec::dictionaries::xenax_canopen;
-using store_t = fieldcodec::canopen::dictionary_store<>;
-constexpr auto layout = fieldcodec::canopen::make_layout<x::entries.size()>(x::dictionary);
-
-int serve(host::can_bus &bus, std::chrono::milliseconds how_long) {
-  std::array<std::uint8_t, layout.storage_size()> storage{};
-  store_t store{x::dictionary, layout, storage};
-  if (!store.init_defaults(5)) return 1;
-  node::device<store_t, node::capacity_for(x::dictionary)> dev(store, 5);
-  host::network net(bus);
-  if (!net.send(net.add(dev), dev.start(net.now()))) return 1;
-  auto r = net.run_for(how_long);
-  return r ? 0 : (std::puts(r.error().what.c_str()), 1);
-}
-} // namespace doc
+namespace doc = fieldcodec::examples; // docs/host.md, "Running machines: host::network"
 
 namespace co = fieldcodec::canopen;
 namespace node = fieldcodec::canopen::node;
@@ -237,6 +222,16 @@ TEST_CASE("network: bad input — failed starts, unknown machines, failing buses
   CHECK(second.error().machine == cl);
   CHECK(bus.sent.back().data[1] == 0x18); // nothing more sent
   CHECK(bus.sent.back().data[3] == 0x01);
+
+  // a device's set() refused (a value of the wrong size): its abort code's errc, nothing sent
+  const std::size_t before_set = bus.sent.size();
+  auto too_long =
+      net.send(dev, n.dev.set({0x6073, 0}, std::array<std::uint8_t, 4>{1, 2, 3, 4}, net.now()));
+  REQUIRE_FALSE(too_long);
+  CHECK(too_long.error().code ==
+        co::sdo::to_errc(co::sdo::abort_code::length_too_high)); // 4 bytes for an UNSIGNED16
+  CHECK(too_long.error().machine == dev);
+  CHECK(bus.sent.size() == before_set);
 
   // an id the network does not know
   auto unknown = net.send(7, co::step<int>{});

@@ -24,6 +24,7 @@
 // Host only (heap, std::function): firmware runs its machines from its own loop.
 #pragma once
 
+#include <fieldcodec/canopen/abort_code.hpp>
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
@@ -106,8 +107,9 @@ public:
 
   /// Send what a call into machine `id` outside the loop returned (start(), an SDO client's
   /// upload(), a device's set()), keep its deadline, and give its frames to the other
-  /// machines. Returns the step's state. Errors: the call's own errc (nothing sent), those of
-  /// a failing bus; invalid_argument for an unknown id.
+  /// machines. Returns the step's state. Errors: the call's own errc (nothing sent; an abort
+  /// code as canopen::sdo::to_errc maps it), those of a failing bus; invalid_argument for an
+  /// unknown id.
   template <class S>
   result<S, network_error> send(std::size_t id, const canopen::step<S> &s) {
     if (id >= slots_.size() || !slots_[id]) return unknown(id);
@@ -220,10 +222,14 @@ private:
     After after;
   };
 
+  // the errc of a call's error: an errc, an abort code (a device's set()), or an error with
+  // a `code`
   template <class E>
   static errc to_errc(const E &e) {
     if constexpr (std::is_same_v<E, errc>) {
       return e;
+    } else if constexpr (std::is_same_v<E, canopen::sdo::abort_code>) {
+      return canopen::sdo::to_errc(e);
     } else {
       return e.code;
     }
