@@ -6,7 +6,9 @@
 //   auto m = lss::decode(frame);   // 7E5h [11 05 00 …] → configure_node_id, node_id 5
 //   lss::to_string(m.value().cs)   // "configure node-ID"
 //
-// A codec only: the LSS master and slave machines build on it.
+//   lss::encode(lss::answer(lss::command::inquire_node_id, 5))   // 7E4h [5E 05 00 …]
+//
+// A codec only: the LSS slave (canopen/node/lss_slave.hpp) builds on it.
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -21,6 +23,45 @@ namespace fieldcodec::canopen::lss {
 
 inline constexpr std::uint16_t master_id = 0x7E5; ///< LSS master → slaves
 inline constexpr std::uint16_t slave_id = 0x7E4;  ///< LSS slave → master
+
+/// The node-ID of a node that has none (CiA 305 "not configured"): it stays in NMT
+/// initialisation and waits for an LSS master to give it one.
+inline constexpr std::uint8_t unconfigured = 0xFF;
+
+/// The LSS address of a node: its identity object 1018h sub 1..4.
+struct address {
+  std::uint32_t vendor = 0;
+  std::uint32_t product = 0;
+  std::uint32_t revision = 0;
+  std::uint32_t serial = 0;
+  /// Part `i` (0 vendor-ID, 1 product code, 2 revision number, 3 serial number: the LSSSub of
+  /// fastscan); 0 for any other i.
+  [[nodiscard]] constexpr std::uint32_t part(std::uint8_t i) const noexcept {
+    switch (i) {
+    case 0: return vendor;
+    case 1: return product;
+    case 2: return revision;
+    case 3: return serial;
+    default: return 0;
+    }
+  }
+  friend constexpr bool operator==(const address &, const address &) = default;
+};
+
+/// The error codes of the configure and store answers (byte 1); byte 2 holds the
+/// manufacturer's code when byte 1 is `manufacturer`.
+namespace error_code {
+inline constexpr std::uint8_t none = 0;
+/// configure node-ID: the node-ID is out of range; configure bit timing: the bit timing is not
+/// supported; store configuration: storing is not supported.
+inline constexpr std::uint8_t not_supported = 1;
+inline constexpr std::uint8_t storage_access = 2; ///< store configuration: the media failed
+inline constexpr std::uint8_t manufacturer = 0xFF;
+} // namespace error_code
+
+/// The largest bit_checked of a fastscan probe; 0x80 resets the scan.
+inline constexpr std::uint8_t fastscan_last_bit = 31;
+inline constexpr std::uint8_t fastscan_reset = 0x80;
 
 /// The command specifiers of CiA 305 (the same value in a request and its answer, except the
 /// switch-selective and identify answers).
@@ -153,6 +194,48 @@ struct message {
     if (cs >= 0x40U && cs <= 0x4BU && m.from_master) m.value = word(1);
     break;
   }
+  return m;
+}
+
+/// The 8-byte frame of `m`: 7E5h for a master's command, 7E4h for a slave's answer, the fields
+/// placed as decode() reads them (the bytes it does not read are 0). decode(encode(m)) == m for
+/// every field that m's command uses.
+[[nodiscard]] constexpr can_frame encode(const message &m) noexcept {
+  can_frame f;
+  f.id = m.from_master ? master_id : slave_id;
+  f.dlc = 8;
+  f.data[0] = static_cast<std::uint8_t>(m.cs);
+  const auto word = [&f](std::size_t at, std::uint32_t v) {
+    for (std::size_t i = 0; i < 4U; ++i) f.data[at + i] = static_cast<std::uint8_t>(v >> (8U * i));
+  };
+  const auto cs = static_cast<std::uint8_t>(m.cs);
+  if (m.cs == command::activate_bit_timing) {
+    f.data[1] = static_cast<std::uint8_t>(m.value);
+    f.data[2] = static_cast<std::uint8_t>(m.value >> 8U);
+  } else if (m.cs == command::fastscan) {
+    word(1, m.value);
+    f.data[5] = m.bit_checked;
+    f.data[6] = m.lss_sub;
+    f.data[7] = m.lss_next;
+  } else if (cs >= 0x5AU && cs <= 0x5DU && !m.from_master) {
+    word(1, m.value);
+  } else if (cs >= 0x40U && cs <= 0x4BU && m.from_master) {
+    word(1, m.value);
+  } else {
+    f.data[1] = m.b1;
+    f.data[2] = m.b2;
+  }
+  return f;
+}
+
+/// A slave's answer with command specifier `cs` and byte 1 (an error code, a node-ID).
+[[nodiscard]] constexpr message answer(command cs, std::uint8_t b1 = 0,
+                                       std::uint8_t b2 = 0) noexcept {
+  message m;
+  m.cs = cs;
+  m.from_master = false;
+  m.b1 = b1;
+  m.b2 = b2;
   return m;
 }
 

@@ -281,6 +281,23 @@ public:
     return result;
   }
 
+  /// A new node-ID (an LSS master configured one, CiA 305; it takes effect at the NMT reset
+  /// that follows): the entries that no reset restores (read-only and constant ones) and whose
+  /// default is node-ID-relative ($NODEID) get their default for `node` now; the writable ones
+  /// get it at the next restore_defaults() of their range, which resolves for `node` from now
+  /// on. Errors: as init_defaults.
+  [[nodiscard]] constexpr status set_node(std::uint8_t node) noexcept {
+    if (!layout_fits()) return errc::buffer_too_small;
+    node_ = node;
+    status result{};
+    for (std::size_t i = 0; i < dict_.size(); ++i) {
+      const od::entry &e = dict_.entries()[i];
+      if (!e.has(od::flag::default_nodeid) || od::writable(e.access_type)) continue;
+      if (!fill_default(i)) result = errc::too_long;
+    }
+    return result;
+  }
+
   [[nodiscard]] constexpr sdo::abort_code read(od::address a, std::size_t offset,
                                                std::span<std::uint8_t> out,
                                                std::size_t &total) const noexcept {

@@ -66,6 +66,7 @@
 #include <fieldcodec/canopen/node/error_behaviour.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
 #include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/lss_slave.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
@@ -81,6 +82,7 @@
 #include <fieldcodec/od/dictionary.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -126,6 +128,11 @@ struct capacity {
   /// the image and frames on 100h go where they went before (a PDO, if one uses it);
   /// capacity_for sets it when the dictionary has 1012h.
   bool time = false;
+  /// The node is an LSS slave (CiA 305, node/lss_slave.hpp): it answers an LSS master on
+  /// 7E5h/7E4h, can start without node-ID (lss::unconfigured) and takes a new node-ID at its
+  /// next NMT reset. Without it no LSS code is in the image. capacity_for keeps it from `base`
+  /// (a dictionary does not say it).
+  bool lss = false;
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -183,6 +190,7 @@ struct event {
     pdo,                 ///< a PDO engine event (`pdo`)
     sync,                ///< a SYNC was taken (`counter`)
     time,                ///< a TIME was taken (the time: device::time().received())
+    lss,                 ///< an LSS event: its details in lss().last_event() (capacity::lss)
   };
   kind what = kind::nmt_state;
   nmt::state state = nmt::state::boot_up;
@@ -206,6 +214,7 @@ struct event {
   case event::kind::pdo: return "PDO event";
   case event::kind::sync: return "SYNC received";
   case event::kind::time: return "TIME received";
+  case event::kind::lss: return "LSS event";
   }
   return "?";
 }
@@ -223,6 +232,12 @@ template <node_store Store, capacity C = capacity{}>
 class device {
   static_assert(C.sdo_servers >= 1U, "a node has its default SDO server");
   static_assert(C.mapped >= 1U && C.mapped <= pdo::max_entries);
+  static_assert(
+      !C.lss ||
+          requires(Store & s, std::uint8_t n) {
+            { s.set_node(n) } -> std::same_as<status>;
+          },
+      "an LSS slave's store resolves node-ID-relative defaults for a new node-ID: set_node()");
 
 public:
   using step = canopen::step<nmt::state>;
@@ -299,11 +314,14 @@ public:
   using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
   using errors_type = error_behaviour<C.error_classes>;
 
-  /// A node `node` (1..127) over `store` (borrowed, already holding its power-on values, e.g.
-  /// from init_defaults). Nothing is sent before start().
-  constexpr device(Store &store, std::uint8_t node, options o = {}) noexcept
+  /// A node `node` (1..127; with capacity::lss also lss::unconfigured) over `store`
+  /// (borrowed, already holding its power-on values, e.g. from init_defaults). Nothing is sent
+  /// before start(). `l`: the LSS slave's bit rates and store hook (capacity::lss; a node
+  /// without LSS keeps nothing of it).
+  constexpr device(Store &store, std::uint8_t node, options o = {},
+                   [[maybe_unused]] lss_options l = {}) noexcept
       : store_(&store), options_(o), node_(node), nmt_(node), producer_(node), guard_(node),
-        emcy_(node), access_(*this), pdo_(access_, store.dictionary()),
+        emcy_(node), lss_(make_lss(node, l)), access_(*this), pdo_(access_, store.dictionary()),
         sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
     pdo_.report_long_rpdo(o.report_long_rpdo);
     sync_.allow_producer(C.sync_producer);
@@ -315,17 +333,21 @@ public:
   // ----- the step interface ----------------------------------------------------------------
 
   /// Power-on: read the configuration of every service from the store, send the boot-up
-  /// message and enter pre-operational (operational with options::self_start).
-  /// Errors: invalid_argument (node-ID not 1..127), bad_state (already started). A
-  /// configuration the services cannot serve completely (more PDOs or channels than the
-  /// capacity, an unusable stored mapping) does not stop the start: configuration() says so.
+  /// message and enter pre-operational (operational with options::self_start). With
+  /// capacity::lss a node started as lss::unconfigured stays in initialising (state()
+  /// boot_up), sends nothing and answers only the LSS master until it has a node-ID.
+  /// Errors: invalid_argument (node-ID not 1..127, nor unconfigured with LSS), bad_state
+  /// (already started). A configuration the services cannot serve completely (more PDOs or
+  /// channels than the capacity, an unusable stored mapping) does not stop the start:
+  /// configuration() says so.
   [[nodiscard]] constexpr result<step> start(std::uint32_t now) noexcept {
-    if (!is_node_id(node_)) return errc::invalid_argument;
+    const bool waits = C.lss && node_ == lss::unconfigured;
+    if (!is_node_id(node_) && !waits) return errc::invalid_argument;
     if (started_) return errc::bad_state;
     started_ = true;
     begin(now);
     configure(now);
-    boot(now);
+    if (!waits) boot(now);
     return finish(now);
   }
 
@@ -552,6 +574,8 @@ public:
   [[nodiscard]] constexpr const time_service &time() const noexcept requires(C.time) {
     return time_;
   }
+  /// The LSS slave (capacity::lss): its state, pending node-ID and bit timing, LSS address.
+  [[nodiscard]] constexpr const lss_slave &lss() const noexcept requires(C.lss) { return lss_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
   [[nodiscard]] constexpr const sdo_type &sdo() const noexcept { return sdo_; }
   /// Frames or events that did not fit their lists (a sizing error; always 0).
@@ -650,6 +674,12 @@ private:
       nmt_frame(f, now);
       return;
     }
+    if constexpr (C.lss) {
+      if (f.id == lss::master_id) { // in every NMT state, initialising included
+        lss_frame(f, now);
+        return;
+      }
+    }
     const nmt::state s = nmt_.state();
     if (s == nmt::state::boot_up) return;
     if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
@@ -718,22 +748,34 @@ private:
     const nmt::state before = nmt_.state();
     (void)nmt_.on_frame(f, now);
     if (nmt_.pending_reset() != reset::none) {
-      const reset r = nmt_.pending_reset();
-      push_event(r == reset::application ? event::kind::reset_application
-                                         : event::kind::reset_communication);
-      status st{};
-      if (r == reset::application) {
-        const auto range = restored(reset::application);
-        st = store_->restore_defaults(range.first, range.last);
-      }
-      const auto comm = restored(reset::communication);
-      if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
-      guard_.reset();
-      configure(now);
-      if (!st && config_) config_ = st;
-      boot(now);
+      carry_out(nmt_.pending_reset(), now);
     } else if (nmt_.state() != before) {
       state_changed(now);
+    }
+  }
+  /// An NMT reset: restore, reload every service, boot. With LSS the pending node-ID becomes
+  /// the node's first; without node-ID (lss::unconfigured) the node stays initialising.
+  constexpr void carry_out(reset r, std::uint32_t now) noexcept {
+    push_event(r == reset::application ? event::kind::reset_application
+                                       : event::kind::reset_communication);
+    status st{};
+    if constexpr (C.lss) {
+      const std::uint8_t to = lss_.activate();
+      if (to != node_) st = renumber(to);
+    }
+    if (r == reset::application) {
+      const auto range = restored(reset::application);
+      if (auto s1 = store_->restore_defaults(range.first, range.last); !s1 && st) st = s1;
+    }
+    const auto comm = restored(reset::communication);
+    if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
+    guard_.reset();
+    configure(now);
+    if (!st && config_) config_ = st;
+    if (is_node_id(node_)) {
+      boot(now);
+    } else {
+      state_changed(now); // initialising: every service silent
     }
   }
   /// Send the boot-up message and enter pre-operational (or operational).
@@ -774,6 +816,7 @@ private:
     f(self.pdo_);
     f(self.sdo_);
     f(self.errors_);
+    if constexpr (C.lss) f(self.lss_);
   }
 
   /// Read every service's objects from the store (start, NMT resets).
@@ -845,6 +888,36 @@ private:
     return abort_code::none;
   }
 
+  // ----- LSS (capacity::lss) -------------------------------------------------------------
+
+  [[nodiscard]] static constexpr auto make_lss([[maybe_unused]] std::uint8_t node,
+                                               [[maybe_unused]] const lss_options &o) noexcept {
+    if constexpr (C.lss) {
+      return lss_slave(node, o);
+    } else {
+      return std::monostate{};
+    }
+  }
+  /// A frame on 7E5h: the LSS slave's answer and event; a node that just got its first node-ID
+  /// boots with it (a reset communication).
+  constexpr void lss_frame(const can_frame &f, std::uint32_t now) noexcept requires(C.lss) {
+    const auto r = lss_.on_frame(f);
+    if (r.answer) out_.push(*r.answer);
+    if (r.event) push_event(event::kind::lss);
+    if (r.boot) carry_out(reset::communication, now);
+  }
+  /// Every service that knows the node-ID takes `to` (an NMT reset, then reloads them all).
+  [[nodiscard]] constexpr status renumber(std::uint8_t to) noexcept requires(C.lss) {
+    node_ = to;
+    nmt_ = nmt_slave(to);
+    producer_ = heartbeat_producer(to);
+    guard_ = nmt::guard_responder(to);
+    const auto emcy_id = cob_id::emcy(to);
+    emcy_.load_cob_id(emcy_id ? std::uint32_t{emcy_id.value()} : cob_bits::invalid);
+    sdo_.set_node(to);
+    return store_->set_node(to);
+  }
+
   // ----- error behaviour (1029h) ----------------------------------------------------------
 
   /// An error of class `sub` (1029h): its EMCY goes out first (the node's own codes, while the
@@ -893,12 +966,12 @@ private:
 
   // one call sends at most: boot-up or heartbeat, a SYNC, a guarding response, each TPDO once, one
   // frame per SDO channel, the EMCY messages (the queue, or the raises and clears of the
-  // five node-managed codes when no inhibit time holds them back) and a TIME
-  static constexpr std::size_t out_capacity = 3U + C.tpdos + C.sdo_servers + C.sdo_clients +
-                                              (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U +
-                                              (C.time ? 1U : 0U);
+  // five node-managed codes when no inhibit time holds them back), an LSS answer and a TIME
+  static constexpr std::size_t out_capacity =
+      3U + (C.lss ? 1U : 0U) + C.tpdos + C.sdo_servers + C.sdo_clients +
+      (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U + (C.time ? 1U : 0U);
   static constexpr std::size_t event_capacity =
-      4U + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
+      4U + (C.lss ? 1U : 0U) + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
   Store *store_;
   options options_;
@@ -914,6 +987,7 @@ private:
       sync_out_{};
   [[no_unique_address]] std::conditional_t<C.time, time_service, std::monostate> time_{};
   errors_type errors_{};
+  [[no_unique_address]] std::conditional_t<C.lss, lss_slave, std::monostate> lss_;
   access access_;
   pdo_type pdo_;
   sdo_type sdo_;

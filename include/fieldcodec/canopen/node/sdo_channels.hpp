@@ -102,6 +102,13 @@ public:
     return st;
   }
 
+  /// A new node-ID (LSS, at an NMT reset): the default server's predefined connection
+  /// follows it (reload() then reads the parameter objects).
+  constexpr void set_node(std::uint8_t node) noexcept {
+    node_ = node;
+    connect_server(0);
+  }
+
   // ----- parameter writes ------------------------------------------------------------------
 
   /// Would `value` be accepted at `a` (sub 1 / sub 2 of a served SDO parameter object)?
