@@ -2,8 +2,10 @@
 // that every harness can read as much as it likes from any input.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace fuzz_input {
 
@@ -18,6 +20,12 @@ struct reader {
   std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | (byte() << 8U)); }
   std::uint32_t u32() { return static_cast<std::uint32_t>(u16() | (u16() << 16U)); }
   [[nodiscard]] bool empty() const { return in.empty(); }
+  /// The next `n` bytes (zeros past the end).
+  std::vector<std::uint8_t> bytes(std::size_t n) {
+    std::vector<std::uint8_t> v(n);
+    for (auto &b : v) b = byte();
+    return v;
+  }
 };
 
 } // namespace fuzz_input
