@@ -142,6 +142,22 @@ TEST_CASE("device: heartbeat producer follows 1017h") {
   CHECK(r.read_u(0x1017, 0) == 200);
 }
 
+// F29 (fuzz_node_device): a frame handled after the heartbeat's time had passed, before the
+// caller polled, answered with that time as the step's deadline: a time in the past, which a
+// caller that waits "until the deadline" on a wrapping counter reads as 2^32 ms ahead.
+TEST_CASE("device: a deadline the caller let pass is answered as now (F29)") {
+  rig<> r;
+  (void)r.start();
+  CHECK(r.sdo_write(0x1017, 0, 1, 2) == abort_code::none); // 1 ms
+  const std::uint32_t due = r.now + 1;
+  CHECK(r.dev.poll(r.now).deadline == due);
+  r.now += 3; // the caller is late: a frame comes before the poll
+  const auto s = r.dev.on_frame(F(0x77, {}), r.now);
+  CHECK(s.send.empty());
+  CHECK(s.deadline == r.now);
+  CHECK(r.tick().size() == 1U); // the poll it asks for sends the heartbeat
+}
+
 TEST_CASE("device: heartbeat consumer, EMCY 8130h while a node is lost") {
   rig<> r;
   (void)r.start();

@@ -687,6 +687,9 @@ private:
     if constexpr (C.sync_producer) {
       if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
     }
+    // a deadline the caller let pass (a frame handled after it, before the poll) is now: poll
+    // at once; never a time in the past, which a wrapping counter would read as 2^32 ms ahead
+    if (d && reached(*d, now)) d = now;
     return d;
   }
 
