@@ -53,7 +53,7 @@ int main() {
     send(dev.on_frame(receive_frame(), fw::tick));
     // the application: inputs into the dictionary, outputs from it
     const std::array<std::uint8_t, 1> inputs{fw::rx_register[12]};
-    (void)dev.set({0x6000, 1}, inputs);
+    if (auto s = dev.set({0x6000, 1}, inputs, fw::tick)) send(s.value());
     if (auto out = dev.value({0x6200, 1})) fw::tx_register[61] = out.value()[0];
     send(dev.poll(fw::tick));
   }

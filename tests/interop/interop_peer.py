@@ -10,7 +10,7 @@ unmodified) runs. Every check prints one line "ok  <step>: <what>"; the first fa
 "SKIPPED: ..." and exits 77 (CTest's SKIP_RETURN_CODE for these tests).
 
 usage: interop_peer.py PART --bridge EXE --root REPO [--eds CORPUS_EDS] --dictionaries D...
-  PART: sdo_server | sdo_client | node | pdo
+  PART: sdo_server | sdo_client | node | pdo | errors
 """
 import argparse
 import os
@@ -785,8 +785,71 @@ def part_pdo(args):
     finally:
         s.close()
 
+
+# --- the node's CiA 301 rules and error behaviour, seen by python ----------------------------------
+
+def part_errors(args):
+    if "corpus" not in args.dictionaries:
+        print("SKIPPED: the error checks use the corpus dictionary (1006h, 1016h, 1019h; "
+              "../shared/eds-corpus absent)")
+        sys.exit(SKIP)
+    node_id = 9
+    s = Setup(args, "corpus", node_id)
+    try:
+        node = s.network.add_node(node_id, args.eds)
+        # 1019h only while 1006h is 0 (CiA 301): abort 0800 0022h otherwise
+        node.sdo.download(0x1019, 0, bytes([8]))
+        node.sdo.download(0x1006, 0, (10000).to_bytes(4, "little"))
+        expect_abort("1019h", 0x08000022, lambda: node.sdo.download(0x1019, 0, bytes([16])))
+        expect_abort("1019h", 0x08000022, lambda: node.sdo.download(0x1019, 0, bytes([8])))
+        check(node.sdo.upload(0x1019, 0) == bytes([8]), "1019h", "the refused value was stored")
+        node.sdo.download(0x1006, 0, bytes(4))
+        node.sdo.download(0x1019, 0, bytes([16]))
+        check(node.sdo.upload(0x1019, 0) == bytes([16]), "1019h", "1019h = 16 not stored")
+        node.sdo.download(0x1019, 0, bytes([0]))
+        ok("1019h", "python's downloads of 1019h abort with 0800 0022h while 1006h = 10000 us "
+           "(the value stays 8) and are taken with 1006h = 0")
+        # EMCY 8130h names the lost node: python is node 20 and sends heartbeats, then stops
+        import can
+        python_id = 20
+        node.sdo.download(0x1016, 1, ((python_id << 16) | 150).to_bytes(4, "little"))
+        beat = can.Message(arbitration_id=0x700 + python_id, is_extended_id=False, data=[0x05])
+        for _ in range(3):
+            s.network.bus.send(beat)
+            time.sleep(0.03)
+        wait_until(lambda: any(x.code == 0x8130 for x in node.emcy.log), "emcy 8130h",
+                   "no EMCY 8130h after python's heartbeat stopped")
+        e = [x for x in node.emcy.log if x.code == 0x8130][-1]
+        check(e.data[0] == python_id and e.data[1:] == bytes(4), "emcy 8130h",
+              f"manufacturer bytes {e.data.hex()}, expected {python_id:02x}00000000")
+        check(node.sdo.upload(0x1003, 1) == bytes([0x30, 0x81, python_id, 0]), "emcy 8130h",
+              f"1003h sub 1 = {node.sdo.upload(0x1003, 1).hex()}")
+        s.network.bus.send(beat)
+        wait_until(lambda: node.emcy.log[-1].code == 0, "emcy 8130h",
+                   "no error reset after python's heartbeat came back")
+        ok("emcy 8130h", f"python's heartbeat (node {python_id}) stops: python's EmcyConsumer "
+           f"gets 8130h with manufacturer bytes {e.data.hex()} (1003h sub 1 alike); the "
+           "error reset when it resumes")
+        # error behaviour: no 1029h in this dictionary, so a communication error in operational
+        # enters pre-operational (CiA 301); python sees it in the node's heartbeat
+        node.sdo.download(0x1017, 0, (50).to_bytes(2, "little"))
+        node.nmt.state = "OPERATIONAL"
+        wait_until(lambda: node.nmt.wait_for_heartbeat(TIMEOUT) == "OPERATIONAL",
+                   "error behaviour", "python's heartbeat consumer never saw OPERATIONAL")
+        s.network.bus.send(beat)  # python's heartbeat once more, then silence
+        wait_until(lambda: node.nmt.wait_for_heartbeat(TIMEOUT) == "PRE-OPERATIONAL",
+                   "error behaviour", "the node stayed operational after losing python's "
+                   "heartbeat")
+        check(node_state(s.bridge, "error behaviour") == "pre-operational", "error behaviour",
+              "the bridge's state")
+        ok("error behaviour", "python's heartbeat lost in operational: python's NMT master sees "
+           "the node's heartbeat go from OPERATIONAL to PRE-OPERATIONAL (1029h absent: default 0)")
+    finally:
+        s.close()
+
+
 PARTS = {"sdo_server": part_sdo_server, "sdo_client": part_sdo_client, "node": part_node,
-         "pdo": part_pdo}
+         "pdo": part_pdo, "errors": part_errors}
 
 
 def main():

@@ -32,11 +32,12 @@ void the_block() {
   (void)store.init_defaults(node_id); // the power-on values
   node::device<co::dictionary_store<>, node::capacity_for(gen::dictionary)> dev(store, node_id);
 
-  send(dev.start(now).value()); // boot-up, pre-operational
+  send(dev.start(now).value());                        // boot-up, pre-operational
+  for (const node::event &e : dev.events()) handle(e); // after each call: NMT state, RPDO, ...
   // every received frame:    send(dev.on_frame(frame, now));
   // at s.deadline at latest: send(dev.poll(now));
-  (void)dev.set({0x6041, 0}, bytes); // the application's values: TPDOs that map them are due
-  for (const node::event &e : dev.events()) handle(e); // NMT state, RPDO, SYNC, ...
+  send(dev.set({0x6041, 0}, bytes, now).value()); // the application's values, and the
+                                                  // event-driven TPDOs they make due
 
   CHECK(dev.value({0x6041, 0}).value()[0] == 0x37);
 }

@@ -155,10 +155,11 @@ TEST_CASE("device: heartbeat consumer, EMCY 8130h while a node is lost") {
   CHECK(r.dev.events()[0].heartbeat.what == hb_kind::started);
   auto out = r.tick(100);
   REQUIRE(out.size() == 1);
-  CHECK(out[0] == F(0x085, {0x30, 0x81, 0x11, 0, 0, 0, 0, 0})); // generic + communication
+  // generic + communication; the first manufacturer-specific byte names the lost node (3)
+  CHECK(out[0] == F(0x085, {0x30, 0x81, 0x11, 3, 0, 0, 0, 0}));
   CHECK(r.read_u(0x1001, 0) == 0x11);
   CHECK(r.read_u(0x1003, 0) == 1);
-  CHECK(r.read_u(0x1003, 1) == 0x8130);
+  CHECK(r.read_u(0x1003, 1) == 0x0003'8130); // bits 16..23: the first manufacturer byte
   out = r.feed(F(0x703, {0x7F}));
   CHECK(out == std::vector{F(0x085, {0, 0, 0, 0, 0, 0, 0, 0})}); // error reset
   CHECK(r.read_u(0x1001, 0) == 0);
@@ -166,6 +167,29 @@ TEST_CASE("device: heartbeat consumer, EMCY 8130h while a node is lost") {
   (void)r.feed(F(0, {0x02, 5}));
   CHECK(r.tick(1000).empty());
   CHECK(r.dev.consumer().state(0) == node::monitor_state::waiting);
+}
+
+TEST_CASE("device: EMCY 8130h names the node whose loss raised it") {
+  rig<> r;
+  (void)r.start();
+  CHECK(r.sdo_write(0x1016, 1, 0x0003'0064, 4) == abort_code::none); // node 3, 100 ms
+  CHECK(r.sdo_write(0x1016, 2, 0x0009'0032, 4) == abort_code::none); // node 9, 50 ms
+  (void)r.feed(F(0x703, {0x7F}));
+  (void)r.feed(F(0x709, {0x7F}));
+  auto out = r.tick(50); // node 9 is lost first (the second entry)
+  CHECK(out == std::vector{F(0x085, {0x30, 0x81, 0x11, 9, 0, 0, 0, 0})});
+  CHECK(r.dev.consumer().lost_node() == 9);
+  out = r.tick(50); // node 3 too: 8130h is active already, nothing more is sent
+  CHECK(out.empty());
+  CHECK(r.dev.consumer().lost_node() == 3); // the first lost entry
+  out = r.feed(F(0x709, {0x7F}));
+  CHECK(out.empty()); // node 3 is still lost: 8130h stays active
+  out = r.feed(F(0x703, {0x7F}));
+  CHECK(out == std::vector{F(0x085, {0, 0, 0, 0, 0, 0, 0, 0})});
+  // both lost again: a new EMCY with the first entry's node (3)
+  out = r.tick(100);
+  REQUIRE(on(out, 0x085).size() == 1);
+  CHECK(on(out, 0x085)[0] == F(0x085, {0x30, 0x81, 0x11, 3, 0, 0, 0, 0}));
 }
 
 TEST_CASE("device: life guarding from 100Ch/100Dh, EMCY 8130h") {

@@ -112,7 +112,7 @@ constexpr od::entry var(std::uint16_t index, std::uint8_t sub, data_type t, acce
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
-inline constexpr std::size_t entry_count = 98;
+inline constexpr std::size_t entry_count = 102;
 
 /// The dictionary of node `n` (node-ID-relative defaults resolved for n).
 constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
@@ -131,6 +131,7 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1003, 3, u32, ro, 0),
       var(0x1003, 4, u32, ro, 0),
       var(0x1005, 0, u32, rw, 0x80),
+      var(0x1006, 0, u32, rw, 0),
       var(0x1007, 0, u32, rw, 0),
       {.index = 0x1008,
        .type = data_type::visible_string,
@@ -152,6 +153,9 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
       var(0x1018, 3, u32, ro, 0x0001'0000U),
       var(0x1018, 4, u32, ro, 0),
       var(0x1019, 0, u8, rw, 0),
+      var(0x1029, 0, u8, ro, 2),
+      var(0x1029, 1, u8, rw, 0),
+      var(0x1029, 2, u8, rw, 0),
       var(0x1200, 0, u8, ro, 2),
       var(0x1200, 1, u32, ro, 0x600U + n),
       var(0x1200, 2, u32, ro, 0x580U + n),
@@ -248,6 +252,7 @@ inline constexpr node::capacity caps = node::capacity_for(dict5);
 static_assert(caps.rpdos == 2 && caps.tpdos == 2 && caps.mapped == 4);
 static_assert(caps.heartbeat_consumers == 3 && caps.error_history == 4);
 static_assert(caps.sdo_servers == 2 && caps.sdo_clients == 1);
+static_assert(caps.error_classes == 2);
 
 using store_type = co::dictionary_store<>;
 using device_type = node::device<store_type, caps>;
@@ -335,10 +340,24 @@ struct rig {
     CHECK(m.type == sdo::message_type::initiate_download_response);
     return abort_code::none;
   }
+  /// The frames the last accepted set_send sent.
+  std::vector<co::can_frame> set_frames;
   abort_code set_u(std::uint16_t index, std::uint8_t sub, std::uint32_t value, std::size_t width) {
     std::array<std::uint8_t, 4> b{};
     for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
     return dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width));
+  }
+  /// The same with device::set(a, value, now): the frames its step sends are set_frames.
+  abort_code set_send(std::uint16_t index, std::uint8_t sub, std::uint32_t value,
+                      std::size_t width) {
+    std::array<std::uint8_t, 4> b{};
+    for (std::size_t i = 0; i < width; ++i) b[i] = static_cast<std::uint8_t>(value >> (8U * i));
+    set_frames.clear();
+    auto r = dev.set({index, sub}, std::span<const std::uint8_t>(b).first(width), now);
+    if (!r) return r.error();
+    set_frames = list(r.value().send);
+    deadline = r.value().deadline;
+    return abort_code::none;
   }
 };
 

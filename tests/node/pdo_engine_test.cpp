@@ -355,3 +355,43 @@ TEST_CASE("rpdo: the application's write hook sees RPDO data and may refuse one 
   REQUIRE(dev.events().size() == 1);
   CHECK(dev.events()[0].pdo.refused == 1);
 }
+
+TEST_CASE("device::set with now returns the event-driven TPDOs it makes due") {
+  rig<> r;
+  (void)r.start();
+  (void)r.feed(F(0, {0x01, 5}));
+  (void)r.tick(); // the event-driven TPDO 1 once on entering operational
+  // TPDO 1 (255, no inhibit time) maps 2100h and 2101h: set() sends it
+  CHECK(r.set_send(0x2100, 0, 0x11223344, 4) == abort_code::none);
+  CHECK(r.set_frames == std::vector{F(0x185, {0x44, 0x33, 0x22, 0x11, 0, 0})});
+  CHECK(on(r.tick(), 0x185).empty()); // sent once, not again by poll
+  // both objects of the TPDO: the first without now (due, not sent), the last with it
+  CHECK(r.set_u(0x2100, 0, 0x01020304, 4) == abort_code::none);
+  CHECK(r.set_send(0x2101, 0, 0xBEEF, 2) == abort_code::none);
+  CHECK(r.set_frames == std::vector{F(0x185, {4, 3, 2, 1, 0xEF, 0xBE})});
+  // an object no TPDO maps: nothing
+  CHECK(r.set_send(0x2000, 0, 1, 4) == abort_code::none);
+  CHECK(r.set_frames.empty());
+  // refused: nothing stored, nothing sent
+  CHECK(r.set_send(0x1029, 1, 9, 1) == abort_code::invalid_value);
+  CHECK(r.read_u(0x1029, 1) == 0);
+  // with an inhibit time the step's deadline says when it goes out
+  CHECK(r.sdo_write(0x1800, 1, 0x8000'0185U, 4) == abort_code::none);
+  CHECK(r.sdo_write(0x1800, 3, 50, 2) == abort_code::none); // 5 ms
+  CHECK(r.sdo_write(0x1800, 1, 0x185, 4) == abort_code::none);
+  (void)r.tick(); // the TPDO that became valid
+  CHECK(r.set_send(0x2101, 0, 0xCAFE, 2) == abort_code::none);
+  CHECK(r.set_frames.empty());
+  CHECK(r.deadline == r.now + 5);
+  CHECK(on(r.tick(5), 0x185) == std::vector{F(0x185, {4, 3, 2, 1, 0xFE, 0xCA})});
+  // a type 0 TPDO (acyclic synchronous) waits for the SYNC
+  CHECK(r.sdo_write(0x1800, 2, 0, 1) == abort_code::none);
+  CHECK(r.set_send(0x2100, 0, 5, 4) == abort_code::none);
+  CHECK(on(r.set_frames, 0x185).empty());
+  CHECK(on(r.feed(F(0x80, {})), 0x185) == std::vector{F(0x185, {5, 0, 0, 0, 0xFE, 0xCA})});
+  // in pre-operational there are no PDOs
+  (void)r.feed(F(0, {0x80, 5}));
+  CHECK(r.sdo_write(0x1800, 2, 255, 1) == abort_code::none);
+  CHECK(r.set_send(0x2100, 0, 6, 4) == abort_code::none);
+  CHECK(r.set_frames.empty());
+}

@@ -79,6 +79,37 @@ TEST_CASE("device: SYNC COB-ID, EMCY 8240h for an unexpected SYNC length") {
   CHECK(on(r.feed(F(0x81, {2})), 0x285).size() == 1);
 }
 
+TEST_CASE("device: 1019h is writable only while 1006h is 0 (CiA 301, abort 0800 0022h)") {
+  rig<> r;
+  r.operational();
+  CHECK(r.sdo_write(0x1019, 0, 8, 1) == abort_code::none);
+  CHECK(r.sdo_write(0x1006, 0, 10'000, 4) == abort_code::none);
+  CHECK(r.sdo_write(0x1019, 0, 16, 1) == abort_code::cannot_store_device_state);
+  CHECK(r.read_u(0x1019, 0) == 8);
+  CHECK(r.sdo_write(0x1019, 0, 8, 1) == abort_code::cannot_store_device_state); // the same too
+  CHECK(r.set_u(0x1019, 0, 16, 1) == abort_code::cannot_store_device_state);    // and set()
+  CHECK(r.sdo_write(0x1019, 0, 1, 1) == abort_code::cannot_store_device_state);
+  // a reset communication brings 1006h back to its default 0: writable again
+  (void)r.feed(F(0, {0x82, 5}));
+  CHECK(r.sdo_write(0x1019, 0, 16, 1) == abort_code::none);
+  CHECK(r.sdo_write(0x1006, 0, 1000, 4) == abort_code::none);
+  CHECK(r.sdo_write(0x1006, 0, 0, 4) == abort_code::none);
+  CHECK(r.sdo_write(0x1019, 0, 0, 1) == abort_code::none);
+  CHECK(r.read_u(0x1019, 0) == 0);
+  // the rule alone, and a 1006h loaded from the store
+  node::sync_consumer s;
+  s.written({0x1006, 0}, 500, 0);
+  CHECK(s.check_write({0x1019, 0}, 4) == abort_code::cannot_store_device_state);
+  s.written({0x1006, 0}, 0, 0);
+  CHECK(s.check_write({0x1019, 0}, 4) == abort_code::none);
+  rig<> q;
+  REQUIRE(q.store.set({0x1006, 0}, std::array<std::uint8_t, 4>{0xE8, 0x03, 0, 0}) ==
+          abort_code::none);
+  q.operational();
+  CHECK(q.dev.sync().period_us() == 1000);
+  CHECK(q.sdo_write(0x1019, 0, 4, 1) == abort_code::cannot_store_device_state);
+}
+
 TEST_CASE("sdo channels: the default channel without 1200h, one more server, a client") {
   static constexpr od::entry entries[] = {
       var(0x1000, 0, data_type::unsigned32, access::ro, 0x1234),

@@ -237,8 +237,12 @@ public:
   }
   void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
 
-  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v) {
-    return dev_.set(a, v);
+  [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v,
+                                    std::uint32_t now) {
+    const auto s = dev_.set(a, v, now);
+    if (!s) return s.error();
+    transmit_all(s.value().send);
+    return sdo::abort_code::none;
   }
   [[nodiscard]] bool raise(std::uint16_t code, std::uint8_t bits,
                            const std::array<std::uint8_t, 5> &manufacturer, std::uint32_t now) {
@@ -431,7 +435,7 @@ int run(Store &store, std::uint8_t node) {
             }
           } else {
             auto data = unhex(w.size() > 3U ? w[3] : "-");
-            const auto c = data ? glue.set(a, *data) : sdo::abort_code::general_error;
+            const auto c = data ? glue.set(a, *data, now) : sdo::abort_code::general_error;
             if (c == sdo::abort_code::none) {
               put_line("= ok ");
             } else {

@@ -1,6 +1,7 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
-// life guarding, EMCY producer, SYNC consumer, PDO engine and SDO channels, with frames routed
+// life guarding, EMCY producer, SYNC consumer, PDO engine, SDO channels and the error behaviour
+// (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -12,7 +13,8 @@
 //   or several (a receive FIFO): auto r = dev.on_frames(rx, now); send(r.last);
 //                                rx = rx.subspan(r.consumed);  // until rx is empty
 //   at the deadline (or every tick): send(dev.poll(now));
-//   dev.set({0x6041, 0}, bytes);                    // the application's own values
+//   send(dev.set({0x6041, 0}, bytes, now).value()); // the application's own values (and
+//                                                   //   the event-driven TPDOs they make due)
 //   for (const node::event &e : dev.events()) ...   // what the last call did
 //
 // Every call returns canopen::step<nmt::state>: the frames to send (valid until the next call),
@@ -22,7 +24,8 @@
 // downloads and RPDOs reach the store through the device (device::access). Each service owns
 // its communication objects (the SYNC consumer 1005h, 1007h, 1019h; life guarding 100Ch,
 // 100Dh; the EMCY producer 1001h, 1003h, 1014h, 1015h; the heartbeat producer 1017h and
-// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh) and has the
+// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh; the error
+// behaviour 1029h) and has the
 // three members the device calls for every service in turn (each_service): check_write (the
 // CiA 301 rules of its objects), written (follow a stored value) and load (read them all at
 // start and after a reset). A write is checked by the owning service, stored by the store
@@ -32,9 +35,16 @@
 //
 // The node owns 1001h (error register) and 1003h (pre-defined error field) and writes them
 // whenever its EMCY producer changes, and it raises and clears these EMCY codes itself:
-// 8130h (a heartbeat consumer or life guarding lost its node), 8210h / 8220h (an RPDO too short
-// / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays active
-// while its condition lasts and clears when it is over.
+// 8130h (a heartbeat consumer or life guarding lost its node; the first manufacturer-specific
+// byte, EMCY byte 3, holds the lost node's ID, 0 for life guarding), 8210h / 8220h (an RPDO too
+// short / too long), 8240h (a SYNC of unexpected length), 8250h (an RPDO timeout); each stays
+// active while its condition lasts and clears when it is over.
+//
+// Error behaviour (1029h): a communication error — a heartbeat consumer losing its node, life
+// guarding losing its master, or a bus-off the driver reports through report_error(1, now) —
+// first sends its EMCY, then enters the state 1029h sub 1 asks for: 0 (the default, also
+// without 1029h) pre-operational when operational, 1 no change, 2 stopped. The application
+// reports its own error classes (1029h sub 2..) the same way.
 //
 // NMT: frames are taken per CiA 301 Table 48 (node::allowed): in stopped only NMT and node
 // guarding are answered and the heartbeat is produced; SDO transfers of the servers end
@@ -50,6 +60,7 @@
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/node/deadlines.hpp>
 #include <fieldcodec/canopen/node/emcy_producer.hpp>
+#include <fieldcodec/canopen/node/error_behaviour.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
 #include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
@@ -99,6 +110,7 @@ struct capacity {
   std::size_t active_errors = 8;
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
+  std::size_t error_classes = 1; ///< sub-indices of 1029h (error behaviour) served
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -113,6 +125,7 @@ struct capacity {
   c.error_history = 0;
   c.sdo_servers = 1;
   c.sdo_clients = 0;
+  c.error_classes = 1;
   for (const od::entry &e : dict) {
     const std::uint16_t i = e.index;
     if (e.sub == 1U) {
@@ -126,6 +139,7 @@ struct capacity {
     if (mapping && e.sub > c.mapped) c.mapped = e.sub;
     if (i == 0x1016U && e.sub > c.heartbeat_consumers) c.heartbeat_consumers = e.sub;
     if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
+    if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -264,6 +278,7 @@ public:
       std::conditional_t<C.sdo_crc_table, crc::ccitt16_with_table, crc::ccitt16_no_table>>;
   using emcy_type = emcy_producer<C.active_errors, C.error_history, C.emcy_queue>;
   using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
+  using errors_type = error_behaviour<C.error_classes>;
 
   /// A node `node` (1..127) over `store` (borrowed, already holding its power-on values, e.g.
   /// from init_defaults). Nothing is sent before start().
@@ -374,11 +389,13 @@ public:
     if (!started_ || s == nmt::state::boot_up) return finish(now);
     take(producer_.poll(now, s));
     (void)consumer_.poll(now);
-    consumer_events();
+    bool lost = consumer_events();
     const auto before = life_.state();
     if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
       push_event(event::kind::life_guard_lost);
+      lost = true;
     }
+    if (lost) error_found(errors_type::communication, now);
     const auto sdo = sdo_.poll(now);
     if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
     take(pdo_.poll(now));
@@ -391,15 +408,33 @@ public:
 
   /// The application writes `value` to `a`: the store's checks except access, no write hook
   /// (canopen::dictionary_store::set), plus the node's rules and effects for communication
-  /// objects; event-driven TPDOs mapping `a` become due (poll() sends them). Times the node
+  /// objects; event-driven TPDOs mapping `a` become due and the next call sends them (poll,
+  /// or set with `now` below). No call itself: the step before stays valid. Times the node
   /// needs (e.g. a new heartbeat period) count from the `now` of the last call.
   [[nodiscard]] constexpr abort_code set(od::address a,
                                          std::span<const std::uint8_t> value) noexcept {
-    if (const auto c = check(a, value); c != abort_code::none) return c;
-    const auto c = store_->set(a, value);
-    if (c != abort_code::none) return c;
+    if (const auto c = store_value(a, value); c != abort_code::none) return c;
     follow(a, value);
     return abort_code::none;
+  }
+  /// set(a, value) at `now` as a call like the others: its step sends the event-driven TPDOs
+  /// (254, 255) that are due, this value's and those of earlier set(a, value) calls, unless
+  /// their inhibit time holds them back (a later call sends them, by the step's deadline); a
+  /// type 0 TPDO waits for the next SYNC. Several objects of one TPDO: write all but the last
+  /// with set(a, value) and the last with this one, so that the TPDO carries all of them. The
+  /// frames of the step before are no longer valid once the value is stored: send them first.
+  /// The error: the abort code of the refusal (nothing stored, nothing sent, the step before
+  /// still valid).
+  [[nodiscard]] constexpr result<step, abort_code>
+  set(od::address a, std::span<const std::uint8_t> value, std::uint32_t now) noexcept {
+    if (const auto c = store_value(a, value); c != abort_code::none) return c;
+    begin(now);
+    follow(a, value);
+    if (started_ && nmt_.state() != nmt::state::boot_up) {
+      take(pdo_.poll(now));
+      pdo_events();
+    }
+    return finish(now);
   }
   /// The current value of `a` (see canopen::dictionary_store::value).
   [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
@@ -426,6 +461,18 @@ public:
     begin(now);
     if (const status r = emcy_.clear_error(code, now); !r) return r.error();
     take_frames(frames(emcy_.sent()));
+    return finish(now);
+  }
+  /// An error of class `sub` of 1029h was found (1 = communication error: e.g. the CAN driver
+  /// reports bus-off; 2.. the device profile's or the application's classes): the node enters
+  /// the state 1029h sub `sub` asks for (error_behaviour; a class 1029h does not have: enter
+  /// pre-operational from operational). The node finds heartbeat and life guarding losses
+  /// itself. Errors: invalid_argument (sub 0), bad_state (not started).
+  [[nodiscard]] constexpr result<step> report_error(std::uint8_t sub, std::uint32_t now) noexcept {
+    if (sub == 0U) return errc::invalid_argument;
+    if (!started_ || nmt_.state() == nmt::state::boot_up) return errc::bad_state;
+    begin(now);
+    error_found(sub, now);
     return finish(now);
   }
   /// A local NMT state change (the device's error behaviour, or no NMT master).
@@ -457,6 +504,7 @@ public:
   [[nodiscard]] constexpr const life_guard &guarding() const noexcept { return life_; }
   [[nodiscard]] constexpr const emcy_type &emcy() const noexcept { return emcy_; }
   [[nodiscard]] constexpr const sync_consumer &sync() const noexcept { return sync_; }
+  [[nodiscard]] constexpr const errors_type &errors() const noexcept { return errors_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
   [[nodiscard]] constexpr const sdo_type &sdo() const noexcept { return sdo_; }
   /// Frames or events that did not fit their lists (a sizing error; always 0).
@@ -501,12 +549,16 @@ private:
   // the events and their loops: one function each, called from several places
   [[gnu::noinline]] constexpr void push_event(const event &e) noexcept { events_.push(e); }
   [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { events_.push(event{k}); }
-  [[gnu::noinline]] constexpr void consumer_events() noexcept {
+  /// The heartbeat consumer's events; true when a monitor lost its node.
+  [[gnu::noinline]] constexpr bool consumer_events() noexcept {
+    bool lost = false;
     for (const auto &h : consumer_.events()) {
       event e{event::kind::heartbeat};
       e.heartbeat = h;
       push_event(e);
+      lost = lost || h.what == heartbeat_event::kind::lost;
     }
+    return lost;
   }
   [[gnu::noinline]] constexpr void pdo_events() noexcept {
     for (const auto &p : pdo_.events()) {
@@ -580,7 +632,7 @@ private:
     }
     if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
       (void)consumer_.on_frame(f, now);
-      consumer_events();
+      (void)consumer_events();
       return;
     }
     if (allowed(s, service::pdo)) {
@@ -645,6 +697,7 @@ private:
     f(self.consumer_);
     f(self.pdo_);
     f(self.sdo_);
+    f(self.errors_);
   }
 
   /// Read every service's objects from the store (start, NMT resets).
@@ -654,6 +707,13 @@ private:
     each_service(*this, [&](auto &service) {
       if (const status st = service.load(*store_, now); !st && config_) config_ = st;
     });
+  }
+
+  /// The application's write (set): the owning service's check, then the store's set.
+  [[nodiscard]] constexpr abort_code store_value(od::address a,
+                                                 std::span<const std::uint8_t> value) noexcept {
+    if (const auto c = check(a, value); c != abort_code::none) return c;
+    return store_->set(a, value);
   }
 
   /// The CiA 301 rules of the communication objects: the check of the service that owns `a`.
@@ -709,6 +769,17 @@ private:
     return abort_code::none;
   }
 
+  // ----- error behaviour (1029h) ----------------------------------------------------------
+
+  /// An error of class `sub` (1029h): its EMCY goes out first (the node's own codes, while the
+  /// state still lets EMCY through), then the node enters the state 1029h asks for.
+  constexpr void error_found(std::uint8_t sub, std::uint32_t now) noexcept {
+    const auto to = errors_.target(sub, nmt_.state());
+    if (!to) return;
+    update_errors(now);
+    if (nmt_.enter(*to)) state_changed(now);
+  }
+
   // ----- EMCY ------------------------------------------------------------------------------
 
   /// Raise or clear the node-managed codes as their conditions are now: bit i of own_errors_
@@ -719,20 +790,24 @@ private:
   constexpr void update_errors(std::uint32_t now) noexcept {
     if (!started_) return;
     const auto pdo = pdo_.rpdo_errors();
-    const unsigned on = (consumer_.any_lost() || life_.state() == guard_state::lost ? 1U : 0U) |
+    const std::uint8_t lost = consumer_.lost_node();
+    const unsigned on = (lost != 0U || life_.state() == guard_state::lost ? 1U : 0U) |
                         (pdo.too_short ? 2U : 0U) | (pdo.too_long ? 4U : 0U) |
                         (sync_.length_error() ? 8U : 0U) | (pdo.timed_out ? 16U : 0U);
     if (on == own_errors_) return;
     for (std::size_t i = 0; i < std::size(managed_codes); ++i) {
       const unsigned bit = 1U << i;
-      if (((on ^ own_errors_) & bit) != 0U) change_error(i, (on & bit) != 0U, now);
+      if (((on ^ own_errors_) & bit) != 0U) change_error(i, (on & bit) != 0U, now, lost);
     }
   }
-  /// Raise (`on`) or clear managed_codes[i].
-  constexpr void change_error(std::size_t i, bool on, std::uint32_t now) noexcept {
+  /// Raise (`on`) or clear managed_codes[i]; 8130h carries `lost` (the node-ID of the first
+  /// lost heartbeat producer, 0 for life guarding) in its first manufacturer-specific byte.
+  constexpr void change_error(std::size_t i, bool on, std::uint32_t now,
+                              std::uint8_t lost) noexcept {
     const auto bit = static_cast<std::uint8_t>(1U << i);
-    const status r =
-        on ? emcy_.raise_error(managed_codes[i], now) : emcy_.clear_error(managed_codes[i], now);
+    const std::array<std::uint8_t, 5> manufacturer{i == 0U ? lost : std::uint8_t{0}};
+    const status r = on ? emcy_.raise_error(managed_codes[i], now, 0, manufacturer)
+                        : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
     take_frames(frames(emcy_.sent()));
@@ -758,6 +833,7 @@ private:
   nmt::guard_responder guard_;
   emcy_type emcy_;
   sync_consumer sync_{};
+  errors_type errors_{};
   access access_;
   pdo_type pdo_;
   sdo_type sdo_;

@@ -315,11 +315,13 @@ public:
   [[nodiscard]] constexpr nmt::state last_state(std::size_t i) const noexcept {
     return i < N ? m_[i].last : nmt::state::boot_up;
   }
-  [[nodiscard]] constexpr bool any_lost() const noexcept {
+  [[nodiscard]] constexpr bool any_lost() const noexcept { return lost_node() != 0U; }
+  /// The node-ID of the first lost monitor (lowest entry), 0 when none is lost.
+  [[nodiscard]] constexpr std::uint8_t lost_node() const noexcept {
     for (const auto &m : m_) {
-      if (m.state == monitor_state::lost) return true;
+      if (m.state == monitor_state::lost) return m.entry.node;
     }
-    return false;
+    return 0;
   }
   [[nodiscard]] constexpr std::optional<errc> error() const noexcept { return error_; }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {

@@ -10,8 +10,9 @@
 // A frame whose length does not fit 1019h (DLC 1 with a counter overflow of 2..240, DLC 0 with
 // 0) is not taken as a SYNC, and length_error() stays set until a SYNC of the right length
 // arrives: the node reports EMCY 8240h "unexpected SYNC data length" meanwhile (CiA 301).
-// Without 1019h in the dictionary (overflow never set) DLC 0 and 1 are both right. A counter
-// outside 1..240 is ignored too (error() = out_of_range).
+// Without 1019h in the dictionary (overflow never set) DLC 0 and 1 are both right. 1019h can
+// be written only while the communication cycle period (1006h) is 0 (0x08000022 otherwise). A
+// counter outside 1..240 is ignored too (error() = out_of_range).
 //
 // This node does not produce SYNC: 1005h with bit 30 ("generate") set is refused (0x06090030),
 // so that a configuration tool learns that the device cannot be the SYNC producer.
@@ -70,24 +71,31 @@ public:
 
   // ----- its objects in a node (node::device) ------------------------------------------------
 
-  /// Would `v` be accepted for `a`? 1005h and 1019h as check_cob_id / check_overflow say;
-  /// none for every other object.
+  /// Would `v` be accepted for `a`? 1005h and 1019h as check_cob_id / check_overflow say, and
+  /// 1019h only while the communication cycle period (1006h) is 0: otherwise 0x08000022
+  /// (CiA 301, 1019h: the counter overflow cannot change while the cycle runs); none for
+  /// every other object.
   [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
     if (a.index == 0x1005U) return check_cob_id(v);
-    if (a.index == 0x1019U) return check_overflow(v);
+    if (a.index == 0x1019U) {
+      if (period_us_ != 0U) return abort_code::cannot_store_device_state;
+      return check_overflow(v);
+    }
     return abort_code::none;
   }
-  /// `v` was stored at `a`: follow 1005h, 1007h, 1019h.
+  /// `v` was stored at `a`: follow 1005h, 1006h, 1007h, 1019h.
   constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
     if (a.index == 0x1005U) (void)set_cob_id(v);
+    if (a.index == 0x1006U) period_us_ = v;
     if (a.index == 0x1007U) set_window_us(v);
     if (a.index == 0x1019U) (void)set_overflow(v);
   }
-  /// Start afresh from the values of 1005h, 1007h and 1019h in `store` (boot, NMT reset).
+  /// Start afresh from the values of 1005h, 1006h, 1007h and 1019h in `store` (boot, NMT
+  /// reset).
   template <class Store>
   constexpr status load(const Store &store, std::uint32_t now) noexcept {
     *this = sync_consumer{};
-    constexpr std::uint16_t objects[] = {0x1005, 0x1007, 0x1019};
+    constexpr std::uint16_t objects[] = {0x1005, 0x1006, 0x1007, 0x1019};
     for (const std::uint16_t i : objects) {
       if (const auto v = read_u32(store, {i, 0})) written({i, 0}, *v, now);
     }
@@ -95,6 +103,8 @@ public:
   }
 
   [[nodiscard]] constexpr std::uint16_t cob_id() const noexcept { return id_; }
+  /// The communication cycle period (1006h, µs; 0 when absent).
+  [[nodiscard]] constexpr std::uint32_t period_us() const noexcept { return period_us_; }
 
   /// A frame on the SYNC COB-ID (others are ignored).
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
@@ -161,6 +171,7 @@ private:
   std::uint16_t id_ = cob_id::sync;
   std::optional<std::uint8_t> overflow_{};
   std::uint32_t window_ms_ = 0;
+  std::uint32_t period_us_ = 0;
   std::uint32_t last_ = 0;
   std::optional<std::uint8_t> counter_{};
   std::optional<errc> error_{};
