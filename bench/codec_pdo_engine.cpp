@@ -13,6 +13,7 @@
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <array>
 #include <cstddef>
@@ -41,8 +42,8 @@ constexpr std::uint8_t pdo_node = 5;
 constexpr std::size_t node_count = 16; // independent nodes (stores + engines); inputs pick one
 
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
-constexpr od::entry var(std::uint16_t index, std::uint8_t sub, od::data_type t, std::uint64_t def,
-                        od::pdo_mapping p = od::pdo_mapping::no) {
+constexpr od::entry_spec var(std::uint16_t index, std::uint8_t sub, od::data_type t,
+                             std::uint64_t def, od::pdo_mapping p = od::pdo_mapping::no) {
   return {.index = index,
           .sub = sub,
           .type = t,
@@ -56,7 +57,7 @@ constexpr auto u16 = od::data_type::unsigned16;
 constexpr auto u32 = od::data_type::unsigned32;
 constexpr auto yes = od::pdo_mapping::yes;
 
-constexpr std::array<od::entry, 54> pdo_entries{
+constexpr std::array<od::entry_spec, 54> pdo_entries{
     {// RPDO 1: controlword, target position, modes of operation, digital outputs
      var(0x1400, 0, u8, 5), var(0x1400, 1, u32, 0x200U + pdo_node), var(0x1400, 2, u8, 255),
      var(0x1400, 3, u16, 0), var(0x1400, 4, u8, 0), var(0x1400, 5, u16, 0), var(0x1600, 0, u8, 4),
@@ -87,19 +88,20 @@ constexpr std::array<od::entry, 54> pdo_entries{
      var(0x1018, 0, u8, 1), var(0x1018, 1, u32, 0x0F1CU), var(0x2004, 0, u32, 0),
      var(0x6502, 0, u32, 0x65U)}};
 
-constexpr std::array<od::entry, 54> sorted_pdo_entries = [] {
+constexpr std::array<od::entry_spec, 54> sorted_pdo_specs = [] {
   auto e = pdo_entries;
   for (std::size_t i = 1; i < e.size(); ++i) { // insertion sort by (index, sub)
     for (std::size_t k = i; k > 0 && (e[k].index < e[k - 1].index ||
                                       (e[k].index == e[k - 1].index && e[k].sub < e[k - 1].sub));
          --k) {
-      const od::entry t = e[k];
+      const od::entry_spec t = e[k];
       e[k] = e[k - 1];
       e[k - 1] = t;
     }
   }
   return e;
 }();
+constexpr auto sorted_pdo_entries = od::entries_of<sorted_pdo_specs>;
 constexpr od::dictionary pdo_dict{sorted_pdo_entries};
 static_assert(pdo_dict.is_valid());
 constexpr auto pdo_layout = co::make_layout<sorted_pdo_entries.size()>(pdo_dict);

@@ -18,6 +18,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <array>
 #include <cstddef>
@@ -80,17 +81,18 @@ struct transfer_in {
 
 bench::inputs<transfer_in> g_transfers;
 
-constexpr std::array<od::entry, 2 * value_count> make_block_entries() {
-  std::array<od::entry, 2 * value_count> e{};
+constexpr std::array<od::entry_spec, 2 * value_count> make_block_specs() {
+  std::array<od::entry_spec, 2 * value_count> e{};
   for (std::size_t i = 0; i < e.size(); ++i) {
-    e[i] = od::entry{.index = static_cast<std::uint16_t>(0x3000U + i),
-                     .type = od::data_type::domain,
-                     .access_type = od::access::rw,
-                     .size = block_bytes};
+    e[i] = od::entry_spec{.index = static_cast<std::uint16_t>(0x3000U + i),
+                          .type = od::data_type::domain,
+                          .access_type = od::access::rw,
+                          .size = block_bytes};
   }
   return e;
 }
-constexpr auto block_entries = make_block_entries();
+constexpr auto block_specs = make_block_specs();
+constexpr auto block_entries = od::entries_of<block_specs>;
 constexpr od::dictionary block_dict{block_entries};
 constexpr auto block_layout = co::make_layout<2 * value_count>(block_dict);
 

@@ -20,9 +20,12 @@
 //   escapes (an octal escape has exactly three digits, so a digit after it can never be read
 //   into it), and no `??` (a trigraph before C++17, and a surprise for readers since);
 //   braces, brackets and parentheses balance.
-// * Texts survive: every entry's line in `entries` and `infos` has its index, sub-index, size,
-//   limits, default and DCF value printed as the numbers the model holds (reals: the same double)
-//   and every text (name, unit, ..., default and DCF byte strings) as a literal that decodes to
+// * Texts survive: every entry's line in `entries` and `infos` has its index, sub-index, type
+//   and flags, its packed columns (`.extra = "…"`, od/entry.hpp) unpack through od::entry's
+//   accessors to the capacity, limits, default and default text the model holds (an integer in
+//   the entry's width comes back in the kind of the entry's signedness, reals as the same double,
+//   everything else exactly), with no byte left over; the DCF value is printed as the number the
+//   model holds, and every text (name, unit, ..., DCF byte strings) as a literal that decodes to
 //   the model's bytes, with the written length `{"…", n}` equal to the decoded length; an
 //   object view's name literal (`"…"sv`) decodes to the object's name; `source_file` decodes to
 //   the file name; `node_id` is the DCF's node-ID (1..127), declared exactly when it has one.
@@ -421,15 +424,29 @@ void fields(reader &r, F &&value) {
   r.expect("}");
 }
 
+/// The number a packed column gives back for the model's `v`: the same, or for an integer in
+/// the entry's width the same value in the kind of the entry's signedness.
+bool same_packed(const od::number &got, const od::number &v, bool as_number) {
+  if (as_number || !v ||
+      (v.kind != od::number_kind::signed_ && v.kind != od::number_kind::unsigned_)) {
+    return same_number(got, v);
+  }
+  if (got.kind != od::number_kind::signed_ && got.kind != od::number_kind::unsigned_) return false;
+  const bool neg_got =
+      got.kind == od::number_kind::signed_ && static_cast<std::int64_t>(got.bits) < 0;
+  const bool neg_v = v.kind == od::number_kind::signed_ && static_cast<std::int64_t>(v.bits) < 0;
+  return neg_got == neg_v && got.bits == v.bits;
+}
+
 void check_entries(reader &r, const gen::dictionary &d) {
   if (d.entries.empty()) return; // no C array of length 0: `span<const od::entry, 0> entries{}`
   FUZZ_CHECK(r.find_table("entries") == d.entries.size());
   for (const gen::entry &e : d.entries) {
     std::uint64_t sub = 0;
-    std::uint64_t size = 0;
-    od::number low, high, def;
-    std::string def_text;
+    od::entry got;
+    std::string extra;
     bool index_seen = false;
+    bool type_seen = false;
     fields(r, [&](const std::string &f) {
       if (f == "index") {
         FUZZ_CHECK(r.at().text.starts_with("0x"));
@@ -437,28 +454,80 @@ void check_entries(reader &r, const gen::dictionary &d) {
         index_seen = true;
       } else if (f == "sub") {
         sub = r.unsigned_number();
-      } else if (f == "size") {
-        size = r.unsigned_number();
-      } else if (f == "low") {
-        low = r.number();
-      } else if (f == "high") {
-        high = r.number();
-      } else if (f == "default_value") {
-        def = r.number();
-      } else if (f == "default_text") {
-        def_text = r.text();
+      } else if (f == "type") {
+        r.expect("od");
+        r.expect("::");
+        r.expect("data_type");
+        r.expect("::");
+        const std::string t = r.ident();
+        bool found = false;
+        for (const auto &row : od::data_types) {
+          if (row.identifier == t) {
+            got.type = row.type;
+            found = true;
+          }
+        }
+        FUZZ_CHECK(found);
+        type_seen = true;
+      } else if (f == "flags") {
+        static constexpr std::pair<std::string_view, std::uint16_t> names[] = {
+            {"range_exceeds_field", od::flag::range_exceeds_field},
+            {"index_anomaly", od::flag::index_anomaly},
+            {"signedness_guess", od::flag::signedness_guess},
+            {"scaled", od::flag::scaled},
+            {"default_nodeid", od::flag::default_nodeid},
+            {"low_nodeid", od::flag::low_nodeid},
+            {"high_nodeid", od::flag::high_nodeid},
+            {"parameter_nodeid", od::flag::parameter_nodeid},
+            {"has_default", od::flag::has_default},
+            {"has_low", od::flag::has_low},
+            {"has_high", od::flag::has_high},
+            {"default_number", od::flag::default_number},
+            {"limits_number", od::flag::limits_number},
+            {"has_size", od::flag::has_size},
+            {"has_text", od::flag::has_text}};
+        for (;;) {
+          r.expect("od");
+          r.expect("::");
+          r.expect("flag");
+          r.expect("::");
+          const std::string n = r.ident();
+          std::uint16_t bit = 0;
+          for (const auto &[name, b] : names) {
+            if (name == n) bit = b;
+          }
+          FUZZ_CHECK(bit != 0U && (got.flags & bit) == 0U); // known, each once
+          got.flags = static_cast<std::uint16_t>(got.flags | bit);
+          if (!r.is("|")) break;
+          r.expect("|");
+        }
+      } else if (f == "extra") {
+        FUZZ_CHECK(r.at().kind == tok::string && r.at().suffix.empty());
+        extra = r.t[r.i++].text;
+        FUZZ_CHECK(!extra.empty()); // no packed columns: no `.extra`
       } else {
         return false;
       }
       return true;
     });
-    FUZZ_CHECK(index_seen);
+    FUZZ_CHECK(index_seen && type_seen && got.type == e.type);
     FUZZ_CHECK(sub == e.sub);
-    FUZZ_CHECK(size == e.size);
-    FUZZ_CHECK(same_number(low, e.low));
-    FUZZ_CHECK(same_number(high, e.high));
-    FUZZ_CHECK(same_number(def, e.default_value));
-    FUZZ_CHECK(def_text == e.default_text.str());
+    // the flags the model gives, and packed columns exactly as long as the flags say
+    FUZZ_CHECK(got.has(od::flag::scaled) == e.scaled);
+    FUZZ_CHECK(got.has(od::flag::default_nodeid) == e.default_nodeid);
+    FUZZ_CHECK(got.has(od::flag::low_nodeid) == e.low_nodeid);
+    FUZZ_CHECK(got.has(od::flag::high_nodeid) == e.high_nodeid);
+    FUZZ_CHECK(got.has(od::flag::parameter_nodeid) == e.parameter_nodeid);
+    FUZZ_CHECK((got.flags & 0x07U) == (e.flags & 0x07U));
+    got.extra = extra.data();
+    const od::entry_spec back = od::spec_of(got);
+    FUZZ_CHECK(od::packed_size(back) == extra.size());
+    FUZZ_CHECK(got.capacity() == (od::is_byte_string(e.type) ? e.size : 0U));
+    FUZZ_CHECK(same_packed(got.low(), e.low, got.has(od::flag::limits_number)));
+    FUZZ_CHECK(same_packed(got.high(), e.high, got.has(od::flag::limits_number)));
+    FUZZ_CHECK(
+        same_packed(got.default_value(), e.default_value, got.has(od::flag::default_number)));
+    FUZZ_CHECK(std::string_view(got.default_text()) == e.default_text.str());
     r.expect(",");
   }
   FUZZ_CHECK(r.table_braces == 1); // object tables are C arrays

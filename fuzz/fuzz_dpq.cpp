@@ -32,6 +32,7 @@
 #include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
 #include <fieldcodec/od/descriptor.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -77,8 +78,8 @@ bool allowed_error(errc e) {
 }
 
 bool in_range(decimal eu, const od::descriptor &d) {
-  const auto lo = d.low.to_decimal();
-  const auto hi = d.high.to_decimal();
+  const auto lo = d.low().to_decimal();
+  const auto hi = d.high().to_decimal();
   return (!lo || fc::compare(eu, lo.value()) >= 0) && (!hi || fc::compare(eu, hi.value()) <= 0);
 }
 
@@ -170,7 +171,7 @@ void check_descriptor(const od::descriptor &c, decimal eu, double eu_d,
                       std::span<const std::uint8_t> bytes) {
   check_scale_to_raw(eu, c.scale);
   const fc::scaling::field field = c.raw_field().value();
-  const bool has_range = c.low.has_value();
+  const bool has_range = c.low().has_value();
   for (const auto raw : {c.to_raw(eu), c.to_raw(eu_d)}) {
     if (!raw) {
       FUZZ_CHECK(allowed_error(raw.error()));
@@ -341,18 +342,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
       {od::data_type::integer8, od::data_type::integer16, od::data_type::integer24,
        od::data_type::integer32, od::data_type::integer40, od::data_type::integer48,
        od::data_type::integer56, od::data_type::integer64}};
+  od::entry_spec spec;
+  spec.flags = od::flag::scaled;
   od::descriptor c;
-  c.flags = od::flag::scaled;
   c.scale.scale = decimal_of(r);
   c.scale.offset = decimal_of(r);
   const auto fb = r.take(1);
-  c.type = types[(fb & 0x10U) != 0U ? 1 : 0][fb % 8U];
+  spec.type = types[(fb & 0x10U) != 0U ? 1 : 0][fb % 8U];
   const decimal low = decimal_of(r);
   const decimal high = decimal_of(r);
   if ((fb & 0x20U) != 0U) {
-    c.low = od::decimal_number(low);
-    c.high = od::decimal_number(high);
+    spec.low = od::decimal_number(low);
+    spec.high = od::decimal_number(high);
   }
+  std::array<char, 2 * od::packed_number_size> packed{}; // the limits, packed as numbers
+  (void)od::pack(spec, packed);
+  static_cast<od::entry &>(c) = od::make_entry(spec, packed.data());
   const decimal eu = decimal_of(r);
   double eu_d = 0;
   const auto bits = r.take(8);

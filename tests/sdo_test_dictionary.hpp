@@ -7,6 +7,7 @@
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/number.hpp>
 
 namespace sdo_test {
@@ -14,7 +15,7 @@ namespace sdo_test {
 namespace od = fieldcodec::od;
 using od::data_type;
 
-inline constexpr od::entry entries[] = {
+inline constexpr od::entry_spec specs[] = {
     {.index = 0x1000,
      .type = data_type::unsigned32,
      .access_type = od::access::ro,
@@ -69,6 +70,8 @@ inline constexpr od::entry entries[] = {
      .high = od::signed_number(20)},
     {.index = 0x3001, .type = data_type::domain}, // no size: not storable
 };
+/// The entries, packed once (a std::span<const od::entry, N>).
+inline constexpr auto entries = od::entries_of<specs>;
 inline constexpr od::dictionary dict{entries};
 static_assert(dict.is_valid());
 

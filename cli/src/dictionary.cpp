@@ -3,6 +3,8 @@
 
 #include "readers.hpp"
 
+#include <fieldcodec/od/entry_spec.hpp>
+
 #include <algorithm>
 
 namespace fieldcodec::cli {
@@ -116,13 +118,20 @@ void node_dictionary::build(std::uint8_t node) {
   for (const gen::entry &e : m.entries) {
     for (std::uint16_t k = 0; k < e.count; ++k) {
       object_desc d;
-      d.core.index = e.index;
-      d.core.sub = static_cast<std::uint8_t>(e.sub + k);
-      d.core.object = e.object;
-      d.core.type = e.type;
-      d.core.access_type = e.access;
-      d.core.pdo = e.pdo;
-      d.core.size = e.size;
+      od::entry_spec spec;
+      spec.index = e.index;
+      spec.sub = static_cast<std::uint8_t>(e.sub + k);
+      spec.object = e.object;
+      spec.type = e.type;
+      spec.access_type = e.access;
+      spec.pdo = e.pdo;
+      spec.size = e.size;
+      if (const std::size_t n = od::packed_size(spec); n != 0U) {
+        auto bytes = std::make_shared<char[]>(n);
+        (void)od::pack(spec, std::span<char>(bytes.get(), n));
+        d.packed = std::move(bytes);
+      }
+      d.core = od::make_entry(spec, d.packed.get());
       std::string sub_name = e.name;
       if (e.count > 1U) sub_name += std::to_string(d.core.sub);
       const auto obj = m.objects.find(e.index);

@@ -31,7 +31,9 @@ enum class device_family : std::uint8_t {
 
 /// One sub-object as the decoder uses it.
 struct object_desc {
-  od::entry core{}; ///< index, sub, object code, type, access, PDO mapping, size
+  od::entry core{}; ///< index, sub, object code, type, access, PDO mapping, capacity
+  /// The packed columns `core` points to (od::pack; shared, so that a copy's `core` stays valid).
+  std::shared_ptr<const char[]> packed;
   std::string name; ///< "Identity Object: Vendor Id" for a sub-object of a record
   std::string unit; ///< engineering unit ("bar", "mA", "inc"), empty when none
   std::optional<scaling::linear> scale; ///< EU = raw / scale + offset (DPQ)

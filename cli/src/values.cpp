@@ -296,8 +296,7 @@ parsed_value parse_value(const object_desc *d, std::string_view type_hint, std::
   }
   std::array<std::uint8_t, 8> buf{};
   od::entry unchecked = e;
-  unchecked.low = {};
-  unchecked.high = {};
+  unchecked.flags = static_cast<std::uint16_t>(e.flags & ~(od::flag::has_low | od::flag::has_high));
   auto w = od::encode(unchecked, n, buf);
   if (!w) {
     out.error = "'" + std::string(text) + "' cannot be a " + std::string(od::name(e.type)) + " (" +

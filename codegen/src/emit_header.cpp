@@ -3,6 +3,9 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/od/entry_spec.hpp>
+#include <fieldcodec/od/value_kinds.hpp>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -10,7 +13,9 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fieldcodec::gen {
@@ -184,8 +189,9 @@ public:
     std::size_t cap = 64;
     while (cap < 2U * (expected + 16U)) cap *= 2U;
     slots_.resize(cap);
-    for (const char *r : {"entries", "infos", "scales", "dictionary", "commands", "table", "od",
-                          "std", "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
+    for (const char *r :
+         {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table", "od", "std",
+          "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
       (void)insert(r);
     }
   }
@@ -302,37 +308,67 @@ void append_text(writer &o, const std::string &v) {
   append_text(o, od::data_type::visible_string, v);
 }
 
-/// The od::flag bits of an entry, as a C++ expression ("" when none).
-void append_flags(writer &o, const entry &e) {
-  struct bit {
-    bool set;
-    std::string_view name;
-  };
-  const bit bits[] = {
-      {(e.flags & od::flag::range_exceeds_field) != 0U, "range_exceeds_field"},
-      {(e.flags & od::flag::index_anomaly) != 0U, "index_anomaly"},
-      {(e.flags & od::flag::signedness_guess) != 0U, "signedness_guess"},
-      {e.scaled, "scaled"},
-      {e.default_nodeid, "default_nodeid"},
-      {e.low_nodeid, "low_nodeid"},
-      {e.high_nodeid, "high_nodeid"},
-      {e.parameter_nodeid, "parameter_nodeid"},
+/// The entry as od::pack takes it (every column a plain member; the text views `e`'s strings).
+od::entry_spec spec_of(const entry &e) {
+  od::entry_spec s;
+  s.index = e.index;
+  s.sub = e.sub;
+  s.object = e.object;
+  s.type = e.type;
+  s.access_type = e.access;
+  s.pdo = e.pdo;
+  std::uint16_t f = e.flags;
+  if (e.scaled) f |= od::flag::scaled;
+  if (e.default_nodeid) f |= od::flag::default_nodeid;
+  if (e.low_nodeid) f |= od::flag::low_nodeid;
+  if (e.high_nodeid) f |= od::flag::high_nodeid;
+  if (e.parameter_nodeid) f |= od::flag::parameter_nodeid;
+  s.flags = f;
+  s.size = e.size;
+  s.low = e.low;
+  s.high = e.high;
+  s.default_value = e.default_value;
+  s.default_text = od::text(e.default_text.data(), e.default_text.size());
+  return s;
+}
+
+/// The od::flag bits `f`, as a C++ expression after ", .flags = " (nothing when none).
+void append_flags(writer &o, std::uint16_t f) {
+  static constexpr std::pair<std::uint16_t, std::string_view> bits[] = {
+      {od::flag::range_exceeds_field, "range_exceeds_field"},
+      {od::flag::index_anomaly, "index_anomaly"},
+      {od::flag::signedness_guess, "signedness_guess"},
+      {od::flag::scaled, "scaled"},
+      {od::flag::default_nodeid, "default_nodeid"},
+      {od::flag::low_nodeid, "low_nodeid"},
+      {od::flag::high_nodeid, "high_nodeid"},
+      {od::flag::parameter_nodeid, "parameter_nodeid"},
+      {od::flag::has_size, "has_size"},
+      {od::flag::has_default, "has_default"},
+      {od::flag::default_number, "default_number"},
+      {od::flag::has_low, "has_low"},
+      {od::flag::has_high, "has_high"},
+      {od::flag::limits_number, "limits_number"},
+      {od::flag::has_text, "has_text"},
   };
   bool first = true;
-  for (const bit &b : bits) {
-    if (!b.set) continue;
+  for (const auto &[bit, name] : bits) {
+    if ((f & bit) == 0U) continue;
     if (first) {
       o.lit(", .flags = od::flag::");
     } else {
       o.lit(" | od::flag::");
     }
-    o.put(b.name);
+    o.put(name);
     first = false;
   }
 }
 
-/// `{...}` initialising the od::entry part.
-void emit_core(writer &o, const entry &e) {
+/// `{...}` initialising the od::entry part: the lean columns, and the packed ones (od::pack's
+/// bytes) as a string literal. `scratch` is reused for the bytes.
+void emit_core(writer &o, const entry &e, std::string &scratch) {
+  const od::entry_spec spec = spec_of(e);
+  const od::entry packed = od::make_entry(spec, nullptr);
   o.lit("{.index = 0x");
   o.hex(e.index, 4);
   if (e.sub != 0U) {
@@ -353,26 +389,12 @@ void emit_core(writer &o, const entry &e) {
     o.lit(", .pdo = od::pdo_mapping::");
     o.put(od::name(e.pdo));
   }
-  append_flags(o, e);
-  if (e.size != 0U) {
-    o.lit(", .size = ");
-    o.uint(e.size);
-  }
-  if (e.low) {
-    o.lit(", .low = ");
-    append_number(o, e.low);
-  }
-  if (e.high) {
-    o.lit(", .high = ");
-    append_number(o, e.high);
-  }
-  if (e.default_value) {
-    o.lit(", .default_value = ");
-    append_number(o, e.default_value);
-  }
-  if (!e.default_text.empty()) {
-    o.lit(", .default_text = ");
-    append_text(o, e.type, e.default_text);
+  append_flags(o, packed.flags);
+  if (const std::size_t n = od::packed_size(spec); n != 0U) {
+    scratch.resize(n);
+    (void)od::pack(spec, std::span<char>(scratch.data(), n));
+    o.lit(", .extra = ");
+    o.cpp_bytes(scratch);
   }
   o.put('}');
 }
@@ -598,7 +620,8 @@ void emit(writer &o, const dictionary &d) {
     o.lit("#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
           "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
           "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-          "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
+          "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n"
+          "#include <fieldcodec/od/value_kinds.hpp>\n\n#include "
           "<cstdint>\n#include <span>\n"
           "#include <string_view>\n\n");
   }
@@ -706,8 +729,9 @@ void emit(writer &o, const dictionary &d) {
   // (`entries.size()` stays a constant expression): a descriptor copies `detail::entries[k]`
   // with the built-in subscript, where std::array's operator[] was one function call per
   // descriptor to evaluate at compile time (docs/performance.md, "Compile time").
+  std::string scratch_bytes;
   auto table = [&](std::string_view type, std::string_view name,
-                   void (*literal)(writer &, const entry &)) {
+                   void (*literal)(writer &, const entry &, std::string &)) {
     o.lit("inline constexpr ");
     o.put(type);
     o.put(' ');
@@ -717,7 +741,7 @@ void emit(writer &o, const dictionary &d) {
     o.lit("]{\n");
     for (const entry &e : d.entries) {
       o.lit("    ");
-      literal(o, e);
+      literal(o, e, scratch_bytes);
       o.lit(",\n");
     }
     o.lit("};\n");
@@ -743,10 +767,12 @@ void emit(writer &o, const dictionary &d) {
     o.lit("namespace detail {\n");
     table("od::entry", "entries", emit_core);
     o.put('\n');
-    table("od::entry_info", "infos", emit_info);
+    table("od::entry_info", "infos",
+          [](writer &w, const entry &e, std::string &) { emit_info(w, e); });
     if (scales) {
       o.put('\n');
-      table("scaling::linear", "scales", emit_scale);
+      table("scaling::linear", "scales",
+            [](writer &w, const entry &e, std::string &) { emit_scale(w, e); });
     }
     o.lit("} // namespace detail\n\n");
   }
@@ -756,6 +782,41 @@ void emit(writer &o, const dictionary &d) {
   o.lit("\ninline constexpr od::dictionary dictionary{entries, infos");
   if (scales) o.lit(", scales");
   o.lit("};\nstatic_assert(dictionary.is_valid());\n");
+  // the kinds of values of the entries, so that code over this dictionary compiles only theirs
+  {
+    od::value_kinds k{false, false, false, false, false, false, false, false};
+    for (const entry &e : d.entries) {
+      const od::value_kinds x = od::kinds_of(od::make_entry(spec_of(e), nullptr));
+      k = {k.strings || x.strings, k.real || x.real,      k.time || x.time,
+           k.wide || x.wide,       k.limits || x.limits,  k.node_limits || x.node_limits,
+           k.scaled || x.scaled,   k.numbers || x.numbers};
+    }
+    const auto b = [&o](bool v) {
+      if (v) {
+        o.lit("true");
+      } else {
+        o.lit("false");
+      }
+    };
+    o.lit("\n// The kinds of values in the entries (od/value_kinds.hpp).\n"
+          "inline constexpr od::value_kinds kinds{.strings = ");
+    b(k.strings);
+    o.lit(", .real = ");
+    b(k.real);
+    o.lit(", .time = ");
+    b(k.time);
+    o.lit(", .wide = ");
+    b(k.wide);
+    o.lit(", .limits = ");
+    b(k.limits);
+    o.lit(", .node_limits = ");
+    b(k.node_limits);
+    o.lit(", .scaled = ");
+    b(k.scaled);
+    o.lit(", .numbers = ");
+    b(k.numbers);
+    o.lit("};\n");
+  }
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
     o.lit("inline constexpr od::descriptor ");

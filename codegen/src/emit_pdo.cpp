@@ -7,6 +7,7 @@
 
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <algorithm>
 #include <string>
@@ -28,13 +29,19 @@ struct layout {
   int line = 0;
 };
 
-// The dictionary as od::entry values, for pdo::check_mapping (the library's own rules).
-std::vector<od::entry> od_entries(const dictionary &d) {
-  std::vector<od::entry> out;
-  out.reserve(d.entries.size());
+// The dictionary as od::entry values, for pdo::check_mapping (the library's own rules). The
+// entries point into `packed` (their packed columns: a byte string's capacity), which is sized
+// once, before the first entry is made, and never grows.
+struct od_table {
+  std::vector<char> packed;
+  std::vector<od::entry> entries;
+};
+od_table od_entries(const dictionary &d) {
+  std::vector<od::entry_spec> specs;
+  specs.reserve(d.entries.size());
   for (const auto &e : d.entries) {
     for (std::uint16_t k = 0; k < e.count; ++k) {
-      od::entry o;
+      od::entry_spec o;
       o.index = e.index;
       o.sub = static_cast<std::uint8_t>(e.sub + k);
       o.object = e.object;
@@ -42,10 +49,19 @@ std::vector<od::entry> od_entries(const dictionary &d) {
       o.access_type = e.access;
       o.pdo = e.pdo;
       o.size = e.size;
-      out.push_back(o);
+      specs.push_back(o);
     }
   }
-  return out;
+  od_table t;
+  t.packed.resize(od::packed_size(std::span<const od::entry_spec>(specs)));
+  t.entries.reserve(specs.size());
+  std::size_t at = 0;
+  for (const od::entry_spec &s : specs) {
+    const auto n = od::pack(s, std::span<char>(t.packed).subspan(at));
+    t.entries.push_back(od::make_entry(s, t.packed.data() + at));
+    if (n) at += n.value(); // never fails: `packed` holds every spec's bytes
+  }
+  return t;
 }
 
 const entry *find(const dictionary &d, std::uint16_t index, std::uint8_t sub) {
@@ -128,8 +144,8 @@ std::vector<layout> layouts(const dictionary &d, std::vector<std::string> &skipp
 std::string emit_pdo_layouts(const dictionary &d, const std::string &file, diagnostics &diag) {
   std::vector<std::string> skipped;
   const std::vector<layout> list = layouts(d, skipped);
-  const std::vector<od::entry> table = od_entries(d);
-  const od::dictionary dict{std::span<const od::entry>(table)};
+  const od_table table = od_entries(d);
+  const od::dictionary dict{std::span<const od::entry>(table.entries)};
   std::string o;
   o += "// Generated from ";
   o += valid_utf8(d.source_name) ? d.source_name : cpp_string(d.source_name);

@@ -14,6 +14,12 @@ namespace node = fieldcodec::canopen::node;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace io = fieldcodec::dictionaries::io_node;
 
+// The lean entry: 12 bytes of columns and a pointer to the packed ones (od/entry.hpp), 16 bytes
+// on this target. Checked here, where a 32-bit target compiles it.
+static_assert(sizeof(fieldcodec::od::entry) == 16);
+// An integer-only dictionary: the store links no floating point and no 64-bit division.
+static_assert(!io::kinds.real && !io::kinds.wide && !io::kinds.scaled && !io::kinds.numbers);
+
 namespace {
 // The node reads no names: a dictionary of the lean entries alone keeps the descriptive table
 // (io::infos, 14 kB here) out of the image.
@@ -27,9 +33,9 @@ constexpr node::capacity caps = [] {
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);
 
-using store_type = co::dictionary_store<>;
+using store_type = co::dictionary_store<co::accept_writes, io::kinds>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
-store_type store{dict, layout, storage};
+constinit store_type store{dict, layout, storage};
 node::device<store_type, caps> dev(store, 0x22);
 
 co::can_frame receive_frame() {

@@ -5,6 +5,7 @@
 // od::decode could not have refused.
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/value.hpp>
 
 #include <doctest/doctest.h>
@@ -26,13 +27,13 @@ using sdo::abort_code;
 
 namespace {
 
-constexpr od::entry scaled_u16() {
-  od::entry e{.index = 0x2007, .type = od::data_type::unsigned16};
+constexpr od::entry_spec scaled_u16() {
+  od::entry_spec e{.index = 0x2007, .type = od::data_type::unsigned16};
   e.flags = od::flag::scaled;
   return e;
 }
 
-constexpr od::entry entries[] = {
+constexpr od::entry_spec entries_spec[] = {
     {.index = 0x1008,
      .type = od::data_type::visible_string,
      .access_type = od::access::constant,
@@ -53,6 +54,7 @@ constexpr od::entry entries[] = {
     {.index = 0x2009, .type = od::data_type::unsigned64},
     {.index = 0x200A, .type = od::data_type::time_of_day},
 };
+constexpr auto entries = od::entries_of<entries_spec>;
 constexpr od::dictionary dict{entries};
 constexpr auto layout = co::make_layout<std::size(entries)>(dict);
 
@@ -60,19 +62,20 @@ using co::slot_flag::any_bits;
 using co::slot_flag::byte_string;
 using co::slot_flag::readable;
 using co::slot_flag::writable;
-// what each entry is, taken once at compile time
-static_assert(layout.flags[0] == (readable | byte_string));
-static_assert(layout.flags[1] == (readable | writable | any_bits));
-static_assert(layout.flags[2] == (writable | any_bits));
-static_assert(layout.flags[3] == (readable | writable)); // limits: checked
-static_assert(layout.flags[4] == (readable | writable)); // BOOLEAN: only 0 and 1
-static_assert(layout.flags[5] == (readable | writable)); // REAL32: NaN refused
-static_assert(layout.flags[6] == (readable | any_bits));
-static_assert(layout.flags[7] == (readable | writable | byte_string));
-static_assert(layout.flags[8] == (readable | writable)); // scaled: its limits need the scale
-static_assert(layout.flags[9] == (readable | writable | any_bits));
-static_assert(layout.flags[10] == (readable | writable | any_bits));
-static_assert(layout.flags[11] == (readable | writable)); // TIME_OF_DAY: reserved bits
+// what a store tests of each entry, at every access
+static_assert(co::slot_flags(entries[0]) == (readable | byte_string));
+static_assert(co::slot_flags(entries[1]) == (readable | writable | any_bits));
+static_assert(co::slot_flags(entries[2]) == (writable | any_bits));
+static_assert(co::slot_flags(entries[3]) == (readable | writable)); // limits: checked
+static_assert(co::slot_flags(entries[4]) == (readable | writable)); // BOOLEAN: only 0 and 1
+static_assert(co::slot_flags(entries[5]) == (readable | writable)); // REAL32: NaN refused
+static_assert(co::slot_flags(entries[6]) == (readable | any_bits));
+static_assert(co::slot_flags(entries[7]) == (readable | writable | byte_string));
+static_assert(co::slot_flags(entries[8]) ==
+              (readable | writable)); // scaled: its limits need the scale
+static_assert(co::slot_flags(entries[9]) == (readable | writable | any_bits));
+static_assert(co::slot_flags(entries[10]) == (readable | writable | any_bits));
+static_assert(co::slot_flags(entries[11]) == (readable | writable)); // TIME_OF_DAY: reserved bits
 
 struct rng : fieldcodec::test::xorshift {
   using xorshift::xorshift;
@@ -103,25 +106,43 @@ TEST_CASE("store by position: position, address_at, and no_position") {
         abort_code::general_error);
 }
 
-TEST_CASE("store: a layout whose flags are not the entries' slot_flags does not fit") {
-  // offsets right, flags missing (a layout built by hand): refused as a whole, not every object
-  // read-only or written without its checks
-  auto hand_made = layout;
-  hand_made.flags = {};
-  std::vector<std::uint8_t> storage(layout.storage_size());
-  co::dictionary_store<> store{dict, hand_made, storage};
+TEST_CASE("store: a layout whose slots are not the entries' does not fit") {
+  // a layout of another dictionary with as many entries (a hand-made one, a stale one): refused
+  // as a whole, rather than a slot too small for its value
+  auto shifted = layout;
+  for (std::size_t i = 2; i < shifted.offsets.size(); ++i)
+    shifted.offsets[i] += 1; // 2000h: 3 bytes
+  std::vector<std::uint8_t> storage(shifted.storage_size());
+  co::dictionary_store<> store{dict, shifted, storage};
   CHECK(store.init_defaults(3).error() == fieldcodec::errc::buffer_too_small);
   std::array<std::uint8_t, 4> out{};
   std::size_t total = 0;
   CHECK(store.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
   CHECK(store.write({0x2000, 0}, 0, std::span<const std::uint8_t>(out).first(2), true) ==
         abort_code::general_error);
-  // one flag off is enough
-  auto one_off = layout;
-  one_off.flags[1] = static_cast<std::uint8_t>(one_off.flags[1] ^ co::slot_flag::writable);
-  co::dictionary_store<> store2{dict, one_off, storage};
+  // offsets that go backwards
+  auto backwards = layout;
+  backwards.offsets[2] = backwards.offsets[1] - 1U;
+  co::dictionary_store<> store2{dict, backwards, storage};
   CHECK(store2.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
-  // make_layout's own flags fit
+  // a dictionary with a kind of value the store is not made for (an integer-only store and a
+  // dictionary with REAL32, limits, a scale and strings): refused the same way
+  using integers_only =
+      co::dictionary_store<co::accept_writes, od::value_kinds{.strings = false,
+                                                              .real = false,
+                                                              .time = false,
+                                                              .wide = false,
+                                                              .limits = false,
+                                                              .node_limits = false,
+                                                              .scaled = false,
+                                                              .numbers = false}>;
+  integers_only narrow{dict, layout, storage};
+  CHECK(narrow.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
+  CHECK(narrow.init_defaults(3).error() == fieldcodec::errc::buffer_too_small);
+  // the kinds of this dictionary exactly: it fits
+  co::dictionary_store<co::accept_writes, od::kinds_of(entries)> exact{dict, layout, storage};
+  CHECK(exact.init_defaults(3).has_value());
+  // make_layout's own layout fits
   co::dictionary_store<> good{dict, layout, storage};
   CHECK(good.init_defaults(3).has_value());
 }

@@ -1,11 +1,15 @@
 // The object store: O(1) layout, values in parts, staging (never half-visible), the write
 // hook, strings and domains with their capacity, default text and written length.
+#include "xorshift.hpp"
+
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/dictionaries/xenax_ethercat.hpp>
 #include <fieldcodec/dictionaries/xenax_powerlink.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -22,7 +26,7 @@ using fieldcodec::errc;
 using sdo::abort_code;
 
 namespace {
-constexpr od::entry entries[] = {
+constexpr od::entry_spec entries_spec[] = {
     {.index = 0x1008,
      .type = od::data_type::visible_string,
      .access_type = od::access::constant,
@@ -38,6 +42,7 @@ constexpr od::entry entries[] = {
      .high = od::signed_number(5)},
     {.index = 0x2003, .type = od::data_type::octet_string, .size = 4, .default_text = "too long"},
 };
+constexpr auto entries = od::entries_of<entries_spec>;
 constexpr od::dictionary dict{entries};
 constexpr auto layout = co::make_layout<std::size(entries)>(dict);
 
@@ -265,24 +270,24 @@ void check_xenax_strings(std::size_t expected_strings) {
     ++strings;
     CAPTURE(e.index);
     CAPTURE(e.sub);
-    REQUIRE(e.size > 0);
+    REQUIRE(e.capacity() > 0);
     REQUIRE(od::readable(e.access_type));
     const od::address a{e.index, e.sub};
-    CHECK(e.default_text.size() <= e.size);
-    CHECK(p.read(a, e.size) == e.default_text);
+    CHECK(e.default_text().size() <= e.capacity());
+    CHECK(p.read(a, e.capacity()) == e.default_text());
     if (!od::writable(e.access_type)) {
       CHECK(p.write(a, "x") == abort_code::write_read_only);
-      CHECK(p.read(a, e.size) == e.default_text);
+      CHECK(p.read(a, e.capacity()) == e.default_text());
       continue;
     }
     ++writable;
-    const std::string full(e.size, 'Q');
+    const std::string full(e.capacity(), 'Q');
     CHECK(p.write(a, full) == abort_code::none);
-    CHECK(p.read(a, e.size) == full);
+    CHECK(p.read(a, e.capacity()) == full);
     CHECK(p.write(a, "LX-44") == abort_code::none); // shorter: its own length, no padding
-    CHECK(p.read(a, e.size) == "LX-44");
+    CHECK(p.read(a, e.capacity()) == "LX-44");
     CHECK(p.write(a, full + "Q") == abort_code::length_too_high);
-    CHECK(p.read(a, e.size) == "LX-44"); // the refused write left the value
+    CHECK(p.read(a, e.capacity()) == "LX-44"); // the refused write left the value
   }
   MESSAGE("XENAX strings: " << strings << ", writable: " << writable);
   CHECK(strings == expected_strings);
@@ -301,7 +306,7 @@ TEST_CASE("XENAX dictionaries: every string is served with its default text and 
 
 TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 14)") {
   // LowLimit = HighLimit = $NODEID+0x600: the server's own COB-ID and nothing else
-  static constexpr std::array<od::entry, 2> rel{{
+  static constexpr std::array<od::entry_spec, 2> rel_spec{{
       {.index = 0x1200,
        .sub = 1,
        .object = od::object_code::record,
@@ -317,6 +322,7 @@ TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 
        .low = od::signed_number(0),
        .high = od::signed_number(100)},
   }};
+  static constexpr auto rel = od::entries_of<rel_spec>;
   static constexpr std::array<fieldcodec::scaling::linear, 2> scales{{{}, {{10, 0}, {0, 0}}}};
   static constexpr od::dictionary d{rel, {}, scales};
   static_assert(d.is_valid());
@@ -333,4 +339,110 @@ TEST_CASE("store: node-ID-relative limits and scaled limits (issue 12 #4, issue 
   const std::array<std::uint8_t, 2> raw1001{0xE9, 0x03};
   CHECK(s.set({0x2100, 0}, raw1000) == abort_code::none);
   CHECK(s.set({0x2100, 0}, raw1001) == abort_code::invalid_value); // scaled: no high/low code
+}
+
+namespace {
+/// Random writes (whole values, every length around the width, random bytes) to every entry of
+/// `Dictionary`, through a store made for the dictionary's own kinds and one made for all: the
+/// same answers and the same stored values, after the same defaults.
+template <const od::dictionary &Dictionary, od::value_kinds Kinds>
+void check_same_as_all_kinds(std::uint64_t seed) {
+  static_assert(od::covers(Kinds, od::kinds_of(Dictionary.entries())));
+  constexpr auto layout_k = co::make_layout<Dictionary.size()>(Dictionary);
+  std::vector<std::uint8_t> a(layout_k.storage_size()), b(layout_k.storage_size());
+  co::dictionary_store<co::accept_writes, Kinds> lean{Dictionary, layout_k, a};
+  co::dictionary_store<> full{Dictionary, layout_k, b};
+  for (const std::uint8_t node : {std::uint8_t{1}, std::uint8_t{0x22}, std::uint8_t{127}}) {
+    REQUIRE(lean.init_defaults(node) == full.init_defaults(node));
+    CHECK(a == b);
+  }
+  fieldcodec::test::xorshift r{seed};
+  std::array<std::uint8_t, 16> v{};
+  for (int n = 0; n < 30000; ++n) {
+    const od::entry &e = Dictionary.entries()[r.next() % Dictionary.size()];
+    for (auto &x : v) x = static_cast<std::uint8_t>(r.next());
+    std::size_t len = e.width() + (r.next() % 3U) - 1U; // one short, exact, one long
+    if (len > v.size()) len = r.next() % v.size();
+    const auto value = std::span<const std::uint8_t>(v).first(len);
+    const od::address at{e.index, e.sub};
+    CAPTURE(e.index);
+    CAPTURE(e.sub);
+    CHECK(lean.write(at, 0, value, true) == full.write(at, 0, value, true));
+    CHECK(lean.set(at, value) == full.set(at, value));
+  }
+  CHECK(a == b);
+}
+} // namespace
+
+TEST_CASE("store: made for the dictionary's kinds, it answers as the store for every kind") {
+  namespace gen = fieldcodec::dictionaries;
+  check_same_as_all_kinds<gen::xenax_canopen::dictionary, gen::xenax_canopen::kinds>(0x27A);
+  check_same_as_all_kinds<gen::xenax_powerlink::dictionary, gen::xenax_powerlink::kinds>(0x27B);
+  check_same_as_all_kinds<gen::dpq_parameters::dictionary, gen::dpq_parameters::kinds>(0x27C);
+  check_same_as_all_kinds<dict, od::kinds_of(entries)>(0x27D);
+}
+
+namespace {
+// Node-ID-relative limits and defaults near the ends of 8, 16 and 32-bit fields (a default that
+// leaves its field for a high node stays zero; a limit past the field constrains nothing or
+// everything), in a dictionary of integers only: a store made for it compares in 32 bits.
+constexpr od::entry_spec relative_specs[] = {
+    {.index = 0x1014,
+     .type = od::data_type::unsigned32,
+     .flags = od::flag::default_nodeid,
+     .default_value = od::unsigned_number(0x80)},
+    {.index = 0x2000,
+     .type = od::data_type::unsigned8,
+     .flags = od::flag::low_nodeid | od::flag::high_nodeid | od::flag::default_nodeid,
+     .low = od::unsigned_number(0x80),
+     .high = od::unsigned_number(0xF0),
+     .default_value = od::unsigned_number(0x90)},
+    {.index = 0x2001,
+     .type = od::data_type::integer16,
+     .flags = od::flag::high_nodeid | od::flag::default_nodeid,
+     .high = od::signed_number(32700),
+     .default_value = od::signed_number(32700)},
+    {.index = 0x2002,
+     .type = od::data_type::unsigned32,
+     .flags = od::flag::low_nodeid,
+     .low = od::unsigned_number(0xFFFF'FFF0U)},
+    {.index = 0x2003,
+     .type = od::data_type::integer32,
+     .flags = od::flag::low_nodeid | od::flag::high_nodeid,
+     .low = od::signed_number(-10),
+     .high = od::signed_number(2147483600)},
+    {.index = 0x2004, .type = od::data_type::boolean, .default_value = od::unsigned_number(1)},
+};
+constexpr od::dictionary relative_dict{od::entries_of<relative_specs>};
+} // namespace
+
+TEST_CASE("store: node-ID-relative limits and defaults in 32-bit comparisons, as for every kind") {
+  static_assert(!od::kinds_of(relative_dict.entries()).wide &&
+                !od::kinds_of(relative_dict.entries()).numbers);
+  check_same_as_all_kinds<relative_dict, od::kinds_of(relative_dict.entries())>(0x27E);
+  // the defaults for node 0x22: 0xA2, 32734 (0x7FDE), and 0x90 + 0x22 = 0xB2 within 0xA2..0x112
+  constexpr auto l = co::make_layout<std::size(relative_specs)>(relative_dict);
+  std::vector<std::uint8_t> storage(l.storage_size());
+  co::dictionary_store<co::accept_writes, od::kinds_of(relative_dict.entries())> s{relative_dict, l,
+                                                                                   storage};
+  REQUIRE(s.init_defaults(0x22).has_value());
+  CHECK(s.value({0x1014, 0}).value()[0] == 0xA2);
+  CHECK(s.value({0x2000, 0}).value()[0] == 0xB2);
+  CHECK(s.value({0x2001, 0}).value()[0] == 0xDE);
+  CHECK(s.value({0x2004, 0}).value()[0] == 1);
+  // node 127: 32700 + 127 leaves INTEGER16: the default stays zero
+  REQUIRE(s.init_defaults(127).has_value());
+  CHECK(s.value({0x2001, 0}).value()[0] == 0);
+  CHECK(s.value({0x2001, 0}).value()[1] == 0);
+  // 2002h: low 0xFFFFFFF0 + node lies beyond UNSIGNED32: every value is too low
+  const std::array<std::uint8_t, 4> max{0xFF, 0xFF, 0xFF, 0xFF};
+  CHECK(s.set({0x2002, 0}, max) == abort_code::value_too_low);
+  // 2003h: high 2147483600 + 127 lies beyond INTEGER32: no value is too high
+  CHECK(s.set({0x2003, 0}, std::array<std::uint8_t, 4>{0xFF, 0xFF, 0xFF, 0x7F}) ==
+        abort_code::none);
+  // and its low is -10 + 127 = 117 (75h)
+  CHECK(s.set({0x2003, 0}, std::array<std::uint8_t, 4>{0x74, 0x00, 0x00, 0x00}) ==
+        abort_code::value_too_low);
+  CHECK(s.set({0x2003, 0}, std::array<std::uint8_t, 4>{0x75, 0x00, 0x00, 0x00}) ==
+        abort_code::none);
 }

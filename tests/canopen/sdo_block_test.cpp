@@ -6,6 +6,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -28,7 +29,7 @@ constexpr co::can_frame F(std::uint16_t id, std::initializer_list<std::uint8_t> 
 }
 constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_code>(v); }
 
-constexpr od::entry block_entries[] = {
+constexpr od::entry_spec block_entries_spec[] = {
     {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(7)},
     {.index = 0x2000, .type = od::data_type::domain, .size = 5000},
     {.index = 0x2001,
@@ -37,6 +38,7 @@ constexpr od::entry block_entries[] = {
      .size = 32,
      .default_text = "read only"},
 };
+constexpr auto block_entries = od::entries_of<block_entries_spec>;
 constexpr od::dictionary block_dict{block_entries};
 constexpr auto block_layout = co::make_layout<std::size(block_entries)>(block_dict);
 

@@ -15,6 +15,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -37,7 +38,7 @@ using sdo::transfer_state;
 
 namespace {
 
-constexpr od::entry client_entries[] = {
+constexpr od::entry_spec client_entries_spec[] = {
     {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(7)},
     {.index = 0x2000, .type = od::data_type::domain, .size = 3000},
     {.index = 0x2001,
@@ -46,6 +47,7 @@ constexpr od::entry client_entries[] = {
      .size = 32,
      .default_text = "read only"},
 };
+constexpr auto client_entries = od::entries_of<client_entries_spec>;
 constexpr od::dictionary client_dict{client_entries};
 constexpr auto client_layout = co::make_layout<std::size(client_entries)>(client_dict);
 constexpr std::uint8_t node = 5;

@@ -14,6 +14,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/od/dictionary.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -35,7 +36,7 @@ using sdo::transfer_state;
 
 namespace {
 
-constexpr od::entry batch_entries[] = {
+constexpr od::entry_spec batch_entries_spec[] = {
     {.index = 0x1000, .type = od::data_type::unsigned32, .default_value = od::unsigned_number(7)},
     {.index = 0x2000, .type = od::data_type::domain, .size = 3000},
     {.index = 0x2001,
@@ -45,6 +46,7 @@ constexpr od::entry batch_entries[] = {
      .default_text = "read only"},
     {.index = 0x2002, .type = od::data_type::domain, .size = 300},
 };
+constexpr auto batch_entries = od::entries_of<batch_entries_spec>;
 constexpr od::dictionary batch_dict{batch_entries};
 constexpr auto batch_layout = co::make_layout<std::size(batch_entries)>(batch_dict);
 constexpr std::uint8_t node = 5;

@@ -1,6 +1,7 @@
 // sdo::upload_value<T>: the value of an expedited upload response as a C++ type, never narrowed
 // (od::number_as<T> of the od::number upload_value gives).
 #include <fieldcodec/canopen/sdo_object.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -23,10 +24,11 @@ constexpr od::entry e_i24{.index = 0x2005, .type = od::data_type::integer24};
 constexpr od::entry e_i32{.index = 0x2006, .type = od::data_type::integer32};
 constexpr od::entry e_u32{.index = 0x2007, .type = od::data_type::unsigned32};
 constexpr od::entry e_r32{.index = 0x2008, .type = od::data_type::real32};
-constexpr od::entry e_limited{.index = 0x2009,
-                              .type = od::data_type::unsigned8,
-                              .low = od::unsigned_number(10),
-                              .high = od::unsigned_number(20)};
+constexpr od::entry_spec e_limited_spec{.index = 0x2009,
+                                        .type = od::data_type::unsigned8,
+                                        .low = od::unsigned_number(10),
+                                        .high = od::unsigned_number(20)};
+constexpr const od::entry &e_limited = od::entry_of<e_limited_spec>;
 
 /// The expedited upload response (size indicated) of entry `e` carrying the low bytes of `bits`.
 constexpr sdo::payload response(const od::entry &e, std::uint32_t bits) {

@@ -60,10 +60,16 @@ TEST_CASE("emit_header: tables, descriptors, views, flags, strings") {
                "dictionary.entries().subspan(1, 2), dictionary.infos().subspan(1, 2)};"));
   CHECK(has(h, "inline constexpr od::descriptor server_sdo_parameter_cob_id_client_to_server{"
                "detail::entries[2], detail::infos[2]}; // 0x1200 sub 1"));
-  // $NODEID+0x600 in LowLimit, HighLimit and DefaultValue: the number plus a flag each
+  // $NODEID+0x600 in LowLimit, HighLimit and DefaultValue: the number plus a flag each, the
+  // numbers packed in the entry's own width (UNSIGNED32: 4 bytes each, little-endian)
   CHECK(has(h, ".flags = od::flag::default_nodeid | od::flag::low_nodeid | "
-               "od::flag::high_nodeid, .low = od::unsigned_number(1536U), "
-               ".high = od::unsigned_number(1536U), .default_value = od::unsigned_number(1536U)"));
+               "od::flag::high_nodeid | od::flag::has_default | od::flag::has_low | "
+               "od::flag::has_high, .extra = \"\\000\\006\\000\\000\\000\\006\\000\\000\\000\\006"
+               "\\000\\000\""));
+  // the kinds of its values: integers only, with limits relative to the node-ID
+  CHECK(has(h, "inline constexpr od::value_kinds kinds{.strings = false, .real = false, .time = "
+               "false, .wide = false, .limits = true, .node_limits = true, .scaled = false, "
+               ".numbers = false};\n"));
 }
 
 TEST_CASE("emit_header: --no-sub-descriptors leaves out exactly the sub-object descriptors") {
@@ -136,6 +142,8 @@ TEST_CASE("emit_header: a text's length is its bytes, not its escaped spelling")
                "[MandatoryObjects]\nSupportedObjects=1\n1=0x1008\n"
                "[1008]\nParameterName=Say \"hi\"\nObjectType=0x7\nDataType=0x0009\n"
                "AccessType=const\nDefaultValue=Ab\"c\nPDOMapping=0\n");
-  CHECK(has(h, ".default_text = {\"Ab\\\"c\", 4}"));
+  // capacity 4 and the default text's length 4, then its bytes ('"' is an octal escape)
+  CHECK(has(h, ".flags = od::flag::has_size | od::flag::has_text, .extra = "
+               "\"\\004\\000\\000\\000\\004\\000\\000\\000Ab\\042c\""));
   CHECK(has(h, "{.name = {\"Say \\\"hi\\\"\", 8}}"));
 }

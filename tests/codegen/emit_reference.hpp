@@ -1,10 +1,16 @@
 // The C++ header emitter as it was before issue 18's second round (codegen/src/emit_header.cpp
 // at 81837bf), verbatim but for the namespace and `inline`: the reference of
-// emit_speed_test.cpp, which compares the emitter that writes through a pointer with it.
+// emit_speed_test.cpp, which compares the emitter that writes through a pointer with it. Issue 27
+// changed what an entry row holds (the lean od::entry: flags and its columns packed by od::pack
+// as a string literal) and added the `kinds` line: emit_core, append_flags, the includes and
+// emit_kinds below write that, in the same plain std::string style.
 #pragma once
 
 #include "readers.hpp"
 #include "text.hpp"
+
+#include <fieldcodec/od/entry_spec.hpp>
+#include <fieldcodec/od/value_kinds.hpp>
 
 #include <algorithm>
 #include <array>
@@ -159,8 +165,9 @@ inline std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(
 class symbols {
 public:
   symbols() {
-    for (const char *r : {"entries", "infos", "scales", "dictionary", "commands", "table", "od",
-                          "std", "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
+    for (const char *r :
+         {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table", "od", "std",
+          "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
       used_.insert(r);
     }
   }
@@ -216,33 +223,61 @@ inline void append_text(std::string &o, const std::string &v) {
   append_text(o, od::data_type::visible_string, v);
 }
 
+/// The entry as od::pack takes it.
+inline od::entry_spec spec_of(const entry &e) {
+  od::entry_spec s;
+  s.index = e.index;
+  s.sub = e.sub;
+  s.object = e.object;
+  s.type = e.type;
+  s.access_type = e.access;
+  s.pdo = e.pdo;
+  std::uint16_t f = e.flags;
+  if (e.scaled) f |= od::flag::scaled;
+  if (e.default_nodeid) f |= od::flag::default_nodeid;
+  if (e.low_nodeid) f |= od::flag::low_nodeid;
+  if (e.high_nodeid) f |= od::flag::high_nodeid;
+  if (e.parameter_nodeid) f |= od::flag::parameter_nodeid;
+  s.flags = f;
+  s.size = e.size;
+  s.low = e.low;
+  s.high = e.high;
+  s.default_value = e.default_value;
+  s.default_text = std::string_view(e.default_text);
+  return s;
+}
+
 /// The od::flag bits of an entry, as a C++ expression ("" when none).
-inline void append_flags(std::string &o, const entry &e) {
-  struct bit {
-    bool set;
-    const char *name;
-  };
-  const bit bits[] = {
-      {(e.flags & od::flag::range_exceeds_field) != 0U, "range_exceeds_field"},
-      {(e.flags & od::flag::index_anomaly) != 0U, "index_anomaly"},
-      {(e.flags & od::flag::signedness_guess) != 0U, "signedness_guess"},
-      {e.scaled, "scaled"},
-      {e.default_nodeid, "default_nodeid"},
-      {e.low_nodeid, "low_nodeid"},
-      {e.high_nodeid, "high_nodeid"},
-      {e.parameter_nodeid, "parameter_nodeid"},
+inline void append_flags(std::string &o, std::uint16_t f) {
+  const std::pair<std::uint16_t, const char *> bits[] = {
+      {od::flag::range_exceeds_field, "range_exceeds_field"},
+      {od::flag::index_anomaly, "index_anomaly"},
+      {od::flag::signedness_guess, "signedness_guess"},
+      {od::flag::scaled, "scaled"},
+      {od::flag::default_nodeid, "default_nodeid"},
+      {od::flag::low_nodeid, "low_nodeid"},
+      {od::flag::high_nodeid, "high_nodeid"},
+      {od::flag::parameter_nodeid, "parameter_nodeid"},
+      {od::flag::has_size, "has_size"},
+      {od::flag::has_default, "has_default"},
+      {od::flag::default_number, "default_number"},
+      {od::flag::has_low, "has_low"},
+      {od::flag::has_high, "has_high"},
+      {od::flag::limits_number, "limits_number"},
+      {od::flag::has_text, "has_text"},
   };
   bool first = true;
-  for (const bit &b : bits) {
-    if (!b.set) continue;
+  for (const auto &[bit, name] : bits) {
+    if ((f & bit) == 0U) continue;
     o += first ? ", .flags = od::flag::" : " | od::flag::";
-    o += b.name;
+    o += name;
     first = false;
   }
 }
 
 /// `{...}` initialising the od::entry part.
 inline void emit_core(std::string &o, const entry &e) {
+  const od::entry_spec spec = spec_of(e);
   o += "{.index = 0x";
   append_hex(o, e.index, 4);
   if (e.sub != 0U) {
@@ -263,28 +298,43 @@ inline void emit_core(std::string &o, const entry &e) {
     o += ", .pdo = od::pdo_mapping::";
     o += od::name(e.pdo);
   }
-  append_flags(o, e);
-  if (e.size != 0U) {
-    o += ", .size = ";
-    append_int(o, e.size);
-  }
-  if (e.low) {
-    o += ", .low = ";
-    append_number(o, e.low);
-  }
-  if (e.high) {
-    o += ", .high = ";
-    append_number(o, e.high);
-  }
-  if (e.default_value) {
-    o += ", .default_value = ";
-    append_number(o, e.default_value);
-  }
-  if (!e.default_text.empty()) {
-    o += ", .default_text = ";
-    append_text(o, e.type, e.default_text);
+  append_flags(o, od::make_entry(spec, nullptr).flags);
+  std::string bytes(od::packed_size(spec), '\0');
+  if (!bytes.empty()) {
+    (void)od::pack(spec, std::span<char>(bytes.data(), bytes.size()));
+    o += ", .extra = ";
+    const std::size_t at = o.size();
+    append_cpp_value_text(o, od::data_type::octet_string, bytes); // std::string_view{"…", n}
+    o.erase(at, std::string_view("std::string_view{").size());
+    o.erase(o.rfind(','));
   }
   o += '}';
+}
+
+/// The `kinds` line: what od::kinds_of finds in the entries.
+inline void emit_kinds(std::string &o, const dictionary &d) {
+  std::vector<od::entry> lean;
+  for (const entry &e : d.entries) lean.push_back(od::make_entry(spec_of(e), nullptr));
+  const od::value_kinds k = od::kinds_of(lean);
+  auto b = [](bool v) { return v ? "true" : "false"; };
+  o += "\n// The kinds of values in the entries (od/value_kinds.hpp).\n"
+       "inline constexpr od::value_kinds kinds{.strings = ";
+  o += b(k.strings);
+  o += ", .real = ";
+  o += b(k.real);
+  o += ", .time = ";
+  o += b(k.time);
+  o += ", .wide = ";
+  o += b(k.wide);
+  o += ", .limits = ";
+  o += b(k.limits);
+  o += ", .node_limits = ";
+  o += b(k.node_limits);
+  o += ", .scaled = ";
+  o += b(k.scaled);
+  o += ", .numbers = ";
+  o += b(k.numbers);
+  o += "};\n";
 }
 
 /// `{...}` initialising the od::entry_info part ("{}" when the entry has no descriptive column).
@@ -449,7 +499,8 @@ inline std::string emit_header(const dictionary &d) {
     o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
-         "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n\n#include "
+         "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n"
+         "#include <fieldcodec/od/value_kinds.hpp>\n\n#include "
          "<cstdint>\n#include <span>\n"
          "#include <string_view>\n\n";
   }
@@ -541,6 +592,7 @@ inline std::string emit_header(const dictionary &d) {
   if (scales) span("scaling::linear", "scales");
   o += std::string("\ninline constexpr od::dictionary dictionary{entries, infos") +
        (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
+  emit_kinds(o, d);
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {
     const std::string at = std::to_string(k);

@@ -40,15 +40,15 @@ TEST_CASE("generated: xenax_canopen identity object") {
 TEST_CASE("generated: an OCTET_STRING default is its bytes, NULs included") {
   const auto *e = fieldcodec::dictionaries::compax_objects::dictionary.find(0x5FF5, 0);
   REQUIRE(e != nullptr);
-  CHECK(e->size == 2);
-  CHECK(e->default_text == std::string_view("\0\0", 2));
+  CHECK(e->capacity() == 2);
+  CHECK(e->default_text() == std::string_view("\0\0", 2));
 }
 
 TEST_CASE("generated: XENAX strings have a capacity (issue 12.1)") {
   const auto *e = xc::dictionary.find(0x1008, 0);
   REQUIRE(e != nullptr);
-  CHECK(e->default_text == "Servocontroller XENAX Xvi xxVx");
-  CHECK(e->size >= e->default_text.size()); // its default's length at least (30)
+  CHECK(e->default_text() == "Servocontroller XENAX Xvi xxVx");
+  CHECK(e->capacity() >= e->default_text().size()); // its default's length at least (30)
 }
 
 // The generated PDO layouts (fieldcodec-gen --pdo-header, issue 29): the XENAX EtherCAT PDOs of

@@ -69,7 +69,7 @@ TEST_CASE("CoE: byte strings of 0 to 5000 bytes, normal and segmented, both ways
     }
     for (const std::uint16_t index : {std::uint16_t{0x2009}, std::uint16_t{0x200A},
                                       std::uint16_t{0x200F}, std::uint16_t{0x2020}}) {
-      const std::size_t capacity = dict.find({index, 0})->size;
+      const std::size_t capacity = dict.find({index, 0})->capacity();
       for (const std::size_t n : sizes) {
         if (n > capacity) continue;
         CAPTURE(size);

@@ -5,6 +5,7 @@
 #include <fieldcodec/compax/objects.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #if __has_include(<fieldcodec/dictionaries/compax_objects.hpp>)
 #include <fieldcodec/dictionaries/compax_objects.hpp>
@@ -30,23 +31,26 @@ constexpr od::descriptor lage_ziel{
     {.index = 0x607A, .type = od::data_type::integer32, .flags = od::flag::scaled},
     {.name = "LAGE_ZIEL"},
     {{1000, 0}, {0, 0}}};
-constexpr od::descriptor posa{
+// entries with a capacity or limits: written as specs, packed by od::table
+constexpr od::entry_spec specs[] = {
+    {.index = 0x5FEA,
+     .type = od::data_type::unsigned16,
+     .low = od::signed_number(0),
+     .high = od::signed_number(65000)},
+    {.index = 0x5FED, .type = od::data_type::octet_string, .size = 3},
+    {.index = 0x5FE6, .type = od::data_type::visible_string, .size = 20},
     {.index = 0x5FF0, .type = od::data_type::octet_string, .flags = od::flag::scaled, .size = 6},
-    {.name = "POSA"},
-    {{1000, 0}, {0, 0}}};
-constexpr od::descriptor posr0speed{
-    {.index = 0x5FED, .type = od::data_type::octet_string, .size = 3}, {.name = "POSR0SPEED"}};
+};
+constexpr od::table_of<specs> table{specs};
+constexpr od::descriptor posa{table[3], {.name = "POSA"}, {{1000, 0}, {0, 0}}};
+constexpr od::descriptor posr0speed{table[1], {.name = "POSR0SPEED"}};
 constexpr od::descriptor speed{
     {.index = 0x5FEC, .type = od::data_type::integer16, .flags = od::flag::scaled},
     {.name = "SPEED"},
     {{64, 0}, {0, 0}}};
 constexpr od::descriptor out_enable{{.index = 0x5FFF, .type = od::data_type::boolean},
                                     {.name = "OUT_ENABLE"}};
-constexpr od::descriptor accel_pos{{.index = 0x5FEA,
-                                    .type = od::data_type::unsigned16,
-                                    .low = od::signed_number(0),
-                                    .high = od::signed_number(65000)},
-                                   {.name = "ACCEL_POS"}};
+constexpr od::descriptor accel_pos{table[0], {.name = "ACCEL_POS"}};
 constexpr std::array<od::entry, 3> px_entries{{
     {.index = 0x5FD4, .sub = 11, .type = od::data_type::integer32, .flags = od::flag::scaled},
     {.index = 0x5FD4, .sub = 21, .type = od::data_type::integer32, .flags = od::flag::scaled},
@@ -95,7 +99,7 @@ TEST_CASE("objects by entry: integers, BCD, boolean") {
   CHECK(cx::encode_object(accel_pos, decimal{65001, 0}, b4).error() == errc::out_of_range);
   std::array<std::uint8_t, 1> b1{};
   CHECK(cx::encode_object(lage_ziel, decimal{1, 0}, b1).error() == errc::buffer_too_small);
-  const od::descriptor text{{.index = 0x5FE6, .type = od::data_type::visible_string, .size = 20}};
+  const od::descriptor text{table[2]};
   CHECK(cx::encode_object(text, decimal{1, 0}, b4).error() == errc::type_mismatch);
 }
 

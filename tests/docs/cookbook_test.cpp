@@ -564,7 +564,7 @@ constexpr auto rpdo2 = co::pdo::make_static_mapping(
     x::dictionary, co::pdo::direction::rpdo, {{0x6040, 0, 16}, {0x607A, 0, 32}});
 // the mapping entries are 1601h's defaults: 60400010h, 607A0020h
 static_assert(rpdo2.values() == std::array<std::uint32_t, 2>{0x60400010, 0x607A0020});
-static_assert(x::receive_pdo_mapping_param_2[2].default_value.to_uint64().value() == 0x607A0020);
+static_assert(x::receive_pdo_mapping_param_2[2].default_value().to_uint64().value() == 0x607A0020);
 
 // controlword 1F, target 100 000: 301: 1F 00 A0 86 01 00
 constexpr co::can_frame rpdo2_frame = [] {
@@ -607,7 +607,7 @@ public:
 
 private:
   co::sdo::client client_{1, 500}; // node 1, 500 ms for each answer
-  std::array<std::uint8_t, x::manufacturer_device_name.size> buffer_{};
+  std::array<std::uint8_t, x::manufacturer_device_name.capacity()> buffer_{};
 };
 } // namespace cb_xenax_9
 

@@ -4,6 +4,7 @@
 // Manual: ../shared/seeds/004_…txt (RE 30146-02-Z), 3.3 / 3.4 "Parameter conversion".
 #include <fieldcodec/dpq/parameter.hpp>
 #include <fieldcodec/od/descriptor.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -19,43 +20,45 @@ using fc::decimal;
 using fc::errc;
 
 namespace {
-/// A DPQ parameter as the generator emits it: type, scale and offset, printed range.
-constexpr od::descriptor param(od::data_type t, fc::scaling::linear s, decimal lo, decimal hi) {
-  return {{.index = 0x2000,
-           .type = t,
-           .flags = od::flag::scaled,
-           .low = od::decimal_number(lo),
-           .high = od::decimal_number(hi)},
-          {},
-          s};
+/// A DPQ parameter as the generator emits it: type and printed range (the entry, packed by
+/// od::entry_of), scale and offset.
+constexpr od::entry_spec spec(od::data_type t, decimal lo, decimal hi) {
+  return {.index = 0x2000,
+          .type = t,
+          .flags = od::flag::scaled,
+          .low = od::decimal_number(lo),
+          .high = od::decimal_number(hi)};
+}
+template <const od::entry_spec &Spec>
+constexpr od::descriptor param(fc::scaling::linear s) {
+  return {od::entry_of<Spec>, {}, s};
 }
 /// The same without a printed range (only the field applies).
 constexpr od::descriptor no_range(od::descriptor d) {
-  d.low = {};
-  d.high = {};
+  d.flags = static_cast<std::uint16_t>(d.flags & ~(od::flag::has_low | od::flag::has_high));
   return d;
 }
 // 4.100 Inj. P Limit 1: 0x2023, 4 bytes, 0…5000, scale 327,67, offset 0 (UNSIGNED32).
-constexpr od::descriptor inj_p_limit_1 =
-    param(od::data_type::unsigned32, {{32767, 2}, {0, 0}}, {0, 0}, {5000, 0});
+constexpr od::entry_spec inj_p_limit_1_spec = spec(od::data_type::unsigned32, {0, 0}, {5000, 0});
+constexpr od::descriptor inj_p_limit_1 = param<inj_p_limit_1_spec>({{32767, 2}, {0, 0}});
 // 4.197 Program Block: 2 bytes, 0…32, scale 1, offset 1 (INTEGER16) — the only offset.
-constexpr od::descriptor program_block =
-    param(od::data_type::integer16, {{1, 0}, {1, 0}}, {0, 0}, {32, 0});
+constexpr od::entry_spec program_block_spec = spec(od::data_type::integer16, {0, 0}, {32, 0});
+constexpr od::descriptor program_block = param<program_block_spec>({{1, 0}, {1, 0}});
 // 4.66 Hist. Time 1 family: 4 bytes, −100…100, scale 500 (INTEGER32).
-constexpr od::descriptor hist_time =
-    param(od::data_type::integer32, {{500, 0}, {0, 0}}, {-100, 0}, {100, 0});
+constexpr od::entry_spec hist_time_spec = spec(od::data_type::integer32, {-100, 0}, {100, 0});
+constexpr od::descriptor hist_time = param<hist_time_spec>({{500, 0}, {0, 0}});
 // 4.24 Cavity Press Max Fau family: 2 bytes, −150…150, scale 163,83 (INTEGER16).
-constexpr od::descriptor fau =
-    param(od::data_type::integer16, {{16383, 2}, {0, 0}}, {-150, 0}, {150, 0});
+constexpr od::entry_spec fau_spec = spec(od::data_type::integer16, {-150, 0}, {150, 0});
+constexpr od::descriptor fau = param<fau_spec>({{16383, 2}, {0, 0}});
 // 4.35 Decompres.: Limit-: 2 bytes, −100…100, scale 327,7 (INTEGER16, range_exceeds_field).
-constexpr od::descriptor limit_minus =
-    param(od::data_type::integer16, {{3277, 1}, {0, 0}}, {-100, 0}, {100, 0});
+constexpr od::entry_spec limit_minus_spec = spec(od::data_type::integer16, {-100, 0}, {100, 0});
+constexpr od::descriptor limit_minus = param<limit_minus_spec>({{3277, 1}, {0, 0}});
 // 4.26 Cavity Press Min: 2 bytes, −100…100, scale 16383,5 (INTEGER16, range_exceeds_field).
-constexpr od::descriptor press_min =
-    param(od::data_type::integer16, {{163835, 1}, {0, 0}}, {-100, 0}, {100, 0});
+constexpr od::entry_spec press_min_spec = spec(od::data_type::integer16, {-100, 0}, {100, 0});
+constexpr od::descriptor press_min = param<press_min_spec>({{163835, 1}, {0, 0}});
 // 4.2 BackP: Decomp Rate 2: 2 bytes, 0…5000, scale 10,5 (UNSIGNED16: raw up to 52500).
-constexpr od::descriptor decomp_rate =
-    param(od::data_type::unsigned16, {{105, 1}, {0, 0}}, {0, 0}, {5000, 0});
+constexpr od::entry_spec decomp_rate_spec = spec(od::data_type::unsigned16, {0, 0}, {5000, 0});
+constexpr od::descriptor decomp_rate = param<decomp_rate_spec>({{105, 1}, {0, 0}});
 
 constexpr bool same(fc::result<decimal> r, decimal d) {
   return r.has_value() && r.value().mantissa == d.mantissa && r.value().places == d.places;

@@ -11,10 +11,13 @@
 #include <fieldcodec/core/decimal.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/descriptor.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/number.hpp>
 
 #include <cstdint>
 #include <fstream>
+#include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -37,17 +40,22 @@ struct row {
   [[nodiscard]] bool is_parameter() const { return section.rfind("4.", 0) == 0; }
   /// The row as a descriptor built here from the CSV (independent of the generator): type
   /// from bytes and signedness, scale and offset, printed range.
+  /// Its packed columns (the printed range) live in the row: valid while the row is.
   [[nodiscard]] fieldcodec::od::descriptor descriptor() const {
     namespace od = fieldcodec::od;
-    od::descriptor d;
-    d.type = bytes == 2 ? (is_signed() ? od::data_type::integer16 : od::data_type::unsigned16)
+    od::entry_spec e;
+    e.type = bytes == 2 ? (is_signed() ? od::data_type::integer16 : od::data_type::unsigned16)
                         : (is_signed() ? od::data_type::integer32 : od::data_type::unsigned32);
-    d.flags = od::flag::scaled;
-    d.low = od::decimal_number(low);
-    d.high = od::decimal_number(high);
+    e.flags = od::flag::scaled;
+    e.low = od::decimal_number(low);
+    e.high = od::decimal_number(high);
+    packed = std::make_shared<char[]>(od::packed_size(e));
+    (void)od::pack(e, std::span<char>(packed.get(), od::packed_size(e)));
+    od::descriptor d{od::make_entry(e, packed.get())};
     d.scale = {scale, offset};
     return d;
   }
+  mutable std::shared_ptr<char[]> packed;
 };
 
 // RFC 4180 fields of one line (the DPQ table has no line breaks inside fields).

@@ -9,6 +9,7 @@
 #include <fieldcodec/dpq/emergency.hpp>
 #include <fieldcodec/dpq/sdo.hpp>
 #include <fieldcodec/dpq/sdo_abort.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -31,38 +32,38 @@ constexpr od::descriptor event_timer{{.index = 0x1800,
                                       .type = od::data_type::unsigned16},
                                      {.name = "Event timer"}};
 // 4.100 Inj. P Limit 1.
-constexpr od::descriptor inj_p_limit_1{{.index = 0x2023,
-                                        .type = od::data_type::unsigned32,
-                                        .flags = od::flag::scaled,
-                                        .low = od::decimal_number(0, 0),
-                                        .high = od::decimal_number(5000, 0)},
-                                       {.name = "Inj. P Limit 1"},
-                                       {{32767, 2}, {0, 0}}};
+constexpr od::entry_spec inj_p_limit_1_spec{.index = 0x2023,
+                                            .type = od::data_type::unsigned32,
+                                            .flags = od::flag::scaled,
+                                            .low = od::decimal_number(0, 0),
+                                            .high = od::decimal_number(5000, 0)};
+constexpr od::descriptor inj_p_limit_1{
+    od::entry_of<inj_p_limit_1_spec>, {.name = "Inj. P Limit 1"}, {{32767, 2}, {0, 0}}};
 // 4.2 BackP: Decomp Rate 2 (2 bytes, 10.5).
-constexpr od::descriptor decomp_rate_2{{.index = 0x219C,
-                                        .type = od::data_type::unsigned16,
-                                        .flags = od::flag::scaled,
-                                        .low = od::decimal_number(0, 0),
-                                        .high = od::decimal_number(5000, 0)},
-                                       {.name = "BackP: Decomp Rate 2"},
-                                       {{105, 1}, {0, 0}}};
+constexpr od::entry_spec decomp_rate_2_spec{.index = 0x219C,
+                                            .type = od::data_type::unsigned16,
+                                            .flags = od::flag::scaled,
+                                            .low = od::decimal_number(0, 0),
+                                            .high = od::decimal_number(5000, 0)};
+constexpr od::descriptor decomp_rate_2{
+    od::entry_of<decomp_rate_2_spec>, {.name = "BackP: Decomp Rate 2"}, {{105, 1}, {0, 0}}};
 // 4.168 Position FB : and 4.194 Pressure FB : (read-only, INTEGER32, 327.67).
-constexpr od::descriptor position_fb{{.index = 0x2F07,
-                                      .type = od::data_type::integer32,
-                                      .access_type = od::access::ro,
-                                      .flags = od::flag::scaled,
-                                      .low = od::decimal_number(0, 0),
-                                      .high = od::decimal_number(1000, 0)},
-                                     {.name = "Position FB :"},
-                                     {{32767, 2}, {0, 0}}};
-constexpr od::descriptor pressure_fb{{.index = 0x2F11,
-                                      .type = od::data_type::integer32,
-                                      .access_type = od::access::ro,
-                                      .flags = od::flag::scaled,
-                                      .low = od::decimal_number(0, 0),
-                                      .high = od::decimal_number(200, 0)},
-                                     {.name = "Pressure FB :"},
-                                     {{32767, 2}, {0, 0}}};
+constexpr od::entry_spec position_fb_spec{.index = 0x2F07,
+                                          .type = od::data_type::integer32,
+                                          .access_type = od::access::ro,
+                                          .flags = od::flag::scaled,
+                                          .low = od::decimal_number(0, 0),
+                                          .high = od::decimal_number(1000, 0)};
+constexpr od::descriptor position_fb{
+    od::entry_of<position_fb_spec>, {.name = "Position FB :"}, {{32767, 2}, {0, 0}}};
+constexpr od::entry_spec pressure_fb_spec{.index = 0x2F11,
+                                          .type = od::data_type::integer32,
+                                          .access_type = od::access::ro,
+                                          .flags = od::flag::scaled,
+                                          .low = od::decimal_number(0, 0),
+                                          .high = od::decimal_number(200, 0)};
+constexpr od::descriptor pressure_fb{
+    od::entry_of<pressure_fb_spec>, {.name = "Pressure FB :"}, {{32767, 2}, {0, 0}}};
 
 constexpr co::can_frame frame8(std::uint16_t id, std::array<std::uint8_t, 8> d) {
   co::can_frame f;

@@ -1,6 +1,7 @@
 // DPQ parameters by descriptor (dpq/parameter.hpp over od::descriptor). The descriptors below
 // hold what fieldcodec-gen emits for rows of dictionaries/dpq_parameters.csv.
 #include <fieldcodec/dpq/parameter.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -15,33 +16,36 @@ using fc::errc;
 
 namespace {
 // 4.100
-constexpr od::descriptor inj_p_limit_1{{.index = 0x2023,
-                                        .type = od::data_type::unsigned32,
-                                        .access_type = od::access::rw,
-                                        .flags = od::flag::signedness_guess | od::flag::scaled,
-                                        .low = od::decimal_number(0, 0),
-                                        .high = od::decimal_number(5000, 0)},
+constexpr od::entry_spec inj_p_limit_1_spec{.index = 0x2023,
+                                            .type = od::data_type::unsigned32,
+                                            .access_type = od::access::rw,
+                                            .flags = od::flag::signedness_guess | od::flag::scaled,
+                                            .low = od::decimal_number(0, 0),
+                                            .high = od::decimal_number(5000, 0)};
+constexpr od::descriptor inj_p_limit_1{od::entry_of<inj_p_limit_1_spec>,
                                        {.name = "Inj. P Limit 1", .section = "4.100"},
                                        {{32767, 2}, {0, 0}}};
 // 4.197 (offset 1)
-constexpr od::descriptor program_block{{.index = 0x2F25,
-                                        .type = od::data_type::integer16,
-                                        .access_type = od::access::ro,
-                                        .flags = od::flag::signedness_guess | od::flag::scaled,
-                                        .low = od::decimal_number(0, 0),
-                                        .high = od::decimal_number(32, 0)},
+constexpr od::entry_spec program_block_spec{.index = 0x2F25,
+                                            .type = od::data_type::integer16,
+                                            .access_type = od::access::ro,
+                                            .flags = od::flag::signedness_guess | od::flag::scaled,
+                                            .low = od::decimal_number(0, 0),
+                                            .high = od::decimal_number(32, 0)};
+constexpr od::descriptor program_block{od::entry_of<program_block_spec>,
                                        {.name = "Program Block", .section = "4.197"},
                                        {{1, 0}, {1, 0}}};
 // 4.35 (range_exceeds_field)
-constexpr od::descriptor decompres_limit_minus{
-    {.index = 0x2FA5,
-     .type = od::data_type::integer16,
-     .access_type = od::access::rw,
-     .flags = od::flag::signedness_guess | od::flag::range_exceeds_field | od::flag::scaled,
-     .low = od::decimal_number(-100, 0),
-     .high = od::decimal_number(100, 0)},
-    {.name = "Decompres.: Limit-", .section = "4.35"},
-    {{3277, 1}, {0, 0}}};
+constexpr od::entry_spec decompres_limit_minus_spec{
+    .index = 0x2FA5,
+    .type = od::data_type::integer16,
+    .access_type = od::access::rw,
+    .flags = od::flag::signedness_guess | od::flag::range_exceeds_field | od::flag::scaled,
+    .low = od::decimal_number(-100, 0),
+    .high = od::decimal_number(100, 0)};
+constexpr od::descriptor decompres_limit_minus{od::entry_of<decompres_limit_minus_spec>,
+                                               {.name = "Decompres.: Limit-", .section = "4.35"},
+                                               {{3277, 1}, {0, 0}}};
 
 constexpr bool payload_is(fc::result<dpq::payload> p, std::array<std::uint8_t, 4> b,
                           std::uint8_t n) {
@@ -129,7 +133,9 @@ TEST_CASE("dpq parameter: every kind of engineering value, each as the number it
 }
 
 TEST_CASE("dpq parameter: types and fields") {
-  const od::descriptor text{{.index = 0x1008, .type = od::data_type::visible_string, .size = 8}};
+  static constexpr od::entry_spec text_spec{
+      .index = 0x1008, .type = od::data_type::visible_string, .size = 8};
+  const od::descriptor text{od::entry_of<text_spec>};
   CHECK(text.to_raw(1.0).error() == errc::type_mismatch);
   CHECK(dpq::to_bytes(text, 1.0).error() == errc::type_mismatch);
   CHECK(dpq::raw_to_bytes(text, 1).error() == errc::type_mismatch);

@@ -9,6 +9,6 @@ int main() {
   const auto *type = drive::dictionary.find(0x1000, 0);
   const auto *limit = drive::dictionary.find(0x2000, 0);
   if (type == nullptr || limit == nullptr) return 1;
-  auto v = limit->default_value.to_int64();
+  auto v = limit->default_value().to_int64();
   return v && v.value() == 1311 ? 0 : 2;
 }

@@ -5,7 +5,7 @@
 using namespace test_node;
 
 namespace {
-constexpr od::entry tiny_entries[] = {
+constexpr od::entry_spec tiny_entries_spec[] = {
     var(0x1000, 0, data_type::unsigned32, access::ro, 0x191),
     var(0x1001, 0, data_type::unsigned8, access::ro, 0),
     var(0x1017, 0, data_type::unsigned16, access::rw, 0),
@@ -21,6 +21,7 @@ constexpr od::entry tiny_entries[] = {
     var(0x1A00, 1, data_type::unsigned32, access::rw, 0x2000'0010U),
     var(0x2000, 0, data_type::unsigned16, access::rw, 0, pdo_mapping::yes),
 };
+constexpr auto tiny_entries = od::entries_of<tiny_entries_spec>;
 constexpr od::dictionary tiny{tiny_entries};
 constexpr auto tiny_layout = co::make_layout<std::size(tiny_entries)>(tiny);
 constexpr node::capacity tiny_caps = [] {

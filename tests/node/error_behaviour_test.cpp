@@ -124,7 +124,7 @@ TEST_CASE("device: life guarding loss and the driver's bus-off are communication
 
 namespace {
 // a node without 1029h: the communication error still enters pre-operational (CiA 301)
-constexpr std::array<od::entry, 7> bare_entries{{
+constexpr std::array<od::entry_spec, 7> bare_specs{{
     var(0x1000, 0, data_type::unsigned32, access::ro, 0x000F0191U),
     var(0x1001, 0, data_type::unsigned8, access::ro, 0),
     var(0x1016, 0, data_type::unsigned8, access::ro, 1),
@@ -133,6 +133,7 @@ constexpr std::array<od::entry, 7> bare_entries{{
     var(0x1018, 0, data_type::unsigned8, access::ro, 1),
     var(0x1018, 1, data_type::unsigned32, access::ro, 0x0F1CU),
 }};
+constexpr auto bare_entries = od::entries_of<bare_specs>;
 constexpr od::dictionary bare{bare_entries};
 static_assert(bare.is_valid());
 constexpr auto bare_layout = co::make_layout<bare_entries.size()>(bare);

@@ -6,6 +6,7 @@
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -106,16 +107,17 @@ using od::access;
 using od::data_type;
 using od::pdo_mapping;
 
-constexpr od::entry var(std::uint16_t index, std::uint8_t sub, data_type t, access a,
-                        std::uint64_t def, pdo_mapping p = pdo_mapping::no) {
+constexpr od::entry_spec var(std::uint16_t index, std::uint8_t sub, data_type t, access a,
+                             std::uint64_t def, pdo_mapping p = pdo_mapping::no) {
   return {
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
 inline constexpr std::size_t entry_count = 102;
 
-/// The dictionary of node `n` (node-ID-relative defaults resolved for n).
-constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
+/// The dictionary of node `n` (node-ID-relative defaults resolved for n), as specs
+/// (od::entries_of packs them).
+constexpr std::array<od::entry_spec, entry_count> make_specs(std::uint8_t n) {
   const auto u8 = data_type::unsigned8;
   const auto u16 = data_type::unsigned16;
   const auto u32 = data_type::unsigned32;
@@ -243,7 +245,8 @@ constexpr std::array<od::entry, entry_count> make_entries(std::uint8_t n) {
   }};
 }
 
-inline constexpr auto entries5 = make_entries(5);
+inline constexpr auto specs5 = make_specs(5);
+inline constexpr auto entries5 = od::entries_of<specs5>;
 inline constexpr od::dictionary dict5{entries5};
 static_assert(dict5.is_valid());
 inline constexpr auto layout5 = co::make_layout<entry_count>(dict5);
@@ -274,7 +277,8 @@ constexpr sdo::abort_code A(std::uint32_t v) { return static_cast<sdo::abort_cod
 /// A node over the test dictionary with its own storage.
 template <std::uint8_t N = 5>
 struct rig {
-  static constexpr auto entries = make_entries(N);
+  static constexpr auto specs = make_specs(N);
+  static constexpr auto entries = od::entries_of<specs>;
   static constexpr od::dictionary dict{entries};
   static constexpr auto layout = co::make_layout<entry_count>(dict);
 

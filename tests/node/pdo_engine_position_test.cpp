@@ -13,6 +13,7 @@
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 
 #include <doctest/doctest.h>
 
@@ -41,20 +42,20 @@ using sdo::abort_code;
 
 constexpr od::number U(std::uint64_t v) { return {od::number_kind::unsigned_, 0, v}; }
 
-constexpr od::entry var(std::uint16_t index, std::uint8_t sub, od::data_type t, od::access a,
-                        std::uint64_t def, od::pdo_mapping p = od::pdo_mapping::no) {
+constexpr od::entry_spec var(std::uint16_t index, std::uint8_t sub, od::data_type t, od::access a,
+                             std::uint64_t def, od::pdo_mapping p = od::pdo_mapping::no) {
   return {
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
-constexpr od::entry limited(std::uint16_t index, od::data_type t, std::uint64_t low,
-                            std::uint64_t high) {
-  od::entry e = var(index, 0, t, od::access::rw, low, od::pdo_mapping::yes);
+constexpr od::entry_spec limited(std::uint16_t index, od::data_type t, std::uint64_t low,
+                                 std::uint64_t high) {
+  od::entry_spec e = var(index, 0, t, od::access::rw, low, od::pdo_mapping::yes);
   e.low = U(low);
   e.high = U(high);
   return e;
 }
-constexpr od::entry bytes(std::uint16_t index, od::data_type t, std::uint32_t size) {
-  od::entry e = var(index, 0, t, od::access::rw, 0, od::pdo_mapping::yes);
+constexpr od::entry_spec bytes(std::uint16_t index, od::data_type t, std::uint32_t size) {
+  od::entry_spec e = var(index, 0, t, od::access::rw, 0, od::pdo_mapping::yes);
   e.size = size;
   return e;
 }
@@ -67,8 +68,8 @@ constexpr auto yes = od::pdo_mapping::yes;
 /// can meet: integers of each width and sign, BOOLEAN, limits, strings, a REAL32 (NaN is
 /// refused), read-only, write-only, not mappable, mappable in one direction only.
 constexpr std::size_t n_entries = 2 * (5 + 9) + 2 * (6 + 9) + 17;
-constexpr std::array<od::entry, n_entries> make_entries() {
-  std::array<od::entry, n_entries> e{};
+constexpr std::array<od::entry_spec, n_entries> make_entries() {
+  std::array<od::entry_spec, n_entries> e{};
   std::size_t i = 0;
   const auto u8 = data_type::unsigned8;
   const auto u16 = data_type::unsigned16;
@@ -130,19 +131,20 @@ constexpr std::array<od::entry, n_entries> make_entries() {
   e[i++] = var(0x2010, 0, u8, rw, 0, od::pdo_mapping::rx);
   return e;
 }
-constexpr std::array<od::entry, n_entries> entries = [] {
+constexpr std::array<od::entry_spec, n_entries> entry_specs = [] {
   auto e = make_entries();
   for (std::size_t i = 1; i < e.size(); ++i) { // insertion sort by (index, sub)
     for (std::size_t k = i; k > 0 && (e[k].index < e[k - 1].index ||
                                       (e[k].index == e[k - 1].index && e[k].sub < e[k - 1].sub));
          --k) {
-      const od::entry t = e[k];
+      const od::entry_spec t = e[k];
       e[k] = e[k - 1];
       e[k - 1] = t;
     }
   }
   return e;
 }();
+constexpr auto entries = od::entries_of<entry_specs>;
 constexpr od::dictionary dict{entries};
 static_assert(dict.is_valid());
 constexpr auto layout = co::make_layout<n_entries>(dict);
@@ -487,7 +489,7 @@ void set_values(rng &r, trio<Hook> &t) {
     std::array<std::uint8_t, 8> v{};
     for (auto &b : v) b = static_cast<std::uint8_t>(r.next());
     if (e->type == data_type::boolean) v[0] = static_cast<std::uint8_t>(v[0] & 1U);
-    const std::size_t n = od::is_byte_string(e->type) ? r.below(e->size + 1U) : e->width();
+    const std::size_t n = od::is_byte_string(e->type) ? r.below(e->capacity() + 1U) : e->width();
     const auto s = std::span<const std::uint8_t>(v).first(n);
     all(t, [&](auto &side) { return side.store.set({index, 0}, s); });
     all(t, [&](auto &side) {
@@ -691,7 +693,7 @@ TEST_CASE_TEMPLATE("pdo engine compiled: remapping while operational uses the ne
 TEST_CASE("pdo engine by position: an object the store lacks is refused / not sent") {
   // the engine checks mappings against its dictionary; a store over a smaller dictionary has no
   // position for 2002h: the RPDO counts it refused, the TPDO is not sent (as by address)
-  auto small_entries = entries;
+  std::array<od::entry, n_entries> small_entries{};
   std::size_t n = 0;
   for (const auto &e : entries) {
     if (e.index != 0x2002U) small_entries[n++] = e;
@@ -848,10 +850,10 @@ namespace {
 /// A dictionary whose store puts 2001h (UNSIGNED16) in the last two bytes a compiled mapping's
 /// 16-bit offsets reach and 2002h (UNSIGNED32) just past them: a 1F00h octet string fills the
 /// bytes before.
-constexpr std::array<od::entry, 13> far_entries(std::uint32_t big) {
+constexpr std::array<od::entry_spec, 13> far_entries(std::uint32_t big) {
   const auto u8 = data_type::unsigned8;
   const auto u32 = data_type::unsigned32;
-  std::array<od::entry, 13> e{
+  std::array<od::entry_spec, 13> e{
       {var(0x1400, 0, u8, od::access::ro, 2), var(0x1400, 1, u32, rw, 0x201U),
        var(0x1400, 2, u8, rw, 255), var(0x1600, 0, u8, rw, 2),
        var(0x1600, 1, u32, rw, 0x2001'0010U), var(0x1600, 2, u32, rw, 0x2002'0020U),
@@ -863,17 +865,18 @@ constexpr std::array<od::entry, 13> far_entries(std::uint32_t big) {
 constexpr auto far_probe = far_entries(1);
 constexpr std::uint32_t far_big = [] {
   // 2001h follows 1F00h: with 1F00h of 1 byte it would start at offsets[13] (the total)
-  const auto l = co::make_layout<13>(od::dictionary{far_probe});
+  const auto l = co::make_layout<13>(od::dictionary{od::entries_of<far_probe>});
   return 0xFFFEU - (l.offsets[13] - 1U);
 }();
 constexpr auto far_base = far_entries(far_big);
-constexpr std::array<od::entry, 15> far_list = [] {
-  std::array<od::entry, 15> e{};
+constexpr std::array<od::entry_spec, 15> far_specs = [] {
+  std::array<od::entry_spec, 15> e{};
   for (std::size_t i = 0; i < 13; ++i) e[i] = far_base[i];
   e[13] = var(0x2001, 0, data_type::unsigned16, rw, 0, yes);
   e[14] = var(0x2002, 0, data_type::unsigned32, rw, 0, yes);
   return e;
 }();
+constexpr auto far_list = od::entries_of<far_specs>;
 constexpr od::dictionary far_dict{far_list};
 static_assert(far_dict.is_valid());
 constexpr auto far_layout = co::make_layout<15>(far_dict);

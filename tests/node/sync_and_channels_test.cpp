@@ -111,7 +111,7 @@ TEST_CASE("device: 1019h is writable only while 1006h is 0 (CiA 301, abort 0800 
 }
 
 TEST_CASE("sdo channels: the default channel without 1200h, one more server, a client") {
-  static constexpr od::entry entries[] = {
+  static constexpr od::entry_spec entries_spec[] = {
       var(0x1000, 0, data_type::unsigned32, access::ro, 0x1234),
       var(0x1201, 0, data_type::unsigned8, access::ro, 2),
       var(0x1201, 1, data_type::unsigned32, access::rw, 0x640),
@@ -121,6 +121,7 @@ TEST_CASE("sdo channels: the default channel without 1200h, one more server, a c
       var(0x1280, 2, data_type::unsigned32, access::rw, 0x583),
       var(0x1280, 3, data_type::unsigned8, access::rw, 3),
   };
+  static constexpr auto entries = od::entries_of<entries_spec>;
   static constexpr od::dictionary dict{entries};
   constexpr auto layout = co::make_layout<std::size(entries)>(dict);
   std::vector<std::uint8_t> storage(layout.storage_size());

@@ -3,6 +3,7 @@
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/object.hpp>
 #include <fieldcodec/od/value.hpp>
 
@@ -30,7 +31,7 @@ namespace {
 // the descriptive columns and the scale inside, docs/performance.md).
 static_assert(sizeof(void *) != 8 || sizeof(od::entry) <= 80);
 
-constexpr std::array<od::entry, 6> entries{{
+constexpr std::array<od::entry_spec, 6> entries_spec{{
     {.index = 0x1018,
      .object = od::object_code::record,
      .access_type = od::access::ro,
@@ -63,6 +64,7 @@ constexpr std::array<od::entry, 6> entries{{
      .low = od::signed_number(-10),
      .high = od::signed_number(10)},
 }};
+constexpr auto entries = od::entries_of<entries_spec>;
 constexpr std::array<od::entry_info, 6> infos{{
     {.name = "Number of entries"},
     {.name = "Vendor-ID"},
@@ -187,7 +189,7 @@ TEST_CASE("od descriptor: generated headers") {
   REQUIRE(row != nullptr);
   CHECK(static_cast<const od::entry *>(&xc::device_type) != row);
   CHECK(xc::device_type.index == row->index);
-  CHECK(xc::device_type.default_value == row->default_value);
+  CHECK(xc::device_type.default_value() == row->default_value());
   CHECK(xc::device_type.info.name == xc::dictionary.info(*row).name);
   CHECK(dpq::inj_p_limit_1.scale.scale.mantissa == 32767);
   CHECK(dpq::inj_p_limit_1.info.unit ==
@@ -214,12 +216,11 @@ TEST_CASE("od descriptor: generated headers") {
 
 TEST_CASE("od descriptor: a negative scale turns the engineering limits around") {
   // 0..10 EU at scale −1 is raw −10..0; with only the low end, raw ≤ 0
-  const od::descriptor both{{.type = od::data_type::integer16,
-                             .flags = od::flag::scaled,
-                             .low = od::signed_number(0),
-                             .high = od::signed_number(10)},
-                            {},
-                            {{-1, 0}, {0, 0}}};
+  static constexpr od::entry_spec both_spec{.type = od::data_type::integer16,
+                                            .flags = od::flag::scaled,
+                                            .low = od::signed_number(0),
+                                            .high = od::signed_number(10)};
+  const od::descriptor both{od::entry_of<both_spec>, {}, {{-1, 0}, {0, 0}}};
   std::array<std::uint8_t, 2> out{};
   CHECK(od::encode(both, -10, out).value() == 2);
   CHECK(od::encode(both, 0, out).value() == 2);
@@ -227,7 +228,7 @@ TEST_CASE("od descriptor: a negative scale turns the engineering limits around")
   CHECK(od::encode(both, -11, out).error() == errc::out_of_range);
   CHECK(both.to_raw(fc::decimal{10, 0}).value() == -10);
   od::descriptor low_only = both;
-  low_only.high = {};
+  low_only.flags = static_cast<std::uint16_t>(low_only.flags & ~od::flag::has_high);
   CHECK(od::encode(low_only, -30000, out).value() == 2);
   CHECK(od::encode(low_only, 1, out).error() == errc::out_of_range);
 }

@@ -2,6 +2,7 @@
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/number.hpp>
 #include <fieldcodec/od/value.hpp>
 
@@ -16,7 +17,7 @@ using fc::errc;
 
 namespace {
 
-constexpr std::array<od::entry, 7> test_entries{{
+constexpr std::array<od::entry_spec, 7> test_entries_spec{{
     {.index = 0x1000, .type = od::data_type::unsigned32, .access_type = od::access::ro},
     {.index = 0x1014,
      .type = od::data_type::unsigned32,
@@ -47,6 +48,7 @@ constexpr std::array<od::entry, 7> test_entries{{
      .low = od::signed_number(-1),
      .high = od::signed_number(10)},
 }};
+constexpr auto test_entries = od::entries_of<test_entries_spec>;
 constexpr std::array<od::entry_info, 7> test_infos{{
     {.name = "Device type"},
     {.name = "COB-ID EMCY"},
@@ -208,7 +210,8 @@ TEST_CASE("od: encode range checks") {
   CHECK(od::encode(r32, std::numeric_limits<double>::quiet_NaN(), buf).error() ==
         errc::not_representable);
   CHECK(od::encode(r32, od::number{}, buf).error() == errc::type_mismatch);
-  const od::entry vs{.type = od::data_type::visible_string, .size = 4};
+  static constexpr od::entry_spec vs_spec{.type = od::data_type::visible_string, .size = 4};
+  static constexpr const od::entry &vs = od::entry_of<vs_spec>;
   CHECK(od::encode(vs, 1, buf).error() == errc::type_mismatch);
   // scaled entry: raw limits are round(low × scale), round(high × scale)
   CHECK(od::encode(inj, std::uint32_t{1638350}, buf).value() == 4);
@@ -261,7 +264,8 @@ TEST_CASE("od: time values") {
 }
 
 TEST_CASE("od: byte strings") {
-  const od::entry vs{.type = od::data_type::visible_string, .size = 4};
+  static constexpr od::entry_spec vs_spec{.type = od::data_type::visible_string, .size = 4};
+  static constexpr const od::entry &vs = od::entry_of<vs_spec>;
   std::array<std::uint8_t, 8> buf{};
   const std::array<std::uint8_t, 3> abc{'a', 'b', 'c'};
   CHECK(od::encode_bytes(vs, abc, buf).value() == 3);

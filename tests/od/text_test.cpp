@@ -26,7 +26,7 @@ static_assert(named.unit == "bar" && named.unit.view() == "bar"sv);
 static_assert(named.remark.size() == 3U && named.remark == "a\0b"sv && named.remark[1] == '\0');
 static_assert(named.alt_name.empty() && named.alt_name.size() == 0U && named.alt_name == "");
 static_assert(od::no_info.name.empty() && od::no_info.parameter_text.empty());
-static_assert(od::entry{}.default_text.empty());
+static_assert(od::entry{}.default_text().empty());
 static_assert(od::text{"x"} == od::text{"x"} && !(od::text{"x"} == od::text{"y"}));
 static_assert(od::text{} == od::text{nullptr} && od::text{nullptr}.empty());
 static_assert(std::string_view{named.name} == "Device type"sv);

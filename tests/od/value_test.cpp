@@ -3,6 +3,7 @@
 // node-ID-relative limits (issue 12 #4).
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/value.hpp>
 
 #include <doctest/doctest.h>
@@ -150,8 +151,9 @@ TEST_CASE("od values: enumerations by their underlying type") {
   CHECK(od::decode<mode>(i8, ff).value() == mode::vendor);
   CHECK(od::decode<mode>(u8, ff).error() == errc::overflow); // 255 is no int8 value
   // limits apply to the value
-  const od::entry modes{
+  static constexpr od::entry_spec modes_spec{
       .type = od::data_type::integer8, .low = od::signed_number(-1), .high = od::signed_number(10)};
+  static constexpr const od::entry &modes = od::entry_of<modes_spec>;
   CHECK(od::encode(modes, mode::homing, out).value() == 1);
   CHECK(od::check_limits(modes, od::signed_number(11)).error() == errc::out_of_range);
 }
@@ -182,12 +184,13 @@ TEST_CASE("od values: REAL types take floats as they are and integers only when 
 
 TEST_CASE("od values: node-ID-relative limits (LowLimit=$NODEID+0x600)") {
   // an EDS's SDO server COB-ID: both limits are $NODEID+0x600
-  const od::entry cob{.index = 0x1200,
-                      .sub = 1,
-                      .type = od::data_type::unsigned32,
-                      .flags = od::flag::low_nodeid | od::flag::high_nodeid,
-                      .low = od::unsigned_number(0x600),
-                      .high = od::unsigned_number(0x600)};
+  static constexpr od::entry_spec cob_spec{.index = 0x1200,
+                                           .sub = 1,
+                                           .type = od::data_type::unsigned32,
+                                           .flags = od::flag::low_nodeid | od::flag::high_nodeid,
+                                           .low = od::unsigned_number(0x600),
+                                           .high = od::unsigned_number(0x600)};
+  static constexpr const od::entry &cob = od::entry_of<cob_spec>;
   CHECK(cob.low_for(1).value() == od::unsigned_number(0x601));
   CHECK(cob.high_for(127).value() == od::unsigned_number(0x67F));
   std::array<std::uint8_t, 4> out{};
@@ -209,16 +212,18 @@ TEST_CASE("od values: node-ID-relative limits (LowLimit=$NODEID+0x600)") {
         errc::out_of_range);
   CHECK(od::decode(cob, b605).has_value());
   // one relative end only
-  const od::entry low_only{.type = od::data_type::unsigned16,
-                           .flags = od::flag::low_nodeid,
-                           .low = od::unsigned_number(0x180),
-                           .high = od::unsigned_number(0x1FF)};
+  static constexpr od::entry_spec low_only_spec{.type = od::data_type::unsigned16,
+                                                .flags = od::flag::low_nodeid,
+                                                .low = od::unsigned_number(0x180),
+                                                .high = od::unsigned_number(0x1FF)};
+  static constexpr const od::entry &low_only = od::entry_of<low_only_spec>;
   CHECK(od::check_limits(low_only, od::unsigned_number(0x1FF), 127).has_value());
   CHECK(od::check_limits(low_only, od::unsigned_number(0x184), 5).error() == errc::out_of_range);
   // a relative value that overflows its number
-  const od::entry edge{.type = od::data_type::unsigned64,
-                       .flags = od::flag::high_nodeid,
-                       .high = od::unsigned_number(~std::uint64_t{0})};
+  static constexpr od::entry_spec edge_spec{.type = od::data_type::unsigned64,
+                                            .flags = od::flag::high_nodeid,
+                                            .high = od::unsigned_number(~std::uint64_t{0})};
+  static constexpr const od::entry &edge = od::entry_of<edge_spec>;
   CHECK(edge.high_for(1).error() == errc::overflow);
   // the descriptor checks engineering values against the widest node range
   const od::descriptor d{cob};

@@ -43,7 +43,7 @@ TEST_CASE("5011h, 5012h, 5020h, 5021h carry their printed lengths (3.4.9-3.4.12,
       const od::entry *e = d->find(index, 0);
       REQUIRE(e != nullptr);
       CHECK(e->type == od::data_type::visible_string);
-      CHECK(e->size == size);
+      CHECK(e->capacity() == size);
       // a write of the printed length is accepted, one character more is refused
       std::array<std::uint8_t, 128> out{};
       CHECK(od::encode_bytes(*e, text(size), out).value() == size);

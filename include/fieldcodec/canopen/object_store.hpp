@@ -60,6 +60,7 @@
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/value.hpp>
+#include <fieldcodec/od/value_kinds.hpp>
 
 #include <algorithm>
 #include <array>
@@ -122,13 +123,14 @@ concept plain_store = positioned_store<S> && requires(S &s, const S &cs, std::si
 inline constexpr std::size_t length_prefix = 4;
 
 /// Bytes of storage entry `e` needs: width() for fixed-size types; for byte strings the length
-/// prefix plus the capacity `size` (0 when the entry declares no size: it cannot be stored).
+/// prefix plus the capacity (0 when the entry declares none: it cannot be stored).
 [[nodiscard]] constexpr std::size_t slot_size(const od::entry &e) noexcept {
   if (!od::is_byte_string(e.type)) return e.width();
-  return e.size == 0U ? 0U : length_prefix + e.size;
+  const std::uint32_t capacity = e.capacity();
+  return capacity == 0U ? 0U : length_prefix + capacity;
 }
 
-/// What a store tests at every access of an entry, taken from the entry once (slot_flags).
+/// What a store tests at every access of an entry (slot_flags).
 namespace slot_flag {
 inline constexpr std::uint8_t readable = 0x01U;    ///< od::readable(access_type)
 inline constexpr std::uint8_t writable = 0x02U;    ///< od::writable(access_type)
@@ -144,21 +146,19 @@ inline constexpr std::uint8_t any_bits = 0x08U;
   if (od::readable(e.access_type)) f |= slot_flag::readable;
   if (od::writable(e.access_type)) f |= slot_flag::writable;
   if (od::is_byte_string(e.type)) f |= slot_flag::byte_string;
-  if (od::is_integer(e.type) && !e.low && !e.high && !e.has(od::flag::scaled)) {
+  if (od::is_integer(e.type) && !e.has(od::flag::has_low) && !e.has(od::flag::has_high) &&
+      !e.has(od::flag::scaled)) {
     f |= slot_flag::any_bits;
   }
   return f;
 }
 
 /// Where each entry's value starts in storage: offsets[i] for entry i in dictionary order,
-/// offsets[N] the total size; and flags[i], entry i's slot_flags. Computed once (at compile
-/// time for a generated dictionary), so a store finds a slot in O(1) after the dictionary's
-/// binary search (none by position) and tests access, kind and whether a value needs checking
-/// without reading the type tables.
+/// offsets[N] the total size. Computed once (at compile time for a generated dictionary), so a
+/// store finds a slot in O(1) after the dictionary's binary search (none by position).
 template <std::size_t N>
 struct store_layout {
   std::array<std::uint32_t, N + 1> offsets{};
-  std::array<std::uint8_t, N> flags{};
   [[nodiscard]] constexpr std::size_t storage_size() const noexcept { return offsets[N]; }
 };
 
@@ -171,7 +171,6 @@ template <std::size_t N>
   std::uint32_t at = 0;
   for (std::size_t i = 0; i < N; ++i) {
     l.offsets[i] = at;
-    l.flags[i] = slot_flags(dict.entries()[i]);
     at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
   }
   l.offsets[N] = at;
@@ -191,7 +190,7 @@ struct accept_writes {
 
 /// Stores the values of every entry of an od::dictionary in caller-owned bytes laid out by a
 /// store_layout: fixed-size values little-endian, byte strings (VISIBLE_STRING, OCTET_STRING,
-/// UNICODE_STRING, DOMAIN) with their current length and a capacity of `entry.size` bytes.
+/// UNICODE_STRING, DOMAIN) with their current length and a capacity of `entry.capacity()` bytes.
 ///
 /// Writes (by SDO now, by RPDO through the same `write`) are checked — access type, length
 /// (exact for fixed-size types, at most the capacity for byte strings), limits, and the rules
@@ -202,17 +201,27 @@ struct accept_writes {
 /// parts (larger than the SDO server's buffer) is collected in the caller-owned `staging` area
 /// and copied when its last part has passed the checks and the hook; without a staging area (or
 /// with one too small) such a value is refused with 0x05040005 (out of memory).
-template <class OnWrite = accept_writes>
+///
+/// `Kinds`: the kinds of values the store serves (od/value_kinds.hpp; a generated dictionary's
+/// `kinds`). Only their checks and conversions are compiled: a store of an integer-only
+/// dictionary links no floating point and no 64-bit division. A dictionary with a kind `Kinds`
+/// lacks does not fit (as a layout of another dictionary does not): every access answers
+/// general_error, init_defaults buffer_too_small.
+template <class OnWrite = accept_writes, od::value_kinds Kinds = od::all_kinds>
 class dictionary_store {
 public:
   template <std::size_t N>
   constexpr dictionary_store(od::dictionary dict, const store_layout<N> &layout,
                              std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
                              OnWrite on_write = {}) noexcept
-      : dict_(dict), offsets_(layout.offsets), flags_(layout.flags), storage_(storage),
-        staging_(staging), on_write_(on_write),
+      : dict_(dict), offsets_(layout.offsets), storage_(storage), staging_(staging),
+        on_write_(on_write),
         fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
-              flags_agree(dict, layout.flags)) {}
+              slots_agree(dict, layout.offsets) &&
+              od::covers(Kinds, od::kinds_of(dict.entries()))) {}
+
+  /// The kinds of values this store serves.
+  static constexpr od::value_kinds kinds = Kinds;
 
   /// Bytes of storage `dict` needs.
   [[nodiscard]] static constexpr std::size_t storage_size(od::dictionary dict) noexcept {
@@ -269,7 +278,7 @@ public:
     staged_address_ = a;
     if (!size) return sdo::abort_code::none;
     if (od::is_byte_string(l.e->type)) {
-      return *size > l.e->size ? sdo::abort_code::length_too_high : sdo::abort_code::none;
+      return *size > l.e->capacity() ? sdo::abort_code::length_too_high : sdo::abort_code::none;
     }
     if (*size > l.e->width()) return sdo::abort_code::length_too_high;
     if (*size < l.e->width()) return sdo::abort_code::length_too_low;
@@ -325,7 +334,7 @@ public:
   [[nodiscard]] constexpr plain_slot plain_at(std::size_t at) const noexcept {
     plain_slot p;
     if (at >= dict_.size() || !layout_fits()) return p;
-    const std::uint8_t f = flags_[at];
+    const std::uint8_t f = slot_flags(dict_.entries()[at]);
     if ((f & slot_flag::byte_string) != 0U) return p;
     p.offset = offsets_[at];
     p.size = static_cast<std::uint8_t>(offsets_[at + 1U] - offsets_[at]); // width(): 1..8
@@ -364,6 +373,7 @@ private:
     const od::entry *e = nullptr;
     std::span<std::uint8_t> slot{};
     std::uint8_t flags = 0; ///< slot_flag bits
+    std::size_t at = 0;     ///< position in the dictionary
   };
 
   [[nodiscard]] constexpr sdo::abort_code read_located(const located &l, std::size_t offset,
@@ -391,8 +401,7 @@ private:
       staged_address_ = a;
     }
     if (staged_address_ != a || offset != staged_) return sdo::abort_code::general_error;
-    if ((l.flags & slot_flag::byte_string) != 0U ? offset + part.size() > l.e->size
-                                                 : offset + part.size() > l.e->width()) {
+    if (offset + part.size() > l.e->width()) { // a byte string's width() is its capacity
       return sdo::abort_code::length_too_high;
     }
     if (offset + part.size() > staging_.size()) return sdo::abort_code::out_of_memory;
@@ -406,41 +415,79 @@ private:
 
   [[nodiscard]] constexpr bool layout_fits() const noexcept { return fits_; }
 
-  /// The layout's flags are the entries' slot_flags (make_layout's); a layout built by hand
-  /// with other flags (or none) does not fit: every access answers general_error and
-  /// init_defaults buffer_too_small, rather than a read-only or unchecked object.
+  /// The layout's slots are the entries' (make_layout's): a layout of another dictionary, or
+  /// one built by hand with other sizes, does not fit — every access answers general_error and
+  /// init_defaults buffer_too_small, rather than a slot too small for its value.
   template <std::size_t N>
   [[nodiscard]] static constexpr bool
-  flags_agree(od::dictionary dict, const std::array<std::uint8_t, N> &flags) noexcept {
-    if (dict.size() != N) return false;
-    for (std::size_t i = 0; i < N; ++i) {
-      if (flags[i] != slot_flags(dict.entries()[i])) return false;
+  slots_agree(od::dictionary dict, const std::array<std::uint32_t, N> &offsets) noexcept {
+    if (dict.size() + 1U != N) return false;
+    for (std::size_t i = 0; i + 1U < N; ++i) {
+      if (offsets[i + 1U] < offsets[i] ||
+          offsets[i + 1U] - offsets[i] != slot_size(dict.entries()[i])) {
+        return false;
+      }
     }
     return true;
   }
+
+  /// The scale of the entry at position i (the identity without a scale table).
+  [[nodiscard]] constexpr const scaling::linear &scale_at(std::size_t i) const noexcept {
+    return i < dict_.scales().size() ? dict_.scales()[i] : identity_;
+  }
+  static constexpr scaling::linear identity_{};
 
   /// Entry i's default for node_ into its slot; false when a default text had to be cut.
   constexpr bool fill_default(std::size_t i) noexcept {
     const od::entry &e = dict_.entries()[i];
     auto slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
-    for (auto &b : slot) b = 0;
+    std::fill(slot.begin(), slot.end(), std::uint8_t{0});
     if (od::is_byte_string(e.type)) {
       if (slot.empty()) return true;
-      std::size_t n = e.default_text.size();
-      const bool fits = n <= e.size;
-      if (!fits) n = e.size;
+      const od::text t = e.default_text();
+      const std::uint32_t capacity = e.capacity();
+      std::size_t n = t.size();
+      const bool fits = n <= capacity;
+      if (!fits) n = capacity;
       for (std::size_t k = 0; k < n; ++k) {
-        slot[length_prefix + k] = static_cast<std::uint8_t>(e.default_text[k]);
+        slot[length_prefix + k] = static_cast<std::uint8_t>(t[k]);
       }
       set_length(slot, n);
       return fits;
     }
-    if (auto d = e.default_for(node_)) {
-      // an out-of-limit default stays zero; a scaled entry's limits need its descriptor
-      if (auto desc = dict_.describe(e)) {
-        (void)od::encode(desc.value(), d.value(), slot, byte_order::little, node_);
+    if (!e.has(od::flag::has_default) || slot.empty()) return true;
+    // an out-of-limit default, or one that does not fit the field for this node, stays zero
+    if (e.has(od::flag::default_number)) {
+      if constexpr (Kinds.numbers) {
+        if (auto d = e.default_for(node_)) {
+          (void)od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, d.value(), slot,
+                                   byte_order::little, node_);
+        }
       }
+      return true;
     }
+    // in the entry's own width: the value's bytes as CANopen sends them
+    const std::size_t w = slot.size();
+    std::uint64_t v = load_le(e.extra + e.default_at(), w);
+    if (e.has(od::flag::default_nodeid) && !plus_node(e, w, v)) return true;
+    store_le(slot.data(), v, w);
+    if (od::check_value<Kinds>(e, scale_at(i), slot, node_) != od::value_check::ok) {
+      std::fill(slot.begin(), slot.end(), std::uint8_t{0});
+    }
+    return true;
+  }
+
+  /// A node-ID-relative default: node_ added to the `w`-byte integer `v`. False when the entry
+  /// is no integer or the sum does not fit its field.
+  [[nodiscard]] constexpr bool plus_node(const od::entry &e, std::size_t w,
+                                         std::uint64_t &v) const noexcept {
+    if (od::is_signed_integer(e.type)) {
+      const std::uint64_t sign = std::uint64_t{1} << (8U * w - 1U);
+      if (static_cast<std::int64_t>((v ^ sign) - sign) > signed_max(w) - node_) return false;
+    } else if (!od::is_unsigned_integer(e.type) || v > unsigned_max(w) - node_) {
+      return false;
+    }
+    v += node_; // two's complement: the low w bytes are the sum
     return true;
   }
 
@@ -467,18 +514,18 @@ private:
       return l;
     }
     l.slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
-    l.flags = flags_[i];
+    l.flags = slot_flags(*l.e);
+    l.at = i;
     if (l.slot.empty()) l.code = sdo::abort_code::unsupported_access; // a byte string without size
     return l;
   }
 
   [[nodiscard]] static constexpr std::size_t
   length_of(std::span<const std::uint8_t> slot) noexcept {
-    return static_cast<std::size_t>(
-        load_unsigned(slot, length_prefix, byte_order::little).value_or(0));
+    return static_cast<std::size_t>(load_le(slot.data(), length_prefix));
   }
   static constexpr void set_length(std::span<std::uint8_t> slot, std::size_t n) noexcept {
-    (void)store_unsigned(slot, length_prefix, n, byte_order::little);
+    store_le(slot.data(), n, length_prefix);
   }
   [[nodiscard]] static constexpr std::span<const std::uint8_t> current(const located &l) noexcept {
     if ((l.flags & slot_flag::byte_string) == 0U) return l.slot;
@@ -492,7 +539,8 @@ private:
   store(const located &l, std::span<const std::uint8_t> data, bool ask_hook) noexcept {
     const od::entry &e = *l.e;
     if ((l.flags & slot_flag::byte_string) != 0U) {
-      if (data.size() > e.size) return sdo::abort_code::length_too_high;
+      const std::uint32_t capacity = e.capacity();
+      if (data.size() > capacity) return sdo::abort_code::length_too_high;
       auto v = od::decode_bytes(e, data);
       if (!v) {
         return v.error() == errc::too_long ? sdo::abort_code::length_too_high
@@ -507,19 +555,18 @@ private:
       const auto out = l.slot.subspan(length_prefix);
       std::copy(value.begin(), value.end(), out.begin());
       std::fill(out.begin() + static_cast<std::ptrdiff_t>(value.size()),
-                out.begin() + static_cast<std::ptrdiff_t>(e.size), std::uint8_t{0});
+                out.begin() + static_cast<std::ptrdiff_t>(capacity), std::uint8_t{0});
       set_length(l.slot, value.size());
       return sdo::abort_code::none;
     }
     if (data.size() > l.slot.size()) return sdo::abort_code::length_too_high;
     if (data.size() < l.slot.size()) return sdo::abort_code::length_too_low;
-    if ((l.flags & slot_flag::any_bits) == 0U) { // od::decode cannot refuse the others' bytes
-      auto desc = dict_.describe(e);             // a scaled entry's limits need its scale
-      if (!desc) return sdo::abort_code::general_error;
-      auto v = od::decode(desc.value(), data, byte_order::little, od::limits::check, node_);
-      if (!v) {
-        if (v.error() != errc::out_of_range) return sdo::abort_code::invalid_value;
-        return out_of_range_code(e, data, node_);
+    if ((l.flags & slot_flag::any_bits) == 0U) { // every bit pattern of the others is a value
+      switch (od::check_value<Kinds>(e, scale_at(l.at), data, node_)) {
+      case od::value_check::ok: break;
+      case od::value_check::too_low: return sdo::abort_code::value_too_low;
+      case od::value_check::too_high: return sdo::abort_code::value_too_high;
+      case od::value_check::invalid: return sdo::abort_code::invalid_value;
       }
     }
     if (ask_hook) {
@@ -529,27 +576,8 @@ private:
     return sdo::abort_code::none;
   }
 
-  [[nodiscard]] static constexpr sdo::abort_code
-  out_of_range_code(const od::entry &e, std::span<const std::uint8_t> data,
-                    std::uint8_t node) noexcept {
-    if (e.type == od::data_type::boolean || e.has(od::flag::scaled)) {
-      return sdo::abort_code::invalid_value;
-    }
-    auto raw = od::decode(e, data, byte_order::little, od::limits::ignore);
-    if (!raw) return sdo::abort_code::invalid_value;
-    auto v = raw.value().to_decimal();
-    auto hi = od::detail::checked_limit(e, true, node);
-    auto hd = hi ? hi.value().to_decimal() : result<decimal>{errc::unknown_object};
-    if (v && hd && compare(v.value(), hd.value()) > 0) return sdo::abort_code::value_too_high;
-    auto lo = od::detail::checked_limit(e, false, node);
-    auto ld = lo ? lo.value().to_decimal() : result<decimal>{errc::unknown_object};
-    if (v && ld && compare(v.value(), ld.value()) < 0) return sdo::abort_code::value_too_low;
-    return sdo::abort_code::invalid_value;
-  }
-
   od::dictionary dict_;
   std::span<const std::uint32_t> offsets_;
-  std::span<const std::uint8_t> flags_;
   std::span<std::uint8_t> storage_;
   std::span<std::uint8_t> staging_;
   OnWrite on_write_;

@@ -41,6 +41,24 @@ namespace detail {
   return detail::width_mask(width);
 }
 
+/// The `n` bytes (0..8) at `p` as a little-endian unsigned integer, without checks: for
+/// callers that know their bytes are there (a slot of a known width, a dictionary's packed
+/// columns). `Byte` is std::uint8_t or char (a string literal's bytes).
+template <class Byte>
+requires(sizeof(Byte) == 1) [[nodiscard]] constexpr std::uint64_t
+    load_le(const Byte *p, std::size_t n) noexcept {
+  std::uint64_t v = 0;
+  for (std::size_t i = n; i > 0U; --i) v = (v << 8U) | static_cast<std::uint8_t>(p[i - 1U]);
+  return v;
+}
+/// The low `n` bytes (0..8) of `v` to `p`, little-endian, without checks (as load_le).
+template <class Byte>
+requires(sizeof(Byte) == 1) constexpr void store_le(Byte *p, std::uint64_t v,
+                                                    std::size_t n) noexcept {
+  for (std::size_t i = 0; i < n; ++i)
+    p[i] = static_cast<Byte>(static_cast<std::uint8_t>(v >> (8U * i)));
+}
+
 // GCC 12 at -O2/-O3 reports -Warray-bounds / -Wstringop-overflow inside the loops below
 // for paths its jump threading invents after inlining (a constant width larger than a constant
 // span whose size check has already returned). Every access is preceded by an explicit size

@@ -26,6 +26,7 @@
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/number.hpp>
 #include <fieldcodec/od/object.hpp>
+#include <fieldcodec/od/value_kinds.hpp>
 
 #include <bit>
 #include <concepts>
@@ -120,7 +121,9 @@ struct wide_int {
 /// od::descriptor).
 [[nodiscard]] constexpr status check_int_limits(const entry &e, maybe_scale scale, wide_int v,
                                                 std::uint8_t node) noexcept {
-  if (e.has(flag::scaled) && !scale.known && (e.low || e.high)) return errc::invalid_argument;
+  if (e.has(flag::scaled) && !scale.known && (e.has(flag::has_low) || e.has(flag::has_high))) {
+    return errc::invalid_argument;
+  }
   auto lo = raw_limit(e, scale, checked_limit(e, false, node));
   auto hi = raw_limit(e, scale, checked_limit(e, true, node));
   if (e.has(flag::scaled) && scale.known && scale.p->scale.mantissa < 0) {
@@ -569,7 +572,9 @@ decode(const object &o, std::uint8_t sub, std::span<const std::uint8_t> in,
                                                          std::span<const std::uint8_t> value,
                                                          std::span<std::uint8_t> out) noexcept {
   if (!is_byte_string(e.type)) return errc::type_mismatch;
-  if (e.size != 0U && value.size() > e.size) return errc::too_long;
+  if (const std::uint32_t cap = e.capacity(); cap != 0U && value.size() > cap) {
+    return errc::too_long;
+  }
   if (e.type == data_type::unicode_string && value.size() % 2U != 0U) return errc::bad_length;
   if (e.type == data_type::visible_string) {
     for (const std::uint8_t c : value) {
@@ -587,7 +592,7 @@ decode(const object &o, std::uint8_t sub, std::span<const std::uint8_t> in,
 [[nodiscard]] constexpr result<std::span<const std::uint8_t>>
 decode_bytes(const entry &e, std::span<const std::uint8_t> in) noexcept {
   if (!is_byte_string(e.type)) return errc::type_mismatch;
-  if (e.size != 0U && in.size() > e.size) return errc::too_long;
+  if (const std::uint32_t cap = e.capacity(); cap != 0U && in.size() > cap) return errc::too_long;
   if (e.type == data_type::unicode_string && in.size() % 2U != 0U) return errc::bad_length;
   if (e.type == data_type::visible_string) {
     std::size_t n = in.size();
@@ -598,6 +603,149 @@ decode_bytes(const entry &e, std::span<const std::uint8_t> in) noexcept {
     }
   }
   return in;
+}
+
+// --- checking a stored value -------------------------------------------------------------------
+
+/// What od::check_value says of a value.
+enum class value_check : std::uint8_t {
+  ok,       ///< a value of the type, within the limits
+  invalid,  ///< no value of the type (BOOLEAN other than 0/1, NaN, TIME's reserved bits), a
+            ///< scaled entry's value outside its limits, or a kind the code was not made for
+  too_low,  ///< below the low limit
+  too_high, ///< above the high limit
+};
+
+namespace detail {
+
+/// check_value for every kind, through decode; a value outside the limits is compared with
+/// them to say which end it passed: an integer with the raw limits decode used, a REAL as a
+/// double (a scaled entry's: invalid, its ends are engineering units).
+[[nodiscard]] constexpr value_check check_any(const entry &e, const scaling::linear &scale,
+                                              std::span<const std::uint8_t> in,
+                                              std::uint8_t node) noexcept {
+  const maybe_scale s{&scale, true};
+  auto v = decode(e, s, in, byte_order::little, limits::check, node);
+  if (v) return value_check::ok;
+  if (v.error() != errc::out_of_range || e.type == data_type::boolean || e.has(flag::scaled) ||
+      is_time(e.type)) {
+    return value_check::invalid;
+  }
+  auto raw = decode(e, s, in, byte_order::little, limits::ignore, node);
+  if (!raw) return value_check::invalid;
+  if (is_real(e.type)) {
+    const double d = raw.value().to_double();
+    if (auto hi = checked_limit(e, true, node); hi && d > hi.value().to_double()) {
+      return value_check::too_high;
+    }
+    if (auto lo = checked_limit(e, false, node); lo && d < lo.value().to_double()) {
+      return value_check::too_low;
+    }
+    return value_check::invalid;
+  }
+  auto x = to_wide(raw.value());
+  if (!x) return value_check::invalid;
+  if (auto hi = raw_limit(e, s, checked_limit(e, true, node))) {
+    if (compare(x.value(), hi.value()) > 0) return value_check::too_high;
+  }
+  if (auto lo = raw_limit(e, s, checked_limit(e, false, node))) {
+    if (compare(x.value(), lo.value()) < 0) return value_check::too_low;
+  }
+  return value_check::invalid;
+}
+
+/// An integer entry's value against limits packed in its own width: W-bit integer comparisons
+/// (W = 32 unless the code serves wide integers). Values are compared as unsigned W-bit keys:
+/// a signed value sign-extended with W's sign bit flipped, which orders like the values.
+template <value_kinds K>
+[[nodiscard]] constexpr value_check check_in_width(const entry &e, std::span<const std::uint8_t> in,
+                                                   std::uint8_t node) noexcept {
+  using W = std::conditional_t<K.wide, std::uint64_t, std::uint32_t>;
+  const std::size_t w = in.size();
+  if (w > sizeof(W)) return value_check::invalid;
+  const bool is_signed = is_signed_integer(e.type);
+  const auto key = [&](std::uint64_t raw) {
+    auto x = static_cast<W>(raw);
+    if (is_signed) {
+      const W sign = W{1} << (8U * w - 1U);
+      x = static_cast<W>(static_cast<W>((x ^ sign) - sign) ^ (W{1} << (8U * sizeof(W) - 1U)));
+    }
+    return x;
+  };
+  const W v = key(load_le(in.data(), w));
+  const char *p = e.extra + e.limits_at();
+  const bool has_low = e.has(flag::has_low);
+  // High first, as the abort code has always been chosen (a value below a low limit that lies
+  // above the high one is too high).
+  if (e.has(flag::has_high)) {
+    W h = key(load_le(p + (has_low ? w : 0U), w));
+    bool checked = true;
+    if (e.has(flag::high_nodeid)) {
+      if constexpr (K.node_limits) {
+        const W n = limit_node(true, node);
+        // past W: beyond every value of a 32-bit field (no constraint), or beyond 64 bits,
+        // which plus_node refuses (the end is not checked)
+        checked = static_cast<W>(h + n) >= h;
+        h = static_cast<W>(h + n);
+      } else {
+        return value_check::invalid;
+      }
+    }
+    if (checked && v > h) return value_check::too_high;
+  }
+  if (has_low) {
+    W l = key(load_le(p, w));
+    if (e.has(flag::low_nodeid)) {
+      if constexpr (K.node_limits) {
+        const W n = limit_node(false, node);
+        if (static_cast<W>(l + n) < l) {
+          // past W: above every value of a 32-bit field, or not checked (64 bits, as above)
+          if constexpr (K.wide) return value_check::ok;
+          return value_check::too_low;
+        }
+        l = static_cast<W>(l + n);
+      } else {
+        return value_check::invalid;
+      }
+    }
+    if (v < l) return value_check::too_low;
+  }
+  return value_check::ok;
+}
+
+} // namespace detail
+
+/// Checks `bytes`, exactly width() bytes of a value of `e` as CANopen sends it (little-endian),
+/// for node `node` (node-ID-relative limits; any_node: the widest range): the type's rules and
+/// the limits, as decode with limits::check does, and which end a value outside the limits
+/// passed. `scale` is the entry's (identity when it is not scaled). `K`: the kinds of values the
+/// code serves (od/value_kinds.hpp): only their paths are compiled, and a value of a kind `K`
+/// lacks is `invalid`, never unchecked. An integer entry whose limits fit its width (the usual
+/// case) is checked with integer comparisons in 32 bits (64 with K.wide); a byte string, a wrong
+/// number of bytes: `invalid` (byte strings are decode_bytes' business).
+template <value_kinds K = all_kinds>
+[[nodiscard]] constexpr value_check check_value(const entry &e, const scaling::linear &scale,
+                                                std::span<const std::uint8_t> bytes,
+                                                std::uint8_t node = any_node) noexcept {
+  const std::size_t w = fixed_size(e.type);
+  if (w == 0U || bytes.size() != w) return value_check::invalid;
+  if (e.type == data_type::boolean) return bytes[0] > 1U ? value_check::invalid : value_check::ok;
+  const bool limited = e.has(flag::has_low) || e.has(flag::has_high);
+  if (is_real(e.type) || is_time(e.type) || e.has(flag::scaled) ||
+      (limited && e.has(flag::limits_number))) {
+    if constexpr (K.real || K.time || K.scaled || K.numbers) {
+      if (!covers(K, kinds_of(e))) return value_check::invalid;
+      return detail::check_any(e, scale, bytes, node);
+    } else {
+      return value_check::invalid;
+    }
+  }
+  if (!limited) return value_check::ok; // an integer: every bit pattern is a value
+  if constexpr (K.limits) {
+    return detail::check_in_width<K>(e, bytes, node);
+  } else {
+    return value_check::invalid;
+  }
 }
 
 } // namespace fieldcodec::od
