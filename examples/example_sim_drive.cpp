@@ -18,8 +18,8 @@
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
+#include <fieldcodec/host/clock.hpp>
 
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <deque>
@@ -103,12 +103,8 @@ std::optional<co::can_frame> parse_frame(std::string_view line) {
 #if defined(__unix__)
 int run_stdio(std::uint8_t node_id) {
   sim::drive drive(node_id);
-  const auto t0 = std::chrono::steady_clock::now();
-  auto now = [&] {
-    return static_cast<std::uint32_t>(
-        std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)
-            .count());
-  };
+  const fieldcodec::host::steady_ms clock;
+  auto now = [&clock] { return clock.now(); };
   auto emit = [](const sim::drive::step &s) {
     for (const co::can_frame &f : s.send) std::printf("%s\n", format_frame(f).c_str());
     std::fflush(stdout);

@@ -37,8 +37,9 @@ def main() -> int:
     exe = sys.argv[1]
     root = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else
                            os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    shared = os.environ.get("FIELDCODEC_SHARED_DIR", os.path.join(root, "..", "shared"))
     peer = os.environ.get("FIELDCODEC_PYTHON_CANOPEN",
-                          os.path.join(root, "..", "shared", "peers", "python-canopen"))
+                          os.path.join(shared, "peers", "python-canopen"))
     if not os.path.isdir(os.path.join(peer, "canopen")):
         print(f"SKIPPED: python canopen peer not found at {peer}")
         return SKIP

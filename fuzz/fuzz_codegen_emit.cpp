@@ -45,6 +45,8 @@
 #include "../codegen/src/eds_reader.cpp"
 #include "../codegen/src/emit_header.cpp"
 
+#include <fieldcodec/core/utf8.hpp>
+
 #include <bit>
 #include <charconv>
 #include <cstddef>
@@ -76,42 +78,7 @@ bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9');
 bool is_octal(char c) { return c >= '0' && c <= '7'; }
 
 /// Whether `s` is valid UTF-8 (no overlongs, no surrogates, at most U+10FFFF).
-bool valid_utf8(std::string_view s) {
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    std::uint32_t cp = 0;
-    if (c < 0x80U) {
-      ++i;
-      continue;
-    }
-    if (c >= 0xC2U && c <= 0xDFU) {
-      n = 1;
-      cp = c & 0x1FU;
-    } else if (c >= 0xE0U && c <= 0xEFU) {
-      n = 2;
-      cp = c & 0x0FU;
-    } else if (c >= 0xF0U && c <= 0xF4U) {
-      n = 3;
-      cp = c & 0x07U;
-    } else {
-      return false;
-    }
-    if (i + n >= s.size()) return false;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto d = static_cast<unsigned char>(s[i + k]);
-      if ((d & 0xC0U) != 0x80U) return false;
-      cp = (cp << 6U) | (d & 0x3FU);
-    }
-    if ((n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) || cp > 0x10FFFFU ||
-        (cp >= 0xD800U && cp <= 0xDFFFU)) {
-      return false;
-    }
-    i += n + 1U;
-  }
-  return true;
-}
+bool valid_utf8(std::string_view s) { return fieldcodec::utf8::valid(s); }
 
 /// The tokens of the header outside comments and preprocessor lines; checks the lexical
 /// properties on the way.

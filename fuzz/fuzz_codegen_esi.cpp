@@ -7,7 +7,8 @@
 // * read_esi returns a dictionary exactly when it reported no error; every diagnostic has a
 //   line >= 0 and a column >= 0.
 // * What reads is written as an ESI, which reads back without errors to the same entries
-//   (address, object code, data type, access, PDO mapping, name, capacity, limits, default, the
+//   (address, object code (an ARRAY the writer reports as written as a record comes back as a
+//   RECORD), data type, access, PDO mapping, name, capacity, limits, default, the
 //   bytes of a byte string's default) and objects, and whose second writing is the same text.
 // * The PDO layouts header of what reads is written (no crash, no diagnostic error).
 // * When an SII image is written from what reads, its report has no error.
@@ -35,10 +36,15 @@ namespace gen = fieldcodec::gen;
 
 namespace {
 
-bool same_entry(const gen::entry &a, const gen::entry &b) {
-  return a.index == b.index && a.sub == b.sub && a.object == b.object &&
-         a.type_code == b.type_code && a.type == b.type && a.access == b.access && a.pdo == b.pdo &&
-         a.name == b.name && a.size == b.size && a.low == b.low && a.high == b.high &&
+// `b` is `a` written and read back; an ARRAY that ETG's array form cannot hold comes back as a
+// RECORD, which the writer reports (`records_reported`).
+bool same_entry(const gen::entry &a, const gen::entry &b, bool records_reported) {
+  const bool same_object =
+      a.object == b.object || (records_reported && a.object == fieldcodec::od::object_code::array &&
+                               b.object == fieldcodec::od::object_code::record);
+  return a.index == b.index && a.sub == b.sub && same_object && a.type_code == b.type_code &&
+         a.type == b.type && a.access == b.access && a.pdo == b.pdo && a.name == b.name &&
+         a.size == b.size && a.low == b.low && a.high == b.high &&
          a.default_value == b.default_value && a.default_text == b.default_text;
 }
 
@@ -59,8 +65,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   auto back = gen::read_esi(x1, "w1.xml", diag2);
   FUZZ_CHECK(back.has_value());
   FUZZ_CHECK(back->entries.size() == d->entries.size());
+  bool records_reported = false;
+  for (const auto &x : lost.all()) {
+    records_reported =
+        records_reported || x.message.find("written as records") != std::string::npos;
+  }
   for (std::size_t i = 0; i < d->entries.size(); ++i) {
-    FUZZ_CHECK(same_entry(d->entries[i], back->entries[i]));
+    FUZZ_CHECK(same_entry(d->entries[i], back->entries[i], records_reported));
   }
   FUZZ_CHECK(back->objects.size() == d->objects.size());
   back->source_name = "fuzz.xml";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "check.hpp"
+#include "input.hpp"
 
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
@@ -21,24 +22,8 @@ namespace fuzz_sdo {
 namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 
-/// Reads bytes from the input, zero when exhausted.
-struct reader {
-  std::span<const std::uint8_t> in;
-  std::uint8_t byte() {
-    if (in.empty()) return 0;
-    const std::uint8_t b = in[0];
-    in = in.subspan(1);
-    return b;
-  }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(byte() | (byte() << 8U)); }
-  [[nodiscard]] bool empty() const { return in.empty(); }
-  /// The next `n` bytes (zeros past the end).
-  std::vector<std::uint8_t> bytes(std::size_t n) {
-    std::vector<std::uint8_t> v(n);
-    for (auto &b : v) b = byte();
-    return v;
-  }
-};
+/// Reads bytes from the input, zero when exhausted (fuzz/input.hpp).
+using reader = fuzz_input::reader;
 
 /// Two objects; 0x2000:1 holds up to `capacity` bytes, 0x2001:0 exactly 4. Parts are staged
 /// and the value changes only with the last part.

@@ -1,5 +1,9 @@
 #!/usr/bin/env bash
-# The test suite on a big-endian host: s390x, cross-compiled and run under qemu-user.
+# The test suite on a big-endian host: s390x, cross-compiled and run under qemu-user. Not the
+# benchmarks (nothing runs them here) nor the per-header checks (FIELDCODEC_HEADER_CHECK=OFF:
+# self-containment does not depend on the target; .ci/run's g++ build compiles them, and the
+# headers with byte-order branches - core/bytes.hpp, canopen/sdo_transfer.hpp, compax/nx.hpp -
+# are compiled and run here by their tests).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 .ci/deps base cross-s390x
@@ -12,9 +16,12 @@ build=build-ci-s390x
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_TOOLCHAIN_FILE=cmake/toolchains/s390x-linux-gnu.cmake \
   -DDOCTEST_INCLUDE_DIR="$inc" \
-  -DFIELDCODEC_BUILD_CODEGEN=OFF -DFIELDCODEC_BUILD_EXAMPLES=OFF >/dev/null
+  -DFIELDCODEC_BUILD_CODEGEN=OFF -DFIELDCODEC_BUILD_EXAMPLES=OFF -DFIELDCODEC_BUILD_BENCH=OFF \
+  -DFIELDCODEC_HEADER_CHECK=OFF -DFIELDCODEC_WERROR=ON >/dev/null
 cmake --build "$build" -j"$(nproc)"
 # Prove the binaries really are big-endian s390x before trusting a green run.
 file_out="$(od -An -tx1 -j5 -N1 "$build"/tests/test_core | tr -d ' ')"
 if [ "$file_out" != "02" ]; then echo "test_core is not a big-endian ELF" >&2; exit 1; fi
-ctest --test-dir "$build" -j"$(nproc)" --output-on-failure
+junit="$(cd "$build" && pwd)/ctest-junit.xml"
+ctest --test-dir "$build" -j"$(nproc)" --output-on-failure --output-junit "$junit"
+python3 tests/skip_report.py "$junit"

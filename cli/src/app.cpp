@@ -9,8 +9,11 @@
 #include "values.hpp"
 
 #include <fieldcodec/canopen/nmt.hpp>
+#include <fieldcodec/canopen/node/device.hpp>
+#include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/network.hpp>
 #include <fieldcodec/host/pacontrol_link.hpp>
 #include <fieldcodec/host/sdo.hpp>
 #include <fieldcodec/host/slcan.hpp>
@@ -19,11 +22,13 @@
 #include <fieldcodec/pacontrol/codes.hpp>
 #include <fieldcodec/pacontrol/command.hpp>
 
+#include <poll.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <iostream>
 #include <istream>
 #include <map>
 #include <memory>
@@ -49,11 +54,13 @@ commands:
   sdo write       write an object of a node (SDO download)
   nmt             send an NMT command
   dump            read every readable object of a node into a DCF
+  serve           simulate a node from an EDS/DCF (values set from standard input)
   pacontrol send  send a command to a PA-CONTROL over RS232 and show the answer
 
-'fieldcodec COMMAND --help' describes a command. Exit status: 0 success, 1 the device
-refused or did not answer, 2 usage error, 3 a file, interface or port failed, 4 decode input
-that could not be decoded, 5 a dictionary could not be read.
+'fieldcodec help COMMAND' (or 'fieldcodec COMMAND --help') describes a command.
+Exit status: 0 success, 1 the device refused or did not answer, 2 usage error, 3 a
+file, interface or port failed, 4 decode input that could not be decoded, 5 a
+dictionary could not be read.
 )";
 
 constexpr const char *transport_help = R"(
@@ -68,25 +75,33 @@ transport (one of):
 
 constexpr const char *decode_help = R"(usage: fieldcodec decode [FILE] [OPTIONS]
 
-Reads a candump log (FILE, or standard input when FILE is '-' or missing) and
-writes one line per frame: NMT, SYNC, TIME, EMCY, PDO, heartbeat, node guarding,
-and one line per SDO transfer (expedited, segmented and block transfers are
-reassembled; aborts are spelled out). With a dictionary, objects are named and
-values shown in engineering units; PDOs are unpacked by the mapping the
-dictionary or the log's own SDO writes define.
+Reads what candump writes (FILE, or standard input when FILE is '-' or missing)
+and writes one line per frame: NMT, SYNC, TIME, EMCY, PDO, heartbeat, node
+guarding, LSS, and one line per SDO transfer (expedited, segmented and block
+transfers are reassembled; aborts are spelled out). With a dictionary, objects
+are named and values shown in engineering units; PDOs are unpacked by the mapping
+the dictionary or the log's own SDO writes define.
 
-Log lines: (1700000000.123456) can0 605#2B00180564000000, or 605#2B001805...,
-705#R; blank lines and lines starting with '#' are skipped.
+Input lines, as candump prints them:
+  (1700000000.123456) can0 605#2B00180564000000     candump -l / -L (log)
+    can0  605   [8]  2B 00 18 05 64 00 00 00          candump can0 (also -ta -tA
+                                                      -td -tz, -x, -a, -e)
+  605#2B00180564000000, 705#R                         the compact notation
+Blank lines and lines starting with '#' are skipped.
 
 options:
   --dict [NODE=]FILE  object dictionary (.eds, .dcf, .csv) of node NODE (1..127),
                       or of every node without its own when NODE= is left out
   --device NODE=KIND  device family of a node: generic, ds402, xenax, dpq
                       (default: from the dictionary)
+  --iface NAME        only frames of interface NAME (repeatable)
   --json              one JSON object per line instead of text
   --sdo-frames        also one line per SDO frame
   --pacontrol         the input is a PA-CONTROL RS232 capture instead
   --hex / --raw       the capture is hex text / raw bytes (default: detected)
+  --check-rule R      PA-CONTROL: which check rule a frame must follow:
+                      manual (default: requests body, acknowledgements body+ETX),
+                      either (both rules pass, the other one noted)
 
 exit status: 0, or 4 when some input could not be decoded, 3 unreadable file,
 5 unreadable dictionary.
@@ -110,13 +125,16 @@ constexpr const char *sdo_read_help =
 
 Reads one object of node NODE (1..127) with an SDO upload and prints it:
   1018h:01 Identity Object: Vendor Id = 0x0000012E
-INDEX and SUB are hex (1018:1, 0x1018:01, 1018h:01).
+INDEX and SUB are hex (1018:1, 0x1018:01, 1018h:01). A scaled value is shown in
+engineering units with its raw number: 6073h:00 Limit I_Force = 1500 mA (raw 150).
+'sdo write' takes back what this prints, in the same unit.
 
 options:
   --dict FILE         dictionary of the node: names, types, units, scales
   --type T            type without a dictionary: u8 u16 u32 u64 i8 i16 i32 i64
                       f32 f64 bool str hex (default: raw bytes)
-  --timeout MS        SDO timeout (default 1000)
+  --raw               the raw number of a scaled value, not engineering units
+  --timeout MS        SDO timeout, 1..3600000 (default 1000)
   --block             use block transfer
   --switch-threshold N  with --block: let the node answer with a normal upload for
                       objects of at most N bytes (0..127, default 0: never)
@@ -126,17 +144,23 @@ options:
 constexpr const char *sdo_write_help =
     R"(usage: fieldcodec sdo write NODE INDEX[:SUB] VALUE (--can IFACE | --slcan PORT) [OPTIONS]
 
-Writes VALUE to one object of node NODE with an SDO download. VALUE is read in the
-object's type: integers in decimal or 0x hex (in engineering units when the
-dictionary gives a scale), reals, text for strings, hex bytes for OCTET_STRING
-and DOMAIN.
+Writes VALUE to one object of node NODE with an SDO download and prints what it
+sent, as 'sdo read' prints it. VALUE is what 'sdo read' prints, in the same unit:
+numbers in engineering units when the dictionary scales the object (1500 or
+1500 mA; rounded half away from zero to a raw step), integers also as 0x hex when
+the object is not scaled, reals, text or "quoted text" for strings, hex bytes
+for OCTET_STRING and DOMAIN. A value outside the object's limits (those of node
+NODE), too long for its capacity or not of its type is refused before anything
+is sent (exit status 2).
 
 options:
-  --dict FILE         dictionary of the node (types, scales)
+  --dict FILE         dictionary of the node (types, limits, scales, units)
   --type T            type without a dictionary: u8 u16 u32 u64 i8 i16 i32 i64
                       f32 f64 bool str hex
-  --timeout MS        SDO timeout (default 1000)
+  --raw               VALUE is the raw number (decimal or 0x hex), not engineering units
+  --timeout MS        SDO timeout, 1..3600000 (default 1000)
   --block             use block transfer
+  --json              print a JSON object
 )";
 
 constexpr const char *nmt_help = R"(usage: fieldcodec nmt COMMAND NODE (--can IFACE | --slcan PORT)
@@ -159,6 +183,29 @@ options:
   --block             use block transfer
   --progress          show the progress line also when standard error is no terminal
   --quiet             no progress line
+)";
+
+constexpr const char *serve_help =
+    R"(usage: fieldcodec serve NODE --dict FILE (--can IFACE | --slcan PORT) [OPTIONS]
+
+Simulates node NODE (1..127) with the objects of FILE (EDS or DCF): boot-up,
+NMT, heartbeat (1017h), node guarding, SDO (expedited, segmented, block), PDOs,
+SYNC and EMCY as a CiA 301 device does, until interrupted (Ctrl-C) or after
+--duration seconds. The objects start with their DCF values or EDS defaults.
+
+Standard input sets values, one per line: INDEX[:SUB] VALUE, VALUE as 'sdo read'
+prints it (1500 mA, 0x000F, "text"; checked against the object's limits and
+capacity), or --raw numbers with 'raw INDEX[:SUB] VALUE'. 'INDEX[:SUB]' alone
+prints the value. Empty lines and lines starting with # are skipped.
+
+Standard output: one line per value set or asked for (as 'sdo read' prints it),
+'written: ' and that line for every value the network writes (SDO, RPDO), and
+'NMT: STATE' for every NMT state the node enters.
+
+options:
+  --duration S        stop after S seconds
+exit status: 0, 2 usage error or a refused input line (the node keeps
+running), 3 the interface or port failed, 5 the dictionary could not be read.
 )";
 
 constexpr const char *pacontrol_send_help =
@@ -253,6 +300,7 @@ struct context {
   std::ostream &out;
   std::ostream &err;
   std::string command; ///< "sdo read", for error lines
+  bool err_terminal = false;
   int fail(int code, const std::string &what) const {
     err << "fieldcodec: " << command << ": " << what << "\n";
     return code;
@@ -332,13 +380,18 @@ bool load_dictionaries(const options &o, const context &c,
       }
       spec = spec.substr(eq + 1U);
     }
+    if (dicts.count(node) != 0U) {
+      code = c.usage(node == 0U ? std::string("--dict FILE (for every node) given twice")
+                                : "--dict " + std::to_string(node) + "= given twice");
+      return false;
+    }
     std::string error;
-    auto d = node_dictionary::load(spec, node, error);
+    auto d = node_dictionary::load(spec, error);
     if (!d) {
       code = c.fail(exit_dictionary, error);
       return false;
     }
-    dicts.insert_or_assign(node, std::move(*d));
+    dicts.emplace(node, std::move(*d));
   }
   for (auto [it, end] = o.values.equal_range("--device"); it != end; ++it) {
     const std::string &spec = it->second;
@@ -369,10 +422,27 @@ void print_lines(const std::vector<decoded_line> &lines, bool json, std::ostream
 // ---------------------------------------------------------------------------------------------
 // decode
 
+std::string check_rule_error(const std::string &r) {
+  return "bad --check-rule " + r + " (manual, either, body, body+etx)";
+}
+
+/// --iface NAME (repeatable): only frames of these interfaces.
+struct interface_filter {
+  std::set<std::string> names;
+  explicit interface_filter(const options &o) {
+    for (auto [it, end] = o.values.equal_range("--iface"); it != end; ++it) {
+      names.insert(it->second);
+    }
+  }
+  [[nodiscard]] bool passes(const host::frame_record &r) const {
+    return names.empty() || names.count(std::string(r.iface.view())) != 0U;
+  }
+};
+
 int cmd_decode(const std::vector<std::string> &args, context c) {
   options o;
   std::string error;
-  if (!parse_options(args, 1, {"--dict", "--device"},
+  if (!parse_options(args, 1, {"--dict", "--device", "--iface", "--check-rule"},
                      {"--json", "--sdo-frames", "--pacontrol", "--hex", "--raw"}, o, error)) {
     return c.usage(error);
   }
@@ -400,7 +470,13 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     } else {
       bytes.assign(input.begin(), input.end());
     }
-    const auto lines = decode_pacontrol(bytes);
+    auto checks = default_decode_checks();
+    if (o.given("--check-rule")) {
+      const auto r = parse_check_rule(o.get("--check-rule"));
+      if (!r) return c.usage(check_rule_error(o.get("--check-rule")));
+      checks = *r;
+    }
+    const auto lines = decode_pacontrol(bytes, checks);
     print_lines(lines, json, c.out);
     for (const auto &l : lines) {
       problems = problems || l.function == "MALFORMED" || l.function == "NOISE" ||
@@ -409,7 +485,9 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
     }
     return problems ? exit_input : exit_ok;
   }
-  if (o.has("--hex") || o.has("--raw")) return c.usage("--hex and --raw go with --pacontrol");
+  if (o.has("--hex") || o.has("--raw") || o.given("--check-rule")) {
+    return c.usage("--hex, --raw and --check-rule go with --pacontrol");
+  }
   std::map<std::uint8_t, node_dictionary> dicts;
   std::map<std::uint8_t, device_family> families;
   int code = exit_ok;
@@ -417,18 +495,21 @@ int cmd_decode(const std::vector<std::string> &args, context c) {
   can_decoder dec(std::move(dicts), std::move(families), {o.has("--sdo-frames")});
   std::vector<decoded_line> lines;
   std::size_t n = 0;
-  // line by line, so that `candump -L can0 | fieldcodec decode` shows frames as they come
+  const interface_filter only(o);
+  // line by line, so that `candump can0 | fieldcodec decode` shows frames as they come
   std::string line;
   while (std::getline(in, line)) {
     ++n;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    const std::string_view raw = line;
+    std::string_view raw = line;
+    if (n == 1U && raw.substr(0, 3) == "\xEF\xBB\xBF") raw.remove_prefix(3); // UTF-8 BOM
     if (host::candump::is_blank_or_comment(raw)) continue;
-    auto r = host::candump::parse_line(raw);
-    if (!r) {
+    if (raw.substr(0, 9) == "DROPCOUNT") { // candump -d: frames the kernel dropped
+      dec.note(raw, n, lines);
+    } else if (auto r = host::candump::parse_line(raw); !r) {
       dec.malformed(raw, r.error(), n, lines);
       problems = true;
-    } else {
+    } else if (only.passes(r.value())) {
       dec.feed(r.value(), n, lines);
     }
     print_lines(lines, json, c.out);
@@ -519,15 +600,28 @@ struct sdo_target {
   std::uint8_t node = 0;
   od::address a{};
   std::optional<node_dictionary> dict;
+  std::optional<object_desc> typed; ///< the entry --type makes
   const object_desc *desc = nullptr;
+  std::string label; ///< "node 5, 6073h:00 Limit I_Force"
 };
+
+/// --timeout MS: 1 ms .. 1 hour (0 would time out before any answer could come).
+bool parse_timeout(const options &o, const context &c, std::uint64_t &ms, int &code) {
+  code = exit_ok;
+  if (!o.given("--timeout")) return true;
+  if (!parse_uint(o.get("--timeout"), 3600000, ms) || ms == 0U) {
+    code = c.usage("bad --timeout " + o.get("--timeout") + " (1..3600000 ms)");
+    return false;
+  }
+  return true;
+}
 
 int sdo_common(const std::vector<std::string> &args, context &c, bool write, options &o,
                sdo_target &t, host::sdo_options &so) {
   std::string error;
   if (!parse_options(
           args, 2, join({"--dict", "--type", "--timeout", "--switch-threshold"}, transport_values),
-          join({"--block", "--json"}, transport_flags), o, error)) {
+          join({"--block", "--json", "--raw"}, transport_flags), o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -544,10 +638,15 @@ int sdo_common(const std::vector<std::string> &args, context &c, bool write, opt
   if (!parse_address(o.positional[1], t.a)) {
     return c.usage("bad object '" + o.positional[1] + "' (INDEX[:SUB] in hex, e.g. 1018:1)");
   }
-  std::uint64_t timeout = 1000;
-  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
-    return c.usage("bad --timeout");
+  if (o.given("--dict") && o.given("--type")) {
+    return c.usage("--dict and --type both give the object's type: give one");
   }
+  if (o.values.count("--dict") > 1U || o.values.count("--type") > 1U) {
+    return c.usage(o.values.count("--dict") > 1U ? "--dict given twice" : "--type given twice");
+  }
+  std::uint64_t timeout = 1000;
+  int code = exit_ok;
+  if (!parse_timeout(o, c, timeout, code)) return code;
   so.timeout = std::chrono::milliseconds(timeout);
   so.block = o.has("--block");
   if (o.given("--switch-threshold")) {
@@ -556,16 +655,60 @@ int sdo_common(const std::vector<std::string> &args, context &c, bool write, opt
       return c.usage("bad --switch-threshold");
     so.block_options.switch_threshold = static_cast<std::uint8_t>(pst);
   }
+  t.label = "node " + std::to_string(t.node) + ", " + address_text(t.a);
+  if (o.given("--type")) {
+    t.typed = type_entry(o.get("--type"), t.a);
+    if (!t.typed) {
+      return c.usage("unknown type '" + o.get("--type") + "' (" + std::string(type_names) + ")");
+    }
+    t.desc = &*t.typed;
+  }
   if (o.given("--dict")) {
-    t.dict = node_dictionary::load(o.get("--dict"), t.node, error);
-    if (!t.dict) return c.fail(exit_dictionary, error);
+    auto loaded = node_dictionary::load(o.get("--dict"), error);
+    if (!loaded) return c.fail(exit_dictionary, error);
+    t.dict = loaded->for_node(t.node);
     t.desc = t.dict->find(t.a);
     if (t.desc == nullptr) {
-      return c.fail(exit_failed, "node " + std::to_string(t.node) + ", " + address_text(t.a) +
-                                     ": not in " + o.get("--dict"));
+      return c.fail(exit_failed, t.label + ": not in " + o.get("--dict"));
     }
+    t.label += " " + t.desc->name;
   }
   return exit_ok;
+}
+
+/// The line `sdo read` prints for a value (and `sdo write` for what it sent): with --json also
+/// the bytes ("bytes" that came, "sent" that went).
+std::string value_line(const sdo_target &t, const formatted_value &f, bool json,
+                       std::span<const std::uint8_t> bytes, bool sent) {
+  if (json) {
+    json_object j;
+    j.num("node", t.node).unum("index", t.a.index).unum("sub", t.a.sub);
+    if (t.dict && t.desc != nullptr) j.str("name", t.desc->name);
+    std::string s = j.text();
+    if (!f.json.empty()) {
+      s.pop_back();
+      s += "," + f.json.text().substr(1);
+    }
+    s.pop_back();
+    s += std::string(sent ? ",\"sent\":" : ",\"bytes\":") + json_string(hex_bytes(bytes, "")) + "}";
+    return s;
+  }
+  const std::string name = t.dict && t.desc != nullptr ? " " + t.desc->name : std::string();
+  return address_text(t.a) + name + " = " + f.text;
+}
+
+/// The SDO failure as a line, with a hint when block transfer was the likely cause.
+int sdo_failure(const context &c, const host::sdo_session &s, bool block) {
+  const host::sdo_error &e = s.last_error();
+  std::string what = e.what;
+  const bool protocol =
+      e.code == errc::unexpected_frame || e.abort == canopen::sdo::abort_code::unknown_command;
+  if (block && protocol) {
+    what += " (with --block: the node may not support block transfer, or answers a block upload "
+            "with a normal upload; try without --block, or allow the switch with "
+            "--switch-threshold 127)";
+  }
+  return c.fail(e.bus_failed ? exit_io : exit_failed, what);
 }
 
 int cmd_sdo_read(const std::vector<std::string> &args, context c) {
@@ -576,53 +719,16 @@ int cmd_sdo_read(const std::vector<std::string> &args, context c) {
     return r < 0 ? exit_ok : r;
   }
   int code = exit_ok;
-  parsed_value typed; // only to validate --type early
-  const std::string type = o.get("--type");
-  if (t.desc == nullptr && !type.empty()) {
-    typed = parse_value(nullptr, type, "0");
-    if (!typed.ok && typed.error.rfind("unknown type", 0) == 0) return c.usage(typed.error);
-  }
   auto bus = open_bus(o, c, code);
   if (!bus) return code;
   host::sdo_session s(*bus, t.node, so);
   auto v = s.read(t.a);
-  if (!v) return c.fail(s.last_error().bus_failed ? exit_io : exit_failed, s.last_error().what);
+  if (!v) return sdo_failure(c, s, so.block);
   const std::vector<std::uint8_t> bytes(v.value().begin(), v.value().end());
-  object_desc typed_desc;
-  const object_desc *d = t.desc;
-  if (d == nullptr && !type.empty()) {
-    // a dictionary entry made of the --type
-    typed = parse_value(nullptr, type, type == "str" || type == "hex" ? "" : "0");
-    typed_desc.core.index = t.a.index;
-    typed_desc.core.sub = t.a.sub;
-    static const std::map<std::string, od::data_type> types = {
-        {"u8", od::data_type::unsigned8},    {"u16", od::data_type::unsigned16},
-        {"u32", od::data_type::unsigned32},  {"u64", od::data_type::unsigned64},
-        {"i8", od::data_type::integer8},     {"i16", od::data_type::integer16},
-        {"i32", od::data_type::integer32},   {"i64", od::data_type::integer64},
-        {"f32", od::data_type::real32},      {"f64", od::data_type::real64},
-        {"bool", od::data_type::boolean},    {"str", od::data_type::visible_string},
-        {"hex", od::data_type::octet_string}};
-    typed_desc.core.type = types.at(type);
-    d = &typed_desc;
-  }
   value_context ctx;
   const device_family fam = t.dict ? t.dict->family() : device_family::generic;
-  auto f = format_value(d, t.a, bytes, fam, ctx);
-  const std::string name = t.desc != nullptr ? " " + t.desc->name : std::string();
-  if (o.has("--json")) {
-    json_object j;
-    j.num("node", t.node).unum("index", t.a.index).unum("sub", t.a.sub);
-    if (t.desc != nullptr) j.str("name", t.desc->name);
-    std::string s2 = j.text();
-    if (!f.json.empty()) {
-      s2.pop_back();
-      s2 += "," + f.json.text().substr(1);
-    }
-    c.out << s2 << "\n";
-  } else {
-    c.out << address_text(t.a) << name << " = " << f.text << "\n";
-  }
+  const auto f = format_value(t.desc, t.a, bytes, fam, ctx, o.has("--raw"));
+  c.out << value_line(t, f, o.has("--json"), bytes, false) << "\n";
   return exit_ok;
 }
 
@@ -633,15 +739,23 @@ int cmd_sdo_write(const std::vector<std::string> &args, context c) {
   if (const int r = sdo_common(args, c, true, o, t, so); r != exit_ok) {
     return r < 0 ? exit_ok : r;
   }
-  const auto v = parse_value(t.desc, o.get("--type"), o.positional[2]);
-  if (!v.ok) return c.usage(v.error);
+  if (t.desc == nullptr) {
+    return c.usage("no dictionary entry: give the type with --type (" + std::string(type_names) +
+                   ") or the dictionary with --dict");
+  }
+  const bool raw = o.has("--raw");
+  const auto v = parse_value(*t.desc, o.positional[2], t.node, raw);
+  if (!v.ok) return c.fail(exit_usage, t.label + ": " + v.error + " (nothing sent)");
   int code = exit_ok;
   auto bus = open_bus(o, c, code);
   if (!bus) return code;
   host::sdo_session s(*bus, t.node, so);
-  if (!s.write(t.a, v.bytes)) {
-    return c.fail(s.last_error().bus_failed ? exit_io : exit_failed, s.last_error().what);
-  }
+  if (!s.write(t.a, v.bytes)) return sdo_failure(c, s, so.block);
+  // what was sent, shown as `sdo read` shows it
+  value_context ctx;
+  const device_family fam = t.dict ? t.dict->family() : device_family::generic;
+  const auto f = format_value(t.desc, t.a, v.bytes, fam, ctx, raw);
+  c.out << value_line(t, f, o.has("--json"), v.bytes, true) << "\n";
   return exit_ok;
 }
 
@@ -681,7 +795,230 @@ int cmd_nmt(const std::vector<std::string> &args, context c) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// serve
+
+/// What a simulated node holds: node::device over a dictionary_store of the dictionary loaded at
+/// run time. Capacity for the dictionaries devices describe (CiA 301 allows more; a dictionary
+/// beyond it is served in part, with a warning).
+constexpr canopen::node::capacity serve_capacity{.rpdos = 32,
+                                                 .tpdos = 32,
+                                                 .mapped = 64,
+                                                 .heartbeat_consumers = 32,
+                                                 .sdo_servers = 8,
+                                                 .sdo_clients = 0,
+                                                 .sdo_buffer = 889,
+                                                 .sdo_crc_table = false,
+                                                 .pdo_copies = true,
+                                                 .active_errors = 16,
+                                                 .error_history = 16,
+                                                 .emcy_queue = 8,
+                                                 .error_classes = 8,
+                                                 .sync_producer = true};
+
+/// The network's writes the store took (its write hook), for `written:` lines.
+struct write_log {
+  std::vector<std::pair<od::address, std::vector<std::uint8_t>>> *out = nullptr;
+  canopen::sdo::abort_code operator()(const od::entry &e, std::span<const std::uint8_t> v) const {
+    out->emplace_back(od::address{e.index, e.sub}, std::vector<std::uint8_t>(v.begin(), v.end()));
+    return canopen::sdo::abort_code::none;
+  }
+};
+
+/// Lines of standard input without blocking: std::cin by poll() on descriptor 0; any other
+/// stream (the tests' strings) is read whole, it never blocks.
+class line_source {
+public:
+  explicit line_source(std::istream &in) : in_(in), fd_(&in == &std::cin) {}
+  /// The complete lines that arrived; false once the input has ended and every line was given.
+  bool take(std::vector<std::string> &lines) {
+    if (ended_) return false;
+    if (!fd_) {
+      std::string l;
+      while (std::getline(in_, l)) lines.push_back(l);
+      ended_ = true;
+      return true;
+    }
+    for (;;) {
+      pollfd p{0, POLLIN, 0};
+      if (::poll(&p, 1, 0) <= 0) break;
+      char buf[4096];
+      const ssize_t n = ::read(0, buf, sizeof buf);
+      if (n <= 0) {
+        ended_ = true;
+        break;
+      }
+      pending_.append(buf, static_cast<std::size_t>(n));
+    }
+    for (std::size_t nl; (nl = pending_.find('\n')) != std::string::npos;) {
+      lines.push_back(pending_.substr(0, nl));
+      pending_.erase(0, nl + 1U);
+    }
+    if (ended_ && !pending_.empty()) lines.push_back(std::exchange(pending_, {}));
+    return true;
+  }
+
+private:
+  std::istream &in_;
+  bool fd_;
+  bool ended_ = false;
+  std::string pending_;
+};
+
+int cmd_serve(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, join({"--dict", "--duration"}, transport_values), transport_flags, o,
+                     error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << serve_help << transport_help;
+    return exit_ok;
+  }
+  if (o.positional.size() != 1U) return c.usage("expected NODE");
+  std::uint8_t node = 0;
+  if (!parse_node(o.positional[0], false, node)) {
+    return c.usage("bad node '" + o.positional[0] + "' (1..127)");
+  }
+  if (o.values.count("--dict") != 1U) {
+    return c.usage(o.given("--dict") ? "--dict given twice" : "give the dictionary: --dict FILE");
+  }
+  std::uint64_t duration = 0;
+  if (o.given("--duration") &&
+      (!parse_uint(o.get("--duration"), 1U << 30U, duration) || duration == 0U)) {
+    return c.usage("bad --duration " + o.get("--duration") + " (1..2^30 seconds)");
+  }
+  const std::string file = o.get("--dict");
+  auto loaded = node_dictionary::load(file, error);
+  if (!loaded) return c.fail(exit_dictionary, error);
+  const node_dictionary values = loaded->for_node(node); // what stdin and stdout show
+  const auto tables = values.device_tables();            // what the device stores
+  const od::dictionary dict = tables->view();
+  std::vector<std::uint32_t> offsets(dict.size() + 1U);
+  (void)canopen::make_layout(dict, offsets);
+  std::vector<std::uint8_t> storage(offsets.back());
+  std::vector<std::uint8_t> staging(65536);
+  std::vector<std::pair<od::address, std::vector<std::uint8_t>>> written;
+  using store_t = canopen::dictionary_store<write_log>;
+  store_t store{dict, std::span<const std::uint32_t>(offsets), storage, staging,
+                write_log{&written}};
+  if (const status s = store.init_defaults(node); !s) {
+    // too_long: a default text longer than its object's size (cut; served)
+    if (s.error() != errc::too_long) return c.fail(exit_dictionary, file + ": cannot be served");
+    c.err << "fieldcodec: serve: " << file
+          << ": a default text is longer than its object's size (cut)\n";
+  }
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+
+  auto dev = std::make_unique<canopen::node::device<store_t, serve_capacity>>(store, node);
+  const device_family family = values.family();
+  value_context ctx;
+  auto line_of = [&](od::address a, std::span<const std::uint8_t> bytes) {
+    const object_desc *d = values.find(a);
+    const auto f = format_value(d, a, bytes, family, ctx, false);
+    return address_text(a) + (d != nullptr ? " " + d->name : std::string()) + " = " + f.text;
+  };
+  host::network net(*bus);
+  const auto id = net.add(*dev, [&](const auto &, std::uint32_t) {
+    for (const auto &[a, bytes] : written) c.out << "written: " << line_of(a, bytes) << "\n";
+    written.clear();
+    for (const auto &e : dev->events()) {
+      if (e.what == canopen::node::event::kind::nmt_state) {
+        c.out << "NMT: " << canopen::nmt::to_string(e.state) << "\n";
+      }
+    }
+    c.out.flush();
+  });
+  auto started = net.send(id, dev->start(net.now()));
+  if (!started) return c.fail(exit_io, started.error().what);
+  c.out << "NMT: " << canopen::nmt::to_string(started.value()) << "\n" << std::flush;
+  if (!dev->configuration()) {
+    c.err << "fieldcodec: serve: " << file << ": served in part ("
+          << to_string(dev->configuration().error())
+          << "): more PDOs, mapping entries or SDO channels than serve runs\n";
+  }
+
+  // one stdin line: set a value, or show it
+  std::size_t line_no = 0;
+  int result = exit_ok;
+  auto refuse = [&](const std::string &what) {
+    c.fail(exit_usage, "input line " + std::to_string(line_no) + ": " + what + " (not set)");
+    result = exit_usage;
+  };
+  auto apply = [&](std::string_view l) {
+    ++line_no;
+    while (!l.empty() && (l.back() == '\r' || l.back() == ' ' || l.back() == '\t'))
+      l.remove_suffix(1);
+    while (!l.empty() && (l.front() == ' ' || l.front() == '\t')) l.remove_prefix(1);
+    if (l.empty() || l.front() == '#') return;
+    bool raw = false;
+    if (l.rfind("raw ", 0) == 0) {
+      raw = true;
+      l.remove_prefix(4);
+      while (!l.empty() && l.front() == ' ') l.remove_prefix(1);
+    }
+    const auto space = l.find_first_of(" \t");
+    const std::string where(l.substr(0, space));
+    std::string_view text = space == std::string_view::npos ? std::string_view{} : l.substr(space);
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    od::address a{};
+    if (!parse_address(where, a)) {
+      return refuse("bad object '" + capped(where) + "' (INDEX[:SUB] in hex, e.g. 1018:1)");
+    }
+    const object_desc *d = values.find(a);
+    if (d == nullptr) return refuse(address_text(a) + ": not in " + file);
+    if (text.empty()) {
+      if (raw) return refuse(address_text(a) + ": 'raw' needs a VALUE");
+      auto v = dev->value(a);
+      if (!v) return refuse(address_text(a) + ": " + std::string(to_string(v.error())));
+      c.out << line_of(a, v.value()) << "\n" << std::flush;
+      return;
+    }
+    const auto v = parse_value(*d, text, node, raw);
+    if (!v.ok) return refuse(address_text(a) + " " + d->name + ": " + v.error);
+    auto s = dev->set(a, v.bytes, net.now());
+    if (!s) {
+      return refuse(address_text(a) + " " + d->name + ": " +
+                    std::string(canopen::sdo::to_string(s.error())));
+    }
+    written.clear(); // set() asks no hook; nothing of the network's is pending here
+    c.out << line_of(a, dev->value(a).value()) << "\n" << std::flush;
+    if (auto r = net.send(id, s.value()); !r) {
+      result = c.fail(exit_io, r.error().what);
+    }
+  };
+
+  interrupted = 0;
+  auto old_int = std::signal(SIGINT, on_interrupt);
+  auto old_term = std::signal(SIGTERM, on_interrupt);
+  line_source input(c.in);
+  std::vector<std::string> lines;
+  const auto start = std::chrono::steady_clock::now();
+  while (interrupted == 0 && result != exit_io) {
+    if (duration != 0U &&
+        std::chrono::steady_clock::now() - start >= std::chrono::seconds(duration)) {
+      break;
+    }
+    if (input.take(lines)) {
+      for (const std::string &l : lines) apply(l);
+      lines.clear();
+    }
+    if (auto r = net.run_once(std::chrono::milliseconds(50)); !r) {
+      result = c.fail(exit_io, r.error().what);
+    }
+  }
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
 // dump
+
+/// Consecutive SDO timeouts after which `dump` takes the node as silent and stops.
+constexpr std::size_t dump_silent_after = 3;
 
 int cmd_dump(const std::vector<std::string> &args, context c) {
   options o;
@@ -699,25 +1036,31 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
   if (!parse_node(o.positional[0], false, node))
     return c.usage("bad node '" + o.positional[0] + "'");
   if (!o.given("--dict")) return c.usage("dump needs the node's dictionary (--dict FILE)");
+  if (o.values.count("--dict") > 1U) return c.usage("--dict given twice");
   std::uint64_t timeout = 1000;
-  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
-    return c.usage("bad --timeout");
-  }
-  auto dict = node_dictionary::load(o.get("--dict"), node, error);
-  if (!dict) return c.fail(exit_dictionary, error);
   int code = exit_ok;
+  if (!parse_timeout(o, c, timeout, code)) return code;
+  auto loaded = node_dictionary::load(o.get("--dict"), error);
+  if (!loaded) return c.fail(exit_dictionary, error);
+  const node_dictionary dict = loaded->for_node(node);
   auto bus = open_bus(o, c, code);
   if (!bus) return code;
   host::sdo_options so;
   so.timeout = std::chrono::milliseconds(timeout);
   so.block = o.has("--block");
   host::sdo_session s(*bus, node, so);
-  gen::dictionary model = dict->model();
-  const bool progress = !o.has("--quiet") && (o.has("--progress") || ::isatty(STDERR_FILENO) != 0);
+  gen::dictionary model = dict.model();
+  // a line kept on a terminal; elsewhere (a log) a line at every tenth of a long dump
+  const bool terminal = c.err_terminal;
+  const bool progress = !o.has("--quiet") && (o.has("--progress") || terminal);
+  const bool milestones = !o.has("--quiet") && !progress;
   std::size_t readable = 0;
   for (const auto &e : model.entries) readable += od::readable(e.access) ? e.count : 0U;
   std::size_t done = 0;
   std::size_t failed = 0;
+  std::size_t timeouts = 0; ///< in a row
+  od::address first_timeout{};
+  bool answered = false; ///< the node answered at least once
   std::vector<std::string> refused;
   for (gen::entry &e : model.entries) {
     if (!od::readable(e.access)) continue;
@@ -727,6 +1070,8 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
       if (progress) {
         c.err << "\rreading " << done << "/" << readable << " " << address_text(a) << "   "
               << std::flush;
+      } else if (milestones && readable >= 50U && done % (readable / 10U) == 0U) {
+        c.err << "fieldcodec: dump: reading " << done << "/" << readable << "\n" << std::flush;
       }
       auto v = s.read(a);
       if (!v) {
@@ -735,16 +1080,34 @@ int cmd_dump(const std::vector<std::string> &args, context c) {
           return c.fail(exit_io, s.last_error().what);
         }
         ++failed;
+        if (s.last_error().code != errc::timeout) {
+          timeouts = 0;
+          answered = true;
+        } else if (timeouts++ == 0U) {
+          first_timeout = a;
+        }
+        if (timeouts >= dump_silent_after) {
+          if (progress) c.err << "\n";
+          return c.fail(exit_failed,
+                        "node " + std::to_string(node) + " " +
+                            (answered ? "stopped answering" : "does not answer") + ": " +
+                            std::to_string(timeouts) + " SDO timeouts in a row, from " +
+                            address_text(first_timeout) + " (" + std::to_string(done - failed) +
+                            " of " + std::to_string(readable) + " objects read); no DCF written");
+        }
         refused.push_back(s.last_error().what);
         continue;
       }
+      timeouts = 0;
+      answered = true;
       if (e.count != 1U) continue; // a compact run keeps no per-sub-index value
-      const object_desc *d = dict->find(a);
+      const object_desc *d = dict.find(a);
       if (od::is_byte_string(e.type)) {
         e.parameter_text = std::string(v.value().begin(), v.value().end());
         continue;
       }
-      auto n = od::decode(d->core, v.value(), byte_order::little, od::limits::ignore);
+      auto n = od::decode(static_cast<const od::entry &>(d->d), v.value(), byte_order::little,
+                          od::limits::ignore);
       if (!n) {
         ++failed;
         refused.push_back("node " + std::to_string(node) + ", " + address_text(a) + ": " +
@@ -780,8 +1143,10 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   namespace cmds = dictionaries::pacontrol_commands;
   options o;
   std::string error;
-  if (!parse_options(args, 2, {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout"},
-                     {"--rts-cts", "--json"}, o, error)) {
+  if (!parse_options(
+          args, 2,
+          {"--baud", "--data-bits", "--parity", "--stop-bits", "--timeout", "--check-rule"},
+          {"--rts-cts", "--json"}, o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -820,9 +1185,12 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   line.rts_cts = o.has("--rts-cts");
   if (!host::check(line)) return c.usage("unsupported line settings (baud rate?)");
   std::uint64_t timeout = 1000;
-  if (o.given("--timeout") && !parse_uint(o.get("--timeout"), 3600000, timeout)) {
-    return c.usage("bad --timeout");
-  }
+  if (int bad = exit_ok; !parse_timeout(o, c, timeout, bad)) return bad;
+  host::pacontrol_options link_options;
+  auto checks = parse_check_rule(o.get("--check-rule", "manual"));
+  if (!checks) return c.usage(check_rule_error(o.get("--check-rule")));
+  link_options.check = *checks;
+  link_options.request_rule = checks->request;
   const std::string &name = o.positional[1];
   const bool poll = name == "poll";
   const od::command *cmd = nullptr;
@@ -842,32 +1210,59 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
       return c.usage("bad parameter '" + o.positional[2] + "'");
     }
     const auto p = static_cast<std::uint16_t>(par);
+    const std::string cname(cmd->name);
+    auto range = [](const od::number &lo, const od::number &hi) {
+      auto text = [](const od::number &n) {
+        auto d = n.to_decimal();
+        return d ? decimal_text(d.value()) : std::string("?");
+      };
+      return text(lo) + ".." + text(hi);
+    };
+    if (!cmd->check_parameter(p)) {
+      return c.usage(cname + ": parameter " + std::to_string(p) + " is outside " +
+                     range(cmd->parameter_min, cmd->parameter_max));
+    }
+    const bool takes_date = cmd->date_type != od::command_value::none;
+    const std::string date_kind =
+        cmd->date_type == od::command_value::real ? "a real date" : "an integer date";
+    if (takes_date && o.positional.size() < 4U) {
+      return c.usage(cname + " takes " + date_kind + ": PARAMETER DATE" +
+                     (cmd->date_min || cmd->date_max
+                          ? " (" + range(cmd->date_min, cmd->date_max) + ")"
+                          : std::string()));
+    }
+    if (!takes_date && o.positional.size() > 3U) {
+      return c.usage(cname + " takes no date (PARAMETER only)");
+    }
     result<pacontrol::serial::request> r = errc::invalid_argument;
-    if (o.positional.size() > 3U) {
+    if (takes_date) {
       const std::string &date = o.positional[3];
       auto dec = parse_decimal(std::string_view(date));
-      if (!dec) return c.usage("bad date '" + date + "'");
-      if (pacontrol::request_date_type(*cmd) == od::command_value::real) {
+      if (!dec)
+        return c.usage("bad date '" + date + "' (" + std::string(to_string(dec.error())) + ")");
+      if (cmd->date_type == od::command_value::real) {
         auto val = pacontrol::value::of_real(dec.value());
-        if (!val) return c.usage("bad date '" + date + "'");
+        if (!val)
+          return c.usage("bad date '" + date + "' (" + std::string(to_string(val.error())) + ")");
         r = pacontrol::make_request(*cmd, p, val.value());
       } else {
-        if (dec.value().places != 0U)
-          return c.usage("the date of " + std::string(cmd->name) + " is an integer");
+        if (dec.value().places != 0U) return c.usage("the date of " + cname + " is an integer");
         r = pacontrol::make_request(*cmd, p, dec.value().mantissa);
+      }
+      if (!r && r.error() == errc::out_of_range) {
+        return c.usage(cname + ": date " + date + " is outside " +
+                       range(cmd->date_min, cmd->date_max));
       }
     } else {
       r = pacontrol::make_request(*cmd, p);
     }
-    if (!r) {
-      return c.usage(std::string(cmd->name) + ": " + std::string(to_string(r.error())) +
-                     " (parameter " + std::to_string(cmd->parameter_min.to_int64().value_or(0)) +
-                     ".." + std::to_string(cmd->parameter_max.to_int64().value_or(0)) + ")");
-    }
+    if (!r) return c.usage(cname + ": " + std::string(to_string(r.error())));
     req = r.value();
   }
   host::pacontrol_link link;
-  if (!link.open(o.positional[0], line)) return c.fail(exit_io, link.last_error().what);
+  if (!link.open(o.positional[0], line, link_options)) {
+    return c.fail(exit_io, link.last_error().what);
+  }
   auto ack = poll ? link.poll(std::chrono::milliseconds(timeout))
                   : link.transact(req, std::chrono::milliseconds(timeout));
   if (!ack) {
@@ -877,7 +1272,7 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
   // the exchange, decoded as 'decode --pacontrol' shows it
   std::vector<std::uint8_t> both(link.sent().begin(), link.sent().end());
   both.insert(both.end(), link.received().begin(), link.received().end());
-  const auto lines = decode_pacontrol(both);
+  const auto lines = decode_pacontrol(both, link_options.check);
   print_lines(lines, o.has("--json"), c.out);
   if (ack.value().command_error_number != 0U) {
     auto t = pacontrol::describe_command_error(ack.value().command_error_number);
@@ -891,8 +1286,14 @@ int cmd_pacontrol_send(const std::vector<std::string> &args, context c) {
 } // namespace
 
 int run(const std::vector<std::string> &args, std::istream &in, std::ostream &out,
-        std::ostream &err) {
-  context c{in, out, err, ""};
+        std::ostream &err, bool err_terminal) {
+  context c{in, out, err, "", err_terminal};
+  if (args.size() > 1U && args[0] == "help") {
+    // "help decode", "help sdo write": the command's own --help
+    std::vector<std::string> asked(args.begin() + 1, args.end());
+    asked.emplace_back("--help");
+    return run(asked, in, out, err, err_terminal);
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     (args.empty() ? err : out) << main_help;
     return args.empty() ? exit_usage : exit_ok;
@@ -907,6 +1308,7 @@ int run(const std::vector<std::string> &args, std::istream &in, std::ostream &ou
   if (cmd == "monitor") return cmd_monitor(args, c);
   if (cmd == "nmt") return cmd_nmt(args, c);
   if (cmd == "dump") return cmd_dump(args, c);
+  if (cmd == "serve") return cmd_serve(args, c);
   if (cmd == "sdo" || cmd == "pacontrol") {
     const std::string sub = args.size() > 1U ? args[1] : "";
     if (cmd == "sdo" && (sub == "read" || sub == "write")) {

@@ -18,8 +18,9 @@ enum exit_code : int {
   exit_dictionary = 5 ///< a dictionary could not be read
 };
 
-/// Runs `fieldcodec ARGS...` (args without the program name).
+/// Runs `fieldcodec ARGS...` (args without the program name). `err_terminal`: `err` is a
+/// terminal (progress lines are kept on one line there).
 int run(const std::vector<std::string> &args, std::istream &in, std::ostream &out,
-        std::ostream &err);
+        std::ostream &err, bool err_terminal = false);
 
 } // namespace fieldcodec::cli

@@ -3,6 +3,7 @@
 
 #include <fieldcodec/canopen/cob_id.hpp>
 #include <fieldcodec/canopen/emcy.hpp>
+#include <fieldcodec/canopen/lss.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
@@ -10,7 +11,10 @@
 #include <fieldcodec/canopen/time_stamp.hpp>
 #include <fieldcodec/core/crc.hpp>
 #include <fieldcodec/dpq/emergency.hpp>
+#include <fieldcodec/ds402/error_code.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/value_text.hpp>
+#include <fieldcodec/xenax/error_code.hpp>
 
 #include <cstdio>
 
@@ -20,12 +24,7 @@ namespace sdo = canopen::sdo;
 
 namespace {
 
-std::string time_text(const host::timestamp &t) {
-  if (!t.known()) return {};
-  std::string frac = std::to_string(t.fraction);
-  if (frac.size() < t.digits) frac.insert(0, t.digits - frac.size(), '0');
-  return std::to_string(t.seconds) + "." + frac;
-}
+std::string time_text(const host::timestamp &t) { return host::candump::format_time(t); }
 
 std::string_view nmt_command_text(canopen::nmt::command c) {
   switch (c) {
@@ -173,24 +172,23 @@ can_decoder::can_decoder(std::map<std::uint8_t, node_dictionary> dicts,
   for (const auto &[n, d] : dicts_) {
     if (n != 0U) given.push_back(n);
   }
-  for (const std::uint8_t n : given) (void)node(n); // their PDOs are known from the start
+  for (const std::uint8_t n : given) (void)node({"", n}); // their PDOs are known from the start
 }
 
-can_decoder::node_state &can_decoder::node(std::uint8_t n) {
-  auto it = nodes_.find(n);
+can_decoder::node_state &can_decoder::node(const node_key &key) {
+  auto it = nodes_.find(key);
   if (it != nodes_.end()) return it->second;
-  node_state &s = nodes_[n];
+  const std::uint8_t n = key.node;
+  node_state &s = nodes_[key];
   pdo_dirty_ = true;
   auto d = dicts_.find(n);
-  if (d == dicts_.end()) {
-    auto all = dicts_.find(0);
-    if (all != dicts_.end()) d = dicts_.emplace(n, all->second.for_node(n)).first;
-  }
-  if (d != dicts_.end()) {
-    s.dict = &d->second;
-    s.family = d->second.family();
-  }
+  if (d == dicts_.end()) d = dicts_.find(0);
+  if (d != dicts_.end()) s.family = d->second.family();
   if (auto f = families_.find(n); f != families_.end()) s.family = f->second;
+  if (d != dicts_.end()) {
+    // node-ID-relative values resolved for n, the vendor units of its family applied
+    s.dict = &built_.insert_or_assign(n, d->second.for_node(n, s.family)).first->second;
+  }
   // PDO communication and mapping as configured in the dictionary (DCF values, else defaults);
   // without a dictionary: the predefined COB-IDs of PDO 1..4, mappings unknown
   for (std::size_t k = 0; k < 4U; ++k) {
@@ -199,32 +197,34 @@ can_decoder::node_state &can_decoder::node(std::uint8_t n) {
   }
   if (s.dict != nullptr) {
     for (const object_desc &o : s.dict->objects()) {
-      const auto p = pdo_param_of(o.core.index);
-      if (!p || !o.configured) continue;
+      const auto p = pdo_param_of(o.d.index);
+      // PDO parameters are UNSIGNED8/32: a value outside 32 bits is not one (never narrowed)
+      if (!p || !o.configured || *o.configured < 0 || *o.configured > 0xFFFFFFFF) continue;
       pdo_config &c = p->rpdo ? s.rpdo[p->n] : s.tpdo[p->n];
       const auto v = static_cast<std::uint32_t>(*o.configured);
-      if (!p->mapping && o.core.sub == 1) {
+      if (!p->mapping && o.d.sub == 1) {
         c.cob_id = v;
-      } else if (p->mapping && o.core.sub == 0) {
+      } else if (p->mapping && o.d.sub == 0) {
         c.count = static_cast<std::uint8_t>(v);
         c.mapping_known = true;
-      } else if (p->mapping && o.core.sub <= 64) {
-        c.map[o.core.sub - 1U] = v;
+      } else if (p->mapping && o.d.sub <= 64) {
+        c.map[o.d.sub - 1U] = v;
       }
     }
   }
   return s;
 }
 
-const object_desc *can_decoder::desc(std::uint8_t n, od::address a) {
-  const node_state &s = node(n);
+const object_desc *can_decoder::desc(const node_key &k, od::address a) {
+  const node_state &s = node(k);
   return s.dict != nullptr ? s.dict->find(a) : nullptr;
 }
 
-void can_decoder::apply_write(std::uint8_t n, od::address a, std::span<const std::uint8_t> bytes) {
+void can_decoder::apply_write(const node_key &k, od::address a,
+                              std::span<const std::uint8_t> bytes) {
   const auto p = pdo_param_of(a.index);
   if (!p || bytes.empty() || bytes.size() > 4U) return;
-  node_state &s = node(n);
+  node_state &s = node(k);
   pdo_dirty_ = true;
   pdo_config &c = p->rpdo ? s.rpdo[p->n] : s.tpdo[p->n];
   const auto v = static_cast<std::uint32_t>(
@@ -240,15 +240,30 @@ void can_decoder::apply_write(std::uint8_t n, od::address a, std::span<const std
   }
 }
 
-void can_decoder::malformed(std::string_view text, errc e, std::size_t line_no,
-                            std::vector<decoded_line> &out) {
+void can_decoder::malformed(std::string_view text, const host::candump::line_error &e,
+                            std::size_t line_no, std::vector<decoded_line> &out) {
   decoded_line l;
   l.function = "MALFORMED";
   l.line_no = line_no;
   l.problem = true;
-  l.text = "line " + std::to_string(line_no) + ": " + std::string(to_string(e)) + ": " +
-           json_string(text);
-  l.json.str("error", to_string(e)).str("input", text);
+  const std::string reason =
+      *e.reason != '\0' ? std::string(e.reason) : std::string(to_string(e.code));
+  const std::string shown = capped(text);
+  l.text = "line " + std::to_string(line_no) + ": " + reason + " at column " +
+           std::to_string(e.column + 1U) + ": " + json_string(shown);
+  l.json.str("error", to_string(e.code))
+      .str("reason", reason)
+      .unum("column", e.column + 1U)
+      .str("input", shown);
+  out.push_back(std::move(l));
+}
+
+void can_decoder::note(std::string_view text, std::size_t line_no, std::vector<decoded_line> &out) {
+  decoded_line l;
+  l.function = "NOTE";
+  l.line_no = line_no;
+  l.text = "candump: " + capped(text);
+  l.json.str("input", capped(text));
   out.push_back(std::move(l));
 }
 
@@ -281,6 +296,7 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
   auto f = host::to_canopen(r).value();
   const auto info = canopen::classify(f.id).value();
   const auto data = f.payload();
+  const node_key key{std::string(r.iface.view()), info.node};
   l.json.str("data", hex_bytes(data, ""));
   switch (info.fn) {
   case canopen::function::nmt: {
@@ -319,14 +335,14 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
       l.text = "malformed (" + std::string(to_string(t.error())) + "): " + hex_bytes(data);
       l.json.str("error", to_string(t.error()));
     } else {
+      // a TIME_OF_DAY value: the date and time as od's value text writes them
+      od::descriptor time_of_day{};
+      time_of_day.type = od::data_type::time_of_day;
+      const auto date = host::format_value(time_of_day, data).value();
       const auto ms = t.value().ms;
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%02u:%02u:%02u.%03u, day %u after 1984-01-01",
-                    static_cast<unsigned>(ms / 3600000U), static_cast<unsigned>(ms / 60000U % 60U),
-                    static_cast<unsigned>(ms / 1000U % 60U), static_cast<unsigned>(ms % 1000U),
-                    static_cast<unsigned>(t.value().days));
-      l.text = buf;
-      l.json.unum("ms", ms).unum("days", t.value().days);
+      l.text = date + " (day " + std::to_string(t.value().days) + " after 1984-01-01, " +
+               std::to_string(ms) + " ms after midnight)";
+      l.json.str("date", date).unum("ms", ms).unum("days", t.value().days);
     }
     break;
   }
@@ -341,10 +357,21 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
       break;
     }
     const auto &m = e.value().m;
-    const node_state &s = node(info.node);
+    const node_state &s = node(key);
     std::string what;
     if (s.family == device_family::dpq) what = std::string(dpq::describe_emcy(m.error_code));
     if (what.empty()) what = std::string(emcy_code_text(m.error_code));
+    if (what.empty() && s.family != device_family::dpq) {
+      // a drive's error codes: CiA 402's table, the XENAX's own numbers (FF01h..FF63h)
+      what = std::string(ds402::describe_error_code(m.error_code));
+      if (what.empty() && s.family == device_family::xenax) {
+        if (auto n = xenax::decode_error_code(m.error_code); n && n.value() != 0U) {
+          const std::string_view t = xenax::error_text(n.value());
+          what = "XENAX error " + std::to_string(n.value()) +
+                 (t.empty() ? std::string(" (text in 5020h TES)") : ": " + std::string(t));
+        }
+      }
+    }
     const std::string cls(canopen::emcy::to_string(canopen::emcy::classify(m.error_code)));
     char code[8];
     std::snprintf(code, sizeof code, "%04Xh", static_cast<unsigned>(m.error_code));
@@ -367,11 +394,11 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
   }
   case canopen::function::sdo_tx:
   case canopen::function::sdo_rx:
-    on_sdo(r, info.node, info.fn == canopen::function::sdo_rx, std::move(l), out);
+    on_sdo(r, key, info.fn == canopen::function::sdo_rx, std::move(l), out);
     return;
   case canopen::function::nmt_error: {
     l.node = info.node;
-    node_state &s = node(info.node);
+    node_state &s = node(key);
     if (f.rtr) {
       l.function = "GUARD";
       l.text = "node guarding request";
@@ -421,6 +448,10 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
   }
   default:
     if (on_pdo(r, l, out)) return;
+    if (f.id == canopen::lss::master_id || f.id == canopen::lss::slave_id) {
+      on_lss(r, std::move(l), out);
+      return;
+    }
     if (info.fn == canopen::function::unassigned) {
       l.function = "FRAME";
       l.text = f.rtr ? "remote frame, DLC " + std::to_string(f.dlc) : hex_bytes(data);
@@ -436,35 +467,130 @@ void can_decoder::feed(const host::frame_record &r, std::size_t line_no,
   out.push_back(std::move(l));
 }
 
+void can_decoder::on_lss(const host::frame_record &r, decoded_line l,
+                         std::vector<decoded_line> &out) {
+  namespace lss = canopen::lss;
+  l.function = "LSS";
+  const auto f = host::to_canopen(r).value();
+  auto m = lss::decode(f);
+  const char *side = f.id == lss::master_id ? "master" : "slave";
+  if (!m) {
+    l.problem = true;
+    l.text = std::string(side) + ": malformed (" + std::string(to_string(m.error())) +
+             "): " + hex_bytes(f.payload());
+    l.json.str("error", to_string(m.error()));
+    out.push_back(std::move(l));
+    return;
+  }
+  const lss::message &x = m.value();
+  std::string text = std::string(side) + ": " + std::string(lss::to_string(x.cs));
+  l.json.str("from", side).str("service", lss::to_string(x.cs));
+  const auto code = static_cast<std::uint8_t>(x.cs);
+  if (x.from_master) {
+    switch (x.cs) {
+    case lss::command::switch_global:
+      text += x.b1 == 0U   ? ": waiting"
+              : x.b1 == 1U ? ": configuration"
+                           : ": mode " + std::to_string(x.b1) + " (reserved)";
+      l.json.unum("mode", x.b1);
+      break;
+    case lss::command::configure_node_id:
+      text += " " + (x.b1 == 0xFFU ? std::string("FFh (unconfigured)") : std::to_string(x.b1));
+      l.json.unum("node_id", x.b1);
+      break;
+    case lss::command::configure_bit_timing: {
+      text += ": table " + std::to_string(x.b1) + ", index " + std::to_string(x.b2);
+      const auto kbit = lss::standard_bit_rate(x.b2);
+      if (x.b1 == 0U && kbit == 0xFFFFU) text += " (automatic bit rate detection)";
+      if (x.b1 == 0U && kbit != 0U && kbit != 0xFFFFU) {
+        text += " (" + std::to_string(kbit) + " kbit/s)";
+      }
+      l.json.unum("table", x.b1).unum("index", x.b2);
+      break;
+    }
+    case lss::command::activate_bit_timing:
+      text += " after " + std::to_string(x.value) + " ms";
+      l.json.unum("delay_ms", x.value);
+      break;
+    case lss::command::fastscan:
+      text += ": IDNumber " + hex(x.value, 8) + ", " +
+              (x.bit_checked == 0x80U ? std::string("reset")
+                                      : "bit checked " + std::to_string(x.bit_checked)) +
+              ", LSS sub " + std::to_string(x.lss_sub) + ", next " + std::to_string(x.lss_next);
+      l.json.unum("id_number", x.value)
+          .unum("bit_checked", x.bit_checked)
+          .unum("lss_sub", x.lss_sub)
+          .unum("lss_next", x.lss_next);
+      break;
+    default:
+      if (code >= 0x40U && code <= 0x4BU) {
+        text += " " + hex(x.value, 8);
+        l.json.unum("value", x.value);
+      }
+      break;
+    }
+  } else {
+    switch (x.cs) {
+    case lss::command::configure_node_id:
+    case lss::command::configure_bit_timing:
+    case lss::command::store_configuration:
+      text += x.b1 == 0U      ? std::string(": ok")
+              : x.b1 == 0xFFU ? ": manufacturer error " + std::to_string(x.b2)
+                              : ": error " + std::to_string(x.b1);
+      if (x.b1 != 0U) l.problem = true;
+      l.json.unum("error", x.b1);
+      if (x.b1 == 0xFFU) l.json.unum("manufacturer_error", x.b2);
+      break;
+    case lss::command::inquire_node_id:
+      text += " = " + std::to_string(x.b1);
+      l.json.unum("node_id", x.b1);
+      break;
+    case lss::command::inquire_vendor:
+    case lss::command::inquire_product:
+    case lss::command::inquire_revision:
+    case lss::command::inquire_serial:
+      text += " = " + hex(x.value, 8);
+      l.json.unum("value", x.value);
+      break;
+    default: break;
+    }
+  }
+  l.text = text;
+  out.push_back(std::move(l));
+}
+
 bool can_decoder::on_pdo(const host::frame_record &r, decoded_line l,
                          std::vector<decoded_line> &out) {
   // the PDO whose valid COB-ID is this identifier, of any node seen or configured; a node
   // not seen yet has the predefined PDO 1..4 (or those of the dictionary for every node)
   if (r.extended || r.id > 0x7FFU) return false;
   const auto info = canopen::classify(static_cast<std::uint16_t>(r.id)).value();
-  if (info.node != 0U) (void)node(info.node);
+  const std::string iface(r.iface.view());
+  if (info.node != 0U) (void)node({iface, info.node});
   if (pdo_dirty_) {
     pdo_index_.clear();
-    for (auto &[n, st] : nodes_) {
+    for (auto &[key, st] : nodes_) {
       for (int dir = 0; dir < 2; ++dir) {
         const auto &table = dir == 0 ? st.tpdo : st.rpdo;
         for (std::size_t k = 0; k < table.size(); ++k) {
           const std::uint32_t id = table[k].cob_id;
           if ((id & 0xA0000000U) != 0U) continue; // not valid, or 29-bit
-          pdo_index_.emplace(id & 0x7FFU, pdo_ref{n, dir, k});
+          pdo_index_.emplace(std::pair{key.iface, id & 0x7FFU}, pdo_ref{key, dir, k});
         }
       }
     }
     pdo_dirty_ = false;
   }
-  const auto found = pdo_index_.find(r.id);
+  auto found = pdo_index_.find({iface, r.id});
+  if (found == pdo_index_.end()) found = pdo_index_.find({std::string(), r.id});
   if (found == pdo_index_.end()) return false;
   {
     {
-      const std::uint8_t n = found->second.node;
+      const node_key key = found->second.node;
+      const std::uint8_t n = key.node;
       const int dir = found->second.dir;
       const std::size_t k = found->second.k;
-      node_state &s = node(n);
+      node_state &s = node(key);
       {
         const pdo_config &c = (dir == 0 ? s.tpdo : s.rpdo)[k];
         l.function = std::string(dir == 0 ? "TPDO" : "RPDO") + std::to_string(k + 1U);
@@ -502,7 +628,7 @@ bool can_decoder::on_pdo(const host::frame_record &r, decoded_line l,
           for (std::size_t b = 0; b < 8U; ++b)
             bytes[b] = static_cast<std::uint8_t>(raw >> (8U * b));
           const od::address a{e.index, e.sub};
-          const object_desc *d = desc(n, a);
+          const object_desc *d = desc(key, a);
           const std::size_t nbytes = (e.bits + 7U) / 8U;
           auto v = format_value(d, a, std::span<const std::uint8_t>(bytes.data(), nbytes), s.family,
                                 s.values);
@@ -537,11 +663,11 @@ bool can_decoder::on_pdo(const host::frame_record &r, decoded_line l,
   return false;
 }
 
-void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_server,
+void can_decoder::on_sdo(const host::frame_record &r, const node_key &key, bool to_server,
                          decoded_line l, std::vector<decoded_line> &out) {
   l.function = "SDO";
-  l.node = n;
-  sdo_track &t = sdo_[n];
+  l.node = key.node;
+  sdo_track &t = sdo_[key];
   t.last_time = r.time;
   t.iface = r.iface;
   const auto data = r.payload();
@@ -647,12 +773,9 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
   case sdo::message_type::abort:
     if (t.k == K::none) t.a = msg.address;
     l.text.clear();
-    l.json.str("abort_code", hex(static_cast<std::uint32_t>(msg.abort), 8).substr(2))
-        .str("abort_text", sdo::to_string(msg.abort))
-        .str("aborted_by", side);
-    t.problem = std::string("ABORT by ") + side + ": " + abort_text(msg.abort) +
-                (t.problem.empty() ? "" : " (" + t.problem + ")");
-    sdo_done(t, n, l, true);
+    t.abort = msg.abort;
+    t.aborted_by = side;
+    sdo_done(t, key, l, true);
     out.push_back(std::move(l));
     t = sdo_track{};
     return;
@@ -764,16 +887,45 @@ void can_decoder::on_sdo(const host::frame_record &r, std::uint8_t n, bool to_se
   case sdo::message_type::block_segment: return;
   }
   // a transfer ended
-  sdo_done(t, n, l, false);
+  sdo_done(t, key, l, false);
   out.push_back(std::move(l));
   t = sdo_track{};
 }
 
-void can_decoder::sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool aborted) {
+/// The bytes of an expedited transfer whose size the frame did not indicate (command 0x22,
+/// upload answer 0x42): CiA 301 lets the object's type decide, so a 2-byte object comes as the
+/// first 2 of the 4 bytes. Returns the note when the bytes beyond it are not zero.
+std::string can_decoder::trim_unindicated(sdo_track &t, const object_desc *d) {
+  if (!t.expedited || t.size_indicated || t.data.size() != 4U) return {};
+  std::uint32_t width = 0;
+  std::string type;
+  if (d != nullptr) {
+    width = od::fixed_size(d->d.type);
+    type = std::string(od::name(d->d.type));
+  } else if (t.a.sub == 0 && (t.a.index == 0x6040 || t.a.index == 0x6041)) {
+    width = 2; // CiA 402 control- and statusword, known without a dictionary
+    type = "UNSIGNED16";
+  } else if (t.a.sub == 0 && (t.a.index == 0x6060 || t.a.index == 0x6061)) {
+    width = 1;
+    type = "INTEGER8";
+  }
+  if (width == 0U || width >= 4U) return {};
+  const std::vector<std::uint8_t> beyond(t.data.begin() + width, t.data.end());
+  t.data.resize(width);
+  for (const auto b : beyond) {
+    if (b != 0U) {
+      return "size not indicated; the bytes beyond the " + std::to_string(width) + " of " + type +
+             " are not zero: " + hex_bytes(beyond);
+    }
+  }
+  return {};
+}
+
+void can_decoder::sdo_done(sdo_track &t, const node_key &key, decoded_line &l, bool aborted) {
   using K = sdo_track::kind;
   const bool write = t.k == K::download || t.k == K::block_download;
   const bool block = t.k == K::block_download || t.k == K::block_upload;
-  const object_desc *d = desc(n, t.a);
+  const object_desc *d = desc(key, t.a);
   std::string head =
       t.k == K::none ? std::string("transfer of ") : std::string(write ? "write " : "read ");
   head += address_text(t.a);
@@ -785,13 +937,17 @@ void can_decoder::sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool a
   if (d != nullptr) j.str("name", d->name);
   if (aborted) {
     l.problem = true;
-    l.text = head + ": " + t.problem;
-    std::string abort_fields = l.json.text();
-    l.json = j;
-    l.json.raw("abort", abort_fields);
+    l.text = head + ": ABORT by " + t.aborted_by + ": " + abort_text(t.abort) +
+             (t.problem.empty() ? "" : " (" + t.problem + ")");
+    j.str("abort_code", hex(static_cast<std::uint32_t>(t.abort), 8).substr(2))
+        .str("abort_text", sdo::to_string(t.abort))
+        .str("aborted_by", t.aborted_by);
+    if (!t.problem.empty()) j.str("error", t.problem);
+    l.json.raw("sdo", j.text());
     return;
   }
-  node_state &s = node(n);
+  node_state &s = node(key);
+  const std::string unindicated = trim_unindicated(t, d);
   auto v = format_value(d, t.a, t.data, s.family, s.values);
   l.text = head + " = " + v.text;
   if (!t.expedited) {
@@ -802,10 +958,14 @@ void can_decoder::sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool a
     t.problem += std::string(t.problem.empty() ? "" : ", ") + "announced " +
                  std::to_string(t.size) + " bytes";
   }
+  if (!unindicated.empty()) {
+    t.problem += std::string(t.problem.empty() ? "" : ", ") + unindicated;
+  }
   if (!t.problem.empty()) {
     l.text += " (" + t.problem + ")";
     l.problem = true;
   }
+  l.problem = l.problem || v.problem;
   std::string text = j.text();
   if (!v.json.empty()) {
     text.pop_back();
@@ -814,22 +974,23 @@ void can_decoder::sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool a
   json_object tail;
   tail.str("transfer", t.expedited ? "expedited" : (block ? "block" : "segmented"))
       .unum("size", t.data.size());
+  if (t.expedited && !t.size_indicated) tail.boolean("size_indicated", false);
   if (!t.problem.empty()) tail.str("error", t.problem);
   text.pop_back();
   text += "," + tail.text().substr(1);
   l.json = json_object{};
   l.json.raw("sdo", text);
-  if (write) apply_write(n, t.a, t.data);
+  if (write) apply_write(key, t.a, t.data);
 }
 
 void can_decoder::finish(std::vector<decoded_line> &out) {
-  for (auto &[n, t] : sdo_) {
+  for (auto &[key, t] : sdo_) {
     if (t.k == sdo_track::kind::none) continue;
     decoded_line l;
     l.time = t.last_time;
     l.iface = t.iface;
     l.function = "SDO";
-    l.node = n;
+    l.node = key.node;
     l.problem = true;
     const bool write = t.k == sdo_track::kind::download || t.k == sdo_track::kind::block_download;
     l.text = std::string(write ? "write " : "read ") + address_text(t.a) +

@@ -8,6 +8,8 @@
 #include "util.hpp"
 #include "values.hpp"
 
+#include <fieldcodec/canopen/sdo.hpp>
+#include <fieldcodec/host/candump.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 
 #include <array>
@@ -18,6 +20,14 @@
 #include <vector>
 
 namespace fieldcodec::cli {
+
+/// Where a node is: the interface of its frames and its node-ID. The same node-ID on two
+/// interfaces (a `candump -l any` log) is two devices, each with its own transfers and PDOs.
+struct node_key {
+  std::string iface; ///< empty: no interface known (also: the dictionaries' defaults)
+  std::uint8_t node = 0;
+  friend auto operator<=>(const node_key &, const node_key &) = default;
+};
 
 /// One output line.
 struct decoded_line {
@@ -49,9 +59,12 @@ public:
 
   /// Decode one frame; appends 0..n lines (an SDO segment adds none until its transfer ends).
   void feed(const host::frame_record &r, std::size_t line_no, std::vector<decoded_line> &out);
-  /// A line of the input that is not a frame.
-  void malformed(std::string_view text, errc e, std::size_t line_no,
+  /// A line of the input that is not a frame: its number, what is wrong and where, the line
+  /// (at most 120 characters of it, escaped).
+  void malformed(std::string_view text, const host::candump::line_error &e, std::size_t line_no,
                  std::vector<decoded_line> &out);
+  /// A line of candump's own that tells something (DROPCOUNT: frames the kernel dropped).
+  void note(std::string_view text, std::size_t line_no, std::vector<decoded_line> &out);
   /// The input ended: transfers still running are reported as incomplete.
   void finish(std::vector<decoded_line> &out);
 
@@ -81,6 +94,8 @@ private:
     bool end_seen = false;
     host::timestamp last_time{}; ///< of the last frame of the transfer
     host::interface_name iface{};
+    canopen::sdo::abort_code abort{}; ///< the abort that ended it
+    std::string aborted_by;           ///< "client" or "server"
   };
   struct pdo_config {
     std::uint32_t cob_id = 0x80000000U; ///< bit 31: not valid
@@ -96,28 +111,32 @@ private:
     std::uint8_t last_toggle = 2; ///< node guarding: toggle of the last response (2: none)
     bool guarded = false;         ///< a guarding request was seen: 0x700 answers are guarding
   };
-  node_state &node(std::uint8_t n);
-  const object_desc *desc(std::uint8_t n, od::address a);
-  void on_sdo(const host::frame_record &r, std::uint8_t n, bool to_server, decoded_line base,
+  node_state &node(const node_key &k);
+  const object_desc *desc(const node_key &k, od::address a);
+  void on_sdo(const host::frame_record &r, const node_key &k, bool to_server, decoded_line base,
               std::vector<decoded_line> &out);
   bool on_pdo(const host::frame_record &r, decoded_line base, std::vector<decoded_line> &out);
-  void sdo_done(sdo_track &t, std::uint8_t n, decoded_line &l, bool aborted);
-  void apply_write(std::uint8_t n, od::address a, std::span<const std::uint8_t> bytes);
+  void on_lss(const host::frame_record &r, decoded_line base, std::vector<decoded_line> &out);
+  void sdo_done(sdo_track &t, const node_key &k, decoded_line &l, bool aborted);
+  static std::string trim_unindicated(sdo_track &t, const object_desc *d);
+  void apply_write(const node_key &k, od::address a, std::span<const std::uint8_t> bytes);
 
-  std::map<std::uint8_t, node_dictionary> dicts_;
+  std::map<std::uint8_t, node_dictionary> dicts_; ///< as loaded: by node, 0 for every node
+  std::map<std::uint8_t, node_dictionary> built_; ///< for each node seen: resolved, units applied
   std::map<std::uint8_t, device_family> families_;
   options options_;
-  std::map<std::uint8_t, node_state> nodes_;
-  /// Valid PDO COB-IDs → node, direction (0 TPDO, 1 RPDO), number; rebuilt when a node appears
-  /// or a PDO parameter is written.
+  std::map<node_key, node_state> nodes_;
+  /// Valid PDO COB-IDs on an interface → node, direction (0 TPDO, 1 RPDO), number; rebuilt
+  /// when a node appears or a PDO parameter is written. Interface "": a node only a dictionary
+  /// has told of so far (its PDOs are known on every interface until it shows up on one).
   struct pdo_ref {
-    std::uint8_t node;
+    node_key node;
     int dir;
     std::size_t k;
   };
-  std::map<std::uint32_t, pdo_ref> pdo_index_;
+  std::map<std::pair<std::string, std::uint32_t>, pdo_ref> pdo_index_;
   bool pdo_dirty_ = true;
-  std::map<std::uint8_t, sdo_track> sdo_;
+  std::map<node_key, sdo_track> sdo_;
 };
 
 } // namespace fieldcodec::cli

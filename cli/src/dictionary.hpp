@@ -1,20 +1,21 @@
 // fieldcodec CLI — object dictionaries loaded at run time (EDS, DCF, CSV through the
-// generator's readers) and what the decoder needs of them: names, types, units, scales, the
-// configured PDO communication and mapping values, and the device family.
+// generator's readers) as od tables (codegen's od_tables): the descriptors od's one value path
+// converts with (od/value_text.hpp), display names, the configured PDO communication and
+// mapping values, and the device family.
 #pragma once
 
-#include <fieldcodec/core/decimal.hpp>
-#include <fieldcodec/core/scaling.hpp>
 #include <fieldcodec/od/address.hpp>
-#include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/descriptor.hpp>
 
 #include "model.hpp"
+#include "od_tables.hpp"
 
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fieldcodec::cli {
@@ -23,58 +24,56 @@ namespace fieldcodec::cli {
 enum class device_family : std::uint8_t {
   generic, ///< CiA 301 only
   ds402,   ///< a CiA 402 drive (6040h/6041h shown as command/state)
-  xenax,   ///< Jenny Science XENAX: CiA 402 and the units of docs/xenax.md
-  dpq,     ///< Rexroth DPQ: scaled parameters, its EMCY codes
+  xenax,   ///< Jenny Science XENAX: CiA 402 and the units of xenax::canopen_units
+  dpq,     ///< Rexroth DPQ: scaled parameters (from its table), its EMCY codes
 };
 [[nodiscard]] std::string_view to_string(device_family f);
+/// Case-insensitive ("XENAX", "xenax").
 [[nodiscard]] bool parse_family(std::string_view s, device_family &out);
 
-/// One sub-object as the decoder uses it.
+/// One sub-object as the CLI uses it.
 struct object_desc {
-  od::entry core{}; ///< index, sub, object code, type, access, PDO mapping, capacity
-  /// The packed columns `core` points to (od::pack; shared, so that a copy's `core` stays valid).
-  std::shared_ptr<const char[]> packed;
-  std::string name; ///< "Identity Object: Vendor Id" for a sub-object of a record
-  std::string unit; ///< engineering unit ("bar", "mA", "inc"), empty when none
-  std::optional<scaling::linear> scale; ///< EU = raw / scale + offset (DPQ)
-  /// A unit factor the device manual gives (XENAX 6073h: 10 mA per raw step): EU = raw × factor
-  std::optional<decimal> factor;
-  std::optional<std::int64_t> configured; ///< DCF ParameterValue, else the default (node resolved)
+  od::descriptor d{}; ///< entry, info (name, unit) and scale; vendor units applied
+  std::string name;   ///< "Identity Object: Vendor Id" for a sub-object of a record
+  /// DCF ParameterValue, else the default (node resolved); empty when it is no integer of 64
+  /// signed bits
+  std::optional<std::int64_t> configured;
 };
 
 class node_dictionary {
 public:
-  /// Load `path` (.eds, .dcf, .csv) for node `node` (1..127; 0 when it serves every node).
-  /// On failure returns nothing and sets `error` to one line per problem.
-  static std::optional<node_dictionary> load(const std::string &path, std::uint8_t node,
-                                             std::string &error);
+  /// Load `path` (.eds, .dcf, .csv). On failure returns nothing and sets `error` to one line
+  /// per problem. The result describes no node yet: see for_node.
+  static std::optional<node_dictionary> load(const std::string &path, std::string &error);
+
+  /// The dictionary for node `node` (1..127, node-ID-relative values resolved; 0: none) of
+  /// family `f` (its vendor units applied).
+  [[nodiscard]] node_dictionary for_node(std::uint8_t node, device_family f) const;
+  [[nodiscard]] node_dictionary for_node(std::uint8_t node) const {
+    return for_node(node, family_);
+  }
 
   [[nodiscard]] const object_desc *find(od::address a) const;
   [[nodiscard]] const std::vector<object_desc> &objects() const { return objects_; }
+  /// The family the dictionary names (VendorName, file name, 6041h), or the one given.
   [[nodiscard]] device_family family() const { return family_; }
-  void set_family(device_family f) { family_ = f; }
   [[nodiscard]] const std::string &path() const { return path_; }
+  [[nodiscard]] std::uint8_t node() const { return node_; }
+  /// The tables a simulated device of this dictionary serves (`fieldcodec serve`): values as
+  /// they travel (no vendor units: the store holds raw numbers) and byte strings with room for
+  /// their declared size or, without one, their default text.
+  [[nodiscard]] std::shared_ptr<const gen::od_tables> device_tables() const;
   /// The generator's model (for writing a DCF).
   [[nodiscard]] const gen::dictionary &model() const { return *model_; }
-  /// The same dictionary for another node (node-ID-relative defaults resolved again).
-  [[nodiscard]] node_dictionary for_node(std::uint8_t node) const;
 
 private:
-  void build(std::uint8_t node);
+  void build();
   std::string path_;
   std::shared_ptr<const gen::dictionary> model_;
+  std::shared_ptr<const gen::od_tables> tables_;
   std::vector<object_desc> objects_; ///< sorted by address
   device_family family_ = device_family::generic;
+  std::uint8_t node_ = 0;
 };
-
-/// The units the XENAX manual gives for objects whose EDS cannot say (CiA 306 has no unit
-/// keyword; docs/xenax.md, "Units are not in the EDS").
-struct unit_rule {
-  std::uint16_t index;
-  int sub; ///< -1: every sub-index
-  std::string_view unit;
-  decimal factor; ///< EU per raw step
-};
-[[nodiscard]] std::span<const unit_rule> xenax_units();
 
 } // namespace fieldcodec::cli

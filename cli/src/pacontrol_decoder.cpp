@@ -1,6 +1,7 @@
 // fieldcodec CLI — PA-CONTROL RS232 captures.
 #include "pacontrol_decoder.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/dictionaries/pacontrol_commands.hpp>
 #include <fieldcodec/host/quoted_bytes.hpp>
 #include <fieldcodec/pacontrol/codes.hpp>
@@ -16,13 +17,6 @@ namespace fieldcodec::cli {
 namespace ser = pacontrol::serial;
 
 namespace {
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
 
 std::string value_text(const pacontrol::value &v) {
   return decimal_text(v.number) +
@@ -46,16 +40,18 @@ std::optional<frame_parts> split_frame(std::span<const std::uint8_t> f) {
   return p;
 }
 
-std::string check_text(const frame_parts &p, bool request, bool ok) {
+std::string check_text(const frame_parts &p, bool request, bool ok,
+                       const ser::check_options &checks) {
   const auto body = std::span<const char>(p.body.data(), p.body.size());
   const unsigned plain = ser::compute_check(body, ser::check_rule::body);
   const unsigned with_etx = ser::compute_check(body, ser::check_rule::body_and_etx);
   if (p.check == "0") return "check 0 (not checked)";
   if (ok) {
-    const bool manual_rule =
-        request ? std::to_string(plain) == p.check : std::to_string(with_etx) == p.check;
+    const ser::check_rule rule = request ? checks.request : checks.acknowledgement;
+    const bool own_rule =
+        std::to_string(rule == ser::check_rule::body ? plain : with_etx) == p.check;
     return "check " + p.check + " ok" +
-           (manual_rule ? std::string() : std::string(" (the other rule)"));
+           (own_rule ? std::string() : std::string(" (the other rule)"));
   }
   return "check " + p.check + " WRONG (body " + std::to_string(plain) + ", body+ETX " +
          std::to_string(with_etx) + ")";
@@ -74,7 +70,7 @@ bool looks_like_hex(std::string_view bytes) {
     }
     if (c == '#') {
       comment = true;
-    } else if (hex_digit(c) >= 0) {
+    } else if (ascii::hex_value(c) >= 0) {
       any = true;
     } else if (c == 'x' && i > 0 && bytes[i - 1] == '0') {
       continue;
@@ -98,8 +94,8 @@ bool parse_hex_capture(std::string_view text, std::vector<std::uint8_t> &out, st
       return false;
     }
     for (std::size_t i = 0; i < t.size(); i += 2U) {
-      const int hi = hex_digit(t[i]);
-      const int lo = hex_digit(t[i + 1U]);
+      const int hi = ascii::hex_value(t[i]);
+      const int lo = ascii::hex_value(t[i + 1U]);
       if (hi < 0 || lo < 0) {
         error = "line " + std::to_string(line) + ": not hex: '" + t + "'";
         return false;
@@ -129,10 +125,30 @@ bool parse_hex_capture(std::string_view text, std::vector<std::uint8_t> &out, st
   return flush();
 }
 
-std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture) {
+std::optional<ser::check_options> parse_check_rule(std::string_view s) {
+  ser::check_options o;
+  if (s == "manual") return o;
+  if (s == "either") {
+    o.request_either_rule = true;
+    o.acknowledgement_either_rule = true;
+    return o;
+  }
+  if (s == "body" || s == "body+etx") {
+    const auto r = s == "body" ? ser::check_rule::body : ser::check_rule::body_and_etx;
+    o.request = r;
+    o.acknowledgement = r;
+    return o;
+  }
+  return std::nullopt;
+}
+
+ser::check_options default_decode_checks() { return parse_check_rule("either").value(); }
+
+std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture,
+                                           const ser::check_options &checks) {
   namespace cmds = dictionaries::pacontrol_commands;
   std::vector<decoded_line> out;
-  ser::decoder dec({{}, ser::accept::any});
+  ser::decoder dec({checks, ser::accept::any});
   std::vector<std::uint8_t> pending; // bytes since the last line
   std::size_t pending_at = 0;        // offset of pending[0]
   const od::command *last_command = nullptr;
@@ -240,7 +256,7 @@ std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture
         last_command = nullptr;
       }
       if (parts) {
-        l.text += ", " + check_text(*parts, request, true);
+        l.text += ", " + check_text(*parts, request, true, checks);
         l.json.str("check", parts->check);
       }
       out.push_back(std::move(l));
@@ -262,7 +278,7 @@ std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture
       const bool request = std::count(parts->body.begin(), parts->body.end(), ';') == 3;
       l.function = request ? "REQUEST" : "ACK";
       l.text = (request ? "request " : "acknowledgement ") + json_string(parts->body) + ", " +
-               check_text(*parts, request, false);
+               check_text(*parts, request, false, checks);
       l.json.str("body", parts->body).str("check", parts->check).str("error", "bad checksum");
     } else {
       l.text = std::string(to_string(e)) + ": " + host::quoted_bytes(pending);

@@ -5,7 +5,11 @@
 
 #include "can_decoder.hpp"
 
+#include <fieldcodec/pacontrol/serial_decoder.hpp>
+
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,7 +23,17 @@ namespace fieldcodec::cli {
 /// True when `bytes` look like a hex capture (only hex digits, blanks, commas, "0x", comments).
 [[nodiscard]] bool looks_like_hex(std::string_view bytes);
 
+/// --check-rule: "manual" (requests: body, acknowledgements: body+ETX, as the manual's examples;
+/// nothing else passes), "either" (the manual's rule per direction, the other one accepted and
+/// noted — the manual mixes them: 3.4.3), "body", "body+etx" (that rule both ways). Nothing for
+/// another word.
+[[nodiscard]] std::optional<pacontrol::serial::check_options> parse_check_rule(std::string_view s);
+/// The check rules decode uses without --check-rule: "either".
+[[nodiscard]] pacontrol::serial::check_options default_decode_checks();
+
 /// Decode a whole capture into lines ("REQUEST", "ACK", "POLL", "NOISE", "MALFORMED").
-[[nodiscard]] std::vector<decoded_line> decode_pacontrol(std::span<const std::uint8_t> capture);
+[[nodiscard]] std::vector<decoded_line>
+decode_pacontrol(std::span<const std::uint8_t> capture,
+                 const pacontrol::serial::check_options &checks = default_decode_checks());
 
 } // namespace fieldcodec::cli

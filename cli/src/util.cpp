@@ -1,7 +1,9 @@
 // fieldcodec CLI — small text helpers.
 #include "util.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/core/utf8.hpp>
 
 #include <charconv>
 #include <cstdio>
@@ -56,8 +58,23 @@ json_object &json_object::raw(std::string_view k, std::string_view json) {
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";
-  for (const char c : s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const char c = s[i];
     const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x80U) {
+      const std::size_t n = utf8::sequence_length(s, i);
+      if (n != 0U) {
+        out.append(s.substr(i, n));
+        i += n;
+      } else {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04X", static_cast<unsigned>(u));
+        out += buf;
+        ++i;
+      }
+      continue;
+    }
     switch (c) {
     case '"': out += "\\\""; break;
     case '\\': out += "\\\\"; break;
@@ -73,9 +90,15 @@ std::string json_string(std::string_view s) {
         out += c;
       }
     }
+    ++i;
   }
   out += '"';
   return out;
+}
+
+std::string capped(std::string_view s, std::size_t max) {
+  if (s.size() <= max) return std::string(s);
+  return std::string(s.substr(0, max)) + "… (" + std::to_string(s.size()) + " characters)";
 }
 
 std::string hex_bytes(std::span<const std::uint8_t> b, std::string_view sep) {
@@ -119,19 +142,17 @@ std::string real_text(double v) {
 }
 
 bool parse_uint(std::string_view s, std::uint64_t max, std::uint64_t &out) {
-  int base = 10;
+  bool hex = false;
   if (s.size() > 2U && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
     s.remove_prefix(2);
-    base = 16;
+    hex = true;
   } else if (s.size() > 1U && (s.back() == 'h' || s.back() == 'H')) {
     s.remove_suffix(1);
-    base = 16;
+    hex = true;
   }
-  if (s.empty()) return false;
-  std::uint64_t v = 0;
-  auto r = std::from_chars(s.data(), s.data() + s.size(), v, base);
-  if (r.ec != std::errc{} || r.ptr != s.data() + s.size() || v > max) return false;
-  out = v;
+  const auto v = hex ? ascii::parse_hex(s) : ascii::parse_unsigned(s);
+  if (!v || v.value() > max) return false;
+  out = v.value();
   return true;
 }
 

@@ -30,8 +30,13 @@ private:
   std::string body_;
 };
 
-/// The JSON string literal of `s` (quotes included; control characters escaped).
+/// The JSON string literal of `s` (quotes included; control characters escaped). Always valid
+/// JSON: valid UTF-8 passes, every byte of `s` that is not part of valid UTF-8 is written as
+/// \u00XX (its Latin-1 reading), so no input can make an output line invalid.
 [[nodiscard]] std::string json_string(std::string_view s);
+/// At most `max` characters of `s` (of an input line echoed in a message), with
+/// "… (N characters)" when it was longer.
+[[nodiscard]] std::string capped(std::string_view s, std::size_t max = 120);
 
 /// "2B 00 18 05" (separator " ") or "2B001805" (separator "").
 [[nodiscard]] std::string hex_bytes(std::span<const std::uint8_t> b, std::string_view sep = " ");

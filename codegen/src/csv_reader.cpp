@@ -2,6 +2,8 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -696,22 +698,12 @@ private:
     command c;
     c.line = r.front().line;
     const field &fc = *get(r, "code");
-    std::uint32_t v = 0;
-    bool ok = fc.text.size() == 4U;
-    for (const char ch : fc.text) {
-      if (ch >= '0' && ch <= '9') {
-        v = v * 16U + static_cast<std::uint32_t>(ch - '0');
-      } else if (ch >= 'A' && ch <= 'F') {
-        v = v * 16U + static_cast<std::uint32_t>(ch - 'A' + 10);
-      } else {
-        ok = false;
-      }
-    }
-    if (!ok) {
+    const auto v = ascii::parse_hex(fc.text, ascii::hex_case::upper);
+    if (fc.text.size() != 4U || !v) {
       bad(fc, "code", "expected 4 upper-case hex digits such as 0A87, got '" + fc.text + "'");
       return;
     }
-    c.code = static_cast<std::uint16_t>(v);
+    c.code = static_cast<std::uint16_t>(v.value());
     c.name = text(r, "name");
     if (c.name.empty()) {
       bad(*get(r, "name"), "name", "expected a name, got nothing");

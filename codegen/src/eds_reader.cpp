@@ -3,6 +3,7 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/od/value.hpp>
 
 #include <algorithm>
@@ -303,20 +304,12 @@ struct classified {
   std::uint8_t sub = 0;
 };
 
+/// 1..max upper-case hex digits (the section name is upper-cased first).
 bool hex_digits(std::string_view s, std::size_t max, std::uint32_t &v) {
-  if (s.empty() || s.size() > max) return false;
-  v = 0;
-  for (const char c : s) {
-    unsigned d = 0;
-    if (c >= '0' && c <= '9') {
-      d = static_cast<unsigned>(c - '0');
-    } else if (c >= 'A' && c <= 'F') {
-      d = static_cast<unsigned>(c - 'A' + 10);
-    } else {
-      return false;
-    }
-    v = v * 16U + d;
-  }
+  if (s.size() > max) return false;
+  const auto r = ascii::parse_hex(s, ascii::hex_case::upper);
+  if (!r) return false;
+  v = static_cast<std::uint32_t>(r.value());
   return true;
 }
 
@@ -403,7 +396,13 @@ public:
     text_ = as_utf8(bytes, converted_, converted); // `bytes` outlive the reader
     if (!split(text_)) return std::nullopt;
     if (sections_.empty()) {
-      diag_.error(file_, 1, 1, "expected a section such as '[FileInfo]', got an empty file");
+      // a file whose only section header was bad has had its error: it is not "empty"
+      if (!header_failed_) {
+        diag_.error(file_, 1, 1,
+                    trim(text_).empty()
+                        ? "expected a section such as '[FileInfo]', got an empty file"
+                        : "expected a section such as '[FileInfo]', got none");
+      }
       return std::nullopt;
     }
     index_sections();
@@ -501,7 +500,9 @@ private:
     const auto close = t.find(']');
     if (close == std::string_view::npos) {
       diag_.error(file_, line_no, static_cast<int>(lead + t.size()) + 1,
-                  "expected ']' to end section name '" + std::string(t.substr(1)) + "'");
+                  "expected ']' to end section name '" + std::string(t.substr(1)) +
+                      "' (the section header is not closed)");
+      header_failed_ = true;
       return nullptr;
     }
     const std::string_view rest = trim(t.substr(close + 1U));
@@ -512,6 +513,7 @@ private:
     const std::string name(trim(t.substr(1, close - 1U)));
     if (name.empty()) {
       diag_.error(file_, line_no, static_cast<int>(lead) + 2, "expected a section name");
+      header_failed_ = true;
       return nullptr;
     }
     ini_section &section = sections_.emplace_back(keys_);
@@ -530,7 +532,7 @@ private:
       return;
     }
     if (current == nullptr) {
-      if (sections_.empty()) {
+      if (sections_.empty() && !header_failed_) {
         diag_.error(file_, line_no, static_cast<int>(lead) + 1,
                     "expected a section header such as '[FileInfo]' before the first key");
       }
@@ -1348,6 +1350,7 @@ private:
 
   const std::string &file_;
   diagnostics &diag_;
+  bool header_failed_ = false;       // a "[…" line was refused: its keys are skipped silently
   std::string_view text_;            // the file as UTF-8; keys and values are views into it
   std::string converted_;            // the text when the file was not UTF-8
   std::vector<ini_key> keys_;        // every key of the file, in file order (ini_section::keys)

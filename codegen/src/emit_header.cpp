@@ -308,30 +308,6 @@ void append_text(writer &o, const std::string &v) {
   append_text(o, od::data_type::visible_string, v);
 }
 
-/// The entry as od::pack takes it (every column a plain member; the text views `e`'s strings).
-od::entry_spec spec_of(const entry &e) {
-  od::entry_spec s;
-  s.index = e.index;
-  s.sub = e.sub;
-  s.object = e.object;
-  s.type = e.type;
-  s.access_type = e.access;
-  s.pdo = e.pdo;
-  std::uint16_t f = e.flags;
-  if (e.scaled) f |= od::flag::scaled;
-  if (e.default_nodeid) f |= od::flag::default_nodeid;
-  if (e.low_nodeid) f |= od::flag::low_nodeid;
-  if (e.high_nodeid) f |= od::flag::high_nodeid;
-  if (e.parameter_nodeid) f |= od::flag::parameter_nodeid;
-  s.flags = f;
-  s.size = e.size;
-  s.low = e.low;
-  s.high = e.high;
-  s.default_value = e.default_value;
-  s.default_text = od::text(e.default_text.data(), e.default_text.size());
-  return s;
-}
-
 /// The od::flag bits `f`, as a C++ expression after ", .flags = " (nothing when none).
 void append_flags(writer &o, std::uint16_t f) {
   static constexpr std::pair<std::uint16_t, std::string_view> bits[] = {

@@ -5,6 +5,7 @@
 #include <fieldcodec/od/command.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/entry.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/number.hpp>
 
 #include <cstdint>
@@ -247,5 +248,30 @@ struct dictionary {
   /// EtherCAT: what the ESI read says beyond the objects (nothing for other sources).
   std::optional<esi_device> ethercat;
 };
+
+/// The entry as od::pack takes it (every column a plain member; the text views `e`'s strings;
+/// the first sub-index of an entry that stands for `count` of them).
+[[nodiscard]] inline od::entry_spec spec_of(const entry &e) {
+  od::entry_spec s;
+  s.index = e.index;
+  s.sub = e.sub;
+  s.object = e.object;
+  s.type = e.type;
+  s.access_type = e.access;
+  s.pdo = e.pdo;
+  std::uint16_t f = e.flags;
+  if (e.scaled) f |= od::flag::scaled;
+  if (e.default_nodeid) f |= od::flag::default_nodeid;
+  if (e.low_nodeid) f |= od::flag::low_nodeid;
+  if (e.high_nodeid) f |= od::flag::high_nodeid;
+  if (e.parameter_nodeid) f |= od::flag::parameter_nodeid;
+  s.flags = f;
+  s.size = e.size;
+  s.low = e.low;
+  s.high = e.high;
+  s.default_value = e.default_value;
+  s.default_text = od::text(e.default_text.data(), e.default_text.size());
+  return s;
+}
 
 } // namespace fieldcodec::gen

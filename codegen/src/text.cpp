@@ -1,6 +1,8 @@
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/bytes.hpp>
+#include <fieldcodec/core/utf8.hpp>
 
 #include <algorithm>
 #include <array>
@@ -50,36 +52,11 @@ std::size_t utf8_invalid_at(std::string_view s) noexcept {
       i += 8U;
     }
     if (i >= s.size()) break;
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    std::uint32_t cp = 0;
-    if (c < 0x80U) {
+    if (static_cast<unsigned char>(s[i]) < 0x80U) {
       ++i;
       continue;
     }
-    if ((c & 0xE0U) == 0xC0U) {
-      n = 1;
-      cp = c & 0x1FU;
-    } else if ((c & 0xF0U) == 0xE0U) {
-      n = 2;
-      cp = c & 0x0FU;
-    } else if ((c & 0xF8U) == 0xF0U) {
-      n = 3;
-      cp = c & 0x07U;
-    } else {
-      return i;
-    }
-    if (i + n >= s.size()) return i;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto d = static_cast<unsigned char>(s[i + k]);
-      if ((d & 0xC0U) != 0x80U) return i;
-      cp = (cp << 6U) | (d & 0x3FU);
-    }
-    if ((n == 1 && cp < 0x80U) || (n == 2 && cp < 0x800U) || (n == 3 && cp < 0x10000U) ||
-        cp > 0x10FFFFU || (cp >= 0xD800U && cp <= 0xDFFFU)) {
-      return i;
-    }
-    i += n + 1U;
+    if (!utf8::next(s, i)) return i; // core/utf8: the one UTF-8 reader
   }
   return std::string_view::npos;
 }
@@ -193,16 +170,18 @@ int_parse parse_int(std::string_view s, int_syntax syntax) {
   std::uint64_t v = 0;
   for (std::size_t k = i; k < end; ++k) {
     const char c = s[k];
-    unsigned d = 99;
-    if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
-    if (c >= 'a' && c <= 'f') d = static_cast<unsigned>(c - 'a' + 10);
-    if (c >= 'A' && c <= 'F') d = static_cast<unsigned>(c - 'A' + 10);
+    const int hex = ascii::hex_value(c);
+    const unsigned d = hex < 0 ? 99U : static_cast<unsigned>(hex);
     if (d >= base) {
       const char *what = base == 16  ? "a hexadecimal digit"
                          : base == 8 ? "an octal digit"
                                      : "a digit";
-      r.error = std::string("expected ") + what + ", got '" + std::string(1, c) + "' in '" +
-                std::string(s) + "'";
+      // the whole character (core/utf8), so that the message stays UTF-8 (fuzz F23)
+      const std::size_t n = utf8::sequence_length(s, k);
+      r.error =
+          std::string("expected ") + what + ", got '" +
+          (n == 0U ? "\\x" + gen::hex(static_cast<std::uint8_t>(c), 2) : std::string(s.substr(k, n))) +
+          "' in '" + std::string(s) + "'";
       r.error_pos = k;
       r.suffix = false;
       return r;
@@ -371,15 +350,6 @@ nodeid_expr split_nodeid(std::string_view s) noexcept {
   return x;
 }
 
-namespace {
-int hex_value(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-} // namespace
-
 std::optional<std::string> byte_string_value(od::data_type type, std::string_view text) {
   switch (type) {
   case od::data_type::visible_string:
@@ -391,23 +361,9 @@ std::optional<std::string> byte_string_value(od::data_type type, std::string_vie
     std::string out;
     std::size_t i = 0;
     while (i < text.size()) { // the text is UTF-8 (the readers convert every file)
-      const auto c = static_cast<unsigned char>(text[i]);
-      std::uint32_t cp = c;
-      std::size_t n = 0;
-      if (c >= 0xF0U) {
-        cp = c & 0x07U;
-        n = 3;
-      } else if (c >= 0xE0U) {
-        cp = c & 0x0FU;
-        n = 2;
-      } else if (c >= 0xC0U) {
-        cp = c & 0x1FU;
-        n = 1;
-      }
-      for (std::size_t k = 1; k <= n && i + k < text.size(); ++k) {
-        cp = (cp << 6U) | (static_cast<unsigned char>(text[i + k]) & 0x3FU);
-      }
-      i += n + 1U;
+      auto next = utf8::next(text, i);
+      // not UTF-8 (a reader let it through): the byte as the code point it is in Latin-1
+      std::uint32_t cp = next ? next.value() : static_cast<unsigned char>(text[i++]);
       auto unit = [&](std::uint32_t u) {
         out += static_cast<char>(u & 0xFFU);
         out += static_cast<char>((u >> 8U) & 0xFFU);
@@ -432,8 +388,8 @@ std::optional<std::string> byte_string_value(od::data_type type, std::string_vie
         continue;
       }
       if (i + 1U >= text.size()) return std::nullopt;
-      const int hi = hex_value(text[i]);
-      const int lo = hex_value(text[i + 1U]);
+      const int hi = ascii::hex_value(text[i]);
+      const int lo = ascii::hex_value(text[i + 1U]);
       if (hi < 0 || lo < 0) return std::nullopt;
       out += static_cast<char>(hi * 16 + lo);
       i += 2;

@@ -230,16 +230,18 @@ private:
   }
 
   // An ARRAY written as ETG writes arrays (sub-index 0 and one "Elements" sub-item of an array
-  // type): sub-indices 1..n without gaps, all of one type and access.
+  // type): sub-indices k..k+n-1 without gaps (k >= 1 is the array type's LBound), all of one
+  // type and access.
   static bool array_form(const std::vector<const entry *> &subs) {
     if (subs.empty() || subs[0]->sub != 0U || subs[0]->object != od::object_code::array) {
       return false;
     }
     for (std::size_t i = 1; i < subs.size(); ++i) {
       const entry &e = *subs[i];
-      if (e.sub != i || e.type_code != subs[1]->type_code || e.type != subs[1]->type ||
-          e.size != subs[1]->size || e.access != subs[1]->access || e.pdo != subs[1]->pdo ||
-          e.other_keys != subs[1]->other_keys || e.type_name.str() != subs[1]->type_name.str()) {
+      if (e.sub != subs[1]->sub + (i - 1U) || e.type_code != subs[1]->type_code ||
+          e.type != subs[1]->type || e.size != subs[1]->size || e.access != subs[1]->access ||
+          e.pdo != subs[1]->pdo || e.other_keys != subs[1]->other_keys ||
+          e.type_name.str() != subs[1]->type_name.str()) {
         return false;
       }
     }
@@ -312,7 +314,7 @@ private:
         w_.leaf("BaseType", subs.size() > 1U ? type_of(el) : std::string("USINT"));
         w_.leaf("BitSize", std::to_string(bits * (subs.size() - 1U)));
         w_.open("ArrayInfo");
-        w_.leaf("LBound", "1");
+        w_.leaf("LBound", std::to_string(subs.size() > 1U ? subs[1]->sub : 1U));
         w_.leaf("Elements", std::to_string(subs.size() - 1U));
         w_.close();
         w_.close();

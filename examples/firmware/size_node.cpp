@@ -29,6 +29,9 @@ constexpr node::capacity caps = [] {
   node::capacity c = node::capacity_for(dict);
   c.sdo_buffer = 64;    // expedited and segmented of any size; block sub-blocks of 9 segments
   c.pdo_copies = false; // mapped objects one by one: the smaller PDO engine
+#ifdef FIELDCODEC_SIZE_NODE_LSS
+  c.lss = true; // size_node_lss.cpp: the same node as an LSS slave (CiA 305)
+#endif
   return c;
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);

@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -445,4 +446,30 @@ TEST_CASE("store: node-ID-relative limits and defaults in 32-bit comparisons, as
         abort_code::value_too_low);
   CHECK(s.set({0x2003, 0}, std::array<std::uint8_t, 4>{0x75, 0x00, 0x00, 0x00}) ==
         abort_code::none);
+}
+
+TEST_CASE("store: a layout made at run time (a dictionary loaded at run time)") {
+  namespace x = fieldcodec::dictionaries::xenax_canopen;
+  constexpr auto fixed = co::make_layout<x::entries.size()>(x::dictionary);
+  std::vector<std::uint32_t> offsets(x::dictionary.size() + 1U);
+  REQUIRE(co::make_layout(x::dictionary, offsets));
+  CHECK(std::equal(offsets.begin(), offsets.end(), fixed.offsets.begin()));
+  std::vector<std::uint32_t> wrong(x::dictionary.size());
+  CHECK_FALSE(co::make_layout(x::dictionary, wrong)); // one short: nothing written
+  CHECK(std::all_of(wrong.begin(), wrong.end(), [](std::uint32_t o) { return o == 0U; }));
+
+  std::vector<std::uint8_t> storage(fixed.storage_size());
+  co::dictionary_store<> store{x::dictionary, std::span<const std::uint32_t>(offsets), storage};
+  REQUIRE(store.init_defaults(5));
+  CHECK(store.value({0x1000, 0}).value().size() == 4U);
+  REQUIRE(store.set({0x6073, 0}, std::array<std::uint8_t, 2>{150, 0}) == abort_code::none);
+  CHECK(store.value({0x6073, 0}).value()[0] == 150);
+  // offsets of another dictionary, or too little storage: the store does not fit
+  offsets[1] += 1U;
+  co::dictionary_store<> bad{x::dictionary, std::span<const std::uint32_t>(offsets), storage};
+  CHECK(bad.init_defaults(5) == errc::buffer_too_small);
+  offsets[1] -= 1U;
+  std::vector<std::uint8_t> small(fixed.storage_size() - 1U);
+  co::dictionary_store<> tight{x::dictionary, std::span<const std::uint32_t>(offsets), small};
+  CHECK(tight.init_defaults(5) == errc::buffer_too_small);
 }

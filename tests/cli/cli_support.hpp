@@ -8,13 +8,16 @@
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo_client.hpp>
 #include <fieldcodec/canopen/sdo_server.hpp>
+#include <fieldcodec/core/utf8.hpp>
 #include <fieldcodec/host/candump.hpp>
 
 #include <doctest/doctest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <deque>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -61,6 +64,136 @@ inline void check_golden(const std::string &name, const std::string &actual) {
   const std::string expected = read_text(path);
   INFO("golden file " << path << " (FIELDCODEC_UPDATE_GOLDEN=1 rewrites it)");
   CHECK(actual == expected);
+}
+
+/// Whether `s` is one JSON value (RFC 8259) in valid UTF-8: what every --json line must be.
+inline bool valid_json(std::string_view s) {
+  std::size_t i = 0;
+  auto ws = [&] {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\n' || s[i] == '\r')) ++i;
+  };
+  auto literal = [&](std::string_view w) {
+    if (s.substr(i, w.size()) != w) return false;
+    i += w.size();
+    return true;
+  };
+  std::function<bool()> value;
+  auto string = [&]() -> bool {
+    if (i >= s.size() || s[i] != '"') return false;
+    ++i;
+    while (i < s.size() && s[i] != '"') {
+      const auto c = static_cast<unsigned char>(s[i]);
+      if (c < 0x20U) return false;
+      if (c == '\\') {
+        ++i;
+        if (i >= s.size()) return false;
+        if (s[i] == 'u') {
+          for (std::size_t k = 1; k <= 4U; ++k) {
+            if (i + k >= s.size() || std::isxdigit(static_cast<unsigned char>(s[i + k])) == 0) {
+              return false;
+            }
+          }
+          i += 5;
+        } else if (std::string_view("\"\\/bfnrt").find(s[i]) != std::string_view::npos) {
+          ++i;
+        } else {
+          return false;
+        }
+      } else if (c >= 0x80U) {
+        if (!fieldcodec::utf8::next(s, i)) return false;
+      } else {
+        ++i;
+      }
+    }
+    if (i >= s.size()) return false;
+    ++i;
+    return true;
+  };
+  auto number = [&]() -> bool {
+    const std::size_t start = i;
+    if (i < s.size() && s[i] == '-') ++i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) != 0) ++i;
+    if (i < s.size() && s[i] == '.') {
+      ++i;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) != 0) ++i;
+    }
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+      ++i;
+      if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) != 0) ++i;
+    }
+    return i > start && std::isdigit(static_cast<unsigned char>(s[i - 1])) != 0;
+  };
+  value = [&]() -> bool {
+    ws();
+    if (i >= s.size()) return false;
+    bool ok = false;
+    if (s[i] == '{') {
+      ++i;
+      ws();
+      if (i < s.size() && s[i] == '}') {
+        ++i;
+        ok = true;
+      } else {
+        for (;;) {
+          ws();
+          if (!string()) return false;
+          ws();
+          if (i >= s.size() || s[i] != ':') return false;
+          ++i;
+          if (!value()) return false;
+          ws();
+          if (i < s.size() && s[i] == ',') {
+            ++i;
+            continue;
+          }
+          if (i < s.size() && s[i] == '}') {
+            ++i;
+            ok = true;
+          }
+          break;
+        }
+      }
+    } else if (s[i] == '[') {
+      ++i;
+      ws();
+      if (i < s.size() && s[i] == ']') {
+        ++i;
+        ok = true;
+      } else {
+        for (;;) {
+          if (!value()) return false;
+          ws();
+          if (i < s.size() && s[i] == ',') {
+            ++i;
+            continue;
+          }
+          if (i < s.size() && s[i] == ']') {
+            ++i;
+            ok = true;
+          }
+          break;
+        }
+      }
+    } else if (s[i] == '"') {
+      ok = string();
+    } else if (s[i] == 't' || s[i] == 'f' || s[i] == 'n') {
+      ok = literal("true") || literal("false") || literal("null");
+    } else {
+      ok = number();
+    }
+    ws();
+    return ok;
+  };
+  return value() && i == s.size();
+}
+
+/// Every line of `out` is valid JSON.
+inline void check_json_lines(const std::string &out) {
+  for (const auto l : cli::split_lines(out)) {
+    CAPTURE(l);
+    CHECK(valid_json(l));
+  }
 }
 
 /// A candump log being written: every frame gets a time 250 µs after the last.

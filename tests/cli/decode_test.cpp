@@ -132,6 +132,7 @@ TEST_CASE("decode: NMT, SYNC, TIME, EMCY, heartbeat, guarding, errors, malformed
   const auto json = t::run_cli({"decode", "--json"}, log.text);
   CHECK(json.code == 4);
   t::check_golden("services.jsonl", json.out);
+  t::check_json_lines(json.out);
 }
 
 TEST_CASE("decode: SDO transfers of a XENAX drive with its EDS, PDOs, CiA 402") {
@@ -193,6 +194,7 @@ TEST_CASE("decode: SDO transfers of a XENAX drive with its EDS, PDOs, CiA 402") 
   const auto json = t::run_cli({"decode", "--json", "--dict", eds}, bus.log.text);
   CHECK(json.code == 0);
   t::check_golden("xenax.jsonl", json.out);
+  t::check_json_lines(json.out);
   // every SDO frame on its own line as well
   const auto frames = t::run_cli({"decode", "--sdo-frames", "--dict", eds}, bus.log.text);
   CHECK(frames.code == 0);

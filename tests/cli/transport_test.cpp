@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <string>
 #include <thread>
 
@@ -38,7 +39,8 @@ TEST_CASE("cli: sdo read and write over slcan") {
   CHECK(r.out == "1008h:00 = \"Servocontroller XENAX Xvi xxVx\"\n");
   r = t::run_cli({"sdo", "read", "5", "1018:1", "--slcan", port, "--dict", xenax_eds, "--json"});
   CHECK(r.out == "{\"node\":5,\"index\":4120,\"sub\":1,\"name\":\"Identity Object: Vendor "
-                 "Id\",\"value\":302}\n");
+                 "Id\",\"value\":302,\"bytes\":\"2E010000\"}\n");
+  t::check_json_lines(r.out);
 
   // writes in the object's type; scaled and unit-less values as given
   r = t::run_cli({"sdo", "write", "5", "6040:0", "0x000F", "--slcan", port, "--dict", xenax_eds});
@@ -73,8 +75,8 @@ TEST_CASE("cli: sdo read and write over slcan") {
   // usage errors: exit 2, before anything is sent
   r = t::run_cli({"sdo", "write", "5", "6040:0", "x", "--slcan", port, "--dict", xenax_eds});
   CHECK(r.code == 2);
-  CHECK(r.err == "fieldcodec: sdo write: not a number: 'x' (bad digit) (try 'fieldcodec sdo "
-                 "write --help')\n");
+  CHECK(r.err == "fieldcodec: sdo write: node 5, 6040h:00 Controlword: 'x': bad digit at "
+                 "character 1 (nothing sent)\n");
   r = t::run_cli({"sdo", "write", "5", "6040:0", "70000", "--slcan", port, "--dict", xenax_eds});
   CHECK(r.code == 2);
   r = t::run_cli({"sdo", "write", "5", "6040:0", "1", "--slcan", port});
@@ -136,9 +138,9 @@ TEST_CASE("cli: nmt, monitor, dump over slcan") {
   // the times are the host's: compare what follows them
   const auto lines = fieldcodec::cli::split_lines(r.out);
   REQUIRE(lines.size() == 2);
-  CHECK(lines[0].substr(lines[0].find(' ')) == " 705 HEARTBEAT node 5: operational");
+  CHECK(lines[0].substr(lines[0].find(' ')) == " slcan0 705 HEARTBEAT node 5: operational");
   CHECK(lines[1].substr(lines[1].find(' ')) ==
-        " 185 TPDO1     node 5: Statusword = 0x0637 (operation enabled, target reached)");
+        " slcan0 185 TPDO1     node 5: Statusword = 0x0637 (operation enabled, target reached)");
   std::string untimed;
   for (const auto l : lines) untimed += "<time>" + std::string(l.substr(l.find(' '))) + "\n";
   t::check_golden("monitor.txt", untimed);
@@ -203,6 +205,44 @@ TEST_CASE("cli: pacontrol send over a serial line") {
   CHECK(r.code == 3);
 }
 
+TEST_CASE("pacontrol send: noise before SOH, a missing date, the other check rule (issue 26)") {
+  namespace ser = pa::serial;
+  // the control answers with line noise before the acknowledgement; for 1907 with the body
+  // rule (as the manual's 3.4.3 example); 0800 (a real date) is never sent without its date
+  fieldcodec::test::pacontrol_peer peer([](const ser::decoded_frame &f) -> std::string {
+    ser::acknowledgement a;
+    a.operating_status = 31;
+    a.end_of_processing = true;
+    a.date = pa::value::of_int(7).value();
+    if (f.kind == ser::frame_kind::request && f.req.code == 0x1907) {
+      std::array<std::uint8_t, ser::max_frame_size> out{};
+      const auto n = ser::encode_acknowledgement(a, out, ser::check_rule::body).value();
+      return std::string(reinterpret_cast<const char *>(out.data()), n);
+    }
+    return "\r\nxy" + fieldcodec::test::pacontrol_peer::ack(a);
+  });
+  REQUIRE(peer.ok());
+  auto r = t::run_cli({"pacontrol", "send", peer.path(), "cmd_get_int_reg", "12"});
+  CHECK(r.err == "");
+  CHECK(r.code == 0); // was: "bad acknowledgement (bad syntax)"
+  CHECK(r.out.find("NOISE     4 bytes outside a frame") != std::string::npos);
+  CHECK(r.out.find("reply 7 (integer) for cmd_get_int_reg, check ") != std::string::npos);
+  r = t::run_cli({"pacontrol", "send", peer.path(), "cmd_set_axis_parameter", "261"});
+  CHECK(r.code == 2);
+  CHECK(r.err == "fieldcodec: pacontrol send: cmd_set_axis_parameter takes a real date: "
+                 "PARAMETER DATE (try 'fieldcodec pacontrol send --help')\n");
+  r = t::run_cli({"pacontrol", "send", peer.path(), "cmd_get_int_reg", "12", "5"});
+  CHECK(r.code == 2);
+  CHECK(r.err.find("cmd_get_int_reg takes no date") != std::string::npos);
+  // an acknowledgement with the other rule: refused by default, accepted with --check-rule
+  r = t::run_cli({"pacontrol", "send", peer.path(), "1907", "1"});
+  CHECK(r.code == 1);
+  CHECK(r.err.find("bad acknowledgement (bad checksum)") != std::string::npos);
+  r = t::run_cli({"pacontrol", "send", peer.path(), "1907", "1", "--check-rule", "either"});
+  CHECK(r.code == 0);
+  CHECK(r.out.find("ok (the other rule)") != std::string::npos);
+}
+
 TEST_CASE("cli: --help for every command, usage errors") {
   for (const auto &args : std::vector<std::vector<std::string>>{{"--help"},
                                                                 {"decode", "--help"},
@@ -220,6 +260,18 @@ TEST_CASE("cli: --help for every command, usage errors") {
     CHECK(r.out.rfind("usage: fieldcodec", 0) == 0);
     CHECK(r.err == "");
   }
+  // "help COMMAND" is the command's --help (it printed the general help)
+  for (const auto &[asked, same] :
+       std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>>{
+           {{"help", "decode"}, {"decode", "--help"}},
+           {{"help", "sdo", "write"}, {"sdo", "write", "--help"}},
+           {{"help", "pacontrol", "send"}, {"pacontrol", "send", "--help"}}}) {
+    const auto h = t::run_cli(asked);
+    CHECK(h.code == 0);
+    CHECK(h.out == t::run_cli(same).out);
+  }
+  CHECK(t::run_cli({"help", "decode"}).out.rfind("usage: fieldcodec decode", 0) == 0);
+  CHECK(t::run_cli({"help", "frobnicate"}).code == 2);
   auto r = t::run_cli({});
   CHECK(r.code == 2);
   r = t::run_cli({"frobnicate"});

@@ -3,6 +3,7 @@
 #include "eds_text.hpp"
 #include "readers.hpp"
 
+#include "skip.hpp"
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -531,10 +532,10 @@ AccessType=ro
 }
 
 TEST_CASE("config list: every DCF of the corpus gives a well-formed list") {
-  const std::filesystem::path corpus = "../../shared/eds-corpus";
+  const std::filesystem::path corpus =
+      std::filesystem::path(fieldcodec::test::shared_dir) / "eds-corpus";
   if (!std::filesystem::exists(corpus)) {
-    MESSAGE("skipped: ../shared/eds-corpus is absent");
-    return;
+    FIELDCODEC_SKIP_TEST("corpus", "EDS corpus not found at " << corpus.string());
   }
   int files = 0;
   for (const auto &f : std::filesystem::directory_iterator(corpus)) {

@@ -277,7 +277,7 @@ inline void append_flags(std::string &o, std::uint16_t f) {
 
 /// `{...}` initialising the od::entry part.
 inline void emit_core(std::string &o, const entry &e) {
-  const od::entry_spec spec = spec_of(e);
+  const od::entry_spec spec = emit_reference::spec_of(e);
   o += "{.index = 0x";
   append_hex(o, e.index, 4);
   if (e.sub != 0U) {
@@ -314,7 +314,8 @@ inline void emit_core(std::string &o, const entry &e) {
 /// The `kinds` line: what od::kinds_of finds in the entries.
 inline void emit_kinds(std::string &o, const dictionary &d) {
   std::vector<od::entry> lean;
-  for (const entry &e : d.entries) lean.push_back(od::make_entry(spec_of(e), nullptr));
+  for (const entry &e : d.entries)
+    lean.push_back(od::make_entry(emit_reference::spec_of(e), nullptr));
   const od::value_kinds k = od::kinds_of(lean);
   auto b = [](bool v) { return v ? "true" : "false"; };
   o += "\n// The kinds of values in the entries (od/value_kinds.hpp).\n"

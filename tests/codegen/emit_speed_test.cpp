@@ -7,6 +7,7 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include "skip.hpp"
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -217,10 +218,10 @@ TEST_CASE("emit_header: as before issue 18's second round, on the repository's d
 }
 
 TEST_CASE("emit_header: as before issue 18's second round, on the shared corpus") {
-  const std::filesystem::path corpus = "../../shared/eds-corpus";
+  const std::filesystem::path corpus =
+      std::filesystem::path(fieldcodec::test::shared_dir) / "eds-corpus";
   if (!std::filesystem::is_directory(corpus)) {
-    MESSAGE("skipped: ../shared/eds-corpus is absent");
-    return;
+    FIELDCODEC_SKIP_TEST("corpus", "EDS corpus not found at " << corpus.string());
   }
   CHECK(compare_files(corpus) >= 20U);
 }

@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -376,4 +377,29 @@ TEST_CASE("esi: EDS -> ESI -> EDS keeps what an ESI can hold") {
     CHECK(a.name == b.name);
     CHECK((a.default_value == b.default_value || a.default_nodeid)); // $NODEID: not in an ESI
   }
+}
+
+TEST_CASE("esi: an ARRAY whose elements start above sub-index 1 keeps ETG's array form (F28)") {
+  // fuzz/FINDINGS.md F28: an array type with LBound 2 read as an ARRAY of sub-indices 0, 2, 3
+  // was written as a record and read back as a RECORD without need; ETG's ArrayInfo says LBound
+  const outcome o = read("../fuzz/corpus/codegen_esi/regression_f28_array_lbound.xml");
+  REQUIRE(o.dict);
+  CHECK(at(*o.dict, 0x1C12, 2).object == od::object_code::array);
+  gen::diagnostics w;
+  const std::string x = gen::write_esi(*o.dict, "src", w);
+  CHECK(x.find("<LBound>2</LBound>") != std::string::npos);
+  for (const auto &l : w.all()) CHECK(l.message.find("written as records") == std::string::npos);
+  check_same(*o.dict, esi_round_trip(*o.dict));
+
+  // a gap between the elements: written as a record, said so, read back as a RECORD
+  gen::dictionary gap = *o.dict;
+  gen::entry fifth = at(gap, 0x1C12, 3);
+  fifth.sub = 5;
+  gap.entries.push_back(fifth);
+  std::vector<std::string> lost;
+  const gen::dictionary back = esi_round_trip(gap, &lost);
+  CHECK(std::count_if(lost.begin(), lost.end(), [](const std::string &s) {
+          return s.find("1 ARRAY with gaps") != std::string::npos;
+        }) == 1);
+  CHECK(at(back, 0x1C12, 5).object == od::object_code::record);
 }

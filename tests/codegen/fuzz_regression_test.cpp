@@ -5,6 +5,8 @@
 #include "readers.hpp"
 #include "text.hpp"
 
+#include <fieldcodec/core/utf8.hpp>
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -194,4 +196,31 @@ TEST_CASE("fuzz F20: a file name with a line break or a non-UTF-8 byte keeps the
   h = gen::emit_header(*d);
   CHECK(h.starts_with("// Generated from caf\xC3\xA9 \"1\".eds by"));
   CHECK(h.find("source_file = \"caf\xC3\xA9 \\\"1\\\".eds\";") != std::string::npos);
+}
+
+// F23 (fuzz_cli_dictionary, `--dict` of the CLI): a number with a non-ASCII character among its
+// digits ("DataType=0xÀ0005", a Latin-1 file converted to UTF-8) was reported as "got '\xC3'":
+// the first byte of the character alone, so the diagnostic the CLI prints was not UTF-8.
+TEST_CASE("fuzz F23: a diagnostic quotes a whole character") {
+  gen::diagnostics diag;
+  (void)read("[1000]\nParameterName=Device type\nObjectType=0x7\nDataType=0x\xC3\x80"
+             "0007\nAccessType=ro\n",
+             false, diag);
+  REQUIRE(diag.has_errors());
+  bool found = false;
+  for (const auto &x : diag.all()) {
+    CHECK(gen::valid_utf8(x.message));
+    found = found || x.message.find("got '\xC3\x80'") != std::string::npos;
+  }
+  CHECK(found);
+  // the one primitive (core/utf8): the length of the character at a position, 0 where none starts
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 1) == 2U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 3) == 3U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80\xE2\x82\xAC\xF0\x9F\x98\x80", 6) == 4U);
+  CHECK(fieldcodec::utf8::sequence_length("a\xC3\x80", 2) == 0U);        // a continuation byte
+  CHECK(fieldcodec::utf8::sequence_length("\xC3", 0) == 0U);             // cut
+  CHECK(fieldcodec::utf8::sequence_length("\xC0\x80", 0) == 0U);         // overlong
+  CHECK(fieldcodec::utf8::sequence_length("\xED\xA0\x80", 0) == 0U);     // a surrogate
+  CHECK(fieldcodec::utf8::sequence_length("\xF4\x90\x80\x80", 0) == 0U); // beyond U+10FFFF
+  CHECK(fieldcodec::utf8::sequence_length("ab", 2) == 0U);               // past the end
 }

@@ -261,7 +261,13 @@ TEST_CASE("eds/csv: malformed files get exact diagnostics") {
             "here"}},
       {"unterminated_section.eds",
        false,
-       {m + "unterminated_section.eds:20:6: error: expected ']' to end section name '2000'"}},
+       {m + "unterminated_section.eds:20:6: error: expected ']' to end section name '2000' (the "
+            "section header is not closed)"}},
+      // the only error: not "an empty file", no "section header before the first key" (issue 26)
+      {"unterminated_first_section.eds",
+       false,
+       {m + "unterminated_first_section.eds:2:6: error: expected ']' to end section name '1000' "
+            "(the section header is not closed)"}},
   };
   std::size_t files = 0;
   for (const auto &f : std::filesystem::directory_iterator(m)) {

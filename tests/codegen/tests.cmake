@@ -16,42 +16,65 @@ add_test(NAME codegen_cli
 add_test(NAME codegen_drift
   COMMAND ${PROJECT_SOURCE_DIR}/codegen/regenerate.sh --check --gen $<TARGET_FILE:fieldcodec-gen>)
 
-# Every real EDS/DCF of the shared corpus is read and its header compiles (when the corpus
-# folder exists beside the repository).
-set(FIELDCODEC_EDS_CORPUS "${PROJECT_SOURCE_DIR}/../shared/eds-corpus" CACHE PATH
-  "Folder of real EDS/DCF files for the corpus test")
-if(EXISTS "${FIELDCODEC_EDS_CORPUS}")
+# Every real EDS/DCF of the shared corpus is read and its header compiles. Without the corpus
+# folder the test says so and is skipped (a failure under CI=true, tests/run_test.sh).
+# FIELDCODEC_EDS_CORPUS names another folder; empty (the default) follows FIELDCODEC_SHARED_DIR,
+# also when that changes after the first configure.
+set(FIELDCODEC_EDS_CORPUS "" CACHE PATH
+  "Folder of real EDS/DCF files for the corpus test (empty: FIELDCODEC_SHARED_DIR/eds-corpus)")
+set(fieldcodec_eds_corpus "${FIELDCODEC_EDS_CORPUS}")
+if(NOT fieldcodec_eds_corpus)
+  set(fieldcodec_eds_corpus "${FIELDCODEC_SHARED_DIR}/eds-corpus")
+endif()
+if(EXISTS "${fieldcodec_eds_corpus}")
   add_test(NAME codegen_corpus
     COMMAND ${CMAKE_COMMAND}
       -DGEN=$<TARGET_FILE:fieldcodec-gen>
-      -DCORPUS=${FIELDCODEC_EDS_CORPUS}
+      -DCORPUS=${fieldcodec_eds_corpus}
       -DCXX=${CMAKE_CXX_COMPILER}
       -DINCLUDE_DIR=${PROJECT_SOURCE_DIR}/include
       -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_corpus
       -P ${PROJECT_SOURCE_DIR}/tests/codegen/corpus.cmake)
+else()
+  add_test(NAME codegen_corpus
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/run_test.sh corpus skip
+      "EDS corpus not found at ${fieldcodec_eds_corpus}")
+  set_tests_properties(codegen_corpus PROPERTIES SKIP_RETURN_CODE 77)
 endif()
 
 # Every XDD/XDC (and ESI) of the shared XML corpus is read or refused with a placed diagnostic,
 # and the headers of all it reads compile in one translation unit; xml_corpus.py checks each
 # file's objects, defaults and PDO entries against its own reading with python's xml.etree (and
-# that each refusal names a defect it finds itself). Only when the corpus folder exists beside
-# the repository; python3 missing skips the second (exit 77), except under CI=true.
-set(FIELDCODEC_XML_CORPUS "${PROJECT_SOURCE_DIR}/../shared/xml-corpus" CACHE PATH
-  "Folder of real XDD/XDC and ESI files for the XML corpus tests")
-if(EXISTS "${FIELDCODEC_XML_CORPUS}")
+# that each refusal names a defect it finds itself). Without the corpus folder
+# (FIELDCODEC_XML_CORPUS; empty: FIELDCODEC_SHARED_DIR/xml-corpus) both say so and are skipped,
+# and python3 missing skips the second; under CI=true either fails (tests/run_test.sh).
+set(FIELDCODEC_XML_CORPUS "" CACHE PATH
+  "Folder of XDD/XDC and ESI files for the XML corpus tests (empty: SHARED_DIR/xml-corpus)")
+set(fieldcodec_xml_corpus "${FIELDCODEC_XML_CORPUS}")
+if(NOT fieldcodec_xml_corpus)
+  set(fieldcodec_xml_corpus "${FIELDCODEC_SHARED_DIR}/xml-corpus")
+endif()
+if(EXISTS "${fieldcodec_xml_corpus}")
   add_test(NAME codegen_xml_corpus_headers
     COMMAND ${CMAKE_COMMAND}
       -DGEN=$<TARGET_FILE:fieldcodec-gen>
-      -DCORPUS=${FIELDCODEC_XML_CORPUS}
+      -DCORPUS=${fieldcodec_xml_corpus}
       -DCXX=${CMAKE_CXX_COMPILER}
       -DINCLUDE_DIR=${PROJECT_SOURCE_DIR}/include
       -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/codegen_xml_corpus_headers
       -P ${PROJECT_SOURCE_DIR}/tests/codegen/xml_corpus.cmake)
   add_test(NAME codegen_xml_corpus
-    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/interop/python3.sh
+    COMMAND sh ${PROJECT_SOURCE_DIR}/tests/run_test.sh python python3
       ${PROJECT_SOURCE_DIR}/tests/codegen/xml_corpus.py $<TARGET_FILE:fieldcodec-gen>
-      ${FIELDCODEC_XML_CORPUS} ${CMAKE_CURRENT_BINARY_DIR}/codegen_xml_corpus)
+      ${fieldcodec_xml_corpus} ${CMAKE_CURRENT_BINARY_DIR}/codegen_xml_corpus)
   set_tests_properties(codegen_xml_corpus PROPERTIES SKIP_RETURN_CODE 77)
+else()
+  foreach(name codegen_xml_corpus_headers codegen_xml_corpus)
+    add_test(NAME ${name}
+      COMMAND sh ${PROJECT_SOURCE_DIR}/tests/run_test.sh corpus skip
+        "XML corpus not found at ${fieldcodec_xml_corpus}")
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77)
+  endforeach()
 endif()
 
 # fieldcodec_generate_dictionary() in a user project (fieldcodec added as a subproject). The

@@ -22,9 +22,10 @@ function(mask out text)
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
-# Where a block may be found: a test, or (an excerpt of the library's own code) a header.
+# Where a block may be found: a test, an example's header that a test includes and runs, or (an
+# excerpt of the library's own code) a header.
 file(GLOB_RECURSE test_sources ${SOURCE_DIR}/tests/*.cpp ${SOURCE_DIR}/tests/*.hpp
-     ${SOURCE_DIR}/include/*.hpp)
+     ${SOURCE_DIR}/include/*.hpp ${SOURCE_DIR}/examples/*.hpp)
 set(test_texts "")
 foreach(src IN LISTS test_sources)
   file(READ ${src} text)

@@ -124,3 +124,75 @@ TEST_CASE("candump: every CANopen frame survives a write and a read") {
   CHECK(host::interface_name::make("can 0") == errc::bad_character);
   CHECK(host::interface_name::make("a/b") == errc::bad_character);
 }
+
+TEST_CASE("candump: the display format, with every time stamp option (issue 26)") {
+  // `candump can0` without options
+  auto r = candump::parse_line("  can0  605   [8]  2B 00 18 05 64 00 00 00").value();
+  CHECK(r.iface.view() == "can0");
+  CHECK(r.id == 0x605U);
+  CHECK(r.dlc == 8U);
+  CHECK(r.data[4] == 0x64U);
+  CHECK_FALSE(r.time.known());
+  // -ta: absolute
+  r = candump::parse_line(" (1700000000.123456)  can0  705   [1]  05").value();
+  CHECK(r.time.seconds == 1700000000);
+  CHECK(r.time.fraction == 123456U);
+  CHECK(candump::format_time(r.time) == "1700000000.123456");
+  // -td / -tz: relative, as printed
+  r = candump::parse_line(" (000.000250)  can0  705   [1]  05").value();
+  CHECK(candump::format_time(r.time) == "0.000250");
+  // -tA: a local date, written back as one
+  r = candump::parse_line(" (2024-05-01 12:34:56.123456)  can0  705   [1]  05").value();
+  CHECK(r.time.date);
+  CHECK(candump::format_time(r.time) == "2024-05-01 12:34:56.123456");
+  CHECK(candump::format_line(r) == "(2024-05-01 12:34:56.123456) can0 705#05");
+  CHECK(candump::parse_line(candump::format_line(r)).value() == r);
+  // 29-bit frames (SFF indented), remote requests, -x, -a, error frames with -e
+  r = candump::parse_line("  can0  12345678   [2]  DE AD").value();
+  CHECK(r.extended);
+  CHECK(r.id == 0x12345678U);
+  r = candump::parse_line("  can0       705   [1]  remote request").value();
+  CHECK(r.rtr);
+  CHECK(r.dlc == 1U);
+  r = candump::parse_line(" (1700000000.000001)  can0  RX - -  185   [2]  37 06").value();
+  CHECK(r.id == 0x185U);
+  r = candump::parse_line("  can0  185   [2]  41 42                     'AB'").value();
+  CHECK(r.data[1] == 0x42U);
+  r = candump::parse_line("  can0  20000004   [8]  00 04 00 00 00 00 00 00   ERRORFRAME").value();
+  CHECK(r.error);
+  CHECK(candump::is_blank_or_comment("\tcontroller-problem{rx-error-passive}"));
+  // the log format with candump -x's direction after the frame
+  CHECK(candump::parse_line("(1700000000.000001) can0 185#3706 R").value().dlc == 2U);
+}
+
+TEST_CASE("candump: every bad line says what is wrong and where") {
+  auto e = candump::parse_line("800#00").error();
+  CHECK(e.code == errc::invalid_argument);
+  CHECK(std::string_view(e.reason) == "11-bit identifier above 7FF");
+  CHECK(e.column == 0U);
+  e = candump::parse_line("(1.000000) can0 800#00").error();
+  CHECK(std::string_view(e.reason) == "11-bit identifier above 7FF");
+  CHECK(e.column == 16U);
+  e = candump::parse_line("  can0  800   [1]  00").error();
+  CHECK(std::string_view(e.reason) == "11-bit identifier above 7FF");
+  CHECK(e.column == 8U);
+  e = candump::parse_line("  can0  605   [12]  00 11 22 33 44 55 66 77 88 99 AA BB").error();
+  CHECK(e.code == errc::unexpected_frame);
+  e = candump::parse_line("  can0  605   [3]  00 11").error();
+  CHECK(e.code == errc::truncated);
+  CHECK(std::string_view(e.reason) == "fewer data bytes than the length says");
+  e = candump::parse_line("  can0  605   [2]  00 1G").error();
+  CHECK(e.code == errc::bad_digit);
+  CHECK(e.column == 22U); // the byte "1G"
+  e = candump::parse_line("  can0  605   [9]  00").error();
+  CHECK(e.code == errc::bad_length);
+  e = candump::parse_line("  can0  605   [1]  00 junk").error();
+  CHECK(std::string_view(e.reason) == "unexpected text after the data");
+  e = candump::parse_line("605#0011 junk").error();
+  CHECK(std::string_view(e.reason) == "unexpected text after the frame");
+  e = candump::parse_line("garbage").error();
+  CHECK(e.code == errc::bad_syntax);
+  CHECK(std::string_view(e.reason) == "no frame: ID#DATA expected");
+  e = candump::parse_line("(2024-13-01 00:00:00.000000) can0 605#00").error();
+  CHECK(e.code == errc::out_of_range);
+}

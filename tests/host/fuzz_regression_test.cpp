@@ -1,9 +1,32 @@
 // Regression tests for inputs found by the CANopen fuzz harnesses (see fuzz/FINDINGS.md).
 // A test marked may_fail reproduces an OPEN finding: it reports the failure without failing the
 // suite. Whoever fixes the finding removes the decorator (and the finding's status says fixed).
+#include <fieldcodec/host/candump.hpp>
 #include <fieldcodec/host/socketcan.hpp>
 
 #include <doctest/doctest.h>
+
+namespace candump = fieldcodec::host::candump;
+
+// F21 (fuzz_host_candump): format_line writes a record with a time but no interface (what an
+// slcan adapter delivers, `fieldcodec monitor --log`) as "(t) - ID#DATA", and parse_line read
+// "-" back as an interface named "-": a written log did not read back identical.
+TEST_CASE("fuzz F21: a log line without an interface reads back without one") {
+  fieldcodec::host::frame_record r;
+  r.id = 0x181;
+  r.dlc = 1;
+  r.data[0] = 0x01;
+  r.time = {1, 5, 1};
+  const std::string line = candump::format_line(r);
+  CHECK(line == "(1.5) - 181#01");
+  const auto back = candump::parse_line(line);
+  REQUIRE(back);
+  CHECK(back.value().iface.empty());
+  CHECK(back.value() == r);
+  // a real interface name is kept; "-" followed by more characters is a name
+  CHECK(candump::parse_line("(1.5) can0 181#01").value().iface.view() == "can0");
+  CHECK(candump::parse_line("(1.5) -x 181#01").value().iface.view() == "-x");
+}
 
 #ifdef FIELDCODEC_HAS_SOCKETCAN
 

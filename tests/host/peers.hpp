@@ -10,6 +10,7 @@
 #include <fieldcodec/canopen/sdo_server.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/host/slcan.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
@@ -160,11 +161,7 @@ private:
   using store_t = canopen::dictionary_store<>;
   static constexpr od::dictionary dict() { return dictionaries::xenax_canopen::dictionary; }
 
-  std::uint32_t now() const {
-    return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                          std::chrono::steady_clock::now() - start_)
-                                          .count());
-  }
+  std::uint32_t now() const { return clock_.now(); }
 
   void send_frames(const canopen::sdo::step &s) {
     for (const canopen::can_frame &f : s.send) {
@@ -232,7 +229,7 @@ private:
   std::vector<canopen::can_frame> pending_;
   std::optional<canopen::nmt::command> last_nmt_;
   std::atomic<bool> stop_{false};
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  host::steady_ms clock_;
   std::thread thread_;
 };
 

@@ -1,9 +1,10 @@
 // SocketCAN bus (host/socketcan_bus.hpp). The traffic test needs a virtual CAN interface: it
 // uses $FIELDCODEC_VCAN (default vcan0), tries to create it (`ip link add … type vcan`, needs
 // root and the vcan module) and is skipped with a message where that is impossible (CI machines
-// have no vcan; slcan and the candump reader cover the shared code).
+// have no vcan, .ci/run lets it skip there; slcan and the candump reader cover the shared code).
 #include <fieldcodec/host/socketcan_bus.hpp>
 
+#include "skip.hpp"
 #include <doctest/doctest.h>
 
 #ifdef FIELDCODEC_HAS_SOCKETCAN
@@ -50,8 +51,8 @@ TEST_CASE("SocketCAN bus: failures name the interface") {
 TEST_CASE("SocketCAN bus over vcan: send, receive, filters, timeout") {
   const std::string name = vcan_name();
   if (!have_vcan(name)) {
-    MESSAGE("skipped: no virtual CAN interface '" << name << "' (needs the vcan module and root)");
-    return;
+    FIELDCODEC_SKIP_TEST("vcan", "no virtual CAN interface '"
+                                     << name << "' (needs the vcan module and root)");
   }
   host::socketcan_bus a, b;
   REQUIRE(a.open(name));

@@ -37,8 +37,9 @@ def main() -> int:
         gen = args[i + 1]
         del args[i:i + 2]
     root = os.path.abspath(args[0] if args else os.path.join(here, "..", ".."))
+    shared = os.environ.get("FIELDCODEC_SHARED_DIR", os.path.join(root, "..", "shared"))
     peer = os.environ.get("FIELDCODEC_PYTHON_CANOPEN",
-                          os.path.join(root, "..", "shared", "peers", "python-canopen"))
+                          os.path.join(shared, "peers", "python-canopen"))
     if not os.path.isdir(os.path.join(peer, "canopen")):
         print(f"SKIPPED: python canopen peer not found at {peer}")
         return SKIP

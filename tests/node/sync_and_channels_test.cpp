@@ -62,7 +62,7 @@ TEST_CASE("device: SYNC COB-ID, EMCY 8240h for an unexpected SYNC length") {
   rig<> r;
   r.operational();
   (void)r.tick();
-  CHECK(r.sdo_write(0x1005, 0, 0x4000'0080U, 4) == abort_code::invalid_value);
+  CHECK(r.sdo_write(0x1005, 0, 0x2000'0080U, 4) == abort_code::invalid_value); // 29-bit
   CHECK(r.sdo_write(0x1019, 0, 1, 1) == abort_code::invalid_value);
   CHECK(r.sdo_write(0x1019, 0, 16, 1) == abort_code::none);
   auto out = r.feed(F(0x80, {}));

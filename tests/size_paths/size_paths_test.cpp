@@ -75,9 +75,9 @@ TEST_CASE("-Os: pdo::pack and unpack at whole bytes and between them") {
     REQUIRE(pdo::pack(frame, offset, len, v));
     for (std::size_t bit = 0; bit < 96U; ++bit) {
       const bool inside = bit >= offset && bit < offset + len;
-      const unsigned got = (frame[bit / 8U] >> (bit % 8U)) & 1U;
+      const unsigned got = static_cast<unsigned>(frame[bit / 8U] >> (bit % 8U)) & 1U;
       const unsigned want = inside ? static_cast<unsigned>((v >> (bit - offset)) & 1U)
-                                   : (before[bit / 8U] >> (bit % 8U)) & 1U;
+                                   : static_cast<unsigned>(before[bit / 8U] >> (bit % 8U)) & 1U;
       CHECK(got == want);
     }
     CHECK(pdo::unpack(frame, offset, len).value() == v);

@@ -162,18 +162,27 @@ struct store_layout {
   [[nodiscard]] constexpr std::size_t storage_size() const noexcept { return offsets[N]; }
 };
 
+/// The layout of `dict` written into `offsets` (dict.size() + 1 of them: where each entry's value
+/// starts, then the total size), for a dictionary loaded at run time. False (nothing written)
+/// when `offsets` has another size.
+[[nodiscard]] constexpr bool make_layout(od::dictionary dict,
+                                         std::span<std::uint32_t> offsets) noexcept {
+  if (offsets.size() != dict.size() + 1U) return false;
+  std::uint32_t at = 0;
+  for (std::size_t i = 0; i < dict.size(); ++i) {
+    offsets[i] = at;
+    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
+  }
+  offsets[dict.size()] = at;
+  return true;
+}
+
 /// The layout of `dict`, which must have exactly N entries (a mismatch leaves the layout empty:
 /// every access then answers general_error).
 template <std::size_t N>
 [[nodiscard]] constexpr store_layout<N> make_layout(od::dictionary dict) noexcept {
   store_layout<N> l;
-  if (dict.size() != N) return l;
-  std::uint32_t at = 0;
-  for (std::size_t i = 0; i < N; ++i) {
-    l.offsets[i] = at;
-    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
-  }
-  l.offsets[N] = at;
+  (void)make_layout(dict, std::span<std::uint32_t>(l.offsets));
   return l;
 }
 
@@ -219,6 +228,14 @@ public:
         fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
               slots_agree(dict, layout.offsets) &&
               od::covers(Kinds, od::kinds_of(dict.entries()))) {}
+  /// The same with a layout made at run time (make_layout(dict, offsets), for a dictionary
+  /// loaded at run time); `offsets` is borrowed and must outlive the store.
+  constexpr dictionary_store(od::dictionary dict, std::span<const std::uint32_t> offsets,
+                             std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
+                             OnWrite on_write = {}) noexcept
+      : dict_(dict), offsets_(offsets), storage_(storage), staging_(staging), on_write_(on_write),
+        fits_(offsets_.size() == dict_.size() + 1U && offsets_.back() <= storage_.size() &&
+              slots_agree(dict, offsets) && od::covers(Kinds, od::kinds_of(dict.entries()))) {}
 
   /// The kinds of values this store serves.
   static constexpr od::value_kinds kinds = Kinds;
@@ -231,8 +248,9 @@ public:
   }
 
   /// Fill every slot with the entry's default for `node` (node-ID relative defaults resolved):
-  /// numbers from the numeric default (zero without one), byte strings from the default text
-  /// (its length is the value's length). Errors: buffer_too_small (storage or layout do not
+  /// numbers from the numeric default; without one, or with one outside the entry's limits,
+  /// zero, or the limit nearest to zero when zero is outside them; byte strings from the default
+  /// text (its length is the value's length). Errors: buffer_too_small (storage or layout do not
   /// fit the dictionary), too_long (a default text longer than its entry's capacity: cut, the
   /// other entries are filled).
   [[nodiscard]] constexpr status init_defaults(std::uint8_t node) noexcept {
@@ -258,6 +276,23 @@ public:
     for (std::size_t i = 0; i < dict_.size(); ++i) {
       const od::entry &e = dict_.entries()[i];
       if (e.index < first || e.index > last || !od::writable(e.access_type)) continue;
+      if (!fill_default(i)) result = errc::too_long;
+    }
+    return result;
+  }
+
+  /// A new node-ID (an LSS master configured one, CiA 305; it takes effect at the NMT reset
+  /// that follows): the entries that no reset restores (read-only and constant ones) and whose
+  /// default is node-ID-relative ($NODEID) get their default for `node` now; the writable ones
+  /// get it at the next restore_defaults() of their range, which resolves for `node` from now
+  /// on. Errors: as init_defaults.
+  [[nodiscard]] constexpr status set_node(std::uint8_t node) noexcept {
+    if (!layout_fits()) return errc::buffer_too_small;
+    node_ = node;
+    status result{};
+    for (std::size_t i = 0; i < dict_.size(); ++i) {
+      const od::entry &e = dict_.entries()[i];
+      if (!e.has(od::flag::default_nodeid) || od::writable(e.access_type)) continue;
       if (!fill_default(i)) result = errc::too_long;
     }
     return result;
@@ -421,8 +456,13 @@ private:
   template <std::size_t N>
   [[nodiscard]] static constexpr bool
   slots_agree(od::dictionary dict, const std::array<std::uint32_t, N> &offsets) noexcept {
-    if (dict.size() + 1U != N) return false;
-    for (std::size_t i = 0; i + 1U < N; ++i) {
+    return slots_agree(dict, std::span<const std::uint32_t>(offsets));
+  }
+  [[nodiscard]] static constexpr bool slots_agree(od::dictionary dict,
+                                                  std::span<const std::uint32_t> offsets) noexcept {
+    const std::size_t n = offsets.size();
+    if (dict.size() + 1U != n) return false;
+    for (std::size_t i = 0; i + 1U < n; ++i) {
       if (offsets[i + 1U] < offsets[i] ||
           offsets[i + 1U] - offsets[i] != slot_size(dict.entries()[i])) {
         return false;
@@ -455,26 +495,75 @@ private:
       set_length(slot, n);
       return fits;
     }
-    if (!e.has(od::flag::has_default) || slot.empty()) return true;
-    // an out-of-limit default, or one that does not fit the field for this node, stays zero
-    if (e.has(od::flag::default_number)) {
-      if constexpr (Kinds.numbers) {
-        if (auto d = e.default_for(node_)) {
-          (void)od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, d.value(), slot,
-                                   byte_order::little, node_);
+    if (slot.empty()) return true;
+    if (e.has(od::flag::has_default)) {
+      if (e.has(od::flag::default_number)) {
+        if constexpr (Kinds.numbers) {
+          if (auto d = e.default_for(node_)) {
+            (void)od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, d.value(),
+                                     slot, byte_order::little, node_);
+          }
         }
+      } else if (slot.size() == od::fixed_size(e.type)) {
+        // in the entry's own width: the value's bytes as CANopen sends them
+        const std::size_t w = slot.size();
+        std::uint64_t v = load_le(e.extra + e.default_at(), w);
+        if (!e.has(od::flag::default_nodeid) || plus_node(e, w, v)) store_le(slot.data(), v, w);
       }
-      return true;
     }
-    // in the entry's own width: the value's bytes as CANopen sends them
-    const std::size_t w = slot.size();
-    std::uint64_t v = load_le(e.extra + e.default_at(), w);
-    if (e.has(od::flag::default_nodeid) && !plus_node(e, w, v)) return true;
-    store_le(slot.data(), v, w);
-    if (od::check_value<Kinds>(e, scale_at(i), slot, node_) != od::value_check::ok) {
+    within_limits(i, slot);
+    return true;
+  }
+
+  /// Whether entry i's own checks accept what `slot` holds.
+  [[nodiscard]] constexpr bool accepted(std::size_t i,
+                                        std::span<const std::uint8_t> slot) const noexcept {
+    return od::check_value<Kinds>(dict_.entries()[i], scale_at(i), slot, node_) ==
+           od::value_check::ok;
+  }
+
+  /// Keep entry i's slot within its own limits: a default it refuses (out of its limits, or
+  /// beyond its field for this node) or no default at all leaves zero when the entry accepts
+  /// zero, else the limit nearest to zero (a low limit above zero, or a high limit below it). The
+  /// store never holds a value its own checks refuse: a write-only 1..8 parameter without a default
+  /// held 0 (fuzz/FINDINGS.md F25).
+  constexpr void within_limits(std::size_t i, std::span<std::uint8_t> slot) noexcept {
+    if (accepted(i, slot)) return;
+    std::fill(slot.begin(), slot.end(), std::uint8_t{0});
+    if constexpr (Kinds.limits) {
+      const od::entry &e = dict_.entries()[i];
+      const od::value_check zero = od::check_value<Kinds>(e, scale_at(i), slot, node_);
+      if (zero == od::value_check::ok) return;
+      // zero above the high limit: the high one is nearest; below the low limit: the low one
+      const bool high_first = zero == od::value_check::too_high;
+      for (const bool second : {false, true}) {
+        const bool high = second != high_first;
+        if (!e.has(high ? od::flag::has_high : od::flag::has_low)) continue;
+        if (e.has(od::flag::limits_number)) {
+          if constexpr (Kinds.numbers) {
+            const auto l = high ? e.high_for(node_) : e.low_for(node_);
+            if (!l || !od::detail::encode(e, od::detail::maybe_scale{&scale_at(i), true}, l.value(),
+                                          slot, byte_order::little, node_)) {
+              continue;
+            }
+          } else {
+            continue;
+          }
+        } else {
+          const std::size_t w = slot.size();
+          if (w != od::fixed_size(e.type)) continue;
+          const std::size_t at =
+              e.limits_at() + (high && e.has(od::flag::has_low) ? e.limit_size() : 0U);
+          std::uint64_t v = load_le(e.extra + at, w);
+          if (e.has(high ? od::flag::high_nodeid : od::flag::low_nodeid) && !plus_node(e, w, v)) {
+            continue;
+          }
+          store_le(slot.data(), v, w);
+        }
+        if (accepted(i, slot)) return;
+      }
       std::fill(slot.begin(), slot.end(), std::uint8_t{0});
     }
-    return true;
   }
 
   /// A node-ID-relative default: node_ added to the `w`-byte integer `v`. False when the entry

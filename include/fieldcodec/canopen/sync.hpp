@@ -26,7 +26,9 @@ inline constexpr std::uint8_t max_counter = 240;
 /// remote frame), bad_length (DLC not 0 or 1), out_of_range (counter 0 or > 240).
 [[nodiscard]] constexpr result<std::optional<std::uint8_t>> decode(const can_frame &f) noexcept {
   if (f.id != cob_id::sync || f.rtr) return errc::unexpected_frame;
-  if (f.dlc == 0U) return std::optional<std::uint8_t>{};
+  // Built in place: a disengaged optional moved into the result copies its uninitialised
+  // payload, which g++ 12 -O2/-O3/-Os reports as -Wmaybe-uninitialized in users' builds.
+  if (f.dlc == 0U) return result<std::optional<std::uint8_t>>{std::in_place, std::nullopt};
   if (f.dlc != 1U) return errc::bad_length;
   if (f.data[0] < 1U || f.data[0] > max_counter) return errc::out_of_range;
   return std::optional<std::uint8_t>{f.data[0]};

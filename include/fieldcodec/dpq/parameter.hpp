@@ -63,35 +63,9 @@ struct payload {
   }
 };
 
-/// Smallest number of decimal places p (0..18) at which every raw value of a parameter with
-/// this scale and offset survives raw → EU (rounded to p places) → raw unchanged: p must be at
-/// least the offset's places and 10^p ≥ |scale| (then the rounding error of the EU, at most
-/// ½·10^-p, moves raw by less than ½; when 10^p = |scale| the EU is exact). 327.67 → 3,
-/// 10.5 → 2, 16383.5 → 5, 1 → 0.
-/// Errors: invalid_argument (offset or scale with more than 18 places), not_representable
-/// (|scale| > 10^18: no p ≤ 18 round-trips — found by fuzz_dpq, F8).
-[[nodiscard]] constexpr result<unsigned> round_trip_places(scaling::linear s) noexcept {
-  if (s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
-    return errc::invalid_argument;
-  }
-  // |scale| without negating INT64_MIN (F3): its magnitude 2^63 is never a power of ten, so
-  // comparing against INT64_MAX instead decides every "10^p >= |scale|" the same way.
-  const std::int64_t m = s.scale.mantissa;
-  const decimal mag{m == std::numeric_limits<std::int64_t>::min()
-                        ? std::numeric_limits<std::int64_t>::max()
-                    : m < 0 ? -m
-                            : m,
-                    s.scale.places};
-  unsigned p = s.offset.places;
-  std::int64_t pow = 1;
-  for (unsigned i = 0; i < p; ++i) pow *= 10; // p <= 18: at most 10^18
-  while (compare(decimal{pow, 0}, mag) < 0) {
-    if (p == decimal_max_places) return errc::not_representable;
-    ++p;
-    pow *= 10;
-  }
-  return p;
-}
+/// The decimal places at which a value read back round-trips: core/scaling's
+/// round_trip_places (327.67 → 3, 10.5 → 2, 16383.5 → 5, 1 → 0).
+using scaling::round_trip_places;
 
 /// A raw value as the parameter's bytes (LSB first), checked against the printed range
 /// (converted to raw) and the field. Errors: type_mismatch (not an integer type), out_of_range,

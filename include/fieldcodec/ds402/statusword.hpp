@@ -125,4 +125,24 @@ struct status_flags {
   return "?";
 }
 
+/// The names of the statusword's operation-mode-specific bits 12 and 13 in mode `m` (6061h,
+/// modes of operation display), CiA 402-2; empty where the mode gives the bit no meaning
+/// (a reserved bit, a manufacturer-specific or unknown mode).
+struct mode_bit_names {
+  std::string_view bit12;
+  std::string_view bit13;
+};
+[[nodiscard]] constexpr mode_bit_names mode_bits(std::int8_t m) noexcept {
+  switch (m) {
+  case 1: return {"set-point acknowledge", "following error"};       // profile position
+  case 3: return {"speed zero", "max slippage error"};               // profile velocity
+  case 6: return {"homing attained", "homing error"};                // homing
+  case 7: return {"ip mode active", ""};                             // interpolated position
+  case 8: return {"following the command value", "following error"}; // cyclic sync position
+  case 9: return {"following the command value", ""};                // cyclic sync velocity
+  case 10: return {"following the command value", ""};               // cyclic sync torque
+  default: return {};
+  }
+}
+
 } // namespace fieldcodec::ds402

@@ -26,6 +26,9 @@ struct timestamp {
   std::int64_t seconds = 0;
   std::uint32_t fraction = 0;
   std::uint8_t digits = 0; ///< 0 (no time) or 1..9
+  /// A wall-clock reading "2024-05-01 12:34:56.123456" (candump -tA, local time): `seconds`
+  /// counts from 1970-01-01 00:00 of that reading, no time zone applied; written back as a date.
+  bool date = false;
 
   [[nodiscard]] constexpr bool known() const noexcept { return digits != 0U; }
   /// Microseconds since the epoch (digits beyond 6 are cut).

@@ -55,7 +55,8 @@ public:
   }
 
   /// Send `r` and wait at most `timeout` for the acknowledgement. Input received before the
-  /// request is dropped. Errors: those of pacontrol::serial::encode_request; timeout (no
+  /// request is dropped; bytes before the acknowledgement's SOH (line noise) are skipped and
+  /// kept in received(). Errors: those of pacontrol::serial::encode_request; timeout (no
   /// complete acknowledgement in time); the decoder's errors for a broken answer (bad_checksum,
   /// bad_syntax, truncated, …; last_error() quotes the bytes); bad_state (port failure).
   result<pacontrol::serial::acknowledgement> transact(const pacontrol::serial::request &r,
@@ -89,6 +90,7 @@ private:
     pacontrol::serial::decoder dec({options_.check, pacontrol::serial::accept::acknowledgements});
     const auto end = std::chrono::steady_clock::now() + timeout;
     std::array<std::uint8_t, 64> buf{};
+    bool in_frame = false; ///< an SOH arrived: errors from here on are a broken answer
     for (;;) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
           end - std::chrono::steady_clock::now());
@@ -103,8 +105,11 @@ private:
       }
       for (std::size_t i = 0; i < got.value(); ++i) {
         received_.push_back(buf[i]);
+        if (buf[i] == pacontrol::serial::soh) in_frame = true;
         auto k = dec.push(buf[i]);
         if (!k) {
+          // bytes before the acknowledgement's SOH are line noise: skipped, as decode does
+          if (!in_frame) continue;
           return fail(k.error(), "bad acknowledgement (" + std::string(to_string(k.error())) +
                                      "): " + quoted_bytes(received_));
         }

@@ -20,7 +20,9 @@
 #include <fieldcodec/canopen/sdo_transfer.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/od/address.hpp>
+#include <fieldcodec/od/engineering.hpp>
 
 #include <chrono>
 #include <cstddef>
@@ -50,6 +52,8 @@ struct sdo_error {
   canopen::sdo::abort_code abort = canopen::sdo::abort_code::none;
   od::address address{};
   bool bus_failed = false;
+  /// A value refused before any frame (host::remote_node): issue != none, code == value.code.
+  od::value_error value{};
   std::string what; ///< one line naming node, object, abort code and its text
   sdo_error() = default;
   sdo_error(errc e) : code(e) {} // NOLINT: plain errors propagate into it
@@ -106,11 +110,7 @@ public:
   [[nodiscard]] const sdo_options &options() const noexcept { return options_; }
 
 private:
-  std::uint32_t now() const noexcept {
-    return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                          std::chrono::steady_clock::now() - start_)
-                                          .count());
-  }
+  std::uint32_t now() const noexcept { return clock_.now(); }
 
   bool send_all(const canopen::sdo::step &s) {
     for (const canopen::can_frame &f : s.send) {
@@ -190,7 +190,7 @@ private:
   canopen::sdo::client client_;
   std::vector<std::uint8_t> buffer_;
   sdo_error error_{};
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  steady_ms clock_;
 };
 
 /// Read `a` of `node`: its bytes, or why not (sdo_error: code, abort code, address, one line).

@@ -19,6 +19,7 @@
 #ifdef FIELDCODEC_HAS_TERMIOS
 
 #include <fieldcodec/canopen/can_frame.hpp>
+#include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
 #include <fieldcodec/host/frame_record.hpp>
@@ -108,20 +109,10 @@ inline constexpr std::uint8_t bus_error = 0x80U;
 } // namespace status_flags
 
 namespace detail {
-[[nodiscard]] constexpr int hex(char c) noexcept {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
+/// A field of at most 8 hex digits (core/ascii's parser). Errors: bad_digit.
 [[nodiscard]] constexpr result<std::uint32_t> hex_field(std::string_view s) noexcept {
-  std::uint32_t v = 0;
-  for (const char c : s) {
-    const int d = hex(c);
-    if (d < 0) return errc::bad_digit;
-    v = v * 16U + static_cast<std::uint32_t>(d);
-  }
-  return v;
+  FIELDCODEC_TRY(const std::uint64_t v, ascii::parse_hex(s));
+  return static_cast<std::uint32_t>(v);
 }
 } // namespace detail
 
@@ -195,6 +186,9 @@ struct slcan_options {
   /// pseudo-terminal, e.g. python-can's slcan interface).
   bool check_answers = true;
   std::chrono::milliseconds answer_timeout{500};
+  /// The interface name received records carry (a candump log needs one): "slcan0", what
+  /// can-utils' slcand calls the first adapter.
+  interface_name iface = interface_name::make("slcan0").value();
 };
 
 /// An slcan adapter on a serial port as a CAN bus.
@@ -213,6 +207,7 @@ public:
     if (!code)
       return fail(errc::invalid_argument, 0, "no slcan bit rate " + std::to_string(bitrate));
     if (auto s = port_.open(path, o.line); !s) return fail_port();
+    iface_ = o.iface;
     return start(code.value(), o);
   }
 
@@ -224,6 +219,7 @@ public:
     if (!code)
       return fail(errc::invalid_argument, 0, "no slcan bit rate " + std::to_string(bitrate));
     if (auto s = port_.adopt(fd, name, o.line); !s) return fail_port();
+    iface_ = o.iface;
     return start(code.value(), o);
   }
 
@@ -245,6 +241,7 @@ public:
       if (!d) return fail(d.error(), 0, "bad line from the adapter: " + printable(l));
       if (d.value().kind != slcan::line_kind::frame) continue;
       frame_record r = d.value().record;
+      r.iface = iface_;
       const auto now = std::chrono::system_clock::now().time_since_epoch();
       r.time = timestamp::from_microseconds(
           std::chrono::duration_cast<std::chrono::microseconds>(now).count());
@@ -364,6 +361,7 @@ private:
   errc fail_port() { return can_bus::fail(port_.last_error()); }
 
   serial_port port_;
+  interface_name iface_ = interface_name::make("slcan0").value();
   std::string buffer_;
 };
 

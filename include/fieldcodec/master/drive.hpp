@@ -529,6 +529,7 @@ private:
   }
   constexpr void fail(drive_failure f, errc e) noexcept {
     stop_with(drive_state::failed, f, e);
+    hold_command(); // already in the cycle that fails: not the walk's last command (F26)
     if (pending_purpose_ != purpose::read_error_code) pending_.reset();
   }
   constexpr void enter_fault() noexcept {
@@ -556,14 +557,22 @@ private:
     }
     if (changed && state_ != drive_state::fault) fail(drive_failure::mode_changed, errc::bad_state);
   }
-  /// Keep the command of the state reached (idle / failed: whatever the drive is in).
+  /// The command that keeps the drive in the state it shows (idle, failed, enabled, mode
+  /// switch): never one that moves it. The command of the last walk, kept until now, powered a
+  /// drive up again after a failure (0x0F to a drive that had dropped to ready to switch on:
+  /// transitions 3 + 4 nobody asked for; fuzz/FINDINGS.md F26).
   constexpr void hold_command() noexcept {
-    if (seen_ == ds402::state::operation_enabled) {
-      command_ = ds402::command_bits(ds402::command::enable_operation);
-    } else if (seen_ == ds402::state::quick_stop_active) {
-      command_ = ds402::command_bits(ds402::command::quick_stop);
-    } else {
-      command_ = static_cast<std::uint16_t>(command_ & ~ds402::cw::fault_reset);
+    using ds402::command;
+    switch (seen_) {
+    case ds402::state::operation_enabled:
+      command_ = ds402::command_bits(command::enable_operation);
+      break;
+    case ds402::state::quick_stop_active:
+      command_ = ds402::command_bits(command::quick_stop);
+      break;
+    case ds402::state::switched_on: command_ = ds402::command_bits(command::switch_on); break;
+    case ds402::state::ready_to_switch_on: command_ = ds402::command_bits(command::shutdown); break;
+    default: command_ = ds402::command_bits(command::disable_voltage); break;
     }
   }
   constexpr void walk(ds402::state target, std::uint32_t now) noexcept {
@@ -606,13 +615,19 @@ private:
       emcy_.reset();
       return;
     }
-    if (seen_ == ds402::state::fault_reaction_active) { // wait, prepare the edge
+    // No timeout runs while the machine waits for the drive or for a cycle with bit 7 low: a
+    // deadline kept from before would be in the past (fuzz/FINDINGS.md F27); the next edge
+    // sets its own.
+    if (seen_ == ds402::state::fault_reaction_active) { // wait (an edge now would be lost)
       command_ = 0;
+      edge_ = false;
+      deadline_.reset();
       return;
     }
     if (!edge_) {
       if ((command_ & ds402::cw::fault_reset) != 0U) { // bit 7 was high: one cycle low first
         command_ = 0;
+        deadline_.reset();
         return;
       }
       command_ = ds402::command_bits(ds402::command::fault_reset);
@@ -629,6 +644,7 @@ private:
       }
       edge_ = false;
       command_ = 0; // low for a cycle, the next cycle gives the new edge
+      deadline_.reset();
     }
   }
   constexpr void switching(std::uint32_t now) noexcept {

@@ -32,6 +32,7 @@
 #include <fieldcodec/ds402/state_machine.hpp>
 #include <fieldcodec/ds402/statusword.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 #include <fieldcodec/master/boot.hpp>
 #include <fieldcodec/master/config.hpp>
@@ -44,7 +45,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -76,10 +76,8 @@ constexpr master::config_item items[] = {
 };
 
 std::uint32_t now_ms() {
-  static const auto start = std::chrono::steady_clock::now();
-  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                        std::chrono::steady_clock::now() - start)
-                                        .count());
+  static const fieldcodec::host::steady_ms clock;
+  return clock.now();
 }
 
 void put_line(const std::string &s) {

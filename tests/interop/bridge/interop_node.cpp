@@ -4,6 +4,7 @@
 // (python canopen, tests/interop/interop_peer.py) can carry them.
 //
 // usage: interop_node DICTIONARY NODE      DICTIONARY: xenax | corpus
+//                                         NODE: 1..127, or 255 (no node-ID: waits for LSS)
 // (interop_node_crc_table: the same program, its SDO servers computing the block transfer CRC by
 // table, node::capacity::sdo_crc_table)
 //
@@ -21,6 +22,12 @@
 //   !emcy-clear CODE                              the error is gone
 //   !tpdo N                                       the application's event for TPDO N
 //   !pack MAPPINGS VALUES                         pdo::pack_all (mappings hex, values decimal)
+//   !lss                                          the LSS slave: MODE ACTIVE PENDING (node-IDs
+//                                                 decimal), then STORED (what the store hook
+//                                                 got: NODE/TABLE.INDEX, or -) and ACTIVATED
+//                                                 (the last activate bit timing: INDEX/DELAY,
+//                                                 or -)
+//   !lss-store ok|fail                            the store hook answers 0, or 2 (media error)
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
@@ -47,6 +54,7 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
 #include <fieldcodec/host/candump.hpp>
+#include <fieldcodec/host/clock.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 #ifdef FIELDCODEC_INTEROP_CORPUS
 #include <fieldcodec/dictionaries/interop_corpus.hpp>
@@ -56,7 +64,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -74,10 +81,8 @@ namespace sdo = fieldcodec::canopen::sdo;
 namespace od = fieldcodec::od;
 
 std::uint32_t now_ms() {
-  static const auto start = std::chrono::steady_clock::now();
-  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::milliseconds>(
-                                        std::chrono::steady_clock::now() - start)
-                                        .count());
+  static const fieldcodec::host::steady_ms clock;
+  return clock.now();
 }
 
 void put_line(const std::string &s) {
@@ -214,10 +219,26 @@ struct received_log {
 
 /// The library's node (canopen/node/device.hpp) behind the bridge's commands. What the node
 /// does not consume (TIME, other nodes' EMCY) is decoded here for `!last`.
+/// What the LSS slave's store hook got (`!lss`), and how it answers (`!lss-store`).
+struct lss_storage {
+  std::optional<std::uint8_t> node;
+  std::optional<co::node::lss_bit_timing> timing;
+  std::uint8_t answer = co::lss::error_code::none;
+  static co::node::lss_store_result store(void *self, std::uint8_t node,
+                                          std::optional<co::node::lss_bit_timing> t) noexcept {
+    auto *s = static_cast<lss_storage *>(self);
+    if (s->answer == co::lss::error_code::none) {
+      s->node = node;
+      s->timing = t;
+    }
+    return {s->answer, 0};
+  }
+};
+
 template <class Store, co::node::capacity C>
 class node_glue {
 public:
-  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node) {}
+  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node, {}, lss_options()) {}
 
   void start(std::uint32_t now) {
     if (auto s = dev_.start(now)) transmit_all(s.value().send);
@@ -225,6 +246,7 @@ public:
   void on_frame(const co::can_frame &f, std::uint32_t now) {
     note(f);
     transmit_all(dev_.on_frame(f, now).send);
+    note_events();
   }
   /// Several frames at once (FIELDCODEC_INTEROP_BATCH): device::on_frames until all are taken.
   void on_frames(std::span<const co::can_frame> fs, std::uint32_t now) {
@@ -232,9 +254,33 @@ public:
     while (!fs.empty()) {
       const auto r = dev_.on_frames(fs, now);
       transmit_all(r.last.send);
+      note_events();
       fs = fs.subspan(r.consumed);
     }
   }
+  /// `!lss`: the LSS slave's state and what the application got from it.
+  [[nodiscard]] std::string lss_text() const {
+    const auto &l = dev_.lss();
+    char buf[128];
+    std::string stored = "-";
+    if (storage_.node) {
+      stored = std::to_string(*storage_.node) + "/";
+      stored += storage_.timing ? std::to_string(storage_.timing->table) + "." +
+                                      std::to_string(storage_.timing->index)
+                                : std::string("-");
+    }
+    std::string activated = "-";
+    if (activated_) {
+      activated =
+          std::to_string(activated_->timing.index) + "/" + std::to_string(activated_->delay_ms);
+    }
+    std::snprintf(buf, sizeof buf, "= ok %s %u %u %s %s",
+                  l.mode() == co::node::lss_mode::waiting ? "waiting" : "configuration",
+                  unsigned{l.active_node()}, unsigned{l.pending_node()}, stored.c_str(),
+                  activated.c_str());
+    return buf;
+  }
+  void lss_store_answer(std::uint8_t code) { storage_.answer = code; }
   void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
 
   [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v,
@@ -265,6 +311,20 @@ public:
   [[nodiscard]] const received_log &log() const { return log_; }
 
 private:
+  co::node::lss_options lss_options() {
+    co::node::lss_options o;
+    o.store = &lss_storage::store;
+    o.context = &storage_;
+    return o;
+  }
+  void note_events() {
+    for (const auto &e : dev_.events()) {
+      if (e.what == co::node::event::kind::lss &&
+          dev_.lss().last_event().what == co::node::lss_event::kind::activate_bit_timing) {
+        activated_ = dev_.lss().last_event();
+      }
+    }
+  }
   void note(const co::can_frame &f) {
     if (f.id == co::cob_id::sync && !f.rtr) {
       if (auto c = co::sync::decode(f)) {
@@ -279,8 +339,10 @@ private:
     }
   }
   std::uint8_t node_;
+  lss_storage storage_; // before dev_: the device's options point at it
   co::node::device<Store, C> dev_;
   received_log log_;
+  std::optional<co::node::lss_event> activated_;
 };
 
 /// `!last sync|time|emcy`: what the node decoded last from python's producers.
@@ -419,6 +481,12 @@ int run(Store &store, std::uint8_t node) {
           } else {
             answer_error(fieldcodec::errc::bad_state, {});
           }
+        } else if (w[0] == "!lss" && w.size() == 1U) {
+          put_line(glue.lss_text());
+        } else if (w[0] == "!lss-store" && w.size() == 2U) {
+          glue.lss_store_answer(w[1] == "ok" ? co::lss::error_code::none
+                                             : co::lss::error_code::storage_access);
+          put_line("= ok ");
         } else if (w[0] == "!pack" && w.size() == 3U) {
           pack_command(w[1], w[2]);
         } else if (w[0] == "!upload" || w[0] == "!download") {
@@ -461,6 +529,7 @@ int run(Store &store, std::uint8_t node) {
 template <const od::dictionary &Dict>
 constexpr co::node::capacity capacity() {
   co::node::capacity c = co::node::capacity_for(Dict);
+  c.lss = true; // the LSS slave (interop_peer.py lss); it answers nothing but 7E5h
 #ifdef FIELDCODEC_INTEROP_CRC_TABLE
   c.sdo_crc_table = true;
 #endif

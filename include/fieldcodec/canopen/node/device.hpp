@@ -1,7 +1,7 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
-// life guarding, EMCY producer, SYNC consumer, PDO engine, SDO channels and the error behaviour
-// (1029h), with frames routed
+// life guarding, EMCY producer, SYNC consumer and (capacity::sync_producer) producer, PDO
+// engine, SDO channels and the error behaviour (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -63,11 +63,13 @@
 #include <fieldcodec/canopen/node/error_behaviour.hpp>
 #include <fieldcodec/canopen/node/heartbeat.hpp>
 #include <fieldcodec/canopen/node/lists.hpp>
+#include <fieldcodec/canopen/node/lss_slave.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
 #include <fieldcodec/canopen/node/store.hpp>
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
+#include <fieldcodec/canopen/node/sync_producer.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/crc.hpp>
@@ -76,12 +78,14 @@
 #include <fieldcodec/od/dictionary.hpp>
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
 #include <type_traits>
+#include <variant>
 
 namespace fieldcodec::canopen::node {
 
@@ -111,6 +115,15 @@ struct capacity {
   std::size_t error_history = 8; ///< entries of 1003h
   std::size_t emcy_queue = 4;    ///< EMCY messages held back by the inhibit time
   std::size_t error_classes = 1; ///< sub-indices of 1029h (error behaviour) served
+  /// The node can be the SYNC producer (1005h bit 30, 1006h; node/sync_producer.hpp). Without
+  /// it 1005h refuses bit 30 and no producer code is in the image; capacity_for sets it when
+  /// the dictionary has 1006h.
+  bool sync_producer = false;
+  /// The node is an LSS slave (CiA 305, node/lss_slave.hpp): it answers an LSS master on
+  /// 7E5h/7E4h, can start without node-ID (lss::unconfigured) and takes a new node-ID at its
+  /// next NMT reset. Without it no LSS code is in the image. capacity_for keeps it from `base`
+  /// (a dictionary does not say it).
+  bool lss = false;
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -140,6 +153,7 @@ struct capacity {
     if (i == 0x1016U && e.sub > c.heartbeat_consumers) c.heartbeat_consumers = e.sub;
     if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
     if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
+    if (i == 0x1006U) c.sync_producer = true;
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -165,6 +179,7 @@ struct event {
     life_guard_resumed,  ///< guarding requests again after a loss
     pdo,                 ///< a PDO engine event (`pdo`)
     sync,                ///< a SYNC was taken (`counter`)
+    lss,                 ///< an LSS event: its details in lss().last_event() (capacity::lss)
   };
   kind what = kind::nmt_state;
   nmt::state state = nmt::state::boot_up;
@@ -187,6 +202,7 @@ struct event {
   case event::kind::life_guard_resumed: return "life guarding resumed";
   case event::kind::pdo: return "PDO event";
   case event::kind::sync: return "SYNC received";
+  case event::kind::lss: return "LSS event";
   }
   return "?";
 }
@@ -204,6 +220,12 @@ template <node_store Store, capacity C = capacity{}>
 class device {
   static_assert(C.sdo_servers >= 1U, "a node has its default SDO server");
   static_assert(C.mapped >= 1U && C.mapped <= pdo::max_entries);
+  static_assert(
+      !C.lss ||
+          requires(Store & s, std::uint8_t n) {
+            { s.set_node(n) } -> std::same_as<status>;
+          },
+      "an LSS slave's store resolves node-ID-relative defaults for a new node-ID: set_node()");
 
 public:
   using step = canopen::step<nmt::state>;
@@ -280,13 +302,17 @@ public:
   using consumer_type = heartbeat_consumer<C.heartbeat_consumers>;
   using errors_type = error_behaviour<C.error_classes>;
 
-  /// A node `node` (1..127) over `store` (borrowed, already holding its power-on values, e.g.
-  /// from init_defaults). Nothing is sent before start().
-  constexpr device(Store &store, std::uint8_t node, options o = {}) noexcept
+  /// A node `node` (1..127; with capacity::lss also lss::unconfigured) over `store`
+  /// (borrowed, already holding its power-on values, e.g. from init_defaults). Nothing is sent
+  /// before start(). `l`: the LSS slave's bit rates and store hook (capacity::lss; a node
+  /// without LSS keeps nothing of it).
+  constexpr device(Store &store, std::uint8_t node, options o = {},
+                   [[maybe_unused]] lss_options l = {}) noexcept
       : store_(&store), options_(o), node_(node), nmt_(node), producer_(node), guard_(node),
-        emcy_(node), access_(*this), pdo_(access_, store.dictionary()),
+        emcy_(node), lss_(make_lss(node, l)), access_(*this), pdo_(access_, store.dictionary()),
         sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
     pdo_.report_long_rpdo(o.report_long_rpdo);
+    sync_.allow_producer(C.sync_producer);
     emcy_.report_each_reset(o.report_each_reset);
   }
   device(const device &) = delete;
@@ -295,17 +321,21 @@ public:
   // ----- the step interface ----------------------------------------------------------------
 
   /// Power-on: read the configuration of every service from the store, send the boot-up
-  /// message and enter pre-operational (operational with options::self_start).
-  /// Errors: invalid_argument (node-ID not 1..127), bad_state (already started). A
-  /// configuration the services cannot serve completely (more PDOs or channels than the
-  /// capacity, an unusable stored mapping) does not stop the start: configuration() says so.
+  /// message and enter pre-operational (operational with options::self_start). With
+  /// capacity::lss a node started as lss::unconfigured stays in initialising (state()
+  /// boot_up), sends nothing and answers only the LSS master until it has a node-ID.
+  /// Errors: invalid_argument (node-ID not 1..127, nor unconfigured with LSS), bad_state
+  /// (already started). A configuration the services cannot serve completely (more PDOs or
+  /// channels than the capacity, an unusable stored mapping) does not stop the start:
+  /// configuration() says so.
   [[nodiscard]] constexpr result<step> start(std::uint32_t now) noexcept {
-    if (!is_node_id(node_)) return errc::invalid_argument;
+    const bool waits = C.lss && node_ == lss::unconfigured;
+    if (!is_node_id(node_) && !waits) return errc::invalid_argument;
     if (started_) return errc::bad_state;
     started_ = true;
     begin(now);
     configure(now);
-    boot(now);
+    if (!waits) boot(now);
     return finish(now);
   }
 
@@ -388,6 +418,14 @@ public:
     const nmt::state s = nmt_.state();
     if (!started_ || s == nmt::state::boot_up) return finish(now);
     take(producer_.poll(now, s));
+    if constexpr (C.sync_producer) {
+      if (allowed(s, service::sync)) {
+        if (const auto f = sync_out_.poll(now)) {
+          out_.push(*f);
+          sync_frame(*f, now); // the node's own SYNC counts for its PDOs
+        }
+      }
+    }
     (void)consumer_.poll(now);
     bool lost = consumer_events();
     const auto before = life_.state();
@@ -505,6 +543,8 @@ public:
   [[nodiscard]] constexpr const emcy_type &emcy() const noexcept { return emcy_; }
   [[nodiscard]] constexpr const sync_consumer &sync() const noexcept { return sync_; }
   [[nodiscard]] constexpr const errors_type &errors() const noexcept { return errors_; }
+  /// The LSS slave (capacity::lss): its state, pending node-ID and bit timing, LSS address.
+  [[nodiscard]] constexpr const lss_slave &lss() const noexcept requires(C.lss) { return lss_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
   [[nodiscard]] constexpr const sdo_type &sdo() const noexcept { return sdo_; }
   /// Frames or events that did not fit their lists (a sizing error; always 0).
@@ -590,6 +630,9 @@ private:
     d = earliest(d, emcy_.deadline(), now);
     d = earliest(d, pdo_.deadline(now), now);
     d = earliest(d, sdo_.deadline(now), now);
+    if constexpr (C.sync_producer) {
+      if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
+    }
     return d;
   }
 
@@ -599,6 +642,12 @@ private:
     if (f.id == cob_id::nmt) {
       nmt_frame(f, now);
       return;
+    }
+    if constexpr (C.lss) {
+      if (f.id == lss::master_id) { // in every NMT state, initialising included
+        lss_frame(f, now);
+        return;
+      }
     }
     const nmt::state s = nmt_.state();
     if (s == nmt::state::boot_up) return;
@@ -610,14 +659,7 @@ private:
       return;
     }
     if (f.id == sync_.cob_id() && !f.rtr && allowed(s, service::sync)) {
-      const auto r = sync_.on_frame(f, now);
-      if (r.state.received) {
-        event e{event::kind::sync};
-        e.counter = r.state.counter;
-        push_event(e);
-        take(pdo_.on_sync(r.state.counter, now));
-        pdo_events();
-      }
+      sync_frame(f, now);
       return;
     }
     if (allowed(s, service::sdo)) {
@@ -641,28 +683,51 @@ private:
     }
   }
 
+  /// A SYNC, received or the node's own: the consumer takes it, the PDOs follow.
+  constexpr void sync_frame(const can_frame &f, std::uint32_t now) noexcept {
+    const auto r = sync_.on_frame(f, now);
+    if (!r.state.received) return;
+    event e{event::kind::sync};
+    e.counter = r.state.counter;
+    push_event(e);
+    take(pdo_.on_sync(r.state.counter, now));
+    pdo_events();
+  }
+
   // ----- NMT -------------------------------------------------------------------------------
 
   constexpr void nmt_frame(const can_frame &f, std::uint32_t now) noexcept {
     const nmt::state before = nmt_.state();
     (void)nmt_.on_frame(f, now);
     if (nmt_.pending_reset() != reset::none) {
-      const reset r = nmt_.pending_reset();
-      push_event(r == reset::application ? event::kind::reset_application
-                                         : event::kind::reset_communication);
-      status st{};
-      if (r == reset::application) {
-        const auto range = restored(reset::application);
-        st = store_->restore_defaults(range.first, range.last);
-      }
-      const auto comm = restored(reset::communication);
-      if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
-      guard_.reset();
-      configure(now);
-      if (!st && config_) config_ = st;
-      boot(now);
+      carry_out(nmt_.pending_reset(), now);
     } else if (nmt_.state() != before) {
       state_changed(now);
+    }
+  }
+  /// An NMT reset: restore, reload every service, boot. With LSS the pending node-ID becomes
+  /// the node's first; without node-ID (lss::unconfigured) the node stays initialising.
+  constexpr void carry_out(reset r, std::uint32_t now) noexcept {
+    push_event(r == reset::application ? event::kind::reset_application
+                                       : event::kind::reset_communication);
+    status st{};
+    if constexpr (C.lss) {
+      const std::uint8_t to = lss_.activate();
+      if (to != node_) st = renumber(to);
+    }
+    if (r == reset::application) {
+      const auto range = restored(reset::application);
+      if (auto s1 = store_->restore_defaults(range.first, range.last); !s1 && st) st = s1;
+    }
+    const auto comm = restored(reset::communication);
+    if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
+    guard_.reset();
+    configure(now);
+    if (!st && config_) config_ = st;
+    if (is_node_id(node_)) {
+      boot(now);
+    } else {
+      state_changed(now); // initialising: every service silent
     }
   }
   /// Send the boot-up message and enter pre-operational (or operational).
@@ -676,6 +741,9 @@ private:
     emcy_.enable(allowed(s, service::emcy));
     consumer_.enable(s == nmt::state::pre_operational || s == nmt::state::operational);
     if (s == nmt::state::stopped) sdo_.stop_servers();
+    if constexpr (C.sync_producer) {
+      if (s == nmt::state::operational) sync_out_.restart_counter();
+    }
     event e{event::kind::nmt_state};
     e.state = s;
     push_event(e);
@@ -691,6 +759,7 @@ private:
   template <class Self, class F>
   static constexpr void each_service(Self &self, F f) noexcept {
     f(self.sync_);
+    if constexpr (C.sync_producer) f(self.sync_out_);
     f(self.life_);
     f(self.emcy_);
     f(self.producer_);
@@ -698,6 +767,7 @@ private:
     f(self.pdo_);
     f(self.sdo_);
     f(self.errors_);
+    if constexpr (C.lss) f(self.lss_);
   }
 
   /// Read every service's objects from the store (start, NMT resets).
@@ -769,6 +839,36 @@ private:
     return abort_code::none;
   }
 
+  // ----- LSS (capacity::lss) -------------------------------------------------------------
+
+  [[nodiscard]] static constexpr auto make_lss([[maybe_unused]] std::uint8_t node,
+                                               [[maybe_unused]] const lss_options &o) noexcept {
+    if constexpr (C.lss) {
+      return lss_slave(node, o);
+    } else {
+      return std::monostate{};
+    }
+  }
+  /// A frame on 7E5h: the LSS slave's answer and event; a node that just got its first node-ID
+  /// boots with it (a reset communication).
+  constexpr void lss_frame(const can_frame &f, std::uint32_t now) noexcept requires(C.lss) {
+    const auto r = lss_.on_frame(f);
+    if (r.answer) out_.push(*r.answer);
+    if (r.event) push_event(event::kind::lss);
+    if (r.boot) carry_out(reset::communication, now);
+  }
+  /// Every service that knows the node-ID takes `to` (an NMT reset, then reloads them all).
+  [[nodiscard]] constexpr status renumber(std::uint8_t to) noexcept requires(C.lss) {
+    node_ = to;
+    nmt_ = nmt_slave(to);
+    producer_ = heartbeat_producer(to);
+    guard_ = nmt::guard_responder(to);
+    const auto emcy_id = cob_id::emcy(to);
+    emcy_.load_cob_id(emcy_id ? std::uint32_t{emcy_id.value()} : cob_bits::invalid);
+    sdo_.set_node(to);
+    return store_->set_node(to);
+  }
+
   // ----- error behaviour (1029h) ----------------------------------------------------------
 
   /// An error of class `sub` (1029h): its EMCY goes out first (the node's own codes, while the
@@ -815,13 +915,14 @@ private:
   }
   // ----- members ---------------------------------------------------------------------------
 
-  // one call sends at most: boot-up or heartbeat, a guarding response, each TPDO once, one
+  // one call sends at most: boot-up or heartbeat, a SYNC, a guarding response, each TPDO once, one
   // frame per SDO channel, and the EMCY messages (the queue, or the raises and clears of the
   // five node-managed codes when no inhibit time holds them back)
-  static constexpr std::size_t out_capacity =
-      2U + C.tpdos + C.sdo_servers + C.sdo_clients + (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
+  static constexpr std::size_t out_capacity = 3U + (C.lss ? 1U : 0U) + C.tpdos + C.sdo_servers +
+                                              C.sdo_clients +
+                                              (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
   static constexpr std::size_t event_capacity =
-      4U + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
+      4U + (C.lss ? 1U : 0U) + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
   Store *store_;
   options options_;
@@ -833,7 +934,10 @@ private:
   nmt::guard_responder guard_;
   emcy_type emcy_;
   sync_consumer sync_{};
+  [[no_unique_address]] std::conditional_t<C.sync_producer, sync_producer, std::monostate>
+      sync_out_{};
   errors_type errors_{};
+  [[no_unique_address]] std::conditional_t<C.lss, lss_slave, std::monostate> lss_;
   access access_;
   pdo_type pdo_;
   sdo_type sdo_;

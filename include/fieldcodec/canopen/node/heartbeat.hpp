@@ -250,7 +250,7 @@ public:
       error_ = hb.error();
       return make(now);
     }
-    error_.reset();
+    error_ = errc{};
     if (!enabled_) return make(now);
     for (std::size_t i = 0; i < N; ++i) {
       monitor &m = m_[i];
@@ -323,7 +323,10 @@ public:
     }
     return 0;
   }
-  [[nodiscard]] constexpr std::optional<errc> error() const noexcept { return error_; }
+  [[nodiscard]] constexpr std::optional<errc> error() const noexcept {
+    if (error_ == errc{}) return std::nullopt;
+    return error_;
+  }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     std::optional<std::uint32_t> d;
     for (const auto &m : m_) {
@@ -356,7 +359,9 @@ private:
   std::array<monitor, N> m_{};
   // one frame changes one monitor per node (active entries never share a node), a poll each
   event_list<heartbeat_event, (N == 0U ? 1U : N)> events_{};
-  std::optional<errc> error_{};
+  /// errc{} (no code of errc is 0) when there is none; a plain member for the reason given in
+  /// nmt_slave.hpp (g++ 12 -O3 -Wmaybe-uninitialized on a copied std::optional).
+  errc error_{};
   bool enabled_ = true;
 };
 

@@ -102,6 +102,13 @@ public:
     return st;
   }
 
+  /// A new node-ID (LSS, at an NMT reset): the default server's predefined connection
+  /// follows it (reload() then reads the parameter objects).
+  constexpr void set_node(std::uint8_t node) noexcept {
+    node_ = node;
+    connect_server(0);
+  }
+
   // ----- parameter writes ------------------------------------------------------------------
 
   /// Would `value` be accepted at `a` (sub 1 / sub 2 of a served SDO parameter object)?
@@ -284,7 +291,8 @@ private:
 
   static constexpr std::size_t client_slots = Clients == 0U ? 1U : Clients;
   /// The clients in use: 0, known at compile time, for a node without clients (whose image
-  /// then holds no client code).
+  /// then holds no client code, and whose loops over the clients do not index an empty array
+  /// behind a run-time bound, which g++ 12 -O2 reports with -Warray-bounds in users' builds).
   [[nodiscard]] constexpr std::size_t used_clients() const noexcept {
     return Clients == 0U ? 0U : client_count_;
   }

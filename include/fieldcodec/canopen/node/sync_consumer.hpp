@@ -14,8 +14,10 @@
 // be written only while the communication cycle period (1006h) is 0 (0x08000022 otherwise). A
 // counter outside 1..240 is ignored too (error() = out_of_range).
 //
-// This node does not produce SYNC: 1005h with bit 30 ("generate") set is refused (0x06090030),
-// so that a configuration tool learns that the device cannot be the SYNC producer.
+// 1005h with bit 30 ("generate") set is refused (0x06090030) unless the node has a SYNC
+// producer (allow_producer: node::device with capacity::sync_producer, node/sync_producer.hpp),
+// so that a configuration tool learns whether the device can be the SYNC producer; with one,
+// the identifier cannot change while bit 30 stays set (0x06090030; the same value is taken).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -76,7 +78,13 @@ public:
   /// (CiA 301, 1019h: the counter overflow cannot change while the cycle runs); none for
   /// every other object.
   [[nodiscard]] constexpr abort_code check_write(od::address a, std::uint32_t v) const noexcept {
-    if (a.index == 0x1005U) return check_cob_id(v);
+    if (a.index == 0x1005U) {
+      if (!producer_ || (v & cob_bits::bit30) == 0U) return check_cob_id(v);
+      if ((cob_value_ & cob_bits::bit30) != 0U && (v & cob_bits::id) != id_) {
+        return abort_code::invalid_value;
+      }
+      return check_cob_id(v & ~cob_bits::bit30);
+    }
     if (a.index == 0x1019U) {
       if (period_us_ != 0U) return abort_code::cannot_store_device_state;
       return check_overflow(v);
@@ -85,7 +93,10 @@ public:
   }
   /// `v` was stored at `a`: follow 1005h, 1006h, 1007h, 1019h.
   constexpr void written(od::address a, std::uint32_t v, std::uint32_t) noexcept {
-    if (a.index == 0x1005U) (void)set_cob_id(v);
+    if (a.index == 0x1005U) {
+      cob_value_ = v;
+      (void)set_cob_id(v & ~(producer_ ? cob_bits::bit30 : 0U));
+    }
     if (a.index == 0x1006U) period_us_ = v;
     if (a.index == 0x1007U) set_window_us(v);
     if (a.index == 0x1019U) (void)set_overflow(v);
@@ -94,7 +105,9 @@ public:
   /// reset).
   template <class Store>
   constexpr status load(const Store &store, std::uint32_t now) noexcept {
+    const bool producer = producer_;
     *this = sync_consumer{};
+    producer_ = producer;
     constexpr std::uint16_t objects[] = {0x1005, 0x1006, 0x1007, 0x1019};
     for (const std::uint16_t i : objects) {
       if (const auto v = read_u32(store, {i, 0})) written({i, 0}, *v, now);
@@ -103,6 +116,8 @@ public:
   }
 
   [[nodiscard]] constexpr std::uint16_t cob_id() const noexcept { return id_; }
+  /// The node has a SYNC producer: 1005h takes bit 30 (node::device sets it).
+  constexpr void allow_producer(bool on) noexcept { producer_ = on; }
   /// The communication cycle period (1006h, µs; 0 when absent).
   [[nodiscard]] constexpr std::uint32_t period_us() const noexcept { return period_us_; }
 
@@ -128,7 +143,10 @@ public:
   }
   /// The last SYNC's length did not fit 1019h.
   [[nodiscard]] constexpr bool length_error() const noexcept { return length_error_; }
-  [[nodiscard]] constexpr std::optional<errc> error() const noexcept { return error_; }
+  [[nodiscard]] constexpr std::optional<errc> error() const noexcept {
+    if (error_ == errc{}) return std::nullopt;
+    return error_;
+  }
   /// Forget the last SYNC (NMT reset).
   constexpr void restart() noexcept {
     seen_ = false;
@@ -158,7 +176,7 @@ private:
       counter = f.data[0];
     }
     length_error_ = false;
-    error_.reset();
+    error_ = errc{};
     seen_ = true;
     last_ = now;
     counter_ = counter;
@@ -172,11 +190,15 @@ private:
   std::optional<std::uint8_t> overflow_{};
   std::uint32_t window_ms_ = 0;
   std::uint32_t period_us_ = 0;
+  std::uint32_t cob_value_ = 0;
   std::uint32_t last_ = 0;
   std::optional<std::uint8_t> counter_{};
-  std::optional<errc> error_{};
+  /// errc{} (no code of errc is 0) when there is none; a plain member for the reason given in
+  /// nmt_slave.hpp (g++ 12 -O3 -Wmaybe-uninitialized on a copied std::optional).
+  errc error_{};
   bool seen_ = false;
   bool length_error_ = false;
+  bool producer_ = false;
 };
 
 } // namespace fieldcodec::canopen::node
