@@ -22,7 +22,8 @@ namespace fieldcodec::ethercat::sii {
 /// The fixed area: words 0x00..0x3F. Categories start at word 0x40.
 inline constexpr std::size_t fixed_area_bytes = 128;
 /// The checksum value that tells the ESC not to check the configuration area (for debugging,
-/// never in a product: ETG.1000.6 / Beckhoff ESC datasheet section I).
+/// never in a product). Source: Beckhoff EtherCAT Slave Controller datasheet, section I
+/// (Technology), 11.1 "SII EEPROM Content", Table 37 "ESC Configuration Area", word 7, note.
 inline constexpr std::uint16_t checksum_disabled = 0x88A4;
 
 /// Words 0..7: what the ESC loads into its registers at power-on.
