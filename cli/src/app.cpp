@@ -8,6 +8,8 @@
 #include "util.hpp"
 #include "values.hpp"
 
+#include <fieldcodec/canopen/lss.hpp>
+#include <fieldcodec/canopen/lss_master.hpp>
 #include <fieldcodec/canopen/nmt.hpp>
 #include <fieldcodec/canopen/node/device.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
@@ -53,6 +55,7 @@ commands:
   sdo read        read an object of a node (SDO upload)
   sdo write       write an object of a node (SDO download)
   nmt             send an NMT command
+  lss             layer setting services (CiA 305): find a node, set its node-ID and bit rate
   dump            read every readable object of a node into a DCF
   serve           simulate a node from an EDS/DCF (values set from standard input)
   pacontrol send  send a command to a PA-CONTROL over RS232 and show the answer
@@ -167,6 +170,33 @@ constexpr const char *nmt_help = R"(usage: fieldcodec nmt COMMAND NODE (--can IF
 
 Sends an NMT command to NODE (1..127) or to all nodes (NODE = all or 0).
 COMMAND: start, stop, pre-operational, reset-node, reset-communication.
+)";
+
+constexpr const char *lss_help =
+    R"(usage: fieldcodec lss SERVICE [ARGS] (--can IFACE | --slcan PORT) [OPTIONS]
+
+Layer setting services (CiA 305) of an LSS master towards the nodes on the bus.
+SERVICE:
+  scan              fastscan: the LSS address of a node without node-ID, printed as
+                    'address VENDOR,PRODUCT,REVISION,SERIAL' (what --address takes); that
+                    node is then in LSS configuration
+  set-node NODE     configure node-ID NODE (1..127, or 255: none) of the node in LSS
+                    configuration; it takes effect at its next NMT reset, or, for a node
+                    without node-ID, at 'lss waiting'
+  set-bitrate KBIT  configure the bit timing (CiA 305's table: 1000, 800, 500, 250, 125, 50,
+                    20, 10) of the node in LSS configuration
+  activate MS       activate the configured bit timing after MS ms (all nodes in LSS
+                    configuration switch; no answer)
+  store             store the configured node-ID and bit timing in the node
+  inquire           the LSS address and the node-ID of the node in LSS configuration
+  configuration     switch state global: every node to LSS configuration
+  waiting           switch state global: every node back to LSS waiting
+
+options:
+  --address V,P,R,S switch state selective first: the node with this LSS address (1018h
+                    sub 1..4; decimal or 0x hex) goes to LSS configuration
+  --timeout MS      how long to wait for an answer, 1..60000 (default 1000)
+  --probe MS        how long a fastscan step waits, 1..60000 (default 100)
 )";
 
 constexpr const char *dump_help =
@@ -795,6 +825,218 @@ int cmd_nmt(const std::vector<std::string> &args, context c) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// lss
+
+/// "V,P,R,S" → an LSS address (each 32-bit, decimal or 0x hex).
+bool parse_lss_address(const std::string &s, canopen::lss::address &a) {
+  std::array<std::uint32_t, 4> v{};
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < 4U; ++i) {
+    const std::size_t comma = i < 3U ? s.find(',', at) : s.size();
+    if (comma == std::string::npos) return false;
+    std::uint64_t x = 0;
+    if (!parse_uint(std::string_view(s).substr(at, comma - at), 0xFFFF'FFFFU, x)) return false;
+    v[i] = static_cast<std::uint32_t>(x);
+    at = comma + 1U;
+  }
+  if (s.find(',', s.rfind(',') + 1U) != std::string::npos) return false;
+  a = {v[0], v[1], v[2], v[3]};
+  return true;
+}
+
+std::string lss_address_text(const canopen::lss::address &a) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "0x%08X,0x%08X,0x%08X,0x%08X", static_cast<unsigned>(a.vendor),
+                static_cast<unsigned>(a.product), static_cast<unsigned>(a.revision),
+                static_cast<unsigned>(a.serial));
+  return buf;
+}
+
+/// Runs one LSS service to its end over `bus`: false (and the error printed) when the bus
+/// failed or no answer came.
+bool run_lss(host::can_bus &bus, canopen::lss::master &m, const host::steady_ms &clock,
+             fieldcodec::result<canopen::lss::master::step> started, const context &c,
+             const std::string &what, int &code) {
+  if (!started) {
+    code = c.fail(exit_usage, what + ": " + std::string(to_string(started.error())));
+    return false;
+  }
+  canopen::lss::master::step s = started.value();
+  for (;;) {
+    for (const canopen::can_frame &f : s.send) {
+      if (!bus.send(f)) {
+        code = c.fail(exit_io, bus.last_error().what);
+        return false;
+      }
+    }
+    if (!m.busy()) break;
+    const std::uint32_t now = clock.now();
+    const std::uint32_t due = s.deadline.value_or(now);
+    const auto left = static_cast<std::int32_t>(due - now);
+    auto r = bus.receive(std::chrono::milliseconds(left > 0 ? left : 0));
+    if (r) {
+      s = m.on_frame(r.value().frame, clock.now());
+    } else if (r.error() == errc::timeout) {
+      s = m.poll(clock.now());
+    } else {
+      code = c.fail(exit_io, bus.last_error().what);
+      return false;
+    }
+  }
+  if (m.state() == canopen::lss::master_state::failed) {
+    code = c.fail(exit_failed, what + ": no answer (is a node in LSS configuration?)");
+    return false;
+  }
+  return true;
+}
+
+/// The answer's error code of configure / store as text; empty for none.
+std::string lss_refusal(const canopen::lss::master &m, const std::string &meaning) {
+  const std::uint8_t e = m.error_code();
+  if (e == canopen::lss::error_code::none) return {};
+  if (e == canopen::lss::error_code::not_supported) return meaning + " (error code 1)";
+  if (e == canopen::lss::error_code::storage_access) return "storage access failed (error code 2)";
+  if (e == canopen::lss::error_code::manufacturer) {
+    return "manufacturer's error " + std::to_string(m.manufacturer_code()) + " (error code 255)";
+  }
+  return "error code " + std::to_string(e);
+}
+
+int cmd_lss(const std::vector<std::string> &args, context c) {
+  options o;
+  std::string error;
+  if (!parse_options(args, 1, join({"--address", "--timeout", "--probe"}, transport_values),
+                     transport_flags, o, error)) {
+    return c.usage(error);
+  }
+  if (o.has("--help")) {
+    c.out << lss_help << transport_help;
+    return exit_ok;
+  }
+  if (o.positional.empty()) return c.usage("expected a SERVICE");
+  const std::string service = o.positional[0];
+  static const std::map<std::string, std::size_t> arity = {
+      {"scan", 1},  {"set-node", 2}, {"set-bitrate", 2},   {"activate", 2},
+      {"store", 1}, {"inquire", 1},  {"configuration", 1}, {"waiting", 1}};
+  const auto known = arity.find(service);
+  if (known == arity.end()) {
+    return c.usage("unknown LSS service '" + service +
+                   "' (scan, set-node, set-bitrate, activate, store, inquire, configuration, "
+                   "waiting)");
+  }
+  if (o.positional.size() != known->second) {
+    return c.usage(known->second == 1U ? "'" + service + "' takes no argument"
+                                       : "'" + service + "' expects one argument");
+  }
+  canopen::lss::master_options mo;
+  std::uint64_t v = 0;
+  if (o.given("--timeout")) {
+    if (!parse_uint(o.get("--timeout"), 60000, v) || v == 0U) {
+      return c.usage("bad --timeout '" + o.get("--timeout") + "' (1..60000 ms)");
+    }
+    mo.timeout_ms = static_cast<std::uint32_t>(v);
+  }
+  if (o.given("--probe")) {
+    if (!parse_uint(o.get("--probe"), 60000, v) || v == 0U) {
+      return c.usage("bad --probe '" + o.get("--probe") + "' (1..60000 ms)");
+    }
+    mo.probe_ms = static_cast<std::uint32_t>(v);
+  }
+  std::optional<canopen::lss::address> select;
+  if (o.given("--address")) {
+    canopen::lss::address a;
+    if (!parse_lss_address(o.get("--address"), a)) {
+      return c.usage("bad --address '" + o.get("--address") +
+                     "' (VENDOR,PRODUCT,REVISION,SERIAL, each decimal or 0x hex)");
+    }
+    select = a;
+  }
+  // the argument, checked before the bus is opened
+  std::uint8_t node = 0;
+  std::uint8_t bit_index = 0;
+  std::uint16_t delay = 0;
+  if (service == "set-node") {
+    if (!parse_uint(o.positional[1], 255, v) || v == 0U || (v > 127U && v != 255U)) {
+      return c.usage("bad node-ID '" + o.positional[1] + "' (1..127, or 255: none)");
+    }
+    node = static_cast<std::uint8_t>(v);
+  } else if (service == "set-bitrate") {
+    bool found = false;
+    if (parse_uint(o.positional[1], 1000, v)) {
+      for (std::uint8_t i = 0; i < 9U; ++i) {
+        if (canopen::lss::standard_bit_rate(i) != 0U && canopen::lss::standard_bit_rate(i) == v) {
+          bit_index = i;
+          found = true;
+        }
+      }
+    }
+    if (!found) {
+      return c.usage("bad bit rate '" + o.positional[1] +
+                     "' kbit/s (1000, 800, 500, 250, 125, 50, 20, 10)");
+    }
+  } else if (service == "activate") {
+    if (!parse_uint(o.positional[1], 0xFFFF, v)) {
+      return c.usage("bad delay '" + o.positional[1] + "' (0..65535 ms)");
+    }
+    delay = static_cast<std::uint16_t>(v);
+  }
+  int code = exit_ok;
+  auto bus = open_bus(o, c, code);
+  if (!bus) return code;
+  canopen::lss::master m(mo);
+  host::steady_ms clock;
+  const auto run_one = [&](auto started, const std::string &what) {
+    return run_lss(*bus, m, clock, started, c, what, code);
+  };
+  if (select && !run_one(m.switch_selective(*select, clock.now()), "switch state selective")) {
+    return code;
+  }
+  namespace lss = canopen::lss;
+  if (service == "scan") {
+    if (!run_one(m.fastscan(clock.now()), "fastscan")) return code;
+    if (!m.found()) return c.fail(exit_failed, "no node without node-ID answered");
+    c.out << "address " << lss_address_text(m.found_address()) << "\n";
+  } else if (service == "set-node" || service == "set-bitrate" || service == "store") {
+    const bool id = service == "set-node";
+    const bool store = service == "store";
+    auto started = id      ? m.configure_node_id(node, clock.now())
+                   : store ? m.store(clock.now())
+                           : m.configure_bit_timing(0, bit_index, clock.now());
+    if (!run_one(started, service)) return code;
+    const std::string refused = lss_refusal(m, id      ? "node-ID out of range"
+                                               : store ? "storing not supported"
+                                                       : "bit rate not supported");
+    if (!refused.empty()) return c.fail(exit_failed, "the node refused: " + refused);
+  } else if (service == "activate") {
+    if (!run_one(m.activate_bit_timing(delay, clock.now()), service)) return code;
+  } else if (service == "inquire") {
+    constexpr std::array<std::pair<lss::command, const char *>, 5> asked{{
+        {lss::command::inquire_vendor, "vendor-ID"},
+        {lss::command::inquire_product, "product code"},
+        {lss::command::inquire_revision, "revision number"},
+        {lss::command::inquire_serial, "serial number"},
+        {lss::command::inquire_node_id, "node-ID"},
+    }};
+    std::array<std::uint32_t, 5> got{};
+    for (std::size_t i = 0; i < asked.size(); ++i) {
+      if (!run_one(m.inquire(asked[i].first, clock.now()),
+                   std::string("inquire ") + asked[i].second)) {
+        return code;
+      }
+      got[i] = m.value();
+    }
+    c.out << "address " << lss_address_text({got[0], got[1], got[2], got[3]}) << "\n";
+    c.out << "node-ID "
+          << (got[4] == lss::unconfigured ? std::string("none (255)") : std::to_string(got[4]))
+          << "\n";
+  } else {
+    const std::uint8_t mode = service == "configuration" ? 1U : 0U;
+    if (!run_one(m.switch_global(mode, clock.now()), service)) return code;
+  }
+  return exit_ok;
+}
+
+// ---------------------------------------------------------------------------------------------
 // serve
 
 /// What a simulated node holds: node::device over a dictionary_store of the dictionary loaded at
@@ -1307,6 +1549,7 @@ int run(const std::vector<std::string> &args, std::istream &in, std::ostream &ou
   if (cmd == "decode") return cmd_decode(args, c);
   if (cmd == "monitor") return cmd_monitor(args, c);
   if (cmd == "nmt") return cmd_nmt(args, c);
+  if (cmd == "lss") return cmd_lss(args, c);
   if (cmd == "dump") return cmd_dump(args, c);
   if (cmd == "serve") return cmd_serve(args, c);
   if (cmd == "sdo" || cmd == "pacontrol") {

@@ -888,6 +888,50 @@ def part_errors(args):
            f"(gaps {gaps} ms), the same 1005h again is taken, another COB-ID while generating "
            f"is refused (06090030h); with 1019h = 3 the counters are {counters}; bit 30 cleared "
            "stops them")
+        # TIME (1012h): python's TimeProducer to the node's consumer, the node's producer to
+        # python (decoded with python canopen's own TIME layout and 1984 offset)
+        from canopen import timestamp
+        check(node.sdo.upload(0x1012, 0) == (0x100).to_bytes(4, "little"), "time",
+              "1012h is not 100h")
+        stamp = 1700000000.25
+        days, seconds = divmod(stamp - timestamp.OFFSET, timestamp.ONE_DAY)
+        want = f"{int(seconds * 1000)} {int(days)}"
+        s.network.time.transmit(stamp)  # bit 31 clear: the node does not consume it
+        s.bridge.drain()
+        time.sleep(0.05)
+        check(s.bridge.command("!last node-time", "time") == "ok 0 -", "time",
+              "the node took a TIME with 1012h bit 31 clear")
+        node.sdo.download(0x1012, 0, (0x80000100).to_bytes(4, "little"))
+        s.network.time.transmit(stamp)
+        wait_until(lambda: s.bridge.command("!last node-time", "time") == f"ok 1 {want}", "time",
+                   f"the node's TIME event: {s.bridge.command('!last node-time', 'time')}, "
+                   f"expected 1 {want}")
+        s.network.send_message(0x100, bytes(5))  # DLC 5: ignored
+        time.sleep(0.05)
+        check(s.bridge.command("!last node-time", "time") == f"ok 1 {want}", "time",
+              "a TIME of DLC 5 was taken")
+        expect_abort("time", 0x06090030,
+                     lambda: node.sdo.download(0x1012, 0, (0x80000181).to_bytes(4, "little")))
+        expect_abort("time", 0x06090030,
+                     lambda: node.sdo.download(0x1012, 0, (0x20000100).to_bytes(4, "little")))
+        check(s.bridge.command("!time 45296789 14610", "time").startswith("error not allowed"),
+              "time", "the node produced TIME with 1012h bit 30 clear")
+        node.sdo.download(0x1012, 0, (0xC0000100).to_bytes(4, "little"))
+        got = []
+        s.network.subscribe(0x100, lambda cob, data, t: got.append(bytes(data)))
+        check(s.bridge.command("!time 45296789 14610", "time") == "ok", "time", "!time")
+        wait_until(lambda: len(got) >= 1, "time", "python received no TIME from the node")
+        ms, day = timestamp.TIME_OF_DAY_STRUCT.unpack(got[0])
+        unix = timestamp.OFFSET + day * timestamp.ONE_DAY + ms / 1000
+        check((ms, day) == (45296789, 14610) and
+              time.strftime("%Y-%m-%d %H:%M:%S", time.gmtime(unix)) == "2024-01-01 12:34:56",
+              "time", f"python decoded {got[0].hex()} as ms {ms} day {day}")
+        check(s.bridge.command("!time 86400000 0", "time").startswith("error"),
+              "time", "a time of day of 24 h was sent")
+        ok("time", f"python's TimeProducer ({stamp}) reaches the node's consumer as {want} "
+           "(ms, days) only with 1012h bit 31; DLC 5 ignored; another CAN-ID while consuming "
+           "and bit 29 refused (06090030h); with bit 30 the node's TIME for 2024-01-01 "
+           "12:34:56.789 reaches python as such; 24:00:00.000 refused")
     finally:
         s.close()
 

@@ -17,7 +17,10 @@
 //   !set INDEX SUB HEX                            … the application writes a value
 //   !start                                        power-on: boot-up, pre-operational
 //   !state                                        the NMT state
-//   !last sync|time|emcy                          what the node decoded last from others
+//   !last sync|time|emcy                          what the bridge decoded last from others
+//   !last node-time                               the node's TIME consumer (1012h bit 31): its
+//                                                 `time` events so far and the last time
+//   !time MS DAYS                                 the node produces TIME (1012h bit 30)
 //   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
 //   !emcy-clear CODE                              the error is gone
 //   !tpdo N                                       the application's event for TPDO N
@@ -211,6 +214,7 @@ private:
 
 /// What the node received from others (python's SYNC, TIME and EMCY producers), for `!last`.
 struct received_log {
+  std::size_t node_times = 0; ///< the node's `time` events
   std::size_t syncs = 0;
   std::optional<std::uint8_t> sync_counter;
   std::optional<fieldcodec::od::time_value> time;
@@ -307,6 +311,33 @@ public:
     poll(now);
     return true;
   }
+  /// The node produces TIME (device::produce_time): nullopt, or why not.
+  [[nodiscard]] std::optional<fieldcodec::errc> produce_time(od::time_value t, std::uint32_t now) {
+    if constexpr (C.time) {
+      auto s = dev_.produce_time(t, now);
+      if (!s) return s.error();
+      transmit_all(s.value().send);
+      return std::nullopt;
+    } else {
+      (void)t;
+      (void)now;
+      return fieldcodec::errc::unknown_object;
+    }
+  }
+  /// `!last node-time`: the node's `time` events and the last time its consumer took.
+  [[nodiscard]] std::string node_time() const {
+    if constexpr (C.time) {
+      std::string out = "= ok " + std::to_string(log_.node_times);
+      if (const auto t = dev_.time().received()) {
+        out += " " + std::to_string(t->ms) + " " + std::to_string(t->days);
+      } else {
+        out += " -";
+      }
+      return out;
+    } else {
+      return "= error unknown_object 00000000";
+    }
+  }
   [[nodiscard]] co::nmt::state state() const { return dev_.state(); }
   [[nodiscard]] const received_log &log() const { return log_; }
 
@@ -319,6 +350,7 @@ private:
   }
   void note_events() {
     for (const auto &e : dev_.events()) {
+      if (e.what == co::node::event::kind::time) ++log_.node_times;
       if (e.what == co::node::event::kind::lss &&
           dev_.lss().last_event().what == co::node::lss_event::kind::activate_bit_timing) {
         activated_ = dev_.lss().last_event();
@@ -457,8 +489,23 @@ int run(Store &store, std::uint8_t node) {
           put_line("= ok ");
         } else if (w[0] == "!state") {
           put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
+        } else if (w[0] == "!last" && w.size() == 2U && w[1] == "node-time") {
+          put_line(glue.node_time());
         } else if (w[0] == "!last" && w.size() == 2U) {
           last(glue.log(), w[1]);
+        } else if (w[0] == "!time" && w.size() == 3U) {
+          const unsigned long ms = std::stoul(w[1], nullptr, 10);
+          const unsigned long days = std::stoul(w[2], nullptr, 10);
+          if (ms > 0xFFFF'FFFFUL || days > 0xFFFFUL) {
+            answer_error(fieldcodec::errc::out_of_range, {});
+          } else if (const auto e =
+                         glue.produce_time(od::time_value{static_cast<std::uint32_t>(ms),
+                                                          static_cast<std::uint16_t>(days)},
+                                           now)) {
+            answer_error(*e, {});
+          } else {
+            put_line("= ok ");
+          }
         } else if (w[0] == "!emcy" && w.size() >= 3U) {
           // !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]: an application error appears
           std::array<std::uint8_t, 5> manufacturer{};

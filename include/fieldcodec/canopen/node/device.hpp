@@ -1,7 +1,8 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
-// life guarding, EMCY producer, SYNC consumer and (capacity::sync_producer) producer, PDO
-// engine, SDO channels and the error behaviour (1029h), with frames routed
+// life guarding, EMCY producer, SYNC consumer and (capacity::sync_producer) producer, TIME
+// producer and consumer (capacity::time), PDO engine, SDO channels and the error behaviour
+// (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -16,6 +17,8 @@
 //   send(dev.set({0x6041, 0}, bytes, now).value()); // the application's own values (and
 //                                                   //   the event-driven TPDOs they make due)
 //   for (const node::event &e : dev.events()) ...   // what the last call did
+//   send(dev.produce_time({ms, days}, now).value()); // TIME (1012h bit 30), the application's
+//                                                   //   clock: the node has none
 //
 // Every call returns canopen::step<nmt::state>: the frames to send (valid until the next call),
 // the NMT state, and when to poll at the latest. What happened is in events().
@@ -24,8 +27,8 @@
 // downloads and RPDOs reach the store through the device (device::access). Each service owns
 // its communication objects (the SYNC consumer 1005h, 1007h, 1019h; life guarding 100Ch,
 // 100Dh; the EMCY producer 1001h, 1003h, 1014h, 1015h; the heartbeat producer 1017h and
-// consumer 1016h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh; the error
-// behaviour 1029h) and has the
+// consumer 1016h; TIME 1012h; the PDO engine 1400h–1BFFh; the SDO channels 1200h–12FFh; the
+// error behaviour 1029h) and has the
 // three members the device calls for every service in turn (each_service): check_write (the
 // CiA 301 rules of its objects), written (follow a stored value) and load (read them all at
 // start and after a reset). A write is checked by the owning service, stored by the store
@@ -70,6 +73,7 @@
 #include <fieldcodec/canopen/node/store.hpp>
 #include <fieldcodec/canopen/node/sync_consumer.hpp>
 #include <fieldcodec/canopen/node/sync_producer.hpp>
+#include <fieldcodec/canopen/node/time_service.hpp>
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/crc.hpp>
@@ -119,6 +123,11 @@ struct capacity {
   /// it 1005h refuses bit 30 and no producer code is in the image; capacity_for sets it when
   /// the dictionary has 1006h.
   bool sync_producer = false;
+  /// The node serves 1012h (COB-ID TIME): it consumes TIME (bit 31; a `time` event) and
+  /// produces it (bit 30; produce_time) (node/time_service.hpp). Without it no TIME code is in
+  /// the image and frames on 100h go where they went before (a PDO, if one uses it);
+  /// capacity_for sets it when the dictionary has 1012h.
+  bool time = false;
   /// The node is an LSS slave (CiA 305, node/lss_slave.hpp): it answers an LSS master on
   /// 7E5h/7E4h, can start without node-ID (lss::unconfigured) and takes a new node-ID at its
   /// next NMT reset. Without it no LSS code is in the image. capacity_for keeps it from `base`
@@ -154,6 +163,7 @@ struct capacity {
     if (i == 0x1003U && e.sub > c.error_history) c.error_history = e.sub;
     if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
     if (i == 0x1006U) c.sync_producer = true;
+    if (i == time_service::index) c.time = true;
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -179,6 +189,7 @@ struct event {
     life_guard_resumed,  ///< guarding requests again after a loss
     pdo,                 ///< a PDO engine event (`pdo`)
     sync,                ///< a SYNC was taken (`counter`)
+    time,                ///< a TIME was taken (the time: device::time().received())
     lss,                 ///< an LSS event: its details in lss().last_event() (capacity::lss)
   };
   kind what = kind::nmt_state;
@@ -202,6 +213,7 @@ struct event {
   case event::kind::life_guard_resumed: return "life guarding resumed";
   case event::kind::pdo: return "PDO event";
   case event::kind::sync: return "SYNC received";
+  case event::kind::time: return "TIME received";
   case event::kind::lss: return "LSS event";
   }
   return "?";
@@ -513,6 +525,20 @@ public:
     error_found(sub, now);
     return finish(now);
   }
+  /// The application's time `t` (milliseconds after midnight, days since 1984-01-01: its own
+  /// clock, e.g. an RTC or, on a host, host::time_of_day) as a TIME message on 1012h's CAN-ID
+  /// (capacity::time). The node has no wall clock and no TIME period: it sends when the
+  /// application calls, e.g. once a second or when its clock was set. Errors: bad_state (not
+  /// started, 1012h bit 30 clear, or the NMT state does not allow TIME: stopped), out_of_range
+  /// (t.ms not below 86 400 000). Nothing is sent on an error.
+  [[nodiscard]] constexpr result<step> produce_time(od::time_value t, std::uint32_t now) noexcept
+      requires(C.time) {
+    if (!started_ || !allowed(nmt_.state(), service::time)) return errc::bad_state;
+    FIELDCODEC_TRY(const can_frame f, time_.produce(t));
+    begin(now);
+    out_.push(f);
+    return finish(now);
+  }
   /// A local NMT state change (the device's error behaviour, or no NMT master).
   /// Errors: those of nmt_slave::enter.
   [[nodiscard]] constexpr result<step> enter(nmt::state s, std::uint32_t now) noexcept {
@@ -543,6 +569,11 @@ public:
   [[nodiscard]] constexpr const emcy_type &emcy() const noexcept { return emcy_; }
   [[nodiscard]] constexpr const sync_consumer &sync() const noexcept { return sync_; }
   [[nodiscard]] constexpr const errors_type &errors() const noexcept { return errors_; }
+  /// TIME (capacity::time): 1012h as followed, the last TIME received (received(): what a
+  /// `time` event reports) and why the last TIME frame was ignored (error()).
+  [[nodiscard]] constexpr const time_service &time() const noexcept requires(C.time) {
+    return time_;
+  }
   /// The LSS slave (capacity::lss): its state, pending node-ID and bit timing, LSS address.
   [[nodiscard]] constexpr const lss_slave &lss() const noexcept requires(C.lss) { return lss_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
@@ -617,7 +648,7 @@ private:
     const nmt::state s = nmt_.state();
     if (!started_ || s == nmt::state::boot_up || f.id > max_can_id || f.dlc > max_dlc ||
         f.id == cob_id::nmt || f.rtr || !allowed(s, service::sdo) ||
-        (f.id == sync_.cob_id() && allowed(s, service::sync))) {
+        (f.id == sync_.cob_id() && allowed(s, service::sync)) || time_frame_for(f, s)) {
       return C.sdo_servers; // remote frames: guarding, or no server's (is_request)
     }
     return sdo_.server_of(f);
@@ -662,6 +693,12 @@ private:
       sync_frame(f, now);
       return;
     }
+    if (time_frame_for(f, s)) {
+      if constexpr (C.time) {
+        if (time_.on_frame(f)) push_event(event::kind::time);
+      }
+      return;
+    }
     if (allowed(s, service::sdo)) {
       if (auto r = sdo_.on_frame(f, now)) {
         if (r->send.is_burst()) {
@@ -680,6 +717,17 @@ private:
     if (allowed(s, service::pdo)) {
       take(pdo_.on_frame(f, now, !sync_.window_passed(now)));
       pdo_events();
+    }
+  }
+
+  /// Is `f` a TIME for the consumer in state `s` (capacity::time, 1012h bit 31, its CAN-ID)?
+  [[nodiscard]] constexpr bool time_frame_for(const can_frame &f, nmt::state s) const noexcept {
+    if constexpr (C.time) {
+      return time_.takes(f) && allowed(s, service::time);
+    } else {
+      (void)f;
+      (void)s;
+      return false;
     }
   }
 
@@ -760,6 +808,7 @@ private:
   static constexpr void each_service(Self &self, F f) noexcept {
     f(self.sync_);
     if constexpr (C.sync_producer) f(self.sync_out_);
+    if constexpr (C.time) f(self.time_);
     f(self.life_);
     f(self.emcy_);
     f(self.producer_);
@@ -916,11 +965,11 @@ private:
   // ----- members ---------------------------------------------------------------------------
 
   // one call sends at most: boot-up or heartbeat, a SYNC, a guarding response, each TPDO once, one
-  // frame per SDO channel, and the EMCY messages (the queue, or the raises and clears of the
-  // five node-managed codes when no inhibit time holds them back)
-  static constexpr std::size_t out_capacity = 3U + (C.lss ? 1U : 0U) + C.tpdos + C.sdo_servers +
-                                              C.sdo_clients +
-                                              (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U;
+  // frame per SDO channel, the EMCY messages (the queue, or the raises and clears of the
+  // five node-managed codes when no inhibit time holds them back), an LSS answer and a TIME
+  static constexpr std::size_t out_capacity =
+      3U + (C.lss ? 1U : 0U) + C.tpdos + C.sdo_servers + C.sdo_clients +
+      (C.emcy_queue > 5U ? C.emcy_queue : 5U) + 1U + (C.time ? 1U : 0U);
   static constexpr std::size_t event_capacity =
       4U + (C.lss ? 1U : 0U) + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
@@ -936,6 +985,7 @@ private:
   sync_consumer sync_{};
   [[no_unique_address]] std::conditional_t<C.sync_producer, sync_producer, std::monostate>
       sync_out_{};
+  [[no_unique_address]] std::conditional_t<C.time, time_service, std::monostate> time_{};
   errors_type errors_{};
   [[no_unique_address]] std::conditional_t<C.lss, lss_slave, std::monostate> lss_;
   access access_;
