@@ -232,6 +232,13 @@ def sdo_server_defaults(args, dictionary):
                 raw = node.sdo.upload(var.index, var.subindex)
             except canopen.sdo.exceptions.SdoError as e:
                 raise Failed(f"sdo_server defaults: {where}: {e}")
+            if var.index in (0x1010, 0x1011) and var.subindex != 0:
+                # store/restore parameters read what the node can do (bit 0: on command, the
+                # bridge has a hook), not the EDS default (CiA 301; docs/canopen.md)
+                check(raw == (1).to_bytes(4, "little"), "sdo_server defaults",
+                      f"{where}: uploaded {raw.hex()}, expected 01000000 (saves on command)")
+                numbers += 1
+                continue
             got = var.decode_raw(raw)
             want = var.decode_raw(var.encode_raw(var.default))  # a REAL32 default as stored
             check(got == want, "sdo_server defaults",
@@ -932,6 +939,34 @@ def part_errors(args):
            "(ms, days) only with 1012h bit 31; DLC 5 ignored; another CAN-ID while consuming "
            "and bit 29 refused (06090030h); with bit 30 the node's TIME for 2024-01-01 "
            "12:34:56.789 reaches python as such; 24:00:00.000 refused")
+        # store/restore parameters (1010h/1011h) with python's RemoteNode.store()/restore()
+        check(node.sdo.upload(0x1010, 1) == (1).to_bytes(4, "little") and
+              node.sdo.upload(0x1011, 2) == (1).to_bytes(4, "little"), "storage",
+              f"1010h sub 1 reads {node.sdo.upload(0x1010, 1).hex()}, expected 01000000 "
+              "(saves on command)")
+        node.store(2)
+        node.store(1)
+        check(s.bridge.command("!last storage", "storage") == "ok s2 s1", "storage",
+              f"the hook saw {s.bridge.command('!last storage', 'storage')}")
+        expect_abort("storage", 0x08000020, lambda: node.sdo.download(0x1010, 1, b"evas"))
+        expect_abort("storage", 0x08000020, lambda: node.sdo.download(0x1011, 1, b"save"))
+        check(s.bridge.command("!storage fail", "storage") == "ok", "storage", "!storage")
+        expect_abort("storage", 0x06060000, lambda: node.store(3))
+        check(s.bridge.command("!storage ok", "storage") == "ok", "storage", "!storage")
+        node.sdo.download(0x1017, 0, (100).to_bytes(2, "little"))
+        node.restore(1)
+        check(node.sdo.upload(0x1017, 0) == (100).to_bytes(2, "little"), "storage",
+              "1017h changed at \"load\", before any reset")
+        node.nmt.state = "RESET COMMUNICATION"
+        node.nmt.wait_for_bootup(TIMEOUT)
+        check(node.sdo.upload(0x1017, 0) == bytes(2), "storage",
+              f"1017h after \"load\" and reset communication: {node.sdo.upload(0x1017, 0).hex()}")
+        check(s.bridge.command("!last storage", "storage") == "ok s2 s1 s3 r1", "storage",
+              f"the hook saw {s.bridge.command('!last storage', 'storage')}")
+        ok("storage", "1010h/1011h read 1 (on command); python's store(2), store(1) and "
+           "restore(1) reach the application's hook; a wrong signature aborts with 0800 0020h, "
+           "a failing hook with 0606 0000h; after \"load\" 1017h keeps 100 ms until python's "
+           "reset communication, then the default 0")
     finally:
         s.close()
 

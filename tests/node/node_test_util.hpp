@@ -113,7 +113,7 @@ constexpr od::entry_spec var(std::uint16_t index, std::uint8_t sub, data_type t,
       .index = index, .sub = sub, .type = t, .access_type = a, .pdo = p, .default_value = U(def)};
 }
 
-inline constexpr std::size_t entry_count = 103;
+inline constexpr std::size_t entry_count = 113;
 
 /// The dictionary of node `n` (node-ID-relative defaults resolved for n), as specs
 /// (od::entries_of packs them).
@@ -142,6 +142,16 @@ constexpr std::array<od::entry_spec, entry_count> make_specs(std::uint8_t n) {
        .default_text = "fieldcodec node"},
       var(0x100C, 0, u16, rw, 0),
       var(0x100D, 0, u8, rw, 0),
+      var(0x1010, 0, u8, ro, 4),
+      var(0x1010, 1, u32, rw, 1),
+      var(0x1010, 2, u32, rw, 1),
+      var(0x1010, 3, u32, rw, 1),
+      var(0x1010, 4, u32, rw, 1),
+      var(0x1011, 0, u8, ro, 4),
+      var(0x1011, 1, u32, rw, 1),
+      var(0x1011, 2, u32, rw, 1),
+      var(0x1011, 3, u32, rw, 1),
+      var(0x1011, 4, u32, rw, 1),
       var(0x1012, 0, u32, rw, 0x100),
       var(0x1014, 0, u32, rw, 0x80U + n),
       var(0x1015, 0, u16, rw, 0),
@@ -258,6 +268,7 @@ static_assert(caps.heartbeat_consumers == 3 && caps.error_history == 4);
 static_assert(caps.sdo_servers == 2 && caps.sdo_clients == 1);
 static_assert(caps.error_classes == 2);
 static_assert(caps.time);
+static_assert(caps.storage);
 
 using store_type = co::dictionary_store<>;
 using device_type = node::device<store_type, caps>;

@@ -21,6 +21,9 @@
 //   !last node-time                               the node's TIME consumer (1012h bit 31): its
 //                                                 `time` events so far and the last time
 //   !time MS DAYS                                 the node produces TIME (1012h bit 30)
+//   !storage ok|fail                              the bridge's 1010h/1011h storage hook works
+//                                                 or fails (it keeps nothing: it notes calls)
+//   !last storage                                 the hook's calls so far: s<group> / r<group>
 //   !emcy CODE REGISTER-BITS [MANUFACTURER-HEX]   an application error (EMCY, 1001h)
 //   !emcy-clear CODE                              the error is gone
 //   !tpdo N                                       the application's event for TPDO N
@@ -242,7 +245,20 @@ struct lss_storage {
 template <class Store, co::node::capacity C>
 class node_glue {
 public:
-  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node, {}, lss_options()) {}
+  node_glue(std::uint8_t node, Store &store) : node_(node), dev_(store, node, {}, lss_options()) {
+    if constexpr (C.storage) {
+      dev_.set_storage(
+          co::node::storage_hook{&params_, &storage_calls::save, &storage_calls::restore});
+    }
+  }
+  void storage_works(bool on) { params_.works = on; }
+  [[nodiscard]] std::string storage() const {
+    if constexpr (C.storage) {
+      return "= ok " + (params_.calls.empty() ? std::string("-") : params_.calls);
+    } else {
+      return "= error unknown_object 00000000";
+    }
+  }
 
   void start(std::uint32_t now) {
     if (auto s = dev_.start(now)) transmit_all(s.value().send);
@@ -342,6 +358,21 @@ public:
   [[nodiscard]] const received_log &log() const { return log_; }
 
 private:
+  /// The bridge's storage for 1010h/1011h: it notes what it was asked.
+  struct storage_calls {
+    std::string calls;
+    bool works = true;
+    static bool note(void *c, char what, std::uint8_t group) noexcept {
+      auto &s = *static_cast<storage_calls *>(c);
+      if (!s.calls.empty()) s.calls += ' ';
+      s.calls += what;
+      s.calls += std::to_string(group);
+      return s.works;
+    }
+    static bool save(void *c, std::uint8_t group) noexcept { return note(c, 's', group); }
+    static bool restore(void *c, std::uint8_t group) noexcept { return note(c, 'r', group); }
+  };
+  storage_calls params_;
   co::node::lss_options lss_options() {
     co::node::lss_options o;
     o.store = &lss_storage::store;
@@ -491,6 +522,11 @@ int run(Store &store, std::uint8_t node) {
           put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
         } else if (w[0] == "!last" && w.size() == 2U && w[1] == "node-time") {
           put_line(glue.node_time());
+        } else if (w[0] == "!last" && w.size() == 2U && w[1] == "storage") {
+          put_line(glue.storage());
+        } else if (w[0] == "!storage" && w.size() == 2U && (w[1] == "ok" || w[1] == "fail")) {
+          glue.storage_works(w[1] == "ok");
+          put_line("= ok ");
         } else if (w[0] == "!last" && w.size() == 2U) {
           last(glue.log(), w[1]);
         } else if (w[0] == "!time" && w.size() == 3U) {

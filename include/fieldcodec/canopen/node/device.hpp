@@ -1,8 +1,8 @@
 // fieldcodec — node::device, a CANopen node (CiA 301 slave) assembled from the node services
 // over a dictionary and a store: NMT slave, heartbeat producer and consumer, node guarding and
 // life guarding, EMCY producer, SYNC consumer and (capacity::sync_producer) producer, TIME
-// producer and consumer (capacity::time), PDO engine, SDO channels and the error behaviour
-// (1029h), with frames routed
+// producer and consumer (capacity::time), store/restore parameters (capacity::storage, 1010h,
+// 1011h), PDO engine, SDO channels and the error behaviour (1029h), with frames routed
 // by COB-ID. One plain object the caller owns: no heap, no threads, no I/O, no clock.
 //
 //   std::array<std::uint8_t, layout.storage_size()> storage{};
@@ -68,6 +68,7 @@
 #include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/lss_slave.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
+#include <fieldcodec/canopen/node/parameter_storage.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
 #include <fieldcodec/canopen/node/store.hpp>
@@ -133,6 +134,11 @@ struct capacity {
   /// next NMT reset. Without it no LSS code is in the image. capacity_for keeps it from `base`
   /// (a dictionary does not say it).
   bool lss = false;
+  /// The node serves the commands of 1010h (store parameters) and 1011h (restore default
+  /// parameters) with the application's storage_hook (set_storage; node/parameter_storage.hpp).
+  /// Without it 1010h/1011h are plain objects of the store; capacity_for sets it when the
+  /// dictionary has 1010h or 1011h.
+  bool storage = false;
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -164,6 +170,9 @@ struct capacity {
     if (i == 0x1029U && e.sub > c.error_classes) c.error_classes = e.sub;
     if (i == 0x1006U) c.sync_producer = true;
     if (i == time_service::index) c.time = true;
+    if (i == parameter_storage::store_index || i == parameter_storage::restore_index) {
+      c.storage = true;
+    }
   }
   if (c.mapped > pdo::max_entries) c.mapped = pdo::max_entries;
   return c;
@@ -256,7 +265,16 @@ public:
     [[nodiscard]] constexpr abort_code read(od::address a, std::size_t offset,
                                             std::span<std::uint8_t> out,
                                             std::size_t &total) const noexcept {
-      return d_->store_->read(a, offset, out, total);
+      const abort_code c = d_->store_->read(a, offset, out, total);
+      if constexpr (C.storage) {
+        // 1010h/1011h sub 1..: what the node can do, not the stored value
+        if (c == abort_code::none && parameter_storage::owns(a) && offset == 0U && total == 4U &&
+            out.size() >= 4U) {
+          const le_value v = encode_le(d_->storage_.capability(a), 4);
+          for (std::size_t i = 0; i < 4U; ++i) out[i] = v.bytes[i];
+        }
+      }
+      return c;
     }
     [[nodiscard]] constexpr abort_code begin_write(od::address a,
                                                    std::optional<std::uint32_t> size) noexcept {
@@ -574,6 +592,11 @@ public:
   [[nodiscard]] constexpr const time_service &time() const noexcept requires(C.time) {
     return time_;
   }
+  /// The application's storage for 1010h/1011h (capacity::storage; see parameter_storage).
+  constexpr void set_storage(storage_hook h) noexcept requires(C.storage) { storage_.set_hook(h); }
+  [[nodiscard]] constexpr const parameter_storage &storage() const noexcept requires(C.storage) {
+    return storage_;
+  }
   /// The LSS slave (capacity::lss): its state, pending node-ID and bit timing, LSS address.
   [[nodiscard]] constexpr const lss_slave &lss() const noexcept requires(C.lss) { return lss_; }
   [[nodiscard]] constexpr const pdo_type &pdo() const noexcept { return pdo_; }
@@ -809,6 +832,7 @@ private:
     f(self.sync_);
     if constexpr (C.sync_producer) f(self.sync_out_);
     if constexpr (C.time) f(self.time_);
+    if constexpr (C.storage) f(self.storage_);
     f(self.life_);
     f(self.emcy_);
     f(self.producer_);
@@ -832,7 +856,20 @@ private:
   [[nodiscard]] constexpr abort_code store_value(od::address a,
                                                  std::span<const std::uint8_t> value) noexcept {
     if (const auto c = check(a, value); c != abort_code::none) return c;
+    if (const auto c = storage_command(a, value)) return *c;
     return store_->set(a, value);
+  }
+  /// A command to 1010h/1011h (capacity::storage) that check() accepted: carried out by the
+  /// application's hook, nothing stored; nullopt for every other write.
+  [[nodiscard]] constexpr std::optional<abort_code>
+  storage_command(od::address a, std::span<const std::uint8_t> value) const noexcept {
+    if constexpr (C.storage) {
+      if (parameter_storage::owns(a) && value.size() == 4U) return storage_.command(a);
+    } else {
+      (void)a;
+      (void)value;
+    }
+    return std::nullopt;
   }
 
   /// The CiA 301 rules of the communication objects: the check of the service that owns `a`.
@@ -865,6 +902,7 @@ private:
     const bool whole = offset == 0U && last;
     if (whole) {
       if (const auto c = check(a, part); c != abort_code::none) return c;
+      if (const auto c = storage_command(a, part)) return *c;
     } else if (a.index >= 0x1000U && a.index <= 0x1FFFU && u32_of(part).has_value() &&
                check(a, part) != abort_code::none) {
       // a communication value in parts would pass unchecked: the servers' buffers (≥ 8 bytes)
@@ -986,6 +1024,7 @@ private:
   [[no_unique_address]] std::conditional_t<C.sync_producer, sync_producer, std::monostate>
       sync_out_{};
   [[no_unique_address]] std::conditional_t<C.time, time_service, std::monostate> time_{};
+  [[no_unique_address]] std::conditional_t<C.storage, parameter_storage, std::monostate> storage_{};
   errors_type errors_{};
   [[no_unique_address]] std::conditional_t<C.lss, lss_slave, std::monostate> lss_;
   access access_;
