@@ -1,22 +1,26 @@
 # fieldcodec_generate_dictionary(<target> INPUT <file>
-#                                [NAME <namespace>] [OUTPUT_DIR <dir>] [STRICT]
+#                                [NAME <namespace>] [OUTPUT_DIR <dir>] [STRICT] [PDO_HEADER]
 #                                [OPTIONS <generator option>...])
 #
-# Generates <OUTPUT_DIR>/fieldcodec/dictionaries/<NAME>.hpp from an EDS, DCF or CSV file at
-# build time (re-generated when the file or the generator changes) and makes <target> depend
-# on it and see it: `#include <fieldcodec/dictionaries/<NAME>.hpp>`, namespace
+# Generates <OUTPUT_DIR>/fieldcodec/dictionaries/<NAME>.hpp from an EDS, DCF, CSV, XDD/XDC or
+# ESI file at build time (re-generated when the file or the generator changes) and makes
+# <target> depend on it and see it: `#include <fieldcodec/dictionaries/<NAME>.hpp>`, namespace
 # fieldcodec::dictionaries::<NAME>.
+#
+#   PDO_HEADER  also <NAME>_pdos.hpp, the compile-time PDO layouts (--pdo-header), namespace
+#               fieldcodec::dictionaries::<NAME>::pdos
 #
 #   NAME        default: the file name without extension, lower case, every character other
 #               than a letter or digit replaced by '_' (runs collapsed), "n_" before a digit
 #   OUTPUT_DIR  default: ${CMAKE_CURRENT_BINARY_DIR}/fieldcodec_generated
 #   STRICT      warnings about the input are errors
-#   OPTIONS     further fieldcodec-gen options, e.g. --string-capacity 0x2122=1024
+#   OPTIONS     further fieldcodec-gen options, e.g. --string-capacity 0x2122=1024, or
+#               --device 0x1234:0x20000 for an ESI of several devices
 #
 # The generator is the fieldcodec-gen target when it exists (fieldcodec built as a
 # subproject), else the program named by FIELDCODEC_GEN_EXECUTABLE or found on the PATH.
 function(fieldcodec_generate_dictionary target)
-  cmake_parse_arguments(ARG "STRICT" "INPUT;NAME;OUTPUT_DIR" "OPTIONS" ${ARGN})
+  cmake_parse_arguments(ARG "STRICT;PDO_HEADER" "INPUT;NAME;OUTPUT_DIR" "OPTIONS" ${ARGN})
   if(NOT ARG_INPUT)
     message(FATAL_ERROR "fieldcodec_generate_dictionary: INPUT is required")
   endif()
@@ -49,14 +53,22 @@ function(fieldcodec_generate_dictionary target)
     set(strict --strict)
   endif()
   set(out "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries/${ARG_NAME}.hpp")
+  set(outputs "${out}")
+  set(pdo_option)
+  if(ARG_PDO_HEADER)
+    set(pdo_out "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries/${ARG_NAME}_pdos.hpp")
+    list(APPEND outputs "${pdo_out}")
+    set(pdo_option --pdo-header "${pdo_out}")
+  endif()
   add_custom_command(
-    OUTPUT "${out}"
+    OUTPUT ${outputs}
     COMMAND ${CMAKE_COMMAND} -E make_directory "${ARG_OUTPUT_DIR}/fieldcodec/dictionaries"
-    COMMAND ${gen} ${strict} ${ARG_OPTIONS} --quiet --name ${ARG_NAME} -o "${out}" "${input}"
+    COMMAND ${gen} ${strict} ${ARG_OPTIONS} --quiet --name ${ARG_NAME} -o "${out}" ${pdo_option}
+            "${input}"
     DEPENDS "${input}" ${gen_dep}
     COMMENT "fieldcodec-gen: ${ARG_NAME}.hpp from ${ARG_INPUT}"
     VERBATIM)
-  target_sources(${target} PRIVATE "${out}")
+  target_sources(${target} PRIVATE ${outputs})
   get_target_property(type ${target} TYPE)
   if(type STREQUAL "INTERFACE_LIBRARY")
     target_include_directories(${target} INTERFACE "${ARG_OUTPUT_DIR}")

@@ -11,6 +11,7 @@
 //   RECORD), data type, access, PDO mapping, name, capacity, limits, default, the
 //   bytes of a byte string's default) and objects, and whose second writing is the same text.
 // * The PDO layouts header of what reads is written (no crash, no diagnostic error).
+// * When an SII image is written from what reads, its report has no error.
 #include "check.hpp"
 
 #include "../codegen/src/text.cpp"
@@ -19,6 +20,7 @@
 #include "../codegen/src/emit_pdo.cpp"
 #include "../codegen/src/esi_reader.cpp"
 #include "../codegen/src/options.cpp"
+#include "../codegen/src/sii.cpp"
 #include "../codegen/src/write_eds.cpp"
 #include "../codegen/src/write_esi.cpp"
 #include "../codegen/src/xdd_reader.cpp"
@@ -78,5 +80,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   gen::diagnostics layouts;
   (void)gen::emit_pdo_layouts(*d, "fuzz.xml", layouts);
   FUZZ_CHECK(!layouts.has_errors());
+  gen::diagnostics sii_diag;
+  if (const auto image = gen::write_sii(*d, "fuzz.xml", sii_diag)) {
+    FUZZ_CHECK(!sii_diag.has_errors());
+    gen::diagnostics report;
+    (void)gen::sii_report(*image, "fuzz.bin", report);
+    FUZZ_CHECK(!report.has_errors());
+  }
   return 0;
 }

@@ -257,6 +257,7 @@ private:
   }
 
   void device(const xml::element &d, esi_device &dev) {
+    dev.line = d.at.line;
     if (const xml::attribute *p = d.find_attribute("Physics")) dev.physics = p->value;
     for (const auto &c : d.children) {
       if (c.local == "Type") {
@@ -332,6 +333,7 @@ private:
   void sync_manager(const xml::element &c, esi_device &dev) {
     esi_sync_manager sm;
     sm.type = trimmed(c.text);
+    sm.line = c.at.line;
     for (const auto &a : c.attributes) {
       if (a.local == "StartAddress") {
         sm.start = static_cast<std::uint16_t>(
@@ -439,6 +441,7 @@ private:
   }
 
   void eeprom(const xml::element &e, esi_device &dev) {
+    dev.eeprom_line = e.at.line;
     for (const auto &c : e.children) {
       if (c.local == "ByteSize") {
         dev.eeprom_bytes = number32(c, "Eeprom ByteSize");

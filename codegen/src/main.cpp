@@ -34,7 +34,9 @@ constexpr const char *usage_text =
 Reads INPUT (.eds or .dcf: CiA 306; .csv: object or command table, see
 docs/dictionary-formats.md; .xdd, .xdc or .xpd: CiA 311 CANopen or EPSG DS 311
 POWERLINK; .xml: EtherCAT ESI, ETG.2000) and writes a constexpr C++ header, an
-EDS and/or an XDD.
+EDS, an XDD, an ESI, PDO layouts and/or an SII EEPROM image. INPUT .bin is an
+SII EEPROM image (ETG.2010): its report is written to -o FILE (default:
+standard output).
 
 options:
   -o, --output FILE   write the C++ header to FILE ("-" for standard output)
@@ -48,6 +50,7 @@ options:
                       (default: the profile of an XDD/XDC input, else canopen)
       --esi FILE      write the dictionary as an EtherCAT ESI (ETG.2000) to FILE ("-"
                       for standard output); what an ESI cannot hold is reported
+      --sii FILE      write the SII EEPROM image (ETG.2010) of an ESI device to FILE
       --pdo-header FILE
                       write the PDO layouts to FILE: one compile-time layout per PDO,
                       checked against the header of -o (included as
@@ -203,6 +206,7 @@ struct command_line {
   std::string xdd_out;
   std::string pdo_out;
   std::string esi_out;
+  std::string sii_out;
   fieldcodec::gen::bus_profile xdd_profile = fieldcodec::gen::bus_profile::unspecified;
   std::string config_out;
   std::string slaves_out;
@@ -239,6 +243,8 @@ int parse_command_line(int argc, char **argv, command_line &cl) {
       if (!value(cl.eds_out)) return usage_error("option --eds needs a file name");
     } else if (a == "--xdd") {
       if (!value(cl.xdd_out)) return usage_error("option --xdd needs a file name");
+    } else if (a == "--sii") {
+      if (!value(cl.sii_out)) return usage_error("option --sii needs a file name");
     } else if (a == "--esi") {
       if (!value(cl.esi_out)) return usage_error("option --esi needs a file name");
     } else if (a == "--pdo-header") {
@@ -394,6 +400,14 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
     if (lost.has_errors()) return 1;
     rc |= output(cl.eds_out, fieldcodec::gen::write_eds(dict), cl.check);
   }
+  if (!cl.sii_out.empty()) {
+    fieldcodec::gen::diagnostics diag;
+    diag.strict = cl.strict;
+    const auto image = fieldcodec::gen::write_sii(dict, cl.input, diag);
+    put(stderr, diag.text(!cl.quiet));
+    if (!image || diag.has_errors()) return 1;
+    rc |= output(cl.sii_out, std::string(image->begin(), image->end()), cl.check);
+  }
   if (!cl.esi_out.empty()) {
     if (dict.is_command_table) {
       put(stderr, cl.input + ": error: a command table cannot be written as ESI\n");
@@ -439,6 +453,32 @@ int write_outputs(const command_line &cl, fieldcodec::gen::dictionary &dict) {
   return rc;
 }
 
+// INPUT .bin: the report of an SII EEPROM image, to -o FILE or standard output. Exit 1 after an
+// error in the image (a wrong checksum, a category past its end).
+int sii_report(const command_line &cl) {
+  if (!cl.eds_out.empty() || !cl.xdd_out.empty() || !cl.esi_out.empty() || !cl.sii_out.empty() ||
+      !cl.pdo_out.empty() || !cl.config_out.empty()) {
+    return usage_error("an SII image (.bin) gives a report only (-o FILE)");
+  }
+  fieldcodec::gen::file_bytes file;
+  if (const char *failed = file.load(cl.input)) {
+    put(stderr, cl.input + ": error: " + failed + "\n");
+    return 1;
+  }
+  const std::string_view bytes = file.view();
+  const std::span<const std::uint8_t> image(reinterpret_cast<const std::uint8_t *>(bytes.data()),
+                                            bytes.size());
+  fieldcodec::gen::diagnostics diag;
+  diag.strict = cl.strict;
+  const std::string report = fieldcodec::gen::sii_report(image, cl.input, diag);
+  put(stderr, diag.text(!cl.quiet));
+  int rc = diag.has_errors() ? 1 : 0;
+  if (!report.empty()) {
+    rc |= output(cl.header_out.empty() ? std::string("-") : cl.header_out, report, cl.check);
+  }
+  return rc;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -451,6 +491,9 @@ int main(int argc, char **argv) {
 #endif
   command_line cl;
   if (const int rc = parse_command_line(argc, argv, cl); rc >= 0) return rc;
+  if (cl.input.size() > 4 && (cl.input.ends_with(".bin") || cl.input.ends_with(".BIN"))) {
+    return sii_report(cl);
+  }
   fieldcodec::gen::diagnostics diag;
   diag.strict = cl.strict;
   auto dict = fieldcodec::gen::read_file(cl.input, diag, cl.read);

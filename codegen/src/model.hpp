@@ -181,6 +181,7 @@ struct esi_sync_manager {
   bool has_default_size = false;
   std::uint8_t control = 0;
   bool enable = true;
+  int line = 0;
 };
 
 /// What an ESI (EtherCAT Slave Information, ETG.2000) says about a device beyond its object
@@ -207,6 +208,8 @@ struct esi_device {
   std::uint32_t eeprom_bytes = 0;     ///< Eeprom/ByteSize, 0 when none
   std::string config_data;            ///< Eeprom/ConfigData (hex) as written
   std::string bootstrap;              ///< Eeprom/BootStrap (hex) as written
+  int line = 0;                       ///< the Device element's line
+  int eeprom_line = 0;                ///< the Eeprom element's line, 0 when none
 };
 
 /// One row of a command table.

@@ -4,10 +4,13 @@
 #include "diag.hpp"
 #include "model.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fieldcodec::gen {
 
@@ -76,6 +79,21 @@ void add_mandatory_objects(dictionary &d);
 /// problem. The header includes <fieldcodec/dictionaries/<stem>.hpp>.
 [[nodiscard]] std::string emit_pdo_layouts(const dictionary &d, const std::string &file,
                                            diagnostics &diag);
+
+/// The SII EEPROM image (ETG.2010) of the ESI device of `d` (dictionary::ethercat; an error for
+/// a dictionary not read from an ESI): configuration area from Eeprom/ConfigData with its CRC-8,
+/// identity, mailboxes (Sm MBoxOut/MBoxIn, Eeprom/BootStrap), protocols, and the categories
+/// STRINGS, GENERAL, FMMU, SYNCM, TXPDO, RXPDO, padded with 0xFF to Eeprom/ByteSize. Nothing
+/// after an error.
+[[nodiscard]] std::optional<std::vector<std::uint8_t>>
+write_sii(const dictionary &d, const std::string &file, diagnostics &diag);
+
+/// A readable report of an SII image: every field of words 0x00..0x3F, the checksum checked,
+/// every category decoded (strings resolved). Problems go to `diag`: a wrong checksum, a
+/// category that runs past the image or an image shorter than 128 bytes are errors; a missing
+/// end category, unknown categories and string indices that name no string warnings.
+[[nodiscard]] std::string sii_report(std::span<const std::uint8_t> image, const std::string &file,
+                                     diagnostics &diag);
 
 /// Emit the C++ header.
 [[nodiscard]] std::string emit_header(const dictionary &d);

@@ -23,7 +23,12 @@ dictionary lacks (mapping objects, mapped objects, sync manager assignments 1C10
 sub-object of a record or array flattened from its DataType (SubItems, arrays of ArrayInfo,
 Info/SubItem defaults by name, the rest in order); every default (DefaultValue, DefaultString,
 DefaultData little-endian); every PDO entry: in the PDO layouts header (--pdo-header), and as
-the default of the mapping object the generator adds where the dictionary lacks it.
+the default of the mapping object the generator adds where the dictionary lacks it. And the
+device's SII EEPROM image (--sii), decoded here on its own (ETG.2010): the configuration area
+(Eeprom/ConfigData) and its CRC-8 (x^8+x^2+x+1 from 0xFF, bit by bit), the identity, the
+mailboxes (Sm MBoxOut/MBoxIn, Eeprom/BootStrap), the size word, the categories' chain, and every
+PDO of the RxPDO/TxPDO categories against RxPdo/TxPdo (index, sync manager, entries, names):
+all of them, or where the EEPROM is too small (a warning) those assigned by default, or none.
 
 usage: xml_corpus.py GEN CORPUS_DIR WORK_DIR
 Exit status 0 when every file passes, 1 otherwise.
@@ -434,11 +439,11 @@ def same_esi_default(d, eds_text, code):
     return same_value(v.replace("#x", "0x").replace("#X", "0x"), eds_text, code)
 
 
-def check_esi_device(gen, path, work, dev, selector):
+def check_esi_device(gen, path, work, dev, selector, vendor_id):
     name = os.path.basename(path)
     out = os.path.join(work, name + (f".{selector.replace(':', '_')}" if selector else "") + ".eds")
-    cmd = [gen, "-q", path, "--eds", out, "--pdo-header", out + ".pdos.hpp"] + \
-        (["--device", selector] if selector else [])
+    cmd = [gen, "-q", path, "--eds", out, "--pdo-header", out + ".pdos.hpp", "--sii",
+           out + ".sii.bin"] + (["--device", selector] if selector else [])
     run = subprocess.run(cmd, capture_output=True, text=True)
     if run.returncode != 0:
         return [f"device {selector or '(only)'} refused:\n{run.stderr}"]
@@ -529,9 +534,135 @@ def check_esi_device(gen, path, work, dev, selector):
             if sec is None or number(sec.get("DefaultValue")) != want_v:
                 problems.append(f"PDO 0x{idx:04X} entry {k}: "
                                 f"{sec and sec.get('DefaultValue')}, ESI 0x{want_v:08X}")
+    sii_problems, sii_pdos, all_pdos = check_sii(out + ".sii.bin", dev, vendor_id)
+    problems += sii_problems
     if problems:
         return problems
-    return (len(want), entries, defaults, pdo_entries)
+    return (len(want), entries, defaults, pdo_entries, 1, sii_pdos, all_pdos)
+
+
+def crc8(data):
+    crc = 0xFF
+    for byte in data:
+        for bit in range(7, -1, -1):
+            top = (crc >> 7) & 1
+            crc = (crc << 1) & 0xFF
+            if top ^ ((byte >> bit) & 1):
+                crc ^= 0x07
+    return crc
+
+
+def check_sii(image_path, dev, vendor_id):
+    """The SII image of one device against its ESI; (problems, how many PDOs it holds)."""
+    with open(image_path, "rb") as f:
+        img = f.read()
+    problems = []
+
+    def u16(at):
+        return struct.unpack_from("<H", img, at)[0]
+
+    def u32(at):
+        return struct.unpack_from("<I", img, at)[0]
+
+    eeprom = children(dev, "Eeprom")
+    size = esi_int(text_of(eeprom[0], "ByteSize")) if eeprom and text_of(eeprom[0], "ByteSize") \
+        else None
+    if size is not None and len(img) != size:
+        problems.append(f"SII of {len(img)} bytes, Eeprom/ByteSize {size}")
+    if len(img) % 128 or u16(0x7C) != len(img) // 128 - 1 or u16(0x7E) != 1:
+        problems.append(f"SII size word {u16(0x7C)} / version {u16(0x7E)} for {len(img)} bytes")
+    config = bytes.fromhex(text_of(eeprom[0], "ConfigData") or "") if eeprom else b""
+    if img[:14] != (config + bytes(14))[:14]:
+        problems.append(f"SII configuration area {img[:14].hex()}, ConfigData {config.hex()}")
+    if img[14] != crc8(img[:14]) or img[15] != 0:
+        problems.append(f"SII checksum {u16(14):#06x}, CRC-8 {crc8(img[:14]):#04x}")
+    t = children(dev, "Type")[0]
+    if (u32(0x10), u32(0x14), u32(0x18)) != \
+            (vendor_id, esi_int(t.get("ProductCode")), esi_int(t.get("RevisionNo") or "0")):
+        problems.append(f"SII identity {u32(0x10):#x} {u32(0x14):#x} {u32(0x18):#x}")
+    sms = children(dev, "Sm")
+    mbx = {(s.text or "").strip(): (esi_int(s.get("StartAddress") or "0"),
+                                    esi_int(s.get("DefaultSize") or "0")) for s in sms}
+    std = [mbx.get("MBoxOut", (0, 0)), mbx.get("MBoxIn", (0, 0))]
+    if "MBoxOut" not in mbx or "MBoxIn" not in mbx:
+        std = [(0, 0), (0, 0)]
+    boot = std
+    if eeprom and text_of(eeprom[0], "BootStrap"):
+        b = bytes.fromhex(text_of(eeprom[0], "BootStrap"))
+        boot = [struct.unpack_from("<HH", b, 0), struct.unpack_from("<HH", b, 4)]
+    got = [(u16(0x28), u16(0x2A)), (u16(0x2C), u16(0x2E)), (u16(0x30), u16(0x32)),
+           (u16(0x34), u16(0x36))]
+    if got != [tuple(boot[0]), tuple(boot[1]), tuple(std[0]), tuple(std[1])]:
+        problems.append(f"SII mailboxes {got}, ESI bootstrap {boot} standard {std}")
+    # the categories
+    at, cats = 128, []
+    while True:
+        if at + 2 > len(img):
+            problems.append("SII without an end category")
+            break
+        typ = u16(at)
+        if typ == 0xFFFF:
+            break
+        n = u16(at + 2)
+        cats.append((typ, img[at + 4:at + 4 + 2 * n]))
+        at += 4 + 2 * n
+    if any(b != 0xFF for b in img[at:]):
+        problems.append("SII: bytes after the end category that are not 0xFF")
+    strings = [None]
+    for typ, data in cats:
+        if typ == 10:
+            k = 1
+            for _ in range(data[0]):
+                strings.append(data[k + 1:k + 1 + data[k]].decode("utf-8", "replace"))
+                k += 1 + data[k]
+
+    def decoded_pdos(typ):
+        out = []
+        for t_, data in cats:
+            if t_ != typ:
+                continue
+            k = 0
+            while k < len(data):
+                index, n, sm, _, name, flags = struct.unpack_from("<HBBBBH", data, k)
+                ents = [struct.unpack_from("<HBBBBH", data, k + 8 + 8 * j) for j in range(n)]
+                out.append((index, sm, name, ents))
+                k += 8 + 8 * n
+        return out
+
+    written = 0
+    wanted_all = 0
+    for kind, typ in (("RxPdo", 51), ("TxPdo", 50)):
+        esi_pdos = children(dev, kind)
+        got = decoded_pdos(typ)
+        by_default = [p for p in esi_pdos if p.get("Sm") is not None]
+        if len(got) == len(esi_pdos):
+            want = esi_pdos
+        elif len(got) == len(by_default):
+            want = by_default
+        elif not got:
+            want = []
+        else:
+            problems.append(f"SII {kind}: {len(got)} PDOs of {len(esi_pdos)}")
+            continue
+        wanted_all += len(esi_pdos)
+        for p, (index, sm, name, ents) in zip(want, got):
+            es = children(p, "Entry")
+            where = f"SII {kind} {index:#06x}"
+            if index != esi_int(text_of(p, "Index")) or len(ents) != len(es):
+                problems.append(f"{where}: {len(ents)} entries, ESI {text_of(p, 'Index')} "
+                                f"{len(es)}")
+                continue
+            if sm != (int(p.get("Sm")) if p.get("Sm") is not None else 0xFF):
+                problems.append(f"{where}: SM {sm}, ESI {p.get('Sm')}")
+            if name and strings[name] != english_name(p):
+                problems.append(f"{where}: name {strings[name]!r}, ESI {english_name(p)!r}")
+            for e, (ei, es_, en, _, bits, _) in zip(es, ents):
+                w = (esi_int(text_of(e, "Index")), esi_int(text_of(e, "SubIndex") or "0"),
+                     esi_int(text_of(e, "BitLen")))
+                if (ei, es_, bits) != w or (en and strings[en] != english_name(e)):
+                    problems.append(f"{where}: entry {(ei, es_, bits)}, ESI {w}")
+            written += 1
+    return problems, written, wanted_all
 
 
 def check_esi(gen, path, work):
@@ -544,13 +675,14 @@ def check_esi(gen, path, work):
     for ds in root.iter():
         if local(ds.tag) == "Devices":
             devices += children(ds, "Device")
-    totals = [0, 0, 0, 0]
+    vendor_id = esi_int(text_of(children(root, "Vendor")[0], "Id"))
+    totals = [0, 0, 0, 0, 0, 0, 0]
     problems = []
     for d in devices:
         t = children(d, "Type")[0]
         selector = (f"{t.get('ProductCode')}:{t.get('RevisionNo')}"
                     if len(devices) > 1 else None)
-        r = check_esi_device(gen, path, work, d, selector)
+        r = check_esi_device(gen, path, work, d, selector, vendor_id)
         if isinstance(r, list):
             problems += [f"[{selector or 'device'}] {p}" for p in r]
         else:
@@ -558,7 +690,8 @@ def check_esi(gen, path, work):
     if problems:
         return problems
     return (f"{len(devices)} device{'s' if len(devices) != 1 else ''}, {totals[0]} objects, "
-            f"{totals[1]} dictionary entries, {totals[2]} defaults, {totals[3]} PDO entries")
+            f"{totals[1]} dictionary entries, {totals[2]} defaults, {totals[3]} PDO entries; "
+            f"{totals[4]} SII images with {totals[5]} of {totals[6]} PDOs")
 
 
 def main():

@@ -148,3 +148,35 @@ TEST_CASE("CRC-16/XMODEM by table equals the bitwise form on random data of ever
   }
   CHECK(compared == 1001U * 8U);
 }
+
+// CRC-8, polynomial 0x07, initial 0xFF, no reflection, no final XOR: the EtherCAT SII
+// configuration area checksum (ETG.1000.6 5.4; SOEM computes it the same way). Check value of
+// "123456789": 0xFB (computed by the definition below; the catalogue has no entry with these
+// parameters: CRC-8/SMBUS starts from 0 and gives 0xF4, CRC-8/ROHC reflects and gives 0xD0).
+namespace {
+constexpr std::uint8_t nine[] = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};
+} // namespace
+static_assert(crc::crc8(nine) == 0xFB);
+static_assert(crc::crc8(std::span<const std::uint8_t>{}) == 0xFF);
+// A real configuration area (siitool's published sii_example image, words 0..6: PDI control
+// 0x0E08, PDI configuration 0x8802, the rest 0) and its word 7, checksum 0x2F.
+namespace {
+constexpr std::uint8_t sii_words_0_6[14] = {0x08, 0x0E, 0x02, 0x88, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+} // namespace
+static_assert(crc::crc8(sii_words_0_6) == 0x2F);
+static_assert(crc::crc8(std::span<const std::uint8_t>(nine).subspan(4),
+                        crc::crc8(std::span<const std::uint8_t>(nine).first(4))) == 0xFB);
+
+TEST_CASE("crc8: the SII checksum, incrementally and against the bitwise definition") {
+  CHECK(crc::crc8(nine) == 0xFBU);
+  const std::uint8_t zero[1] = {0};
+  CHECK(crc::crc8(zero, 0) == 0x00U); // CRC-8/SMBUS's start: 0 stays 0
+  CHECK(crc::crc8(nine, 0) == 0xF4U); // and its check value
+  // the division written out: shift in each bit, xor the polynomial on a carry
+  for (unsigned v = 0; v < 256; ++v) {
+    const std::uint8_t one[1] = {static_cast<std::uint8_t>(v)};
+    unsigned r = 0xFFU ^ v;
+    for (int i = 0; i < 8; ++i) r = (r & 0x80U) != 0U ? ((r << 1U) ^ 0x107U) : (r << 1U);
+    CHECK(crc::crc8(one) == (r & 0xFFU));
+  }
+}

@@ -1,8 +1,9 @@
 # Generic layers know no vendor (DESIGN.md, "Layout"; docs/contributing.md): checks the headers
 # under include/fieldcodec/.
-#  * No header of a generic layer (core, od, canopen, ds402, master) includes a vendor's folder
-#    (compax, dpq, pacontrol, xenax) or a generated dictionary (dictionaries/, written from a
-#    vendor's files): a vendor's rules come in as a parameter or a table its folder supplies.
+#  * No header of a generic layer (core, od, canopen, ds402, master, ethercat) includes a
+#    vendor's folder (compax, dpq, pacontrol, xenax) or a generated dictionary (dictionaries/,
+#    written from a vendor's files): a vendor's rules come in as a parameter or a table its
+#    folder supplies.
 #  * No header under the folders of `name_free` mentions a vendor or its device at all, not even
 #    in a comment: master/ commands any CiA 301/402 device alike.
 # Fails naming the file, the line and what it found.
@@ -12,7 +13,7 @@ if(NOT SOURCE_DIR)
   message(FATAL_ERROR "usage: cmake -DSOURCE_DIR=<project root> -P run.cmake")
 endif()
 
-set(generic core od canopen ds402 master)
+set(generic core od canopen ds402 master ethercat)
 set(name_free master)
 set(vendor_folders "compax|dpq|pacontrol|xenax|dictionaries")
 # vendor, device and maker names, matched without regard to case

@@ -4,6 +4,7 @@
 
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/dictionaries/xenax_ethercat_pdos.hpp>
 #include <fieldcodec/xenax/bus.hpp>
 #include <fieldcodec/xenax/units.hpp>
 
@@ -46,9 +47,21 @@ TEST_CASE("docs/xenax.md: using the dictionaries and helpers") {
   CHECK(inc.value() == 2500);
 }
 
+TEST_CASE("docs/xenax.md: the EtherCAT PDO layouts generated from the ESI") {
+  // statusword 0x0637, position -1000, following error -2, current 150 mA, PSR 9
+  const std::array<std::uint8_t, 16> process_image{0x37, 0x06, 0x18, 0xFC, 0xFF, 0xFF, 0xFE, 0xFF,
+                                                   0xFF, 0xFF, 0x96, 0x00, 0x09, 0x00, 0x00, 0x00};
+  namespace ec = fieldcodec::dictionaries::xenax_ethercat::pdos; // the manual's, generated here
+  // 7.1.2: TxPDO 21 (1A13h) — statusword, position, following error, current, PSR: 16 bytes
+  static_assert(ec::txpdo_1a13.bytes() == 16);
+  const auto position = ec::txpdo_1a13.get<std::int32_t>(process_image, 1); // 6064h
+
+  CHECK(position.value() == -1000);
+}
+
 TEST_CASE("docs/xenax.md: every C++ block is one of the blocks compiled above") {
   const auto blocks = doc_blocks::cpp_blocks(doc_blocks::beside(__FILE__, "../../docs/xenax.md"));
-  CHECK(blocks.size() == 1);
+  CHECK(blocks.size() == 2);
   const std::string source = doc_blocks::read_file(__FILE__);
   for (const auto &block : blocks) {
     CAPTURE(block);

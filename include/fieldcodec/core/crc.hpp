@@ -1,5 +1,8 @@
 // fieldcodec — cyclic redundancy checks over byte ranges.
 //
+// crc::crc8 (polynomial 0x07, initial 0xFF) is the checksum of an EtherCAT slave's
+// configuration area (SII EEPROM words 0..6).
+//
 // crc::ccitt16 is the CRC of CiA 301's SDO block transfer: polynomial x^16 + x^12 + x^5 + 1
 // (0x1021), initial value 0, most significant bit first, no reflection, no final XOR — the
 // catalogue's CRC-16/XMODEM (check value 0x31C3 for "123456789"). It is incremental: feed the
@@ -81,6 +84,22 @@ struct ccitt16_with_table { ///< by ccitt16_table: faster, 512 bytes of flash
   for (const char c : text) {
     const std::uint8_t b[1] = {static_cast<std::uint8_t>(c)};
     crc = ccitt16(std::span<const std::uint8_t>(b), crc);
+  }
+  return crc;
+}
+
+/// CRC-8 with polynomial x^8 + x^2 + x + 1 (0x07), most significant bit first, no reflection,
+/// no final XOR, of `data` continuing from `crc` (initial value 0xFF): the checksum of an
+/// EtherCAT slave's configuration area, EEPROM words 0..6 (ETG.1000.6 5.4; check value 0xFB for
+/// "123456789"; from 0 instead of 0xFF it is CRC-8/SMBUS). Bitwise: it runs over 14 bytes once per
+/// image.
+[[nodiscard]] constexpr std::uint8_t crc8(std::span<const std::uint8_t> data,
+                                          std::uint8_t crc = 0xFF) noexcept {
+  for (const std::uint8_t b : data) {
+    unsigned c = static_cast<unsigned>(crc) ^ b;
+    for (int i = 0; i < 8; ++i)
+      c = (c & 0x80U) != 0U ? ((c << 1U) ^ 0x07U) & 0xFFU : (c << 1U) & 0xFFU;
+    crc = static_cast<std::uint8_t>(c);
   }
   return crc;
 }

@@ -1,6 +1,7 @@
 #include <fieldcodec/dictionaries/my_drive.hpp>
 #include <fieldcodec/dictionaries/my_drive_empty.hpp>
 #include <fieldcodec/dictionaries/my_drive_views.hpp>
+#include <fieldcodec/dictionaries/my_ecat_pdos.hpp>
 
 namespace drive = fieldcodec::dictionaries::my_drive;
 namespace views = fieldcodec::dictionaries::my_drive_views;
@@ -21,6 +22,9 @@ static_assert(views::device_type.index == 0x1000); // VAR objects keep their des
 // no entries: empty spans and an empty, valid dictionary
 static_assert(fieldcodec::dictionaries::my_drive_empty::entries.size() == 0 &&
               fieldcodec::dictionaries::my_drive_empty::dictionary.empty());
+
+// the ESI's RxPDO 0x1600: controlword and target position, checked against the dictionary
+static_assert(fieldcodec::dictionaries::my_ecat::pdos::rxpdo_1600.bytes() == 6);
 
 int main() {
   return drive::dictionary.find(0x1014, 0)->default_for(3).value().bits == 0x83U ? 0 : 1;
