@@ -178,10 +178,10 @@ int_parse parse_int(std::string_view s, int_syntax syntax) {
                                      : "a digit";
       // the whole character (core/utf8), so that the message stays UTF-8 (fuzz F23)
       const std::size_t n = utf8::sequence_length(s, k);
-      r.error =
-          std::string("expected ") + what + ", got '" +
-          (n == 0U ? "\\x" + gen::hex(static_cast<std::uint8_t>(c), 2) : std::string(s.substr(k, n))) +
-          "' in '" + std::string(s) + "'";
+      r.error = std::string("expected ") + what + ", got '" +
+                (n == 0U ? "\\x" + gen::hex(static_cast<std::uint8_t>(c), 2)
+                         : std::string(s.substr(k, n))) +
+                "' in '" + std::string(s) + "'";
       r.error_pos = k;
       r.suffix = false;
       return r;
