@@ -28,6 +28,25 @@ TEST_CASE("fuzz F21: a log line without an interface reads back without one") {
   CHECK(candump::parse_line("(1.5) -x 181#01").value().iface.view() == "-x");
 }
 
+// F30 (fuzz_host_candump, CI's run): a line with an interface and no time (candump's display
+// without -t: "705 355#11.11.33") was read with its interface, and format_line wrote the
+// compact frame without it: the record did not read back identical.
+TEST_CASE("fuzz F30: an interface without a time is written and read back") {
+  const auto r = candump::parse_line("705 355#11.11.33 ");
+  REQUIRE(r);
+  CHECK(r.value().iface.view() == "705");
+  CHECK_FALSE(r.value().time.known());
+  const std::string line = candump::format_line(r.value());
+  CHECK(line == "705 355#111133");
+  const auto back = candump::parse_line(line);
+  REQUIRE(back);
+  CHECK(back.value() == r.value());
+  // neither time nor interface: the compact frame, as before
+  fieldcodec::host::frame_record bare = r.value();
+  bare.iface = {};
+  CHECK(candump::format_line(bare) == "355#111133");
+}
+
 #ifdef FIELDCODEC_HAS_SOCKETCAN
 
 namespace co = fieldcodec::canopen;

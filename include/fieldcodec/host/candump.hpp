@@ -420,10 +420,14 @@ parse_line(std::string_view line) noexcept {
   return buf + frac;
 }
 
-/// A log line: "(1700000000.123456) can0 605#2B…" when the record has a time and an interface
-/// (a missing interface is written as "-"), the compact frame otherwise.
+/// A log line: "(1700000000.123456) can0 605#2B…" when the record has a time (a missing
+/// interface is written as "-"), "can0 605#2B…" when it has an interface and no time (candump's
+/// display without -t), the compact frame when it has neither. parse_line reads each back.
 [[nodiscard]] inline std::string format_line(const frame_record &r) {
-  if (!r.time.known()) return format_frame(r);
+  if (!r.time.known()) {
+    if (r.iface.empty()) return format_frame(r);
+    return std::string(r.iface.view()) + ' ' + format_frame(r);
+  }
   std::string out(1, '(');
   out += format_time(r.time);
   out += ") ";
