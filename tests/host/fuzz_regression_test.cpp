@@ -47,6 +47,18 @@ TEST_CASE("fuzz F30: an interface without a time is written and read back") {
   CHECK(candump::format_line(bare) == "355#111133");
 }
 
+// F31 (fuzz_host_candump, CI's run): is_blank_or_comment calls a line that starts with a tab a
+// continuation (candump -e and -a print their details so), but parse_line trimmed the tab and
+// read the frame after it: a line was both "no frame" and a frame.
+TEST_CASE("fuzz F31: a line that starts with a tab is no frame") {
+  CHECK(candump::is_blank_or_comment("\t\t705#R0"));
+  const auto r = candump::parse_line("\t\t705#R0");
+  REQUIRE_FALSE(r);
+  CHECK(r.error().code == fieldcodec::errc::bad_syntax);
+  // blanks before a frame are the display format's indentation: read as before
+  CHECK(candump::parse_line("  705#R0").has_value());
+}
+
 #ifdef FIELDCODEC_HAS_SOCKETCAN
 
 namespace co = fieldcodec::canopen;
