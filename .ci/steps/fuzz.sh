@@ -45,6 +45,12 @@ run_one() {
   else
     echo "--- FAILED: $name"
     tail -40 "$scratch/$short.log"
+    # the input itself, whatever its size (libFuzzer prints it only when small; the scratch
+    # directory goes with the run): replay it with the harness of a replay build
+    local a
+    for a in "$scratch/$short"-*; do
+      [ -f "$a" ] && echo "input $(basename "$a") (base64): $(base64 -w0 "$a")"
+    done
     return 1
   fi
 }

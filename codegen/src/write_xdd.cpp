@@ -49,9 +49,10 @@ public:
       : d_(d), powerlink_(profile == bus_profile::powerlink), file_(file), diag_(diag) {}
 
   std::string write() {
+    // the profile only: whether the file is an XDC is what it holds (actualValue, denotation,
+    // deviceCommissioning), which a POWERLINK file of a DCF may not (fuzz F32)
     w_.comment("Written by fieldcodec-gen from " + d_.source_name + " (" +
-               (powerlink_ ? "EPSG DS 311 POWERLINK" : "CiA 311 CANopen") +
-               (d_.is_dcf ? " XDC" : " XDD") + ")");
+               (powerlink_ ? "EPSG DS 311 POWERLINK" : "CiA 311 CANopen") + ")");
     w_.open("ISO15745ProfileContainer");
     w_.attribute("xmlns", powerlink_ ? "http://www.ethernet-powerlink.org"
                                      : "http://www.canopen.org/xml/1.1");

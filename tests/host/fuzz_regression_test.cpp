@@ -28,6 +28,37 @@ TEST_CASE("fuzz F21: a log line without an interface reads back without one") {
   CHECK(candump::parse_line("(1.5) -x 181#01").value().iface.view() == "-x");
 }
 
+// F30 (fuzz_host_candump, CI's run): a line with an interface and no time (candump's display
+// without -t: "705 355#11.11.33") was read with its interface, and format_line wrote the
+// compact frame without it: the record did not read back identical.
+TEST_CASE("fuzz F30: an interface without a time is written and read back") {
+  const auto r = candump::parse_line("705 355#11.11.33 ");
+  REQUIRE(r);
+  CHECK(r.value().iface.view() == "705");
+  CHECK_FALSE(r.value().time.known());
+  const std::string line = candump::format_line(r.value());
+  CHECK(line == "705 355#111133");
+  const auto back = candump::parse_line(line);
+  REQUIRE(back);
+  CHECK(back.value() == r.value());
+  // neither time nor interface: the compact frame, as before
+  fieldcodec::host::frame_record bare = r.value();
+  bare.iface = {};
+  CHECK(candump::format_line(bare) == "355#111133");
+}
+
+// F31 (fuzz_host_candump, CI's run): is_blank_or_comment calls a line that starts with a tab a
+// continuation (candump -e and -a print their details so), but parse_line trimmed the tab and
+// read the frame after it: a line was both "no frame" and a frame.
+TEST_CASE("fuzz F31: a line that starts with a tab is no frame") {
+  CHECK(candump::is_blank_or_comment("\t\t705#R0"));
+  const auto r = candump::parse_line("\t\t705#R0");
+  REQUIRE_FALSE(r);
+  CHECK(r.error().code == fieldcodec::errc::bad_syntax);
+  // blanks before a frame are the display format's indentation: read as before
+  CHECK(candump::parse_line("  705#R0").has_value());
+}
+
 #ifdef FIELDCODEC_HAS_SOCKETCAN
 
 namespace co = fieldcodec::canopen;

@@ -293,9 +293,16 @@ parse_long(std::string_view line, std::string_view rest) noexcept {
 /// The interface "-" is "not given" (an empty interface_name), as format_line writes it.
 /// Errors: those of parse_frame; for the time: bad_syntax, bad_digit, overflow, too_long,
 /// out_of_range; bad_syntax when a time is not followed by an interface and a frame; those of
-/// interface_name::make; each with its reason and column.
+/// interface_name::make; bad_syntax for a line that starts with a tab (is_blank_or_comment's
+/// continuation line); each with its reason and column.
 [[nodiscard]] constexpr result<frame_record, line_error>
 parse_line(std::string_view line) noexcept {
+  // what is_blank_or_comment calls a continuation line (candump -e and -a indent their details
+  // with a tab) is no frame, whatever follows the tab
+  if (!line.empty() && line.front() == '\t') {
+    return line_error{errc::bad_syntax, "a line that starts with a tab continues the line before",
+                      0};
+  }
   std::string_view s = detail::trim(line);
   timestamp t{};
   if (!s.empty() && s.front() == '(') {
@@ -420,10 +427,14 @@ parse_line(std::string_view line) noexcept {
   return buf + frac;
 }
 
-/// A log line: "(1700000000.123456) can0 605#2B…" when the record has a time and an interface
-/// (a missing interface is written as "-"), the compact frame otherwise.
+/// A log line: "(1700000000.123456) can0 605#2B…" when the record has a time (a missing
+/// interface is written as "-"), "can0 605#2B…" when it has an interface and no time (candump's
+/// display without -t), the compact frame when it has neither. parse_line reads each back.
 [[nodiscard]] inline std::string format_line(const frame_record &r) {
-  if (!r.time.known()) return format_frame(r);
+  if (!r.time.known()) {
+    if (r.iface.empty()) return format_frame(r);
+    return std::string(r.iface.view()) + ' ' + format_frame(r);
+  }
   std::string out(1, '(');
   out += format_time(r.time);
   out += ") ";

@@ -361,7 +361,8 @@ private:
   }
 
   constexpr void configure_bit_timing(std::uint8_t table, std::uint8_t index, step &s) noexcept {
-    if (table != 0U || index > 15U || ((options_.bit_rates >> index) & 1U) == 0U) {
+    if (table != 0U || index > 15U ||
+        ((static_cast<unsigned>(options_.bit_rates) >> index) & 1U) == 0U) {
       return answer(s, lss::answer(command::configure_bit_timing, lss::error_code::not_supported));
     }
     timing_ = lss_bit_timing{table, index};
