@@ -1,6 +1,6 @@
 // fieldcodec — the CiA 301 abort codes (and the two CoE adds for complete access) (SDO abort
 // transfer; also the answers of object stores, write hooks and the PDO engine): one table {code,
-// errc, text}, used by the SDO client and server, the object store, the node and dpq/.
+// errc, text}, used by the SDO client and server, the object store, the node and device folders.
 #pragma once
 
 #include <fieldcodec/core/result.hpp>

@@ -204,7 +204,8 @@ enum class signedness : std::uint8_t {
 }
 
 namespace detail {
-/// A scoped enum over an integer type (ds402::mode, xenax::mode, …): written as its value.
+/// A scoped enum over an integer type (ds402::mode, a device folder's mode, …): written as its
+/// value.
 template <class T>
 concept scoped_enum = std::is_enum_v<T> && !std::is_convertible_v<T, std::underlying_type_t<T>> &&
                       wire_integer<std::underlying_type_t<T>>;

@@ -2,9 +2,10 @@
 // upload request, and the value of an expedited upload response (as an od::number or as a
 // C++ type: upload_value<std::int16_t>(entry, response)).
 //
-//   auto f = canopen::sdo::download(1, xenax_canopen::modes_of_operation_requested, -1);
+//   // my_drive: a generated dictionary with 6060h (INTEGER8) and 6040h (UNSIGNED16)
+//   auto f = canopen::sdo::download(1, my_drive::modes_of_operation, -1);
 //   // 0x601: 2F 60 60 00 FF 00 00 00
-//   auto p = canopen::sdo::download(xenax_canopen::controlword, 0x0F);   // the 8 bytes only
+//   auto p = canopen::sdo::download(my_drive::controlword, 0x0F);   // the 8 bytes only
 // Values longer than 4 bytes go through sdo::client (segmented or block transfer).
 #pragma once
 

@@ -37,7 +37,7 @@ enum class transfer_state : std::uint8_t { idle, busy, done, failed };
 
 /// Why a transfer failed: the error, the abort code sent or received (none when no abort
 /// message was involved, e.g. a refused frame), and the object. The one SDO error with context
-/// of the library: the machines, the master and dpq/sdo.hpp (`dpq::sdo_error`) return it.
+/// of the library: the machines, the master and the device folders' SDO helpers return it.
 ///   code == errc::aborted: the peer sent `abort`; `text()` is its CiA 301 description from the
 ///     one abort table `abort_codes`, `cause()` the errc that table maps it to;
 ///   otherwise the problem was detected here (a refused frame, a timeout, …) and `abort` is the

@@ -1,7 +1,7 @@
 // fieldcodec — packed BCD (two decimal digits per byte, high nibble first).
 //
 // Unsigned: N bytes hold 2N digits. Signed: one sign byte (0x00 positive, 0xFF negative)
-// followed by the unsigned digits, as COMPAX positions use it.
+// followed by the unsigned digits, as some drives send positions.
 #pragma once
 
 #include <fieldcodec/core/result.hpp>

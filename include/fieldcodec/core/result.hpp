@@ -145,7 +145,7 @@ struct result_storage;
 // Layout 0 places the flag where the first result<T> had it: after a {T, E} pair, at the
 // pair's alignment. Packing it right after E instead (16 instead of 24 bytes for
 // std::int64_t) measured 1 to 3 instructions more per call in bench/ (callgrind:
-// compax/decode_bcd_position 91 instead of 88, scaling/to_raw 0.001 units 28 instead of 27).
+// the signed BCD position decode 91 instead of 88, scaling/to_raw 0.001 units 28 instead of 27).
 template <class T, class E>
 struct result_storage<T, E, 0> {
   static constexpr int layout = 0;

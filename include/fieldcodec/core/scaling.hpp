@@ -467,8 +467,8 @@ result<std::int64_t> to_raw(bool, linear, field) = delete;
 /// ½·10^-p, moves raw by less than ½; when 10^p = |scale| the EU is exact). 327.67 → 3,
 /// 10.5 → 2, 16383.5 → 5, 1 → 0.
 /// Errors: invalid_argument (offset or scale with more than 18 places), not_representable
-/// (|scale| > 10^18: no p ≤ 18 round-trips — found by fuzz_dpq, F8). od/engineering.hpp shows
-/// every scaled entry's value at these places; dpq::round_trip_places is this function.
+/// (|scale| > 10^18: no p ≤ 18 round-trips — found by fuzzing, F8). od/engineering.hpp shows
+/// every scaled entry's value at these places; device folders use this same function.
 [[nodiscard]] constexpr result<unsigned> round_trip_places(linear s) noexcept {
   if (s.offset.places > decimal_max_places || s.scale.places > decimal_max_places) {
     return errc::invalid_argument;

@@ -41,8 +41,8 @@ enum class mode : std::int8_t {
 
 /// The mode a 6060h / 6061h value names. A negative value is a valid manufacturer-specific
 /// mode: it is returned as it is (a `mode` holding the value, is_manufacturer_mode() true,
-/// to_string() "manufacturer-specific") for the vendor's module to interpret, e.g.
-/// xenax::decode_mode(-1) = jog. Errors: out_of_range (5, 12..127: reserved by CiA 402).
+/// to_string() "manufacturer-specific") for the vendor's module to interpret (a jog mode at -1,
+/// say). Errors: out_of_range (5, 12..127: reserved by CiA 402).
 [[nodiscard]] constexpr result<mode> decode_mode(std::int8_t v) noexcept {
   if (is_standard_mode(v) || is_manufacturer_mode(v)) return static_cast<mode>(v);
   return errc::out_of_range;

@@ -84,8 +84,9 @@ struct step {
 /// * From "ready to switch on" towards operation enabled it sends 0x0F at once (3 + 4).
 /// * In fault it sends 0x80 when `previous` had bit 7 clear (the rising edge, transition 15)
 ///   and 0x00 when `previous` had bit 7 set, so a fault that persists gets a new edge every
-///   second cycle. power_sequencer instead holds bit 7 until the drive leaves fault, as the
-///   XENAX examples do. In fault reaction active it sends 0x00 (waits, prepares the edge).
+///   second cycle. power_sequencer instead holds bit 7 until the drive leaves fault, as some
+///   manufacturers' examples do. In fault reaction active it sends 0x00 (waits, prepares the
+///   edge).
 /// * In "not ready to switch on" it sends 0x00 and waits for the automatic transition 1.
 /// * An undecodable statusword gives bad_state.
 /// The caller ORs in its mode-specific bits (`with_command` keeps them).

@@ -29,6 +29,11 @@
 
 namespace fieldcodec::host {
 
+/// The PA-CONTROL COM1 default (manual 001, 3.1): 9600 baud, 7 data bits, no parity, 1 stop
+/// bit. Other formats are set on the control's switches S2/S3 (3.2.1; the "CTS active" ones set
+/// rts_cts): pass them instead.
+inline constexpr line_settings pacontrol_line{9600, 7, parity::none, 1, false};
+
 /// How the link writes requests and checks acknowledgements.
 struct pacontrol_options {
   pacontrol::serial::check_rule request_rule = pacontrol::serial::check_rule::body;

@@ -2,8 +2,11 @@
 // What python canopen's RemoteNode.sdo gives: read an object and get its value in the object's
 // own unit (a number or a string), write a value and have it checked first; never bare bytes.
 //
-//   namespace x = fieldcodec::dictionaries::xenax_canopen;
-//   host::remote_node drive(bus, 5, x::dictionary, xenax::canopen_units);
+//   // my_drive: a generated dictionary whose limit_i_force (UNSIGNED16) allows less than
+//   // 30000 mA; my_units: the device folder's od::unit_rule table, which gives it the unit "mA"
+//   // at 10 mA per raw step
+//   namespace x = fieldcodec::dictionaries::my_drive;
+//   host::remote_node drive(bus, 5, x::dictionary, my_units);
 //   auto v = drive.read_text(x::identity_object_vendor_id);    // result<string>: "0x0000021B"
 //   auto n = drive.read(x::identity_object_vendor_id);         // result<od::number>
 //   drive.write(x::limit_i_force, "1500 mA");                  // parsed, checked, sent: raw 150
@@ -46,9 +49,9 @@ class remote_node {
 public:
   /// Node `node` (1..127) on `bus`, its objects described by `dict` (a generated header's
   /// `dictionary`, or the view of a dictionary loaded at run time), with the units and scales
-  /// a vendor supplies for objects the dictionary file cannot describe (`units`, e.g.
-  /// xenax::canopen_units; od::with_unit applies them to every descriptor used). The bus, the
-  /// dictionary's tables and the rules must outlive the node.
+  /// a vendor supplies for objects the dictionary file cannot describe (`units`, the device
+  /// folder's od::unit_rule table; od::with_unit applies them to every descriptor used). The bus,
+  /// the dictionary's tables and the rules must outlive the node.
   remote_node(can_bus &bus, std::uint8_t node, od::dictionary dict,
               std::span<const od::unit_rule> units = {}, sdo_options o = {})
       : dict_(dict), units_(units), sdo_(bus, node, o) {}
@@ -68,8 +71,8 @@ public:
     return v.value();
   }
 
-  /// The value of `d` as text, as od::format_value writes it ("1500 mA", "0x0000021B",
-  /// "XENAX Xvi 75V8"); write(d, text) takes it back as the same bytes. Errors: those of read
+  /// The value of `d` as text, as od::format_value writes it ("1500 mA", "0x0000021B", a
+  /// device name); write(d, text) takes it back as the same bytes. Errors: those of read
   /// (but a byte string is text too).
   result<std::string, sdo_error> read_text(const od::descriptor &given, od::value_options o = {}) {
     auto u = with_units(given);

@@ -1,9 +1,10 @@
 // fieldcodec — host adapter: a serial port (POSIX termios): raw mode, line settings, reads with
-// a timeout. Used by the slcan adapter (host/slcan.hpp) and the PA-CONTROL RS232 link
-// (host/pacontrol_link.hpp).
+// a timeout. Used by the slcan adapter (host/slcan.hpp) and by device links over RS232 (each
+// device adapter names its own line settings).
 //
 //   host::serial_port port;
-//   if (!port.open("/dev/ttyUSB0", host::pacontrol_line)) die(port.last_error().what);
+//   const host::line_settings line{9600, 7, host::parity::none, 1, false};   // 9600 7N1
+//   if (!port.open("/dev/ttyUSB0", line)) die(port.last_error().what);
 //   port.write(bytes);
 //   auto n = port.read(buffer, std::chrono::milliseconds(200));   // timeout: nothing came
 #pragma once
@@ -45,12 +46,8 @@ struct line_settings {
   std::uint8_t data_bits = 8; ///< 5..8
   parity par = parity::none;
   std::uint8_t stop_bits = 1; ///< 1 or 2
-  bool rts_cts = false;       ///< hardware flow control (the PA-CONTROL's "CTS active" formats)
+  bool rts_cts = false;       ///< hardware flow control (RTS/CTS)
 };
-
-/// The PA-CONTROL COM1 default (manual 001, 3.1): 9600 baud, 7 data bits, no parity, 1 stop
-/// bit. Other formats are set on the control's switches S2/S3 (3.2.1): pass them instead.
-inline constexpr line_settings pacontrol_line{9600, 7, parity::none, 1, false};
 
 /// A serial link to an slcan adapter: 115200 baud 8N1 (USB adapters ignore the rate).
 inline constexpr line_settings slcan_line{115200, 8, parity::none, 1, false};

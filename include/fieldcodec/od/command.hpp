@@ -26,8 +26,8 @@
 namespace fieldcodec::od {
 
 /// The type of a command's date or acknowledgement date: none, an integer or a real number.
-/// PA-CONTROL dates (pacontrol::value) carry it too; on the wire TYP 0 is `integer`, TYP 1
-/// `real`.
+/// A device folder's own date values may carry it too (a protocol's type code on the wire
+/// mapped to `integer` or `real`).
 enum class command_value : std::uint8_t { none, integer, real };
 
 [[nodiscard]] constexpr std::string_view name(command_value v) noexcept {

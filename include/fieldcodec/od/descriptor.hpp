@@ -3,12 +3,14 @@
 // each named sub-object of a record) as a standalone `inline constexpr od::descriptor`, so
 // firmware that names one parameter keeps only that constant, not the dictionary's tables.
 //
-//   namespace p = fieldcodec::dictionaries::dpq_parameters;
-//   p::inj_p_limit_1.to_raw(4.0)               → 1311            (EU → raw: range, rounding, field;
+//   // my_drive: a generated dictionary; its pressure_limit is a UNSIGNED32 entry in bar,
+//   // scale 327.67 (raw per bar), offset 0, limits 0..5000
+//   namespace p = fieldcodec::dictionaries::my_drive;
+//   p::pressure_limit.to_raw(4.0)              → 1311            (EU → raw: range, rounding, field;
 //                                                                  decimal, double, float, integer)
-//   p::inj_p_limit_1.to_eu(1311)               → 4.000976…       (raw → EU as a double)
-//   p::inj_p_limit_1.to_eu_decimal(1311, 3)    → 4.001           (raw → EU, exact decimal)
-//   p::inj_p_limit_1.info.unit                 → "bar"
+//   p::pressure_limit.to_eu(1311)              → 4.000976…       (raw → EU as a double)
+//   p::pressure_limit.to_eu_decimal(1311, 3)   → 4.001           (raw → EU, exact decimal)
+//   p::pressure_limit.info.unit                → "bar"
 //
 // This is the one scaling surface of the library: `to_raw` takes an engineering value (exact
 // decimal, double, float or any integer, each read as the number it is), `to_eu` always answers

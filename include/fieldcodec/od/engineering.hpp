@@ -3,12 +3,14 @@
 // the bytes of the entry. od/value_text.hpp puts text on top of it; the CLI and host code call
 // these two headers, never their own conversions.
 //
-//   namespace p = fieldcodec::dictionaries::dpq_parameters;
-//   od::encode_value(p::inj_p_limit_1, od::decimal_number(4, 0), out)   → 4 bytes, raw 1311
-//   od::encode_value(p::inj_p_limit_1, od::signed_number(6000), out)
+//   // my_drive: a generated dictionary; its pressure_limit is a UNSIGNED32 entry in bar,
+//   // scale 327.67 (raw per bar), offset 0, limits 0..5000
+//   namespace p = fieldcodec::dictionaries::my_drive;
+//   od::encode_value(p::pressure_limit, od::decimal_number(4, 0), out)   → 4 bytes, raw 1311
+//   od::encode_value(p::pressure_limit, od::signed_number(6000), out)
 //                    → value_error{out_of_range, high_limit, limit 5000}   (nothing written)
 //   od::encode_value(d, od::unsigned_number(16), out, {.unit = od::value_unit::raw}) → raw 16
-//   od::decode_value(p::inj_p_limit_1, bytes)                            → 4.001 (exact decimal)
+//   od::decode_value(p::pressure_limit, bytes)                           → 4.001 (exact decimal)
 //
 // Rules (docs/od.md, "Values in engineering units"):
 // * An integer entry flagged `scaled` has engineering units: raw = round((EU − offset) × scale)
@@ -283,9 +285,9 @@ encode_bytes_value(const descriptor &d, std::span<const std::uint8_t> value,
 }
 
 /// A unit (and scale) that a device's manual gives for objects its dictionary file cannot
-/// describe: CiA 306 has no key for either. A vendor folder supplies a table of them
-/// (xenax::canopen_units); with_unit puts a rule on a descriptor, after which every value of the
-/// entry goes through the same path as a dictionary's own scaled entries.
+/// describe: CiA 306 has no key for either. The device's folder supplies a table of them (a
+/// constexpr array of unit_rule); with_unit puts a rule on a descriptor, after which every value
+/// of the entry goes through the same path as a dictionary's own scaled entries.
 struct unit_rule {
   std::uint16_t index = 0;
   /// The sub-index; -1: every sub-index that holds a value (sub-index 0 of an ARRAY or RECORD

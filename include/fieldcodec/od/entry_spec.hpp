@@ -37,7 +37,7 @@
 namespace fieldcodec::od {
 
 /// Every column of an entry as a plain member (the shape od::entry had before its columns were
-/// packed). flags: the od::flag bits the source gives (scaled, node-ID-relative, the DPQ marks);
+/// packed). flags: the od::flag bits the source gives (scaled, node-ID-relative, the table marks);
 /// the packing bits (flag::packed) are od::pack's and are ignored here.
 struct entry_spec {
   std::uint16_t index = 0;

@@ -2,7 +2,8 @@
 // object of a dictionary (generated headers emit one per such object; od::dictionary::object
 // returns one for any index), with their descriptive columns and scales by position.
 //
-//   namespace d = fieldcodec::dictionaries::xenax_canopen;
+//   namespace d = fieldcodec::dictionaries::my_drive;   // a generated dictionary with 1018h
+//                                                       // "Identity object" (a RECORD)
 //   d::identity_object[2]              → od::descriptor of 1018h sub 2 (traps if there is none)
 //   d::identity_object.at(2)           → result<od::descriptor> (unknown_object if there is none)
 //   d::identity_object.find(2)         → const od::entry * (nullptr if there is none)

@@ -1,7 +1,7 @@
 // fieldcodec — typed encode/decode of an entry's value to and from bytes.
 //
 // CANopen values are little-endian; every function takes the byte order as a last argument
-// (default little) because some buses (COMPAX Interbus-S) send the same objects big-endian.
+// (default little) because some buses (Interbus-S) send the same objects big-endian.
 // Numeric values are checked against the entry's raw limits (for a `scaled` entry the limits
 // are engineering units and are converted to raw first) and against the field's width.
 //
@@ -189,8 +189,9 @@ struct wide_int {
   return d;
 }
 
-/// The integer part of encode: limits, field, bytes. `e` must have an integer type (the DPQ's
-/// raw values take this path directly, without the REAL and TIME code of encode).
+/// The integer part of encode: limits, field, bytes. `e` must have an integer type (raw values
+/// of an integer-only dictionary take this path directly, without the REAL and TIME code of
+/// encode).
 [[nodiscard]] constexpr result<std::size_t> encode_integer(const entry &e, maybe_scale scale,
                                                            wide_int x, std::span<std::uint8_t> out,
                                                            byte_order order,

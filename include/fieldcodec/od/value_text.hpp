@@ -2,11 +2,12 @@
 // prints for a value is exactly what it accepts back, in the same unit, and gives the same
 // bytes (format_value → parse_value round-trips for every value the entry's limits allow).
 //
+//   // p::pressure_limit: UNSIGNED32 in bar, scale 327.67, limits 0..5000 (od/engineering.hpp)
 //   char text[64];
-//   od::format_value(p::inj_p_limit_1, bytes, text)   → "4.001"        (DPQ: EU, round trip places)
-//   od::parse_value(p::inj_p_limit_1, "4.0", out)     → raw 1311 in 4 bytes
-//   od::parse_value(p::inj_p_limit_1, "0x10", out)    → value_error{bad_syntax, hex_is_raw}
-//   od::parse_value(p::inj_p_limit_1, "0x10", out, {.unit = od::value_unit::raw}) → raw 16
+//   od::format_value(p::pressure_limit, bytes, text)  → "4.001"        (EU, round trip places)
+//   od::parse_value(p::pressure_limit, "4.0", out)    → raw 1311 in 4 bytes
+//   od::parse_value(p::pressure_limit, "0x10", out)   → value_error{bad_syntax, hex_is_raw}
+//   od::parse_value(p::pressure_limit, "0x10", out, {.unit = od::value_unit::raw}) → raw 16
 //   od::parse_value(limit_i_force_in_ma, "1500 mA", out) → raw 150 (a scale of 0.1, unit "mA")
 //
 // The text of a value (docs/od.md, "Values as text"):

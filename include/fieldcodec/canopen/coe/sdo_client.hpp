@@ -8,7 +8,7 @@
 //
 //   std::array<std::uint8_t, 128> mbx;                   // the slave's SM0 size
 //   coe::sdo_client c(mbx, 128);                          // SM1 size: the longest response
-//   auto s = c.write(xenax_ethercat::target_position, 10000, now);  // od::encode, checked
+//   auto s = c.write(my_drive::target_position, 10000, now);  // od::encode, checked
 //   write_sm0(s.value().send);                            // the mailbox to send
 //   // for every mailbox read from SM1, and when the deadline passes:
 //   auto t = c.on_mailbox(read_sm1(), now);               // or c.poll(now)
