@@ -29,13 +29,15 @@
 //   the model's bytes, with the written length `{"…", n}` equal to the decoded length; an
 //   object view's name literal (`"…"sv`) decodes to the object's name; `source_file` decodes to
 //   the file name; `node_id` is the DCF's node-ID (1..127), declared exactly when it has one.
+//   The manufacturers' column tables (`dpq_columns`, `compax_columns`) have one row per entry
+//   with such a column, in entry order, with the model's values, and are absent without one.
 //   Command tables: codes, names and texts of every command.
 // * Identifiers: every declared constant (descriptors, object views, command references, the
 //   namespace) is a valid C++ identifier (ASCII letter or '_' then letters, digits, '_'; no
 //   leading '_', no "__" — both reserved to the implementation —, not a keyword), unique in the
 //   namespace (so different from the header's own entries, infos, dictionary, ...), not one of
-//   the names the header uses unqualified (od, std, fieldcodec, scaling, detail); a descriptor's
-//   comment names the index of the table row it copies.
+//   the names the header uses unqualified (od, std, fieldcodec, scaling, detail, dpq, compax); a
+//   descriptor's comment names the index of the table row it copies.
 #include "check.hpp"
 
 #include "../codegen/src/text.cpp"
@@ -59,6 +61,7 @@
 
 namespace gen = fieldcodec::gen;
 namespace od = fieldcodec::od;
+namespace dpq = fieldcodec::dpq;
 
 namespace {
 
@@ -505,7 +508,7 @@ void check_infos(reader &r, const gen::dictionary &d) {
   if (d.entries.empty()) return;
   FUZZ_CHECK(r.find_table("infos") == d.entries.size());
   for (const gen::entry &e : d.entries) {
-    std::string name, unit, alt_name, section, remark, acceptance, denotation, parameter_text;
+    std::string name, unit, alt_name, section, remark, denotation, parameter_text;
     od::number parameter;
     fields(r, [&](const std::string &f) {
       std::string *t = f == "name"             ? &name
@@ -513,7 +516,6 @@ void check_infos(reader &r, const gen::dictionary &d) {
                        : f == "alt_name"       ? &alt_name
                        : f == "section"        ? &section
                        : f == "remark"         ? &remark
-                       : f == "acceptance"     ? &acceptance
                        : f == "denotation"     ? &denotation
                        : f == "parameter_text" ? &parameter_text
                                                : nullptr;
@@ -533,7 +535,6 @@ void check_infos(reader &r, const gen::dictionary &d) {
     FUZZ_CHECK(alt_name == e.alt_name.str());
     FUZZ_CHECK(section == e.section.str());
     FUZZ_CHECK(remark == e.remark.str());
-    FUZZ_CHECK(acceptance == e.acceptance.str());
     FUZZ_CHECK(denotation == e.denotation);
     FUZZ_CHECK(parameter_text == e.parameter_text.str());
     FUZZ_CHECK(same_number(parameter, e.parameter_value));
@@ -541,6 +542,78 @@ void check_infos(reader &r, const gen::dictionary &d) {
   }
   FUZZ_CHECK(r.table_braces == 1); // object tables are C arrays
   r.expect("}");
+}
+
+/// `<name>[N]{ {.index = 0xIIII[, .sub = S], ...}, ... }` at namespace scope: one row per entry
+/// that `has`, in entry order; `value` reads a field other than index and sub for entry `e`.
+/// No table at all when no entry has the columns.
+template <class Has, class Value>
+void check_vendor_table(const std::vector<token> &t, const gen::dictionary &d,
+                        std::string_view name, Has has, Value value) {
+  std::size_t n = 0;
+  for (const gen::entry &e : d.entries) n += has(e) ? 1U : 0U;
+  if (n == 0U) {
+    for (const token &x : t) FUZZ_CHECK(!(x.kind == tok::ident && x.text == name));
+    return;
+  }
+  reader r{t};
+  FUZZ_CHECK(r.find_table(name) == n);
+  for (const gen::entry &e : d.entries) {
+    if (!has(e)) continue;
+    std::uint64_t index = 0x10000;
+    std::uint64_t sub = 0;
+    fields(r, [&](const std::string &f) {
+      if (f == "index") {
+        index = r.unsigned_number();
+      } else if (f == "sub") {
+        sub = r.unsigned_number();
+        FUZZ_CHECK(sub != 0U); // sub-index 0 is left out
+      } else {
+        FUZZ_CHECK(value(r, f, e));
+      }
+      return true;
+    });
+    FUZZ_CHECK(index == e.index && sub == e.sub);
+    r.expect(",");
+  }
+  r.expect("}");
+}
+
+/// `a :: b :: <ident>`: the identifier after the qualification.
+std::string qualified(reader &r, std::string_view a, std::string_view b) {
+  r.expect(a);
+  r.expect("::");
+  r.expect(b);
+  r.expect("::");
+  return r.ident();
+}
+
+/// The manufacturers' column tables beside the dictionary (dpq_columns, compax_columns).
+void check_vendor_columns(const std::vector<token> &t, const gen::dictionary &d) {
+  check_vendor_table(
+      t, d, "dpq_columns",
+      [](const gen::entry &e) {
+        return e.acceptance != dpq::acceptance::unknown || e.bus != dpq::bus_manager::unspecified;
+      },
+      [](reader &r, const std::string &f, const gen::entry &e) {
+        if (f == "value_acceptance") {
+          const std::string v = qualified(r, "dpq", "acceptance");
+          return (v == "only_when_disabled" &&
+                  e.acceptance == dpq::acceptance::only_when_disabled) ||
+                 (v == "also_when_enabled" && e.acceptance == dpq::acceptance::also_when_enabled);
+        }
+        if (f == "bus") {
+          const std::string v = qualified(r, "dpq", "bus_manager");
+          return (v == "available" && e.bus == dpq::bus_manager::available) ||
+                 (v == "not_available" && e.bus == dpq::bus_manager::not_available);
+        }
+        return false;
+      });
+  check_vendor_table(
+      t, d, "compax_columns", [](const gen::entry &e) { return e.pointer.has_value(); },
+      [](reader &r, const std::string &f, const gen::entry &e) {
+        return f == "pointer" && r.unsigned_number() == *e.pointer;
+      });
 }
 
 void check_commands(reader &r, const gen::dictionary &d) {
@@ -584,7 +657,8 @@ bool good_identifier(std::string_view s) {
   }
   if (s.find("__") != std::string_view::npos || gen::is_cpp_keyword(s)) return false;
   // the namespaces and names the header uses unqualified (docs/generator.md "Identifiers")
-  for (const std::string_view used : {"od", "std", "fieldcodec", "scaling", "detail"}) {
+  for (const std::string_view used :
+       {"od", "std", "fieldcodec", "scaling", "detail", "dpq", "compax"}) {
     if (s == used) return false;
   }
   return true;
@@ -632,6 +706,13 @@ void check_names(const std::vector<token> &t, const gen::dictionary &d) {
       FUZZ_CHECK(k >= 4U && k < t.size() && t[k].text == "{" && t[k - 1U].text == "]" &&
                  t[k - 3U].text == "[" && t[k - 4U].kind == tok::ident);
       FUZZ_CHECK(detail_names.insert(t[k - 4U].text).second);
+      continue;
+    }
+    if (k >= 4U && k < t.size() && t[k - 1U].text == "]") { // a manufacturer's column table
+      FUZZ_CHECK(t[k].text == "{" && t[k - 3U].text == "[" && t[k - 4U].kind == tok::ident);
+      const std::string &table = t[k - 4U].text;
+      FUZZ_CHECK(table == "dpq_columns" || table == "compax_columns");
+      FUZZ_CHECK(names.insert(table).second);
       continue;
     }
     FUZZ_CHECK(k < t.size() && t[k - 1U].kind == tok::ident);
@@ -743,6 +824,7 @@ void check_header(const gen::dictionary &d) {
   } else {
     check_entries(r, d);
     check_infos(r, d);
+    check_vendor_columns(t, d);
     check_descriptor_comments(h, d);
   }
   check_names(t, d);

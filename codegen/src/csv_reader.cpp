@@ -366,10 +366,10 @@ private:
     const bool ok = address_columns(r, e) && name_columns(r, e) && object_code_column(r, e) &&
                     data_type_column(r, e) && bytes_column(r, e) && access_column(r, e) &&
                     pdo_mapping_column(r, e) && scale_columns(r, e) && value_columns(r, e) &&
-                    pointer_column(r, e) && bus_manager_column(r, e) && flags_column(r, e);
+                    pointer_column(r, e) && acceptance_column(r, e) && bus_manager_column(r, e) &&
+                    flags_column(r, e);
     if (!ok) return;
     e.unit = text(r, "unit");
-    e.acceptance = text(r, "acceptance");
     e.section = text(r, "section");
     e.remark = text(r, "remark");
     dict_.entries.push_back(std::move(e));
@@ -606,14 +606,25 @@ private:
     return true;
   }
 
+  // DPQ "Value acceptance": one of the two texts chapter 4 prints (dpq/columns.hpp).
+  bool acceptance_column(const row &r, entry &e) {
+    const field *f = given(r, "acceptance");
+    if (f == nullptr) return true;
+    e.acceptance = dpq::parse_acceptance(f->text);
+    if (e.acceptance == dpq::acceptance::unknown) {
+      bad(*f, "acceptance",
+          "expected 'only with deactivated enabling' or 'also with active enabling', got '" +
+              f->text + "'");
+      return false;
+    }
+    return true;
+  }
+
   bool bus_manager_column(const row &r, entry &e) {
     const field *f = given(r, "bus_manager");
     if (f == nullptr) return true;
-    if (f->text == "available") {
-      e.bus = od::bus_manager::available;
-    } else if (f->text == "not available") {
-      e.bus = od::bus_manager::not_available;
-    } else {
+    e.bus = dpq::parse_bus_manager(f->text);
+    if (e.bus == dpq::bus_manager::unspecified) {
       bad(*f, "bus_manager", "expected 'available' or 'not available', got '" + f->text + "'");
       return false;
     }

@@ -189,9 +189,9 @@ public:
     std::size_t cap = 64;
     while (cap < 2U * (expected + 16U)) cap *= 2U;
     slots_.resize(cap);
-    for (const char *r :
-         {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table", "od", "std",
-          "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
+    for (const char *r : {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table",
+                          "od", "std", "fieldcodec", "scaling", "node_id", "source_file", "detail",
+                          "dpq", "compax", "dpq_columns", "compax_columns"}) {
       (void)insert(r);
     }
   }
@@ -399,20 +399,7 @@ void emit_info(writer &o, const entry &e) {
   text("alt_name", e.alt_name);
   text("section", e.section);
   text("remark", e.remark);
-  text("acceptance", e.acceptance);
   text("denotation", e.denotation);
-  if (e.pointer != od::no_pointer) {
-    field("pointer");
-    o.uint(e.pointer);
-  }
-  if (e.bus != od::bus_manager::unspecified) {
-    field("bus");
-    if (e.bus == od::bus_manager::available) {
-      o.lit("od::bus_manager::available");
-    } else {
-      o.lit("od::bus_manager::not_available");
-    }
-  }
   if (e.has_obj_flags && e.obj_flags != 0U) {
     field("obj_flags");
     o.lit("0x");
@@ -577,6 +564,76 @@ bool plain_name(std::string_view s) noexcept {
   return valid_utf8(s);
 }
 
+// ---- vendor columns ---------------------------------------------------------------------------
+// Columns that only one manufacturer's table has are not od::entry_info columns: each is written
+// as that manufacturer's table beside the dictionary, one row per entry that has the column, in
+// entry order (sorted by address, od/columns.hpp), with the row type of the manufacturer's folder.
+
+bool has_dpq_columns(const entry &e) {
+  return e.acceptance != dpq::acceptance::unknown || e.bus != dpq::bus_manager::unspecified;
+}
+bool has_compax_columns(const entry &e) { return e.pointer.has_value(); }
+
+/// `inline constexpr <type> <name>[N]{ rows };` over the entries `has` picks (nothing when none).
+template <class Has, class Columns>
+void emit_vendor_table(writer &o, const dictionary &d, std::string_view comment,
+                       std::string_view type, std::string_view name, Has has, Columns columns) {
+  std::size_t n = 0;
+  for (const entry &e : d.entries) n += has(e) ? 1U : 0U;
+  if (n == 0U) return;
+  o.lit("\n// ");
+  o.put(comment);
+  o.lit("\ninline constexpr ");
+  o.put(type);
+  o.put(' ');
+  o.put(name);
+  o.put('[');
+  o.uint(n);
+  o.lit("]{\n");
+  for (const entry &e : d.entries) {
+    if (!has(e)) continue;
+    o.lit("    {.index = 0x");
+    o.hex(e.index, 4);
+    if (e.sub != 0U) {
+      o.lit(", .sub = ");
+      o.uint(e.sub);
+    }
+    columns(e);
+    o.lit("},\n");
+  }
+  o.lit("};\n");
+}
+
+void emit_vendor_columns(writer &o, const dictionary &d) {
+  emit_vendor_table(o, d, "DPQ columns of the parameters that have them (dpq/columns.hpp).",
+                    "dpq::parameter_columns", "dpq_columns", has_dpq_columns, [&o](const entry &e) {
+                      switch (e.acceptance) {
+                      case dpq::acceptance::only_when_disabled:
+                        o.lit(", .value_acceptance = dpq::acceptance::only_when_disabled");
+                        break;
+                      case dpq::acceptance::also_when_enabled:
+                        o.lit(", .value_acceptance = dpq::acceptance::also_when_enabled");
+                        break;
+                      case dpq::acceptance::unknown: break;
+                      }
+                      switch (e.bus) {
+                      case dpq::bus_manager::available:
+                        o.lit(", .bus = dpq::bus_manager::available");
+                        break;
+                      case dpq::bus_manager::not_available:
+                        o.lit(", .bus = dpq::bus_manager::not_available");
+                        break;
+                      case dpq::bus_manager::unspecified: break;
+                      }
+                    });
+  emit_vendor_table(
+      o, d, "COMPAX index pointers of the objects that have one (compax/columns.hpp).",
+      "compax::object_columns", "compax_columns", has_compax_columns, [&o](const entry &e) {
+        o.lit(", .pointer = ");
+        o.uint(*e.pointer);
+      });
+}
+
 void emit(writer &o, const dictionary &d) {
   const bool plain = plain_name(d.source_name);
   o.lit("// Generated from ");
@@ -593,7 +650,16 @@ void emit(writer &o, const dictionary &d) {
     o.lit("#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
           "<array>\n#include <string_view>\n\n");
   } else {
-    o.lit("#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
+    bool dpq_table = false;
+    bool compax_table = false;
+    for (const entry &e : d.entries) {
+      dpq_table = dpq_table || has_dpq_columns(e);
+      compax_table = compax_table || has_compax_columns(e);
+    }
+    if (compax_table) o.lit("#include <fieldcodec/compax/columns.hpp>\n");
+    o.lit("#include <fieldcodec/core/scaling.hpp>\n");
+    if (dpq_table) o.lit("#include <fieldcodec/dpq/columns.hpp>\n");
+    o.lit("#include <fieldcodec/od/data_type.hpp>\n"
           "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
           "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
           "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n"
@@ -758,6 +824,7 @@ void emit(writer &o, const dictionary &d) {
   o.lit("\ninline constexpr od::dictionary dictionary{entries, infos");
   if (scales) o.lit(", scales");
   o.lit("};\nstatic_assert(dictionary.is_valid());\n");
+  emit_vendor_columns(o, d);
   // the kinds of values of the entries, so that code over this dictionary compiles only theirs
   {
     od::value_kinds k{false, false, false, false, false, false, false, false};

@@ -1,7 +1,9 @@
 // fieldcodec-gen — the generator's in-memory dictionary model (host tool, std library only).
 #pragma once
 
+#include <fieldcodec/compax/columns.hpp>
 #include <fieldcodec/core/decimal.hpp>
+#include <fieldcodec/dpq/columns.hpp>
 #include <fieldcodec/od/command.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/entry.hpp>
@@ -101,12 +103,15 @@ struct entry {
   std::string denotation;
   bool scaled = false;
   decimal scale{1, 0}, offset{0, 0};
-  rare_text unit, alt_name, acceptance, section, remark; ///< CSV columns
+  rare_text unit, alt_name, section, remark; ///< CSV columns
   /// The data type's name in an ESI (`BYTE`, `BIT2`, `STRING(10)`, `UINT32`): written back by the
   /// ESI writer where it differs from the name of `type_code`; empty for other sources.
   rare_text type_name;
-  std::uint8_t pointer = od::no_pointer;
-  od::bus_manager bus = od::bus_manager::unspecified;
+  // Columns of one manufacturer's table (CSV), emitted as that manufacturer's table beside the
+  // dictionary (emit_header.cpp "vendor columns"), not as od::entry_info.
+  dpq::acceptance acceptance = dpq::acceptance::unknown; ///< DPQ "Value acceptance"
+  dpq::bus_manager bus = dpq::bus_manager::unspecified;  ///< DPQ "Busmanager"
+  std::optional<std::uint8_t> pointer;                   ///< COMPAX index pointer
   std::uint32_t obj_flags = 0;
   bool has_obj_flags = false;
   /// Keys of the EDS section the reader does not interpret (UploadFile, SRDOMapping, a vendor's

@@ -165,9 +165,9 @@ inline std::string lower_hex(std::uint64_t v, int digits) { return to_lower(hex(
 class symbols {
 public:
   symbols() {
-    for (const char *r :
-         {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table", "od", "std",
-          "fieldcodec", "scaling", "node_id", "source_file", "detail"}) {
+    for (const char *r : {"entries", "infos", "scales", "dictionary", "kinds", "commands", "table",
+                          "od", "std", "fieldcodec", "scaling", "node_id", "source_file", "detail",
+                          "dpq", "compax", "dpq_columns", "compax_columns"}) {
       used_.insert(r);
     }
   }
@@ -358,17 +358,7 @@ inline void emit_info(std::string &o, const entry &e) {
   text("alt_name", e.alt_name);
   text("section", e.section);
   text("remark", e.remark);
-  text("acceptance", e.acceptance);
   text("denotation", e.denotation);
-  if (e.pointer != od::no_pointer) {
-    field("pointer");
-    append_int(o, e.pointer);
-  }
-  if (e.bus != od::bus_manager::unspecified) {
-    field("bus");
-    o += e.bus == od::bus_manager::available ? "od::bus_manager::available"
-                                             : "od::bus_manager::not_available";
-  }
   if (e.has_obj_flags && e.obj_flags != 0U) {
     field("obj_flags");
     o += "0x";
@@ -486,6 +476,54 @@ inline void emit_commands(std::string &o, const dictionary &d) {
   }
 }
 
+inline bool has_dpq_columns(const entry &e) {
+  return e.acceptance != dpq::acceptance::unknown || e.bus != dpq::bus_manager::unspecified;
+}
+
+/// The manufacturers' column tables (dpq_columns, compax_columns) after the dictionary.
+inline void emit_vendor_columns(std::string &o, const dictionary &d) {
+  std::string rows;
+  std::size_t n = 0;
+  for (const entry &e : d.entries) {
+    if (!has_dpq_columns(e)) continue;
+    ++n;
+    rows += "    {.index = 0x";
+    append_hex(rows, e.index, 4);
+    if (e.sub != 0U) rows += ", .sub = " + std::to_string(e.sub);
+    if (e.acceptance == dpq::acceptance::only_when_disabled) {
+      rows += ", .value_acceptance = dpq::acceptance::only_when_disabled";
+    } else if (e.acceptance == dpq::acceptance::also_when_enabled) {
+      rows += ", .value_acceptance = dpq::acceptance::also_when_enabled";
+    }
+    if (e.bus == dpq::bus_manager::available) {
+      rows += ", .bus = dpq::bus_manager::available";
+    } else if (e.bus == dpq::bus_manager::not_available) {
+      rows += ", .bus = dpq::bus_manager::not_available";
+    }
+    rows += "},\n";
+  }
+  if (n != 0U) {
+    o += "\n// DPQ columns of the parameters that have them (dpq/columns.hpp).\n"
+         "inline constexpr dpq::parameter_columns dpq_columns[" +
+         std::to_string(n) + "]{\n" + rows + "};\n";
+  }
+  rows.clear();
+  n = 0;
+  for (const entry &e : d.entries) {
+    if (!e.pointer) continue;
+    ++n;
+    rows += "    {.index = 0x";
+    append_hex(rows, e.index, 4);
+    if (e.sub != 0U) rows += ", .sub = " + std::to_string(e.sub);
+    rows += ", .pointer = " + std::to_string(*e.pointer) + "},\n";
+  }
+  if (n != 0U) {
+    o += "\n// COMPAX index pointers of the objects that have one (compax/columns.hpp).\n"
+         "inline constexpr compax::object_columns compax_columns[" +
+         std::to_string(n) + "]{\n" + rows + "};\n";
+  }
+}
+
 inline std::string emit_header(const dictionary &d) {
   std::string o;
   o.reserve(d.entries.size() * 400U + 4096U); // about 370 bytes per entry (three tables + names)
@@ -497,7 +535,16 @@ inline std::string emit_header(const dictionary &d) {
     o += "#include <fieldcodec/od/command.hpp>\n#include <fieldcodec/od/number.hpp>\n\n#include "
          "<array>\n#include <string_view>\n\n";
   } else {
-    o += "#include <fieldcodec/core/scaling.hpp>\n#include <fieldcodec/od/data_type.hpp>\n"
+    bool dpq_table = false;
+    bool compax_table = false;
+    for (const entry &e : d.entries) {
+      dpq_table = dpq_table || has_dpq_columns(e);
+      compax_table = compax_table || e.pointer.has_value();
+    }
+    if (compax_table) o += "#include <fieldcodec/compax/columns.hpp>\n";
+    o += "#include <fieldcodec/core/scaling.hpp>\n";
+    if (dpq_table) o += "#include <fieldcodec/dpq/columns.hpp>\n";
+    o += "#include <fieldcodec/od/data_type.hpp>\n"
          "#include <fieldcodec/od/descriptor.hpp>\n#include <fieldcodec/od/dictionary.hpp>\n"
          "#include <fieldcodec/od/entry.hpp>\n#include <fieldcodec/od/number.hpp>\n"
          "#include <fieldcodec/od/object.hpp>\n#include <fieldcodec/od/text.hpp>\n"
@@ -593,6 +640,7 @@ inline std::string emit_header(const dictionary &d) {
   if (scales) span("scaling::linear", "scales");
   o += std::string("\ninline constexpr od::dictionary dictionary{entries, infos") +
        (scales ? ", scales" : "") + "};\nstatic_assert(dictionary.is_valid());\n";
+  emit_vendor_columns(o, d);
   emit_kinds(o, d);
   // a standalone descriptor: a copy of table row k, not a reference into the tables
   auto descriptor = [&](std::size_t k) {

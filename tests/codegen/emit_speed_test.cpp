@@ -114,7 +114,7 @@ struct random_dictionaries {
     e.denotation = chance(20) ? text() : std::string();
     e.unit = chance(20) ? text() : std::string();
     e.alt_name = chance(10) ? text() : std::string();
-    e.acceptance = chance(10) ? text() : std::string();
+    if (chance(10)) e.acceptance = static_cast<fieldcodec::dpq::acceptance>(1U + below(2));
     e.section = chance(10) ? text() : std::string();
     e.remark = chance(10) ? text() : std::string();
     e.scaled = chance(10);
@@ -122,8 +122,8 @@ struct random_dictionaries {
       e.scale = {static_cast<std::int64_t>(rng()), static_cast<std::uint8_t>(below(19))};
       e.offset = {-static_cast<std::int64_t>(below(1000)), static_cast<std::uint8_t>(below(3))};
     }
-    e.pointer = chance(10) ? static_cast<std::uint8_t>(below(255)) : od::no_pointer;
-    e.bus = static_cast<od::bus_manager>(below(3));
+    if (chance(10)) e.pointer = static_cast<std::uint8_t>(below(128));
+    e.bus = static_cast<fieldcodec::dpq::bus_manager>(below(3));
     e.has_obj_flags = chance(20);
     e.obj_flags = chance(50) ? static_cast<std::uint32_t>(rng()) : 0U;
     return e;

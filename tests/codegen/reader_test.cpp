@@ -5,9 +5,12 @@
 #include "text.hpp"
 
 #include <doctest/doctest.h>
+#include <fieldcodec/dpq/columns.hpp>
 #include <fieldcodec/od/value.hpp>
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -281,6 +284,45 @@ TEST_CASE("eds/csv: malformed files get exact diagnostics") {
     CHECK(o.dict.has_value() == c.ok);
     CHECK(o.diags == c.diags);
   }
+}
+
+TEST_CASE("csv: the manufacturers' columns (acceptance, bus_manager, pointer)") {
+  namespace dpq = fieldcodec::dpq;
+  const std::string head = "index,name,data_type,acceptance,bus_manager,pointer\n";
+  auto o = read_text(head + "0x2000,A,UNSIGNED8,also with active enabling,available,7\n"
+                            "0x2001,B,UNSIGNED8,only with deactivated enabling,not available,\n"
+                            "0x2002,C,UNSIGNED8,,,\n",
+                     "m.csv", false);
+  REQUIRE(o.dict.has_value());
+  CHECK(o.diags.empty());
+  const gen::entry *a = find(*o.dict, 0x2000, 0);
+  const gen::entry *b = find(*o.dict, 0x2001, 0);
+  const gen::entry *c = find(*o.dict, 0x2002, 0);
+  REQUIRE((a != nullptr && b != nullptr && c != nullptr));
+  CHECK(a->acceptance == dpq::acceptance::also_when_enabled);
+  CHECK(a->bus == dpq::bus_manager::available);
+  CHECK(a->pointer == std::optional<std::uint8_t>(7));
+  CHECK(b->acceptance == dpq::acceptance::only_when_disabled);
+  CHECK(b->bus == dpq::bus_manager::not_available);
+  CHECK(!b->pointer.has_value());
+  CHECK(c->acceptance == dpq::acceptance::unknown);
+  CHECK(c->bus == dpq::bus_manager::unspecified);
+  CHECK(!c->pointer.has_value());
+  // a text the manual does not print (here: another case) is an error, not "unknown"
+  auto bad = read_text(head + "0x2000,A,UNSIGNED8,Also with active enabling,,\n", "m.csv", false);
+  REQUIRE(bad.diags.size() == 1U);
+  CHECK(bad.diags[0] == "m.csv:2:20: error: expected 'only with deactivated enabling' or 'also "
+                        "with active enabling', got 'Also with active enabling' in column "
+                        "'acceptance'");
+  auto bad_bus = read_text(head + "0x2000,A,UNSIGNED8,,yes,\n", "m.csv", false);
+  REQUIRE(bad_bus.diags.size() == 1U);
+  CHECK(bad_bus.diags[0] ==
+        "m.csv:2:21: error: expected 'available' or 'not available', got 'yes' in column "
+        "'bus_manager'");
+  auto bad_pointer = read_text(head + "0x2000,A,UNSIGNED8,,,128\n", "m.csv", false);
+  REQUIRE(bad_pointer.diags.size() == 1U);
+  CHECK(bad_pointer.diags[0] ==
+        "m.csv:2:22: error: expected an index pointer 0..127, got '128' in column 'pointer'");
 }
 
 TEST_CASE("eds: --strict turns warnings into errors") {

@@ -1,8 +1,11 @@
 // COMPAX objects by dictionary entry (compax/objects.hpp) and the DRIVECOM wrappers over ds402
 // (compax/drivecom.hpp). Entries are written here like the generated ones; when the generated
 // dictionary exists the manual's examples are also checked by name.
+#include <fieldcodec/compax/columns.hpp>
 #include <fieldcodec/compax/drivecom.hpp>
+#include <fieldcodec/compax/object_channel.hpp>
 #include <fieldcodec/compax/objects.hpp>
+#include <fieldcodec/od/columns.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 #include <fieldcodec/od/entry.hpp>
 #include <fieldcodec/od/entry_spec.hpp>
@@ -158,9 +161,22 @@ TEST_CASE("generated COMPAX dictionary: manual examples by name") {
     REQUIRE(e.has_value());
     CHECK(e.value()->has(od::flag::scaled));
   }
-  // pointers for OBJECT_REQ
-  CHECK(d::lage_ist.info.pointer == 67);
-  CHECK(d::speed.info.pointer == 38);
+  // pointers for OBJECT_REQ: the COMPAX column table beside the dictionary (compax/columns.hpp)
+  CHECK(cx::index_pointer(d::compax_columns, d::lage_ist) == 67);
+  CHECK(cx::index_pointer(d::compax_columns, d::speed) == 38);
+  CHECK(cx::index_pointer(d::compax_columns, fieldcodec::od::address{0x5FC7, 0}) == 1);
+  // an object without a pointer (OBJECT_REQ itself) and an address nobody has
+  CHECK(cx::index_pointer(d::compax_columns, fieldcodec::od::address{0x5FC5, 0}) ==
+        fieldcodec::errc::unknown_object);
+  CHECK(cx::index_pointer(d::compax_columns, fieldcodec::od::address{0xFFFF, 255}) ==
+        fieldcodec::errc::unknown_object);
+  CHECK(cx::index_pointer({}, d::speed) == fieldcodec::errc::unknown_object);
+  // sorted, each row an entry of the dictionary, each pointer one OBJECT_REQ can send
+  CHECK(fieldcodec::od::rows_sorted(std::span<const cx::object_columns>(d::compax_columns)));
+  for (const auto &row : d::compax_columns) {
+    CHECK(d::dictionary.contains({row.index, row.sub}));
+    CHECK(row.pointer <= cx::object_pointer_max);
+  }
 }
 
 // Issue 13: arrays and records are od::object. Their elements are encoded by object and

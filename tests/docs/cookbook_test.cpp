@@ -736,7 +736,8 @@ namespace cx = fieldcodec::compax;
 namespace d = fieldcodec::dictionaries::compax_objects;
 
 // read SPEED (index pointer 38): OBJECT_REQ A6 00 00 00 00 00
-constexpr auto request = cx::object_read(d::speed.info.pointer).value();
+constexpr auto request =
+    cx::object_read(cx::index_pointer(d::compax_columns, d::speed).value()).value();
 static_assert(cx::encode_object_request(request).value() ==
               cx::object_frame{0xA6, 0x00, 0x00, 0x00, 0x00, 0x00});
 

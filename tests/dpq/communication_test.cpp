@@ -108,8 +108,8 @@ void check_object(const expected &x, const od::descriptor &d) {
   // raw values: no scale, no DPQ acceptance or Bus Manager text, not PDO-mappable
   CHECK(!d.has(od::flag::scaled));
   CHECK((d.flags & ~od::flag::packed) == 0); // no DPQ flag, no scale
-  CHECK(d.info.acceptance.empty());
-  CHECK(d.info.bus == od::bus_manager::unspecified);
+  CHECK(dpq::columns_of(p::dpq_columns, d).value_acceptance == dpq::acceptance::unknown);
+  CHECK(dpq::columns_of(p::dpq_columns, d).bus == dpq::bus_manager::unspecified);
   CHECK(d.pdo == od::pdo_mapping::no);
   REQUIRE(d.low().has_value() == x.has_range);
   REQUIRE(d.high().has_value() == x.has_range);

@@ -1,5 +1,6 @@
 // DPQ lookup by printed name and manual section, and value acceptance (manual 004, chapter 4:
-// each parameter's name, section number and "Value acceptance"), dpq/lookup.hpp.
+// each parameter's name, section number and "Value acceptance"), dpq/lookup.hpp and the DPQ
+// column table generated beside the dictionary (dpq/columns.hpp).
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
 #include <fieldcodec/dpq/lookup.hpp>
 #include <fieldcodec/od/address.hpp>
@@ -7,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <cstddef>
+#include <span>
 #include <string>
 
 namespace fc = fieldcodec;
@@ -22,7 +24,10 @@ static_assert(dpq::find_by_name(p::dictionary, "  inj.  P LIMIT\t1 ", dpq::name_
                   .index == 0x2023);
 static_assert(dpq::parse_acceptance("also with active enabling") ==
               dpq::acceptance::also_when_enabled);
-static_assert(dpq::check_acceptance(p::cyl_area_ratio, dpq::enabling::active) == errc::bad_state);
+static_assert(dpq::check_acceptance(p::dpq_columns, p::cyl_area_ratio, dpq::enabling::active) ==
+              errc::bad_state);
+static_assert(dpq::columns_of(p::dpq_columns, p::inj_p_limit_1).bus == dpq::bus_manager::available);
+static_assert(fc::od::rows_sorted(std::span<const dpq::parameter_columns>(p::dpq_columns)));
 
 TEST_CASE("dpq lookup: by exact name") {
   auto d = dpq::find_by_name(p::dictionary, "BackP: Decomp Rate 2");
@@ -109,21 +114,52 @@ TEST_CASE("dpq acceptance: the printed texts as data") {
   CHECK(dpq::parse_acceptance("Also with active enabling") == dpq::acceptance::unknown);
   CHECK(dpq::parse_acceptance("") == dpq::acceptance::unknown);
   // 4.34 Cyl. Area Ratio: rw, only with deactivated enabling
-  CHECK(dpq::acceptance_of(p::cyl_area_ratio) == dpq::acceptance::only_when_disabled);
-  CHECK(dpq::check_acceptance(p::cyl_area_ratio, dpq::enabling::inactive).has_value());
-  CHECK(dpq::check_acceptance(p::cyl_area_ratio, dpq::enabling::active) == errc::bad_state);
+  CHECK(dpq::acceptance_of(p::dpq_columns, p::cyl_area_ratio) ==
+        dpq::acceptance::only_when_disabled);
+  CHECK(dpq::check_acceptance(p::dpq_columns, p::cyl_area_ratio, dpq::enabling::inactive)
+            .has_value());
+  CHECK(dpq::check_acceptance(p::dpq_columns, p::cyl_area_ratio, dpq::enabling::active) ==
+        errc::bad_state);
   // 4.100 Inj. P Limit 1: also with active enabling
-  CHECK(dpq::acceptance_of(p::inj_p_limit_1) == dpq::acceptance::also_when_enabled);
-  CHECK(dpq::check_acceptance(p::inj_p_limit_1, dpq::enabling::active).has_value());
-  CHECK(dpq::check_acceptance(p::inj_p_limit_1, dpq::enabling::inactive).has_value());
+  CHECK(dpq::acceptance_of(p::dpq_columns, p::inj_p_limit_1) == dpq::acceptance::also_when_enabled);
+  CHECK(dpq::check_acceptance(p::dpq_columns, p::inj_p_limit_1, dpq::enabling::active).has_value());
+  CHECK(
+      dpq::check_acceptance(p::dpq_columns, p::inj_p_limit_1, dpq::enabling::inactive).has_value());
   // read-only parameters are never written
   auto ro = dpq::find_by_section(p::dictionary, "4.221");
   REQUIRE(ro.has_value());
-  CHECK(dpq::check_acceptance(ro.value(), dpq::enabling::inactive) == errc::access_denied);
-  // an entry without a DPQ acceptance text
-  fc::od::descriptor plain = p::inj_p_limit_1;
-  plain.info.acceptance = {};
-  CHECK(dpq::check_acceptance(plain, dpq::enabling::inactive) == errc::invalid_argument);
+  CHECK(dpq::check_acceptance(p::dpq_columns, ro.value(), dpq::enabling::inactive) ==
+        errc::access_denied);
+  // an entry without a DPQ acceptance: not in the table given (an empty one, another's)
+  CHECK(dpq::check_acceptance({}, p::inj_p_limit_1, dpq::enabling::inactive) ==
+        errc::invalid_argument);
+  CHECK(dpq::acceptance_of({}, p::inj_p_limit_1) == dpq::acceptance::unknown);
+}
+
+TEST_CASE("dpq columns: the table beside the dictionary") {
+  // one row per chapter 4 parameter (221), none for the 19 communication objects of chapter 3
+  CHECK(std::size(p::dpq_columns) == 221);
+  // parse_bus_manager: the printed texts only, exactly
+  CHECK(dpq::parse_bus_manager("available") == dpq::bus_manager::available);
+  CHECK(dpq::parse_bus_manager("not available") == dpq::bus_manager::not_available);
+  CHECK(dpq::parse_bus_manager("Available") == dpq::bus_manager::unspecified);
+  CHECK(dpq::parse_bus_manager("") == dpq::bus_manager::unspecified);
+  // 4.1 Analog Vel Max (2C69h): also with active enabling, not available
+  const auto c = dpq::columns_of(p::dpq_columns, fc::od::address{0x2C69, 0});
+  CHECK(c.index == 0x2C69);
+  CHECK(c.value_acceptance == dpq::acceptance::also_when_enabled);
+  CHECK(c.bus == dpq::bus_manager::not_available);
+  // a communication object and an address nobody has: the empty row of that address
+  const auto none = dpq::columns_of(p::dpq_columns, p::error_register);
+  CHECK(none.index == 0x1001);
+  CHECK(none.value_acceptance == dpq::acceptance::unknown);
+  CHECK(none.bus == dpq::bus_manager::unspecified);
+  CHECK(dpq::columns_of(p::dpq_columns, fc::od::address{0xFFFF, 255}).value_acceptance ==
+        dpq::acceptance::unknown);
+  // every row is an entry of the dictionary
+  for (const auto &row : p::dpq_columns) {
+    CHECK(p::dictionary.contains({row.index, row.sub}));
+  }
 }
 
 TEST_CASE("dpq acceptance: every parameter has a known acceptance (221 = 163 + 58)") {
@@ -133,13 +169,13 @@ TEST_CASE("dpq acceptance: every parameter has a known acceptance (221 = 163 + 5
   for (std::size_t i = 0; i < p::infos.size(); ++i) {
     auto d = p::dictionary.describe(p::entries[i]);
     REQUIRE(d.has_value());
-    const auto a = dpq::acceptance_of(d.value());
+    const auto a = dpq::acceptance_of(p::dpq_columns, d.value());
     if (!is_parameter(p::infos[i])) {
       // chapter 3 prints no value acceptance for the communication objects
       CHECK_MESSAGE(a == dpq::acceptance::unknown, p::infos[i].name);
       // read-only ones are refused first; a writable one has no acceptance to check
       CHECK(
-          dpq::check_acceptance(d.value(), dpq::enabling::inactive) ==
+          dpq::check_acceptance(p::dpq_columns, d.value(), dpq::enabling::inactive) ==
           (fc::od::writable(d.value().access_type) ? errc::invalid_argument : errc::access_denied));
       continue;
     }
@@ -149,7 +185,8 @@ TEST_CASE("dpq acceptance: every parameter has a known acceptance (221 = 163 + 5
       ++only;
       if (fc::od::writable(d.value().access_type)) {
         ++only_rw;
-        CHECK(dpq::check_acceptance(d.value(), dpq::enabling::active) == errc::bad_state);
+        CHECK(dpq::check_acceptance(p::dpq_columns, d.value(), dpq::enabling::active) ==
+              errc::bad_state);
       }
     }
   }

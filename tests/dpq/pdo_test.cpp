@@ -5,6 +5,7 @@
 // DPQ-F3).
 #include <fieldcodec/canopen/pdo.hpp>
 #include <fieldcodec/dictionaries/dpq_parameters.hpp>
+#include <fieldcodec/dpq/columns.hpp>
 #include <fieldcodec/dpq/parameter.hpp>
 
 #include <doctest/doctest.h>
@@ -73,7 +74,7 @@ TEST_CASE("dpq pdo: the example's parameters against the dictionary") {
     const od::entry *e = by_name(l.name);
     REQUIRE_MESSAGE(e != nullptr, l.name);
     CHECK_MESSAGE(e->width() == l.bytes, l.name);
-    CHECK_MESSAGE(p::dictionary.info(*e).bus == od::bus_manager::available, l.name);
+    CHECK_MESSAGE(dpq::columns_of(p::dpq_columns, *e).bus == dpq::bus_manager::available, l.name);
     CHECK_MESSAGE(od::writable(e->access_type), l.name);
     rx.push_back(e);
     rx_bytes += e->width();
@@ -82,7 +83,7 @@ TEST_CASE("dpq pdo: the example's parameters against the dictionary") {
     const od::entry *e = by_name(l.name);
     REQUIRE_MESSAGE(e != nullptr, l.name);
     CHECK_MESSAGE(e->width() == l.bytes, l.name);
-    CHECK_MESSAGE(p::dictionary.info(*e).bus == od::bus_manager::available, l.name);
+    CHECK_MESSAGE(dpq::columns_of(p::dpq_columns, *e).bus == dpq::bus_manager::available, l.name);
     CHECK_MESSAGE(od::readable(e->access_type), l.name);
     tx.push_back(e);
     tx_bytes += e->width();
@@ -130,7 +131,7 @@ TEST_CASE("PDO mappability follows the Bus Manager column") {
   // dictionaries/dpq_parameters.csv: bus_manager "available" → pdo_mapping yes (read/write)
   // or tx (read-only); "not available" → no. The example's parameters validate as mappings.
   for (const od::entry &e : p::entries) {
-    const bool available = p::dictionary.info(e).bus == od::bus_manager::available;
+    const bool available = dpq::columns_of(p::dpq_columns, e).bus == dpq::bus_manager::available;
     CHECK(od::mappable_tx(e.pdo) == available);
     CHECK(od::mappable_rx(e.pdo) == (available && od::writable(e.access_type)));
   }

@@ -5,19 +5,22 @@
 //   dpq::find_by_name(p::dictionary, "Inj. P Limit 1")        → the descriptor of 2023h
 //   dpq::find_by_name(p::dictionary, "inj.  p limit 1", dpq::name_match::normalised)
 //   dpq::find_by_section(p::dictionary, "4.100")
-//   dpq::check_acceptance(p::inj_p_limit_1, dpq::enabling::active)  → ok or bad_state
+//   dpq::check_acceptance(p::dpq_columns, p::inj_p_limit_1, dpq::enabling::active)
+//       → ok or bad_state
 //
 // The functions take any od::dictionary (the generated dpq_parameters one in practice) and
-// answer with od::descriptor, the one scaling surface; the acceptance is read from the entry's
-// `acceptance` text (the CSV column, emitted as text by the generator) by a constexpr parser.
+// answer with od::descriptor, the one scaling surface; the acceptance is the DPQ's own column,
+// generated beside the dictionary as `dpq_columns` (dpq/columns.hpp).
 #pragma once
 
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/dpq/columns.hpp>
 #include <fieldcodec/od/descriptor.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace fieldcodec::dpq {
@@ -103,23 +106,11 @@ find_by_name(const od::dictionary &d, std::string_view name,
 // ---------------------------------------------------------------------------------------------
 // Value acceptance
 
-/// When the card takes a new value of a parameter (chapter 4, "Value acceptance").
-enum class acceptance : std::uint8_t {
-  unknown,            ///< no or an unrecognised text (not a DPQ parameter)
-  only_when_disabled, ///< "only with deactivated enabling"
-  also_when_enabled,  ///< "also with active enabling"
-};
-
-/// The acceptance a printed text names; unknown for any other text.
-[[nodiscard]] constexpr acceptance parse_acceptance(std::string_view text) noexcept {
-  if (text == "only with deactivated enabling") return acceptance::only_when_disabled;
-  if (text == "also with active enabling") return acceptance::also_when_enabled;
-  return acceptance::unknown;
-}
-
-/// The acceptance of a parameter (from its `acceptance` column).
-[[nodiscard]] constexpr acceptance acceptance_of(const od::descriptor &p) noexcept {
-  return parse_acceptance(p.info.acceptance);
+/// The acceptance of a parameter (its row of `table`, a generated `dpq_columns`); unknown when
+/// it has none.
+[[nodiscard]] constexpr acceptance acceptance_of(std::span<const parameter_columns> table,
+                                                 const od::entry &p) noexcept {
+  return columns_of(table, p).value_acceptance;
 }
 
 /// The card's enabling (the caller knows it from the card's status).
@@ -127,10 +118,12 @@ enum class enabling : std::uint8_t { inactive, active };
 
 /// May `p` be written while the card's enabling is `state`? Errors: access_denied (read-only
 /// parameter), bad_state (accepted only with deactivated enabling, and enabling is active),
-/// invalid_argument (the parameter has no acceptance the DPQ prints: not a DPQ parameter).
-[[nodiscard]] constexpr status check_acceptance(const od::descriptor &p, enabling state) noexcept {
+/// invalid_argument (the parameter has no acceptance in `table`, a generated `dpq_columns`: a
+/// communication object, or not a DPQ parameter).
+[[nodiscard]] constexpr status check_acceptance(std::span<const parameter_columns> table,
+                                                const od::entry &p, enabling state) noexcept {
   if (!od::writable(p.access_type)) return errc::access_denied;
-  switch (acceptance_of(p)) {
+  switch (acceptance_of(table, p)) {
   case acceptance::also_when_enabled: return {};
   case acceptance::only_when_disabled:
     if (state == enabling::active) return errc::bad_state;

@@ -230,24 +230,17 @@ namespace detail {
 }
 } // namespace detail
 
-/// DPQ "Busmanager" column.
-enum class bus_manager : std::uint8_t { unspecified, available, not_available };
-
-/// No COMPAX index pointer.
-inline constexpr std::uint8_t no_pointer = 0xFF;
-
 /// The descriptive columns of one entry (joined to it by position, see od::dictionary::info).
-/// Text columns are od::text (od/text.hpp), which read like std::string_view.
+/// Text columns are od::text (od/text.hpp), which read like std::string_view. A column that only
+/// one manufacturer's table has is not here: it is generated as a table of its own beside the
+/// dictionary, with a row type the device's folder defines (od/columns.hpp).
 struct entry_info {
   text name{}; ///< name as the source prints it
   text unit{};
   text alt_name{};
   text section{}; ///< manual section
   text remark{};
-  text acceptance{};                 ///< DPQ: when the card accepts a write
-  text denotation{};                 ///< DCF Denotation
-  std::uint8_t pointer = no_pointer; ///< COMPAX index pointer
-  bus_manager bus = bus_manager::unspecified;
+  text denotation{};           ///< DCF Denotation
   std::uint32_t obj_flags = 0; ///< EDS ObjFlags
   number parameter_value{};    ///< DCF ParameterValue (configured value), raw; see
                                ///< flag::parameter_nodeid and descriptor::parameter_for
