@@ -2,7 +2,7 @@
 //
 //   host::quoted_bytes(frame)   // "<SOH><STX>0;1;15;0;0;0<ETX>2<EOT>"
 //
-// The control characters of the PA-CONTROL frame (NUL, SOH, STX, ETX, EOT) are named, printable
+// The control characters of ASCII serial framing (NUL, SOH, STX, ETX, EOT) are named, printable
 // ASCII (20h..7Eh) is kept, every other byte is written as two upper-case hex digits in angle
 // brackets ("<0D>", "<FF>"). Host only: it returns a std::string.
 #pragma once

@@ -1,8 +1,9 @@
-// fieldcodec — od::command, one row of a command table (PA-CONTROL style command lists), and
-// od::command_table, a constexpr view sorted by code with O(log n) lookup.
+// fieldcodec — od::command, one row of a command table (a controller's list of numbered serial
+// commands, each with a parameter and a date), and od::command_table, a constexpr view sorted by
+// code with O(log n) lookup.
 //
 // A row says what a command's parameter and date may be: the date's type (`command_value`,
-// also the type of every PA-CONTROL date and acknowledgement date), the printed ranges of the
+// also the type of a protocol's dates and acknowledgement dates), the printed ranges of the
 // parameter and of an integer date, and whether the number is packed from smaller fields
 // (`packing`), in which case every field is checked against the same field of the minimum
 // and of the maximum. `check_parameter` and `check_date` apply all of that to any integer
@@ -43,8 +44,8 @@ enum class command_value : std::uint8_t { none, integer, real };
 /// must lie between the same field of the minimum and of the maximum.
 enum class packing : std::uint8_t {
   whole,          ///< one number, checked against minimum and maximum as a whole
-  byte_byte,      ///< 16 bits: bits 15-8 | bits 7-0 (PA-CONTROL: axis | axis parameter)
-  byte_byte_word, ///< 32 bits: bits 31-24 | 23-16 | 15-0 (PA-CONTROL 0AA3: state | type | number)
+  byte_byte,      ///< 16 bits: bits 15-8 | bits 7-0 (e.g. axis | axis parameter)
+  byte_byte_word, ///< 32 bits: bits 31-24 | 23-16 | 15-0 (e.g. state | type | number)
 };
 
 [[nodiscard]] constexpr std::string_view name(packing p) noexcept {
