@@ -243,19 +243,25 @@ public:
   [[nodiscard]] const std::string &path() const noexcept { return path_; }
 
 private:
-  static bool save_hook(void *self, std::uint8_t group) noexcept {
+  // The node's hook is noexcept: an exception (out of memory) is a failed command, which the
+  // node answers with 0606 0000h (a build without exceptions has none to catch).
+  template <class F>
+  static bool guarded(F f) noexcept {
+#if defined(__cpp_exceptions)
     try {
-      return static_cast<parameter_file *>(self)->save(group).has_value();
-    } catch (...) { // out of memory: the node answers "hardware error"
-      return false;
-    }
-  }
-  static bool restore_hook(void *self, std::uint8_t group) noexcept {
-    try {
-      return static_cast<parameter_file *>(self)->restore(group).has_value();
+      return f();
     } catch (...) {
       return false;
     }
+#else
+    return f();
+#endif
+  }
+  static bool save_hook(void *self, std::uint8_t group) noexcept {
+    return guarded([&] { return static_cast<parameter_file *>(self)->save(group).has_value(); });
+  }
+  static bool restore_hook(void *self, std::uint8_t group) noexcept {
+    return guarded([&] { return static_cast<parameter_file *>(self)->restore(group).has_value(); });
   }
 
   result<std::size_t, std::string> failed(std::string why) {
