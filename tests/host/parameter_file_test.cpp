@@ -50,16 +50,25 @@ void put(const std::string &path, const std::string &text) {
   out << text;
 }
 
+/// A node in operational whose 1010h/1011h keep its parameters in `path`.
+struct saving_node {
+  rig<> r;
+  host::parameter_file file;
+  explicit saving_node(const std::string &path) : file(path, r.dict, r.dev) {
+    r.dev.set_storage(file.hook());
+    r.operational();
+  }
+};
+
 } // namespace
 
 TEST_CASE("parameter_file: save over SDO, then power-on puts the values back") {
   folder dir;
   const std::string path = dir.file("node5.par");
   {
-    rig<> r;
-    host::parameter_file file(path, r.dict, r.dev);
-    r.dev.set_storage(file.hook());
-    r.operational();
+    saving_node node(path);
+    auto &r = node.r;
+    const auto &file = node.file;
     CHECK(r.sdo_write(0x2000, 0, 77, 4) == abort_code::none);
     CHECK(r.sdo_write(0x1017, 0, 250, 2) == abort_code::none);
     CHECK(r.sdo_write(0x1019, 0, 5, 1) == abort_code::none); // while 1006h is 0
@@ -135,10 +144,9 @@ TEST_CASE("parameter_file: save over SDO, then power-on puts the values back") {
 TEST_CASE("parameter_file: groups and restore (1011h) keep the other groups") {
   folder dir;
   const std::string path = dir.file("p.par");
-  rig<> r;
-  host::parameter_file file(path, r.dict, r.dev);
-  r.dev.set_storage(file.hook());
-  r.operational();
+  saving_node node(path);
+  auto &r = node.r;
+  auto &file = node.file;
   CHECK(r.set_u(0x6040, 0, 0x000F, 2) == abort_code::none);
   CHECK(r.set_u(0x2001, 0, 0x1234, 2) == abort_code::none);
   CHECK(r.set_u(0x1017, 0, 100, 2) == abort_code::none);
@@ -213,10 +221,9 @@ TEST_CASE("parameter_file: no file is nothing saved") {
 TEST_CASE("parameter_file: malformed files, unknown objects and refused values are errors") {
   folder dir;
   const std::string path = dir.file("bad.par");
-  rig<> r;
-  host::parameter_file file(path, r.dict, r.dev);
-  r.dev.set_storage(file.hook());
-  r.operational();
+  saving_node node(path);
+  auto &r = node.r;
+  auto &file = node.file;
   struct bad {
     const char *line;
     const char *why;
