@@ -97,6 +97,34 @@ struct app {
   }
 };
 
+/// Run a transfer of `c` (its first step `first`) against node 5 `dev`: frames both ways until
+/// nothing moves. `cancel_after`: the client aborts after that many frames of the node.
+template <class Device>
+sdo::transfer_state pump(Device &dev, sdo::client &c, fieldcodec::result<sdo::step> first,
+                         std::uint32_t now, std::size_t cancel_after = ~std::size_t{0}) {
+  REQUIRE(first.has_value());
+  const auto response_id = sdo::channel::default_for(5).value().response_id;
+  std::vector<co::can_frame> to_node = list(first.value().send);
+  std::size_t seen = 0;
+  while (!to_node.empty()) {
+    std::vector<co::can_frame> to_client;
+    for (const auto &f : to_node) {
+      for (const auto &g : dev.on_frame(f, now).send) {
+        if (g.id == response_id) to_client.push_back(g);
+      }
+    }
+    to_node.clear();
+    for (const auto &g : to_client) {
+      if (++seen > cancel_after && c.busy()) {
+        for (const auto &h : c.cancel(abort_code::general_error).send) to_node.push_back(h);
+        break;
+      }
+      for (const auto &h : c.on_frame(g, now).send) to_node.push_back(h);
+    }
+  }
+  return c.state();
+}
+
 /// A node with hooks over the test dictionary (2005h: a DOMAIN of capacity 4000).
 struct hook_rig {
   std::vector<std::uint8_t> storage = std::vector<std::uint8_t>(layout5.storage_size());
@@ -120,30 +148,9 @@ struct hook_rig {
     REQUIRE(dev.state() == co::nmt::state::operational);
   }
 
-  /// Run a transfer of `c` (its first step `first`) against the node: frames both ways until
-  /// nothing moves. `cancel_after`: the client aborts after that many frames of the node.
   sdo::transfer_state run(sdo::client &c, fieldcodec::result<sdo::step> first,
                           std::size_t cancel_after = ~std::size_t{0}) {
-    REQUIRE(first.has_value());
-    std::vector<co::can_frame> to_node = list(first.value().send);
-    std::size_t seen = 0;
-    while (!to_node.empty()) {
-      std::vector<co::can_frame> to_client;
-      for (const auto &f : to_node) {
-        for (const auto &g : dev.on_frame(f, now).send) {
-          if (g.id == ch.response_id) to_client.push_back(g);
-        }
-      }
-      to_node.clear();
-      for (const auto &g : to_client) {
-        if (++seen > cancel_after && c.busy()) {
-          for (const auto &h : c.cancel(abort_code::general_error).send) to_node.push_back(h);
-          break;
-        }
-        for (const auto &h : c.on_frame(g, now).send) to_node.push_back(h);
-      }
-    }
-    return c.state();
+    return pump(dev, c, first, now, cancel_after);
   }
   /// The abort code the node sent last for the transfer of `c`, or none.
   static abort_code abort_of(const sdo::client &c) {
@@ -186,6 +193,8 @@ struct hook_rig {
     return x;
   }
 };
+
+std::vector<std::uint8_t> bytes_of(std::span<const std::uint8_t> s) { return {s.begin(), s.end()}; }
 
 std::vector<std::uint8_t> pattern(std::size_t n, unsigned seed) {
   std::vector<std::uint8_t> v(n);
@@ -446,4 +455,91 @@ TEST_CASE("DOMAIN stream: one direction, access and unknown sub-indices keep the
   CHECK(w.upload({0x2005, 0}).second == abort_code::unsupported_access);
   CHECK(w.download({0x2005, 0}, pattern(20, 1)) == abort_code::none);
   CHECK(b.received == pattern(20, 1));
+}
+
+namespace {
+/// The application of the docs block: a sensor and a log kept elsewhere (a flash area).
+struct sensor_t {
+  std::uint32_t reads = 0;
+  std::uint32_t read() noexcept { return 2150U + reads++; }
+};
+struct flash_log_t {
+  std::vector<std::uint8_t> bytes, incoming;
+  std::size_t discarded = 0;
+  node::abort_code read(std::size_t offset, std::span<std::uint8_t> out,
+                        std::size_t &total) const noexcept {
+    total = bytes.size();
+    for (std::size_t i = 0; i < out.size() && offset + i < total; ++i) out[i] = bytes[offset + i];
+    return node::abort_code::none;
+  }
+  node::abort_code write(std::size_t offset, std::span<const std::uint8_t> part,
+                         bool last) noexcept {
+    if (offset == 0U) incoming.clear();
+    incoming.insert(incoming.end(), part.begin(), part.end());
+    if (last) bytes = incoming;
+    return node::abort_code::none;
+  }
+  void discard() noexcept {
+    incoming.clear();
+    ++discarded;
+  }
+};
+} // namespace
+
+TEST_CASE("docs/canopen.md, Application hooks: the block, compiled and run") {
+  using Store = store_type;
+  static constexpr od::dictionary dict = dict5;
+  std::vector<std::uint8_t> storage(layout5.storage_size());
+  Store store{dict, layout5, storage};
+  REQUIRE(store.init_defaults(5));
+  sensor_t sensor;
+  flash_log_t flash_log;
+
+  node::object_hook temperature; // 2000h, computed at each SDO read and TPDO
+  temperature.first = temperature.last = {0x2000, 0};
+  temperature.context = &sensor;
+  temperature.read = [](void *s, od::address, std::span<std::uint8_t> v) noexcept {
+    const std::uint32_t t = static_cast<sensor_t *>(s)->read(); // little-endian, width() bytes
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::uint8_t>(t >> (8U * i));
+    return node::abort_code::none; // or a code: the client gets it
+  };
+  node::object_hook setpoint; // 2008h: the application has the last word on writes
+  setpoint.first = setpoint.last = {0x2008, 0};
+  setpoint.write = [](void *, od::address, std::span<const std::uint8_t> v) noexcept {
+    return v[0] % 2U == 0U ? node::abort_code::none // accepted: stored and followed
+                           : node::abort_code::cannot_store_device_state; // 0800 0022h
+  };
+  node::object_hook log; // 2005h: a DOMAIN streamed in parts, never held by the node
+  log.first = log.last = {0x2005, 0};
+  log.context = &flash_log;
+  log.upload = [](void *f, od::address, std::size_t offset, std::span<std::uint8_t> out,
+                  std::size_t &total) noexcept {
+    return static_cast<flash_log_t *>(f)->read(offset, out, total);
+  };
+  log.download = [](void *f, od::address, std::size_t offset, std::span<const std::uint8_t> part,
+                    bool last) noexcept {
+    return static_cast<flash_log_t *>(f)->write(offset, part, last);
+  };
+  log.ended = [](void *f, od::address, node::abort_code) noexcept {
+    static_cast<flash_log_t *>(f)->discard(); // aborted or timed out: drop the parts
+  };
+  node::device<Store, node::capacity_for(dict, {.hooks = 3})> dev(store, 5);
+  for (const auto &h : {temperature, setpoint, log}) (void)dev.add_hook(h); // before start()
+
+  REQUIRE(dev.start(0));
+  sdo::client c(5);
+  std::vector<std::uint8_t> buf(4096);
+  REQUIRE(pump(dev, c, c.upload({0x2000, 0}, buf, 0), 0) == sdo::transfer_state::done);
+  CHECK(bytes_of(c.received()) == std::vector<std::uint8_t>{0x66, 0x08, 0, 0}); // 2150
+  const std::array<std::uint8_t, 4> odd{3, 0, 0, 0};
+  CHECK(pump(dev, c, c.download({0x2008, 0}, odd, 0), 0) == sdo::transfer_state::failed);
+  CHECK(c.error()->abort == abort_code::cannot_store_device_state);
+  const auto text = pattern(2000, 9);
+  REQUIRE(pump(dev, c, c.block_download({0x2005, 0}, text, 0), 0) == sdo::transfer_state::done);
+  CHECK(flash_log.bytes == text);
+  REQUIRE(pump(dev, c, c.upload({0x2005, 0}, buf, 0), 0) == sdo::transfer_state::done);
+  CHECK(bytes_of(c.received()) == text);
+  CHECK(pump(dev, c, c.download({0x2005, 0}, text, 0), 0, 3) == sdo::transfer_state::failed);
+  CHECK(flash_log.discarded == 1U);
+  CHECK(flash_log.bytes == text);
 }

@@ -391,13 +391,12 @@ public:
   /// Would an SDO write of the whole `value` to `a` be stored? The checks of write — access
   /// type, length, type, limits — without the write hook; nothing is stored. Returns none or the
   /// abort code the write would get (node::device asks it before an object's own write hook).
-  [[nodiscard]] constexpr sdo::abort_code
-  check(od::address a, std::span<const std::uint8_t> value) const noexcept {
+  [[nodiscard]] constexpr sdo::abort_code check(od::address a,
+                                                std::span<const std::uint8_t> value) noexcept {
     const located l = locate(a);
     if (l.code != sdo::abort_code::none) return l.code;
     if ((l.flags & slot_flag::writable) == 0U) return sdo::abort_code::write_read_only;
-    std::span<const std::uint8_t> v;
-    return checked(l, value, v);
+    return store<false>(l, value, false);
   }
   /// The application sets a value (also of read-only objects): the same checks as an SDO write
   /// except access type, no write hook. Returns none or the abort code an SDO write would get.
@@ -634,20 +633,32 @@ private:
     return std::span<const std::uint8_t>(l.slot).subspan(length_prefix, n);
   }
 
-  /// The checks of a complete value `data` for the entry of `l`: none, with `value` the bytes
-  /// to store (a visible string without its trailing NULs), or the abort code of the refusal.
+  /// Check a complete value, ask the hook (SDO/RPDO writes), then store it (`Commit`; else
+  /// only the checks: check()).
+  template <bool Commit = true>
   [[nodiscard]] constexpr sdo::abort_code
-  checked(const located &l, std::span<const std::uint8_t> data,
-          std::span<const std::uint8_t> &value) const noexcept {
+  store(const located &l, std::span<const std::uint8_t> data, bool ask_hook) noexcept {
     const od::entry &e = *l.e;
     if ((l.flags & slot_flag::byte_string) != 0U) {
-      if (data.size() > e.capacity()) return sdo::abort_code::length_too_high;
+      const std::uint32_t capacity = e.capacity();
+      if (data.size() > capacity) return sdo::abort_code::length_too_high;
       auto v = od::decode_bytes(e, data);
       if (!v) {
         return v.error() == errc::too_long ? sdo::abort_code::length_too_high
                                            : sdo::abort_code::invalid_value;
       }
-      value = v.value();
+      if constexpr (!Commit) return sdo::abort_code::none;
+      if (ask_hook) {
+        if (const auto c = on_write_(e, v.value()); c != sdo::abort_code::none) return c;
+      }
+      const auto value = v.value(); // visible strings: trailing NULs cut
+      // whole runs (a memmove and a memset at run time): a block download stores hundreds of
+      // bytes at once (docs/performance.md, "Services")
+      const auto out = l.slot.subspan(length_prefix);
+      std::copy(value.begin(), value.end(), out.begin());
+      std::fill(out.begin() + static_cast<std::ptrdiff_t>(value.size()),
+                out.begin() + static_cast<std::ptrdiff_t>(capacity), std::uint8_t{0});
+      set_length(l.slot, value.size());
       return sdo::abort_code::none;
     }
     if (data.size() > l.slot.size()) return sdo::abort_code::length_too_high;
@@ -660,31 +671,11 @@ private:
       case od::value_check::invalid: return sdo::abort_code::invalid_value;
       }
     }
-    value = data;
-    return sdo::abort_code::none;
-  }
-
-  /// Check a complete value, ask the hook (SDO/RPDO writes), then store it.
-  [[nodiscard]] constexpr sdo::abort_code
-  store(const located &l, std::span<const std::uint8_t> data, bool ask_hook) noexcept {
-    const od::entry &e = *l.e;
-    std::span<const std::uint8_t> value;
-    if (const auto c = checked(l, data, value); c != sdo::abort_code::none) return c;
+    if constexpr (!Commit) return sdo::abort_code::none;
     if (ask_hook) {
-      if (const auto c = on_write_(e, value); c != sdo::abort_code::none) return c;
+      if (const auto c = on_write_(e, data); c != sdo::abort_code::none) return c;
     }
-    if ((l.flags & slot_flag::byte_string) != 0U) {
-      // whole runs (a memmove and a memset at run time): a block download stores hundreds of
-      // bytes at once (docs/performance.md, "Services")
-      const std::uint32_t capacity = e.capacity();
-      const auto out = l.slot.subspan(length_prefix);
-      std::copy(value.begin(), value.end(), out.begin());
-      std::fill(out.begin() + static_cast<std::ptrdiff_t>(value.size()),
-                out.begin() + static_cast<std::ptrdiff_t>(capacity), std::uint8_t{0});
-      set_length(l.slot, value.size());
-      return sdo::abort_code::none;
-    }
-    fieldcodec::copy_bytes(value.data(), l.slot.data(), l.slot.size());
+    fieldcodec::copy_bytes(data.data(), l.slot.data(), l.slot.size());
     return sdo::abort_code::none;
   }
 

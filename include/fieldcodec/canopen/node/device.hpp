@@ -55,6 +55,11 @@
 // defaults (canopen::dictionary_store::restore_defaults), forgets errors and history, reloads every
 // service and sends the boot-up message; reset node also restores 2000h–FFFFh first. Both are
 // reported as events so that the application re-applies what it keeps elsewhere.
+//
+// The application's hooks on single objects (capacity::hooks, add_hook before start;
+// node/object_hooks.hpp): a read hook computes a value at each SDO upload and TPDO sampling, a
+// write hook has the last word on an SDO or RPDO write after every check above, and a DOMAIN
+// can be streamed to and from the application in parts (the store never holds it).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -254,7 +259,7 @@ class device {
       "an LSS slave's store resolves node-ID-relative defaults for a new node-ID: set_node()");
   static_assert(
       C.hooks == 0U ||
-          requires(const Store &s, od::address a, std::span<const std::uint8_t> v) {
+          requires(Store & s, od::address a, std::span<const std::uint8_t> v) {
             { s.check(a, v) } -> std::same_as<abort_code>;
           },
       "a device with hooks asks the store's checks before a write hook: check()");
