@@ -204,14 +204,12 @@ enum class signedness : std::uint8_t {
 }
 
 namespace detail {
-template <class T>
-concept integer = std::integral<T> && !std::same_as<T, bool>;
 /// A scoped enum over an integer type (ds402::mode, xenax::mode, …): written as its value.
 template <class T>
 concept scoped_enum = std::is_enum_v<T> && !std::is_convertible_v<T, std::underlying_type_t<T>> &&
-                      integer<std::underlying_type_t<T>>;
+                      wire_integer<std::underlying_type_t<T>>;
 template <class T>
-concept pdo_value = integer<T> || scoped_enum<T>;
+concept pdo_value = wire_integer<T> || scoped_enum<T>;
 template <pdo_value T>
 [[nodiscard]] constexpr auto as_integer(T v) noexcept {
   if constexpr (scoped_enum<T>) {
@@ -223,7 +221,7 @@ template <pdo_value T>
 
 /// The `length` low bits that carry `v`. Errors: bad_length, overflow (v outside the field:
 /// signed range for signed_, unsigned range for unsigned_, either for unknown).
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr result<std::uint64_t> field_bits(T v, std::size_t length,
                                                          signedness s) noexcept {
   if (length < 1U || length > 64U) return errc::bad_length;
@@ -244,7 +242,7 @@ template <integer T>
 
 /// `raw` (the field's `length` low bits) as T, with the field's signedness.
 /// Errors: overflow (the value does not fit T).
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr result<T> field_value(std::uint64_t raw, std::size_t length,
                                               signedness s) noexcept {
   if (s == signedness::signed_) {
@@ -262,14 +260,14 @@ template <integer T>
   return static_cast<T>(raw);
 }
 
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr status pack_value(std::span<std::uint8_t> pdo, std::size_t offset,
                                           std::size_t length, signedness s, T v) noexcept {
   FIELDCODEC_TRY(const std::uint64_t bits, field_bits(v, length, s));
   return pack(pdo, offset, length, bits);
 }
 
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr result<T> unpack_value(std::span<const std::uint8_t> pdo,
                                                std::size_t offset, std::size_t length,
                                                signedness s) noexcept {
@@ -469,7 +467,7 @@ namespace detail {
 /// as pack leaves them). False — nothing written — when an entry has length 0, the mapping is
 /// longer than 64 bits or the buffer shorter than it, or a value does not fit: the general
 /// loop then gives the error, and writes what it wrote before.
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr bool pack_word(std::span<const mapping_entry> entries,
                                        std::span<const T> values, std::span<std::uint8_t> pdo,
                                        std::size_t &bits) noexcept {
@@ -507,7 +505,7 @@ template <integer T>
   return true;
 }
 
-template <integer T>
+template <wire_integer T>
 [[nodiscard]] constexpr result<std::size_t> pack_raw(std::span<const mapping_entry> entries,
                                                      std::span<const T> values,
                                                      std::span<std::uint8_t> pdo) noexcept {
@@ -588,7 +586,7 @@ public:
 
   /// The value of entry i. Errors: invalid_argument (no entry i), truncated, overflow (does not
   /// fit T).
-  template <detail::integer T = std::int64_t>
+  template <wire_integer T = std::int64_t>
   [[nodiscard]] constexpr result<T> get(std::span<const std::uint8_t> pdo,
                                         std::size_t i) const noexcept {
     if (i >= count_) return errc::invalid_argument;
@@ -816,7 +814,7 @@ struct static_mapping {
   }
   /// The value of entry i with the object's signedness (raw bits when unknown).
   /// Errors: invalid_argument, truncated, overflow (does not fit T).
-  template <detail::integer T = std::int64_t>
+  template <wire_integer T = std::int64_t>
   [[nodiscard]] constexpr result<T> get(std::span<const std::uint8_t> pdo,
                                         std::size_t i) const noexcept {
     if (i >= N) return errc::invalid_argument;
