@@ -17,6 +17,7 @@
 #include <fieldcodec/host/candump.hpp>
 #include <fieldcodec/host/network.hpp>
 #include <fieldcodec/host/pacontrol_link.hpp>
+#include <fieldcodec/host/parameter_file.hpp>
 #include <fieldcodec/host/sdo.hpp>
 #include <fieldcodec/host/slcan.hpp>
 #include <fieldcodec/host/socketcan_bus.hpp>
@@ -34,6 +35,7 @@
 #include <istream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -234,8 +236,11 @@ Standard output: one line per value set or asked for (as 'sdo read' prints it),
 
 options:
   --duration S        stop after S seconds
+  --storage FILE      1010h "save" / 1011h "load" keep the node's parameters in
+                      FILE; its values are set at start and after every reset
 exit status: 0, 2 usage error or a refused input line (the node keeps
-running), 3 the interface or port failed, 5 the dictionary could not be read.
+running), 3 the interface or port failed or FILE of --storage is malformed,
+5 the dictionary could not be read.
 )";
 
 constexpr const char *pacontrol_send_help =
@@ -1055,7 +1060,8 @@ constexpr canopen::node::capacity serve_capacity{.rpdos = 32,
                                                  .error_history = 16,
                                                  .emcy_queue = 8,
                                                  .error_classes = 8,
-                                                 .sync_producer = true};
+                                                 .sync_producer = true,
+                                                 .storage = true};
 
 /// The network's writes the store took (its write hook), for `written:` lines.
 struct write_log {
@@ -1109,8 +1115,8 @@ private:
 int cmd_serve(const std::vector<std::string> &args, context c) {
   options o;
   std::string error;
-  if (!parse_options(args, 1, join({"--dict", "--duration"}, transport_values), transport_flags, o,
-                     error)) {
+  if (!parse_options(args, 1, join({"--dict", "--duration", "--storage"}, transport_values),
+                     transport_flags, o, error)) {
     return c.usage(error);
   }
   if (o.has("--help")) {
@@ -1130,6 +1136,7 @@ int cmd_serve(const std::vector<std::string> &args, context c) {
       (!parse_uint(o.get("--duration"), 1U << 30U, duration) || duration == 0U)) {
     return c.usage("bad --duration " + o.get("--duration") + " (1..2^30 seconds)");
   }
+  if (o.values.count("--storage") > 1U) return c.usage("--storage given twice");
   const std::string file = o.get("--dict");
   auto loaded = node_dictionary::load(file, error);
   if (!loaded) return c.fail(exit_dictionary, error);
@@ -1150,11 +1157,27 @@ int cmd_serve(const std::vector<std::string> &args, context c) {
     c.err << "fieldcodec: serve: " << file
           << ": a default text is longer than its object's size (cut)\n";
   }
+  auto dev = std::make_unique<canopen::node::device<store_t, serve_capacity>>(store, node);
+  // --storage: the saved values over the defaults, now and after every reset
+  std::optional<host::parameter_file> saved;
+  auto put_back = [&](std::uint8_t group) {
+    auto r = saved->apply(*dev, group);
+    if (!r)
+      c.err << "fieldcodec: serve: saved values not set (the defaults stay):\n"
+            << r.error() << "\n";
+    return r;
+  };
+  if (o.given("--storage")) {
+    saved.emplace(o.get("--storage"), dict, *dev);
+    if (auto r = saved->read(); !r) return c.fail(exit_io, r.error());
+    dev->set_storage(saved->hook());
+    if (auto r = put_back(canopen::node::parameter_group::all)) {
+      c.out << "storage: " << r.value() << " saved values set from " << saved->path() << "\n";
+    }
+  }
   int code = exit_ok;
   auto bus = open_bus(o, c, code);
   if (!bus) return code;
-
-  auto dev = std::make_unique<canopen::node::device<store_t, serve_capacity>>(store, node);
   const device_family family = values.family();
   value_context ctx;
   auto line_of = [&](od::address a, std::span<const std::uint8_t> bytes) {
@@ -1169,6 +1192,12 @@ int cmd_serve(const std::vector<std::string> &args, context c) {
     for (const auto &e : dev->events()) {
       if (e.what == canopen::node::event::kind::nmt_state) {
         c.out << "NMT: " << canopen::nmt::to_string(e.state) << "\n";
+      }
+      // after a reset the node holds the defaults of the area it reset: the saved ones again
+      if (saved && e.what == canopen::node::event::kind::reset_application) {
+        (void)put_back(canopen::node::parameter_group::all);
+      } else if (saved && e.what == canopen::node::event::kind::reset_communication) {
+        (void)put_back(canopen::node::parameter_group::communication);
       }
     }
     c.out.flush();

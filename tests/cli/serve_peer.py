@@ -54,6 +54,30 @@ def serve_checks(node):
     say("limit", node.sdo["Current Limit"].raw)
 
 
+def storage_checks(node):
+    """`serve --storage FILE`: 1010h "save", a reset puts the saved values back, 1011h "load"."""
+    node.nmt.wait_for_bootup(15)
+    say("boot-up")
+    node.sdo["Current Limit"].raw = 1999
+    node.sdo["Label"].raw = "stored"
+    say("capability", node.sdo.upload(0x1010, 1).hex())
+    node.store(1)  # 1010h sub 1 = "save"
+    say("stored")
+    node.sdo["Current Limit"].raw = 1200  # not saved
+    for step in ("reset", "load", "reset"):
+        if step == "load":
+            node.restore(1)  # 1011h sub 1 = "load": the current values stay
+        else:
+            node.nmt.state = "RESET"
+            time.sleep(0.6)  # the boot-up and the saved values put back
+        say(step, node.sdo["Current Limit"].raw, node.sdo["Label"].raw)
+    try:
+        node.sdo.download(0x1010, 1, b"evas")
+        say("accepted evas")
+    except canopen.SdoAbortedError as e:
+        say("abort evas", "0x%08X" % e.code)
+
+
 def example_checks(node):
     node.nmt.wait_for_bootup(15)
     say("boot-up")
@@ -81,7 +105,7 @@ def main():
     network.connect()
     say("ready")
     try:
-        (example_checks if mode == "example" else serve_checks)(node)
+        {"example": example_checks, "storage": storage_checks}.get(mode, serve_checks)(node)
     except Exception as e:  # the test shows what failed
         say("error", type(e).__name__, e)
     say("done")

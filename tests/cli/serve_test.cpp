@@ -14,7 +14,9 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
 #include <future>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -101,6 +103,69 @@ TEST_CASE("cli serve: python canopen's RemoteNode reads, writes and commands the
   };
   CHECK(out == expected_out);
   t::check_golden("serve.txt", r.out); // quoted by docs/cli.md
+}
+
+TEST_CASE("cli serve --storage: python canopen's store() and restore() keep values over resets") {
+  if (!t::python_ready()) {
+    FIELDCODEC_SKIP_TEST("python", "python-canopen peer ("
+                                       << t::peer_dir
+                                       << ") or /usr/bin/python3 with python-can and pyserial "
+                                          "not available (Debian: python3-can python3-serial)");
+  }
+  const std::string file = "serve_storage_test.par";
+  std::remove(file.c_str());
+  t::pty_pair python_side, serve_side;
+  t::pump joined{python_side, serve_side};
+  t::python_peer peer{python_side.path(), "cli/serve_node.eds", "cli/serve_peer.py", "storage"};
+  REQUIRE(python_side.ok());
+  REQUIRE(serve_side.ok());
+  REQUIRE(peer.line(20000) == "ready");
+  auto served = std::async(std::launch::async, [&] {
+    return t::run_cli({"serve", "5", "--dict", "cli/serve_node.eds", "--slcan", serve_side.path(),
+                       "--slcan-no-answers", "--duration", "5", "--storage", file});
+  });
+  std::vector<std::string> seen;
+  for (std::string l; (l = peer.line(15000)) != "done" && !l.empty();) seen.push_back(l);
+  const std::vector<std::string> expected = {
+      "boot-up",
+      "capability 01000000", // 1010h sub 1: saves on command
+      "stored",
+      "reset 1999 stored", // the saved values, not the defaults nor the unsaved 1200
+      "load 1999 stored",  // "load" changes no current value
+      "reset 1500 axis",   // the defaults after the next reset
+      "abort evas 0x08000020",
+  };
+  CHECK(seen == expected);
+  const auto r = served.get();
+  CHECK(r.code == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out.rfind("storage: 0 saved values set from serve_storage_test.par\n", 0) == 0);
+  // "load" took every line out again
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text ==
+        "# fieldcodec parameter file: INDEX SUB BYTES (hex; bytes as an SDO carries them)\n");
+  // a malformed file: refused before the node starts
+  t::write_text(file, "2000 00 CF0\n");
+  auto bad = t::run_cli(
+      {"serve", "5", "--dict", "cli/serve_node.eds", "--slcan", "/dev/null", "--storage", file});
+  CHECK(bad.code == 3);
+  CHECK(bad.err == "fieldcodec: serve: serve_storage_test.par:1: odd number of hex digits in the "
+                   "value\n");
+  // a value the dictionary refuses: said, and the default stays
+  t::write_text(file, "2000 00 D107\n1017 00 C800\n");
+  auto pty = t::pty_pair{};
+  bad = t::run_cli({"serve", "5", "--dict", "cli/serve_node.eds", "--slcan", pty.path(),
+                    "--slcan-no-answers", "--duration", "1", "--storage", file});
+  CHECK(bad.code == 0);
+  CHECK(bad.err ==
+        "fieldcodec: serve: saved values not set (the defaults stay):\n"
+        "serve_storage_test.par: 2000 00: value too high (download only) (0x06090031)\n");
+  CHECK(bad.out.rfind("NMT: pre-operational\n", 0) == 0);
+  bad = t::run_cli({"serve", "5", "--dict", "cli/serve_node.eds", "--slcan", "/dev/null",
+                    "--storage", file, "--storage", file});
+  CHECK(bad.code == 2);
+  std::remove(file.c_str());
 }
 
 TEST_CASE("cli serve: bad command lines, unreadable dictionaries, a port that cannot be opened") {
