@@ -6,8 +6,10 @@
 //
 // Byte 0: bit 0 the dictionary (the XENAX CAN EDS, with limits; the I/O node of the Cortex-M
 // example: heartbeat consumers, error history, an SDO client, 4 + 4 PDOs), bit 1 self start,
-// bit 2 block transfer on the SDO server. Byte 1: the node-ID (1..127). Then operations (see
-// `run`), each a byte and its arguments.
+// bit 2 block transfer on the SDO server, bit 3 (I/O node) the application's hooks
+// (capacity::hooks): 6401h computed at each read and TPDO (refused at every 7th), writes to
+// 6411h and 6200h checked by a hook that refuses some. Byte 1: the node-ID (1..127). Then
+// operations (see `run`), each a byte and its arguments.
 //
 // Invariants, checked after every call:
 // * every frame the node sends is on a COB-ID it owns at that moment (before or after the call:
@@ -19,7 +21,9 @@
 // * the NMT state is one of the four (initialising only in the boot-up message), and
 //   pre-operational, operational or stopped once started;
 // * the step's deadline is never in the past (at or after `now`, modulo 2^32);
-// * nothing was lost (frames or events beyond the lists' sizes: a sizing error).
+// * nothing was lost (frames or events beyond the lists' sizes: a sizing error);
+// * a write hook sees only values that passed the node's checks (their type and limits), a
+//   read hook a span of the object's width.
 #include "check.hpp"
 #include "input.hpp"
 
@@ -63,6 +67,31 @@ constexpr std::array<od::address, 34> comm_objects{{
     {0x1800, 2}, {0x1800, 3}, {0x1800, 5}, {0x1800, 6}, {0x1A00, 0}, {0x1A00, 1},
 }};
 
+/// The application's hooks of the I/O node (byte 0 bit 3).
+struct fuzz_app {
+  od::dictionary dict;
+  std::uint8_t node = 1;
+  std::uint16_t reads = 0;
+  static sdo::abort_code read(void *c, od::address a, std::span<std::uint8_t> v) noexcept {
+    auto &s = *static_cast<fuzz_app *>(c);
+    const od::entry *e = s.dict.find(a);
+    FUZZ_CHECK(e != nullptr && v.size() == od::fixed_size(e->type));
+    if (++s.reads % 7U == 0U) return sdo::abort_code::no_data;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      v[i] = static_cast<std::uint8_t>((s.reads * 0x9E37U) >> (4U * i));
+    }
+    return sdo::abort_code::none;
+  }
+  static sdo::abort_code write(void *c, od::address a, std::span<const std::uint8_t> v) noexcept {
+    auto &s = *static_cast<fuzz_app *>(c);
+    const od::entry *e = s.dict.find(a);
+    FUZZ_CHECK(e != nullptr);
+    FUZZ_CHECK(od::decode(*e, v, fieldcodec::byte_order::little, od::limits::check, s.node));
+    return !v.empty() && v[0] == 0xFFU ? sdo::abort_code::cannot_store_device_state
+                                       : sdo::abort_code::none;
+  }
+};
+
 template <class Device>
 class rig {
 public:
@@ -77,6 +106,24 @@ public:
           (e.index >= 0x1280U && e.index <= 0x12FFU && e.sub == 1U) ||
           (e.index >= 0x1800U && e.index <= 0x19FFU && e.sub == 1U)) {
         cob_id_entries_.push_back({e.index, e.sub});
+      }
+    }
+    if constexpr (Device::capacities().hooks > 0U) {
+      app_.dict = dict;
+      app_.node = n;
+      node::object_hook computed;
+      computed.first = {0x6401, 1};
+      computed.last = {0x6401, 0xFF};
+      computed.context = &app_;
+      computed.read = &fuzz_app::read;
+      FUZZ_CHECK(dev_.add_hook(computed));
+      node::object_hook checked = computed;
+      checked.read = nullptr;
+      checked.write = &fuzz_app::write;
+      for (const std::uint16_t index : {std::uint16_t{0x6200}, std::uint16_t{0x6411}}) {
+        checked.first = {index, 0};
+        checked.last = {index, 0xFF};
+        FUZZ_CHECK(dev_.add_hook(checked));
       }
     }
   }
@@ -275,6 +322,7 @@ private:
   store_type store_;
   std::uint8_t node_;
   Device dev_;
+  fuzz_app app_{};
   std::uint32_t now_ = 1000;
 };
 
@@ -300,8 +348,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     static constexpr auto layout = co::make_layout<io::entries.size()>(dict);
     static std::array<std::uint8_t, layout.storage_size()> storage;
     storage.fill(0);
-    rig<node::device<store_type, node::capacity_for(dict)>> r(dict, layout, storage, n, o);
-    r.run(in);
+    if ((data[0] & 8U) != 0U) {
+      rig<node::device<store_type, node::capacity_for(dict, {.hooks = 3})>> r(dict, layout, storage,
+                                                                              n, o);
+      r.run(in);
+    } else {
+      rig<node::device<store_type, node::capacity_for(dict)>> r(dict, layout, storage, n, o);
+      r.run(in);
+    }
   }
   return 0;
 }

@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -107,11 +108,17 @@ public:
 
   [[nodiscard]] const sdo_error &last_error() const noexcept { return error_; }
   [[nodiscard]] std::uint8_t node() const noexcept { return node_; }
+  /// Show every frame received while a transfer waits to `f` first (with the session's clock),
+  /// so that what else the bus carries (a node's EMCY, heartbeat, PDOs: host::remote_node) is
+  /// not lost while the session blocks. Empty: those frames are ignored.
+  void observe(std::function<void(const canopen::can_frame &, std::uint32_t)> f) {
+    observer_ = std::move(f);
+  }
+  /// The session's milliseconds (the `now` its machine and observer are given).
+  [[nodiscard]] std::uint32_t now() const noexcept { return clock_.now(); }
   [[nodiscard]] const sdo_options &options() const noexcept { return options_; }
 
 private:
-  std::uint32_t now() const noexcept { return clock_.now(); }
-
   bool send_all(const canopen::sdo::step &s) {
     for (const canopen::can_frame &f : s.send) {
       if (!bus_->send(f)) return false;
@@ -135,6 +142,7 @@ private:
       }
       auto r = bus_->receive(std::chrono::milliseconds(wait));
       if (r) {
+        if (observer_) observer_(r.value().frame, now());
         s = client_.on_frame(r.value().frame, now());
         continue;
       }
@@ -191,6 +199,7 @@ private:
   std::vector<std::uint8_t> buffer_;
   sdo_error error_{};
   steady_ms clock_;
+  std::function<void(const canopen::can_frame &, std::uint32_t)> observer_{};
 };
 
 /// Read `a` of `node`: its bytes, or why not (sdo_error: code, abort code, address, one line).
