@@ -13,7 +13,7 @@ no generator), after its other checks.
 tests/run_test.sh turns 77 into a failure under CI=true.
 
 usage: interop_peer.py PART --bridge EXE --root REPO [--eds CORPUS_EDS] --dictionaries D...
-  PART: sdo_server | sdo_client | node | pdo | errors | lss
+  PART: sdo_server | sdo_client | node | pdo | errors | lss | hooks
 """
 import argparse
 import os
@@ -188,11 +188,15 @@ def variables(od):
 
 # --- fieldcodec SDO server <- python SDO client -------------------------------------------------
 
-def expect_abort(step, code, fn):
+def expect_abort(step, code, fn, first=False):
+    """fn() raises python's SdoAbortedError with `code`; `first`: the first one raised while
+    fn() ran (an abort raised while handling another has that one as its context)."""
     import canopen
     try:
         fn()
     except canopen.SdoAbortedError as e:
+        while first and isinstance(e.__context__, canopen.SdoAbortedError):
+            e = e.__context__
         check(e.code == code, step, f"abort 0x{e.code:08X}, expected 0x{code:08X}")
         return
     raise Failed(f"{step}: no abort, expected 0x{code:08X}")
@@ -1093,8 +1097,95 @@ def part_lss(args):
         s.close()
 
 
+# --- the application's hooks (node::object_hook) <- python SDO client ---------------------------
+
+def hooks_state(b, step):
+    """The bridge's `!last hooks`: reads, written values, contents length, completed, ended."""
+    a = b.command("!last hooks", step)
+    check(a.startswith("ok "), step, f"!last hooks: {a}")
+    reads, written, size, completed, ended = a[3:].split()
+    return (int(reads), [] if written == "-" else [int(x) for x in written.split(",")],
+            int(size), int(completed), [] if ended == "-" else [int(x, 16) for x in ended.split(",")])
+
+
+def part_hooks(args):
+    """python's SdoClient against the node's per-object hooks (docs/canopen.md, "Application
+    hooks"): a value computed at each read, a write the application refuses with its own abort
+    code, a DOMAIN of a few kB streamed to and from the application in segments and blocks."""
+    if "corpus" not in args.dictionaries:
+        SKIPPED_CHECKS.append(f"hooks: the hooks are on the corpus dictionary ({NO_CORPUS})")
+        return
+    s = Setup(args, "corpus", 7, start=False)
+    try:
+        b = s.bridge
+        check(b.command("!hooks", "hooks") == "ok", "hooks", "the bridge could not add its hooks")
+        check(b.command("!start", "start") == "ok", "start", "the node did not boot")
+        sdo = s.network.add_node(7, args.eds).sdo
+
+        first = int.from_bytes(sdo.upload(0x2106, 0), "little")
+        second = int.from_bytes(sdo.upload(0x2106, 0), "little")
+        check((first, second) == (0x1000, 0x1001), "hooks read",
+              f"2106h read {first:#x}, {second:#x}; the hook computes 0x1000, 0x1001")
+        check(hooks_state(b, "hooks read")[0] == 2, "hooks read", "the read hook ran other than twice")
+        ok("hooks read", "2106h computed by the read hook at each upload (0x1000, then 0x1001)")
+
+        sdo.download(0x2120, 6, (40).to_bytes(2, "little"))
+        expect_abort("hooks write", 0x08000022,
+                     lambda: sdo.download(0x2120, 6, (41).to_bytes(2, "little")))
+        check(int.from_bytes(sdo.upload(0x2120, 6), "little") == 40, "hooks write",
+              "a value the hook refused was stored")
+        check(hooks_state(b, "hooks write")[1] == [40], "hooks write",
+              "the hook did not see exactly the accepted value")
+        ok("hooks write", "2120h:06 = 40 accepted, 41 refused by the write hook with 08000022, "
+           "the value stays 40")
+
+        seg = bytes((i * 13 + 5) & 0xFF for i in range(3000))
+        sdo.download(0x2122, 0, seg)
+        check(hooks_state(b, "hooks stream")[2:4] == (3000, 1), "hooks stream",
+              "the application did not get the 3000 bytes as one complete download")
+        check(sdo.upload(0x2122, 0) == seg, "hooks stream", "segmented upload differs")
+        blk = bytes((i * 7 + 1) & 0xFF for i in range(5000))
+        for crc in (True, False):
+            with sdo.open(0x2122, 0, "wb", size=len(blk), block_transfer=True,
+                          request_crc_support=crc) as f:
+                f.write(blk)
+            with sdo.open(0x2122, 0, "rb", block_transfer=True, request_crc_support=crc) as f:
+                back = f.read()
+            check(back == blk, "hooks stream", f"block upload (crc={crc}) differs")
+        check(hooks_state(b, "hooks stream")[2:] == (5000, 3, []), "hooks stream",
+              "the application's contents after the block downloads")
+        ok("hooks stream", "2122h streamed: 3000 bytes segmented, 5000 bytes in blocks (with and "
+           "without CRC), each way, through the application's functions")
+
+        b.command("!hooks-stop 1000", "hooks abort")
+        # python's download closes its stream after the abort, which sends the last segment:
+        # the node, idle by then, answers 05040001, and python raises that one with ours as
+        # its context
+        expect_abort("hooks abort", 0x08000020, lambda: sdo.download(0x2122, 0, seg), first=True)
+        expect_abort("hooks abort", 0x08000020, lambda: sdo.upload(0x2122, 0))
+        b.command("!hooks-stop -", "hooks abort")
+        expect_abort("hooks abort", 0x06070012, lambda: sdo.download(0x2122, 0, bytes(8193)))
+        ended = hooks_state(b, "hooks abort")[4]
+        check(ended == [0x08000020, 0x08000020, 0x06070012], "hooks abort",
+              f"ended {[hex(x) for x in ended]}")
+        with sdo.open(0x2122, 0, "rb", buffering=0) as f:  # python stops reading and aborts
+            f.read(7)
+            f.read(7)
+            sdo.abort(0x08000000)
+        wait_until(lambda: len(hooks_state(b, "hooks abort")[4]) == 4, "hooks abort",
+                   "the application did not hear of python's abort")
+        check(hooks_state(b, "hooks abort")[4][3] == 0x08000000, "hooks abort",
+              "python's abort code did not reach the application")
+        check(sdo.upload(0x2122, 0) == blk, "hooks abort", "the contents after the aborts")
+        ok("hooks abort", "the application stops a download and an upload (08000020 at python), "
+           "8193 bytes refused (06070012: 2122h holds 8192), python's own abort reaches `ended`")
+    finally:
+        s.close()
+
+
 PARTS = {"sdo_server": part_sdo_server, "sdo_client": part_sdo_client, "node": part_node,
-         "pdo": part_pdo, "errors": part_errors, "lss": part_lss}
+         "pdo": part_pdo, "errors": part_errors, "lss": part_lss,
+         "hooks": part_hooks}
 
 
 def main():

@@ -388,6 +388,16 @@ public:
     if (l.code != sdo::abort_code::none) return errc::unknown_object;
     return current(l);
   }
+  /// Would an SDO write of the whole `value` to `a` be stored? The checks of write — access
+  /// type, length, type, limits — without the write hook; nothing is stored. Returns none or the
+  /// abort code the write would get (node::device asks it before an object's own write hook).
+  [[nodiscard]] constexpr sdo::abort_code check(od::address a,
+                                                std::span<const std::uint8_t> value) noexcept {
+    const located l = locate(a);
+    if (l.code != sdo::abort_code::none) return l.code;
+    if ((l.flags & slot_flag::writable) == 0U) return sdo::abort_code::write_read_only;
+    return store<false>(l, value, false);
+  }
   /// The application sets a value (also of read-only objects): the same checks as an SDO write
   /// except access type, no write hook. Returns none or the abort code an SDO write would get.
   [[nodiscard]] constexpr sdo::abort_code set(od::address a,
@@ -623,7 +633,9 @@ private:
     return std::span<const std::uint8_t>(l.slot).subspan(length_prefix, n);
   }
 
-  /// Check a complete value, ask the hook (SDO/RPDO writes), then store it.
+  /// Check a complete value, ask the hook (SDO/RPDO writes), then store it (`Commit`; else
+  /// only the checks: check()).
+  template <bool Commit = true>
   [[nodiscard]] constexpr sdo::abort_code
   store(const located &l, std::span<const std::uint8_t> data, bool ask_hook) noexcept {
     const od::entry &e = *l.e;
@@ -635,6 +647,7 @@ private:
         return v.error() == errc::too_long ? sdo::abort_code::length_too_high
                                            : sdo::abort_code::invalid_value;
       }
+      if constexpr (!Commit) return sdo::abort_code::none;
       if (ask_hook) {
         if (const auto c = on_write_(e, v.value()); c != sdo::abort_code::none) return c;
       }
@@ -658,6 +671,7 @@ private:
       case od::value_check::invalid: return sdo::abort_code::invalid_value;
       }
     }
+    if constexpr (!Commit) return sdo::abort_code::none;
     if (ask_hook) {
       if (const auto c = on_write_(e, data); c != sdo::abort_code::none) return c;
     }

@@ -24,6 +24,15 @@
 // buffer / 7) segments, and sends sub-blocks of the size the client asks for when that many
 // segments fit its buffer (otherwise it aborts with 0x05040002). It answers a block upload of
 // an object of at most the client's protocol switch threshold with a normal upload.
+//
+// A store may also want to know when a transfer of one of its objects ends unfinished (a store
+// that streams an object to or from elsewhere, node::device's hooks), with the optional member
+//
+//   void abandoned(od::address a, sdo::abort_code why);
+//
+// called once for such a transfer: aborted by either side (`why`: the code sent or received,
+// also when the store itself refused a part), timed out, or ended silently (`why` none: a new
+// request on the channel, set_connection).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -176,6 +185,7 @@ public:
   /// Follow a new SDO server parameter (1200h sub 1/2); ends a running transfer silently.
   constexpr void set_connection(channel ch) noexcept {
     ch_ = ch;
+    if (core_.busy()) abandon(abort_code::none);
     core_.stop();
     phase_ = phase::idle;
   }
@@ -208,7 +218,10 @@ private:
     case message_type::block_download_initiate: return block_download_initiate(m, now);
     case message_type::block_upload_initiate: return block_upload_initiate(m, now);
     case message_type::abort:
-      if (core_.busy()) core_.fail(errc::aborted, m.abort);
+      if (core_.busy()) {
+        abandon(m.abort);
+        core_.fail(errc::aborted, m.abort);
+      }
       phase_ = phase::idle;
       return core_.make();
     default: break;
@@ -245,6 +258,7 @@ private:
   /// Fail the running transfer (if any) with `e` and answer with an abort about `a`.
   [[nodiscard]] constexpr step reply_abort(od::address a, abort_code code, errc e) noexcept {
     if (core_.busy()) {
+      abandon(code);
       core_.fail(e, code);
     } else {
       core_.refuse(e, a);
@@ -279,10 +293,20 @@ private:
     return send(p);
   }
   constexpr void start(od::address a, std::uint32_t now, phase ph) noexcept {
+    if (core_.busy()) abandon(abort_code::none); // a new request ends the running transfer
     core_.begin(a, now);
     phase_ = ph;
     used_ = 0;
     flushed_ = 0;
+  }
+
+  /// Tell the store that the running transfer ends unfinished (its optional abandoned()).
+  constexpr void abandon(abort_code why) noexcept {
+    if constexpr (requires(Store & s, od::address a) { s.abandoned(a, why); }) {
+      store_->abandoned(core_.address(), why);
+    } else {
+      (void)why;
+    }
   }
 
   // ----- the download side: the buffer fills, full buffers go to the store ----------------

@@ -34,6 +34,16 @@
 //                                                 (the last activate bit timing: INDEX/DELAY,
 //                                                 or -)
 //   !lss-store ok|fail                            the store hook answers 0, or 2 (media error)
+//   !hooks                                        before !start (corpus): the application's
+//                                                 hooks (node::object_hook): 2106h computed at
+//                                                 each read (1000h, 1001h, …), 2120h:06 refuses
+//                                                 odd values (0800 0022h), 2122h streamed to
+//                                                 and from the bridge's own bytes
+//   !hooks-stop OFFSET                            the stream refuses a part at or past OFFSET
+//                                                 (0800 0020h; "-": never)
+//   !last hooks                                   READS WRITTEN(a,b,…|-) RECEIVED(bytes of the
+//                                                 last complete download) COMPLETED ENDED
+//                                                 (the `ended` codes, hex, or -)
 //   !quit
 // Standard output: frames to the bus (ID#DATA) and one answer per command line:
 //   = ok HEX            = error ERRC ABORT(8 hex digits)
@@ -224,6 +234,64 @@ struct received_log {
   std::optional<co::emcy::received> emcy;
 };
 
+/// The application behind the hooks of `!hooks` (node::object_hook): a computed counter, a
+/// check of writes, and a DOMAIN streamed to and from its own bytes (the node keeps none).
+struct hook_app {
+  std::uint32_t reads = 0;
+  std::vector<std::uint16_t> written;
+  std::vector<std::uint8_t> contents; ///< what uploads serve: the last complete download
+  std::vector<std::uint8_t> incoming;
+  std::size_t completed = 0;
+  std::size_t stop_at = ~std::size_t{0};
+  std::vector<sdo::abort_code> ended;
+
+  static sdo::abort_code read(void *c, od::address, std::span<std::uint8_t> v) noexcept {
+    const std::uint32_t x = 0x1000U + static_cast<hook_app *>(c)->reads++;
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::uint8_t>(x >> (8U * i));
+    return sdo::abort_code::none;
+  }
+  static sdo::abort_code write(void *c, od::address, std::span<const std::uint8_t> v) noexcept {
+    const auto x = static_cast<std::uint16_t>(v[0] | (v[1] << 8U)); // 2120h:06 is UNSIGNED16
+    if ((x & 1U) != 0U) return sdo::abort_code::cannot_store_device_state;
+    static_cast<hook_app *>(c)->written.push_back(x);
+    return sdo::abort_code::none;
+  }
+  static sdo::abort_code upload(void *c, od::address, std::size_t offset,
+                                std::span<std::uint8_t> out, std::size_t &total) noexcept {
+    const auto &s = *static_cast<hook_app *>(c);
+    if (offset >= s.stop_at) return sdo::abort_code::cannot_store;
+    total = s.contents.size();
+    for (std::size_t i = 0; i < out.size() && offset + i < total; ++i) {
+      out[i] = s.contents[offset + i];
+    }
+    return sdo::abort_code::none;
+  }
+  static sdo::abort_code download(void *c, od::address, std::size_t offset,
+                                  std::span<const std::uint8_t> part, bool last) noexcept {
+    auto &s = *static_cast<hook_app *>(c);
+    if (offset + part.size() > s.stop_at) return sdo::abort_code::cannot_store;
+    if (offset == 0U) s.incoming.clear();
+    s.incoming.insert(s.incoming.end(), part.begin(), part.end());
+    if (last) {
+      s.contents = s.incoming;
+      ++s.completed;
+    }
+    return sdo::abort_code::none;
+  }
+  static void end(void *c, od::address, sdo::abort_code why) noexcept {
+    static_cast<hook_app *>(c)->ended.push_back(why);
+  }
+  [[nodiscard]] std::string text() const {
+    std::string w;
+    for (const std::uint16_t x : written) w += (w.empty() ? "" : ",") + std::to_string(x);
+    std::string e;
+    for (const auto c : ended) e += (e.empty() ? "" : ",") + abort_hex(c);
+    return "= ok " + std::to_string(reads) + " " + (w.empty() ? "-" : w) + " " +
+           std::to_string(contents.size()) + " " + std::to_string(completed) + " " +
+           (e.empty() ? "-" : e);
+  }
+};
+
 /// The library's node (canopen/node/device.hpp) behind the bridge's commands. What the node
 /// does not consume (TIME, other nodes' EMCY) is decoded here for `!last`.
 /// What the LSS slave's store hook got (`!lss`), and how it answers (`!lss-store`).
@@ -301,6 +369,28 @@ public:
     return buf;
   }
   void lss_store_answer(std::uint8_t code) { storage_.answer = code; }
+  /// `!hooks`: the application's hooks on the corpus dictionary (before start).
+  [[nodiscard]] std::optional<fieldcodec::errc> add_hooks() {
+    co::node::object_hook counter;
+    counter.first = counter.last = {0x2106, 0};
+    counter.context = &app_;
+    counter.read = &hook_app::read;
+    co::node::object_hook even;
+    even.first = even.last = {0x2120, 6};
+    even.context = &app_;
+    even.write = &hook_app::write;
+    co::node::object_hook domain;
+    domain.first = domain.last = {0x2122, 0};
+    domain.context = &app_;
+    domain.upload = &hook_app::upload;
+    domain.download = &hook_app::download;
+    domain.ended = &hook_app::end;
+    for (const auto &h : {counter, even, domain}) {
+      if (const auto st = dev_.add_hook(h); !st) return st.error();
+    }
+    return std::nullopt;
+  }
+  [[nodiscard]] hook_app &app() { return app_; }
   void poll(std::uint32_t now) { transmit_all(dev_.poll(now).send); }
 
   [[nodiscard]] sdo::abort_code set(od::address a, std::span<const std::uint8_t> v,
@@ -402,6 +492,7 @@ private:
     }
   }
   std::uint8_t node_;
+  hook_app app_;
   lss_storage storage_; // before dev_: the device's options point at it
   co::node::device<Store, C> dev_;
   received_log log_;
@@ -522,6 +613,8 @@ int run(Store &store, std::uint8_t node) {
           put_line("= ok " + std::string(co::nmt::to_string(glue.state())));
         } else if (w[0] == "!last" && w.size() == 2U && w[1] == "node-time") {
           put_line(glue.node_time());
+        } else if (w[0] == "!last" && w.size() == 2U && w[1] == "hooks") {
+          put_line(glue.app().text());
         } else if (w[0] == "!last" && w.size() == 2U && w[1] == "storage") {
           put_line(glue.storage());
         } else if (w[0] == "!storage" && w.size() == 2U && (w[1] == "ok" || w[1] == "fail")) {
@@ -564,6 +657,15 @@ int run(Store &store, std::uint8_t node) {
           } else {
             answer_error(fieldcodec::errc::bad_state, {});
           }
+        } else if (w[0] == "!hooks" && w.size() == 1U) {
+          if (const auto e = glue.add_hooks()) {
+            answer_error(*e, {});
+          } else {
+            put_line("= ok ");
+          }
+        } else if (w[0] == "!hooks-stop" && w.size() == 2U) {
+          glue.app().stop_at = w[1] == "-" ? ~std::size_t{0} : std::stoul(w[1], nullptr, 10);
+          put_line("= ok ");
         } else if (w[0] == "!lss" && w.size() == 1U) {
           put_line(glue.lss_text());
         } else if (w[0] == "!lss-store" && w.size() == 2U) {
@@ -613,6 +715,7 @@ template <const od::dictionary &Dict>
 constexpr co::node::capacity capacity() {
   co::node::capacity c = co::node::capacity_for(Dict);
   c.lss = true; // the LSS slave (interop_peer.py lss); it answers nothing but 7E5h
+  c.hooks = 3;  // the application's hooks, added by `!hooks` only (interop_peer.py hooks)
 #ifdef FIELDCODEC_INTEROP_CRC_TABLE
   c.sdo_crc_table = true;
 #endif

@@ -55,6 +55,11 @@
 // defaults (canopen::dictionary_store::restore_defaults), forgets errors and history, reloads every
 // service and sends the boot-up message; reset node also restores 2000h–FFFFh first. Both are
 // reported as events so that the application re-applies what it keeps elsewhere.
+//
+// The application's hooks on single objects (capacity::hooks, add_hook before start;
+// node/object_hooks.hpp): a read hook computes a value at each SDO upload and TPDO sampling, a
+// write hook has the last word on an SDO or RPDO write after every check above, and a DOMAIN
+// can be streamed to and from the application in parts (the store never holds it).
 #pragma once
 
 #include <fieldcodec/canopen/can_frame.hpp>
@@ -68,6 +73,7 @@
 #include <fieldcodec/canopen/node/lists.hpp>
 #include <fieldcodec/canopen/node/lss_slave.hpp>
 #include <fieldcodec/canopen/node/nmt_slave.hpp>
+#include <fieldcodec/canopen/node/object_hooks.hpp>
 #include <fieldcodec/canopen/node/parameter_storage.hpp>
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
 #include <fieldcodec/canopen/node/sdo_channels.hpp>
@@ -139,6 +145,10 @@ struct capacity {
   /// Without it 1010h/1011h are plain objects of the store; capacity_for sets it when the
   /// dictionary has 1010h or 1011h.
   bool storage = false;
+  /// Hooks of the application on single objects or ranges (add_hook; node/object_hooks.hpp):
+  /// values computed when read, writes the application checks, streamed DOMAINs. 0: no hook
+  /// table and no hook code in the image. capacity_for keeps it from `base`.
+  std::size_t hooks = 0;
 };
 
 /// The capacity `dict` needs: its PDOs, mapping entries, 1016h and 1003h entries and SDO
@@ -247,6 +257,12 @@ class device {
             { s.set_node(n) } -> std::same_as<status>;
           },
       "an LSS slave's store resolves node-ID-relative defaults for a new node-ID: set_node()");
+  static_assert(
+      C.hooks == 0U ||
+          requires(Store & s, od::address a, std::span<const std::uint8_t> v) {
+            { s.check(a, v) } -> std::same_as<abort_code>;
+          },
+      "a device with hooks asks the store's checks before a write hook: check()");
 
 public:
   using step = canopen::step<nmt::state>;
@@ -265,6 +281,14 @@ public:
     [[nodiscard]] constexpr abort_code read(od::address a, std::size_t offset,
                                             std::span<std::uint8_t> out,
                                             std::size_t &total) const noexcept {
+      if constexpr (C.hooks > 0U) {
+        if (const object_hook *h = d_->hooks_.find(a)) {
+          if (h->streams()) return d_->stream_read(*h, a, offset, out, total);
+          if (offset == 0U) {
+            if (const abort_code r = d_->refresh(*h, a); r != abort_code::none) return r;
+          }
+        }
+      }
       const abort_code c = d_->store_->read(a, offset, out, total);
       if constexpr (C.storage) {
         // 1010h/1011h sub 1..: what the node can do, not the stored value
@@ -278,7 +302,17 @@ public:
     }
     [[nodiscard]] constexpr abort_code begin_write(od::address a,
                                                    std::optional<std::uint32_t> size) noexcept {
+      if constexpr (C.hooks > 0U) {
+        if (const object_hook *h = d_->hooks_.find(a); h != nullptr && h->streams()) {
+          return d_->stream_begin(*h, a, size);
+        }
+      }
       return d_->store_->begin_write(a, size);
+    }
+    /// A transfer of `a` ended unfinished (sdo::server): a streamed object's `ended`.
+    constexpr void abandoned(od::address a, abort_code why) noexcept requires(C.hooks > 0U) {
+      const object_hook *h = d_->hooks_.find(a);
+      if (h != nullptr && h->streams() && h->ended != nullptr) h->ended(h->context, a, why);
     }
     [[nodiscard]] constexpr abort_code write(od::address a, std::size_t offset,
                                              std::span<const std::uint8_t> part,
@@ -298,6 +332,15 @@ public:
     [[nodiscard]] constexpr abort_code
     read_at(std::size_t at, std::size_t offset, std::span<std::uint8_t> out,
             std::size_t &total) const noexcept requires canopen::positioned_store<Store> {
+      if constexpr (C.hooks > 0U) {
+        const od::address a = d_->store_->address_at(at);
+        if (const object_hook *h = d_->hooks_.find(a)) {
+          if (h->streams()) return d_->stream_read(*h, a, offset, out, total);
+          if (offset == 0U) {
+            if (const abort_code r = d_->refresh(*h, a); r != abort_code::none) return r;
+          }
+        }
+      }
       return d_->store_->read_at(at, offset, out, total);
     }
     [[nodiscard]] constexpr abort_code
@@ -317,6 +360,10 @@ public:
         requires(canopen::plain_store<Store> &&C.pdo_copies) {
       canopen::plain_slot p = d_->store_->plain_at(at);
       p.writable = false;
+      if constexpr (C.hooks > 0U) {
+        // a hooked object is read through its hook (read_at), never copied
+        if (d_->hooks_.find(d_->store_->address_at(at)) != nullptr) p = {};
+      }
       return p;
     }
 
@@ -596,6 +643,14 @@ public:
   constexpr void set_storage(storage_hook h) noexcept requires(C.storage) { storage_.set_hook(h); }
   [[nodiscard]] constexpr const parameter_storage &storage() const noexcept requires(C.storage) {
     return storage_;
+  }
+  /// Add the application's hook `h` (capacity::hooks; node/object_hooks.hpp) before start():
+  /// the PDO engine decides at start which mapped objects it copies and which it reads through
+  /// the hooks. Errors: bad_state (started), those of object_hooks::add (invalid_argument,
+  /// unknown_object, type_mismatch, too_long: capacity::hooks are added).
+  [[nodiscard]] constexpr status add_hook(const object_hook &h) noexcept requires(C.hooks > 0U) {
+    if (started_) return errc::bad_state;
+    return hooks_.add(h, store_->dictionary());
   }
   /// The LSS slave (capacity::lss): its state, pending node-ID and bit timing, LSS address.
   [[nodiscard]] constexpr const lss_slave &lss() const noexcept requires(C.lss) { return lss_; }
@@ -903,6 +958,18 @@ private:
                                                   std::span<const std::uint8_t> part, bool last,
                                                   std::size_t at = canopen::no_position) noexcept {
     const bool whole = offset == 0U && last;
+    if constexpr (C.hooks > 0U) {
+      if (const object_hook *h = hooks_.find(a)) {
+        if (h->streams()) return stream_write(*h, a, offset, part, last);
+        if (h->write != nullptr) {
+          if (!whole) return abort_code::out_of_memory; // the hook sees whole values only
+          // every check first: what the hook accepts is stored
+          if (const auto c = check(a, part); c != abort_code::none) return c;
+          if (const auto c = store_->check(a, part); c != abort_code::none) return c;
+          if (const auto c = h->write(h->context, a, part); c != abort_code::none) return c;
+        }
+      }
+    }
     if (whole) {
       if (const auto c = check(a, part); c != abort_code::none) return c;
       if (const auto c = storage_command(a, part)) return *c;
@@ -927,6 +994,71 @@ private:
       pdo_.mark(a);
     }
     return abort_code::none;
+  }
+
+  // ----- the application's hooks (capacity::hooks) -----------------------------------------
+
+  /// A read hook computes the value of `a` (fixed size, 2000h on: object_hooks::add) before it
+  /// is read; the store keeps it with its checks. A hook without `read`: nothing to do.
+  [[nodiscard]] constexpr abort_code refresh(const object_hook &h, od::address a) noexcept {
+    if (h.read == nullptr) return abort_code::none;
+    const od::entry *e = store_->dictionary().find(a);
+    if (e == nullptr || !od::readable(e->access_type)) return abort_code::none; // the store's
+    std::array<std::uint8_t, 8> buf{};
+    const auto value = std::span<std::uint8_t>(buf).first(od::fixed_size(e->type));
+    if (const auto v = store_->value(a); v && v.value().size() == value.size()) {
+      for (std::size_t i = 0; i < value.size(); ++i) value[i] = v.value()[i];
+    }
+    if (const auto c = h.read(h.context, a, value); c != abort_code::none) return c;
+    if (store_->set(a, value) != abort_code::none) return abort_code::general_error;
+    return abort_code::none;
+  }
+  /// The entry of streamed `a` and the check of its access (`write`: writable, else readable)
+  /// and of the function for that direction.
+  [[nodiscard]] constexpr abort_code stream_entry(const object_hook &h, od::address a, bool write,
+                                                  const od::entry *&e) const noexcept {
+    const od::dictionary dict = store_->dictionary();
+    e = dict.find(a);
+    if (e == nullptr) {
+      return dict.object(a.index).empty() ? abort_code::no_object : abort_code::no_sub_index;
+    }
+    if (write ? !od::writable(e->access_type) : !od::readable(e->access_type)) {
+      return write ? abort_code::write_read_only : abort_code::read_write_only;
+    }
+    if ((write ? h.download == nullptr : h.upload == nullptr)) {
+      return abort_code::unsupported_access;
+    }
+    return abort_code::none;
+  }
+  [[nodiscard]] constexpr abort_code stream_read(const object_hook &h, od::address a,
+                                                 std::size_t offset, std::span<std::uint8_t> out,
+                                                 std::size_t &total) const noexcept {
+    const od::entry *e = nullptr;
+    if (const auto c = stream_entry(h, a, false, e); c != abort_code::none) return c;
+    std::size_t t = 0;
+    if (const auto c = h.upload(h.context, a, offset, out, t); c != abort_code::none) return c;
+    if (offset > t) return abort_code::general_error;
+    total = t;
+    return abort_code::none;
+  }
+  [[nodiscard]] constexpr abort_code
+  stream_begin(const object_hook &h, od::address a,
+               std::optional<std::uint32_t> size) const noexcept {
+    const od::entry *e = nullptr;
+    if (const auto c = stream_entry(h, a, true, e); c != abort_code::none) return c;
+    if (size && e->capacity() != 0U && *size > e->capacity()) return abort_code::length_too_high;
+    return abort_code::none;
+  }
+  [[nodiscard]] constexpr abort_code stream_write(const object_hook &h, od::address a,
+                                                  std::size_t offset,
+                                                  std::span<const std::uint8_t> part,
+                                                  bool last) noexcept {
+    const od::entry *e = nullptr;
+    if (const auto c = stream_entry(h, a, true, e); c != abort_code::none) return c;
+    if (e->capacity() != 0U && (offset > e->capacity() || part.size() > e->capacity() - offset)) {
+      return abort_code::length_too_high;
+    }
+    return h.download(h.context, a, offset, part, last);
   }
 
   // ----- LSS (capacity::lss) -------------------------------------------------------------
@@ -1030,6 +1162,8 @@ private:
   [[no_unique_address]] std::conditional_t<C.storage, parameter_storage, std::monostate> storage_{};
   errors_type errors_{};
   [[no_unique_address]] std::conditional_t<C.lss, lss_slave, std::monostate> lss_;
+  [[no_unique_address]] std::conditional_t<(C.hooks > 0U), object_hooks<C.hooks>, std::monostate>
+      hooks_{};
   access access_;
   pdo_type pdo_;
   sdo_type sdo_;
