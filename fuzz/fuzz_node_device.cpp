@@ -6,10 +6,12 @@
 //
 // Byte 0: bit 0 the dictionary (the XENAX CAN EDS, with limits; the I/O node of the Cortex-M
 // example: heartbeat consumers, error history, an SDO client, 4 + 4 PDOs), bit 1 self start,
-// bit 2 block transfer on the SDO server, bit 3 (I/O node) the application's hooks
-// (capacity::hooks): 6401h computed at each read and TPDO (refused at every 7th), writes to
-// 6411h and 6200h checked by a hook that refuses some. Byte 1: the node-ID (1..127). Then
-// operations (see `run`), each a byte and its arguments.
+// bit 2 block transfer on the SDO server, bit 3 the application's hooks (capacity::hooks): on
+// the I/O node 6401h computed at each read and TPDO (refused at every 7th), writes to 6411h and
+// 6200h checked by a hook that refuses some; instead of the XENAX dictionary a small one whose
+// DOMAINs 2005h (no capacity) and 2006h (300 bytes) are streamed to and from the application,
+// which refuses a download past 5000 bytes and an upload part at every 11th call. Byte 1: the
+// node-ID (1..127). Then operations (see `run`), each a byte and its arguments.
 //
 // Invariants, checked after every call:
 // * every frame the node sends is on a COB-ID it owns at that moment (before or after the call:
@@ -23,7 +25,9 @@
 // * the step's deadline is never in the past (at or after `now`, modulo 2^32);
 // * nothing was lost (frames or events beyond the lists' sizes: a sizing error);
 // * a write hook sees only values that passed the node's checks (their type and limits), a
-//   read hook a span of the object's width.
+//   read hook a span of the object's width; a stream's download parts come in order from
+//   offset 0 (a transfer that ended unfinished was reported through `ended`), never past a
+//   declared capacity, and an upload is asked for offsets within the contents.
 #include "check.hpp"
 #include "input.hpp"
 
@@ -32,6 +36,7 @@
 #include <fieldcodec/canopen/object_store.hpp>
 #include <fieldcodec/canopen/sdo.hpp>
 #include <fieldcodec/dictionaries/xenax_canopen.hpp>
+#include <fieldcodec/od/entry_spec.hpp>
 #include <fieldcodec/od/value.hpp>
 
 #include "../examples/firmware/io_node_dictionary.hpp"
@@ -92,6 +97,62 @@ struct fuzz_app {
   }
 };
 
+/// The streamed DOMAINs of the small dictionary (byte 0 bits 0 and 3: 00001xx0).
+struct fuzz_stream {
+  static constexpr std::size_t contents = 1000; ///< what an upload serves
+  std::size_t received = 0;                     ///< the running download's bytes so far
+  std::size_t calls = 0;
+  static sdo::abort_code upload(void *c, od::address, std::size_t offset,
+                                std::span<std::uint8_t> out, std::size_t &total) noexcept {
+    auto &s = *static_cast<fuzz_stream *>(c);
+    FUZZ_CHECK(offset <= contents);
+    if (++s.calls % 11U == 0U) return sdo::abort_code::hardware_error;
+    total = contents;
+    for (std::size_t i = 0; i < out.size() && offset + i < contents; ++i) {
+      out[i] = static_cast<std::uint8_t>((offset + i) * 7U);
+    }
+    return sdo::abort_code::none;
+  }
+  static sdo::abort_code download(void *c, od::address a, std::size_t offset,
+                                  std::span<const std::uint8_t> part, bool last) noexcept {
+    auto &s = *static_cast<fuzz_stream *>(c);
+    if (offset == 0U) s.received = 0;
+    FUZZ_CHECK(offset == s.received);
+    if (a.index == 0x2006U) FUZZ_CHECK(offset + part.size() <= 300U);
+    s.received += part.size();
+    if (s.received > 5000U) return sdo::abort_code::length_too_high;
+    if (last) s.received = 0;
+    return sdo::abort_code::none;
+  }
+  static void ended(void *c, od::address, sdo::abort_code) noexcept {
+    static_cast<fuzz_stream *>(c)->received = 0;
+  }
+};
+
+/// The small dictionary with the streamed DOMAINs.
+constexpr od::entry_spec u32_var(std::uint16_t index, std::uint8_t sub, od::access a,
+                                 std::uint64_t v) {
+  return {.index = index,
+          .sub = sub,
+          .type = od::data_type::unsigned32,
+          .access_type = a,
+          .default_value = {od::number_kind::unsigned_, 0, v}};
+}
+inline constexpr std::array<od::entry_spec, 6> stream_specs{{
+    u32_var(0x1000, 0, od::access::ro, 0),
+    {.index = 0x1017,
+     .type = od::data_type::unsigned16,
+     .access_type = od::access::rw,
+     .default_value = {od::number_kind::unsigned_, 0, 0}},
+    {.index = 0x1018,
+     .type = od::data_type::unsigned8,
+     .access_type = od::access::ro,
+     .default_value = {od::number_kind::unsigned_, 0, 1}},
+    u32_var(0x1018, 1, od::access::ro, 0x0F1C),
+    {.index = 0x2005, .type = od::data_type::domain, .access_type = od::access::rw},
+    {.index = 0x2006, .type = od::data_type::domain, .access_type = od::access::rw, .size = 300},
+}};
+
 template <class Device>
 class rig {
 public:
@@ -109,6 +170,17 @@ public:
       }
     }
     if constexpr (Device::capacities().hooks > 0U) {
+      if (dict.contains(0x2005, 0)) { // the small dictionary: its DOMAINs streamed
+        node::object_hook h;
+        h.context = &stream_;
+        h.upload = &fuzz_stream::upload;
+        h.download = &fuzz_stream::download;
+        h.ended = &fuzz_stream::ended;
+        h.first = {0x2005, 0};
+        h.last = {0x2006, 0};
+        FUZZ_CHECK(dev_.add_hook(h));
+        return;
+      }
       app_.dict = dict;
       app_.node = n;
       node::object_hook computed;
@@ -323,6 +395,7 @@ private:
   std::uint8_t node_;
   Device dev_;
   fuzz_app app_{};
+  fuzz_stream stream_{};
   std::uint32_t now_ = 1000;
 };
 
@@ -336,7 +409,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   o.self_start = (data[0] & 2U) != 0U;
   o.sdo_timeout_ms = 500;
   o.sdo.block = (data[0] & 4U) != 0U;
-  if ((data[0] & 1U) == 0U) {
+  if ((data[0] & 9U) == 8U) {
+    static constexpr auto entries = od::entries_of<stream_specs>;
+    static constexpr od::dictionary dict{entries};
+    static_assert(dict.is_valid());
+    static constexpr auto layout = co::make_layout<entries.size()>(dict);
+    static std::array<std::uint8_t, layout.storage_size()> storage;
+    storage.fill(0);
+    rig<node::device<store_type, node::capacity_for(dict, {.hooks = 1})>> r(dict, layout, storage,
+                                                                            n, o);
+    r.run(in);
+  } else if ((data[0] & 1U) == 0U) {
     static constexpr auto layout = co::make_layout<xcan::dictionary.size()>(xcan::dictionary);
     static std::array<std::uint8_t, layout.storage_size()> storage;
     storage.fill(0);

@@ -438,6 +438,46 @@ TEST_CASE("DOMAIN stream: overlong, refused by the application, aborted by the c
   CHECK(a.completed == 0U);
 }
 
+TEST_CASE("DOMAIN stream: a download without size stops before the part past the capacity") {
+  hook_rig r;
+  app a;
+  REQUIRE(r.dev.add_hook(a.stream_hook({0x2005, 0})));
+  (void)r.dev.start(0);
+  auto out = on(r.feed(r.ch.request(sdo::initiate_download({0x2005, 0}, 0, false))), 0x585);
+  REQUIRE(out.size() == 1U);
+  const std::array<std::uint8_t, 7> seven{1, 2, 3, 4, 5, 6, 7};
+  bool toggle = false;
+  std::optional<abort_code> refused;
+  for (int i = 0; i < 700 && !refused; ++i, toggle = !toggle) {
+    out = on(r.feed(r.ch.request(sdo::download_segment(toggle, seven, false).value())), 0x585);
+    REQUIRE(out.size() == 1U);
+    const auto m = sdo::decode(out[0].data, sdo::direction::to_client).value();
+    if (m.type == sdo::message_type::abort) refused = m.abort;
+  }
+  // 2005h holds 4000 bytes: the parts of 889 at 0, 889, 1778, 2667 reach the application, the
+  // one that would end at 4445 does not
+  CHECK(refused == abort_code::length_too_high);
+  CHECK(a.offsets == std::vector<std::size_t>{0, 889, 1778, 2667});
+  CHECK(a.completed == 0U);
+  REQUIRE(a.ended.size() == 1U);
+  CHECK(a.ended[0].second == abort_code::length_too_high);
+}
+
+TEST_CASE("write hook on a byte string: whole values up to the SDO buffer, longer ones refused") {
+  hook_rig r;
+  app a;
+  REQUIRE(r.dev.add_hook(a.value_hook({0x2005, 0}, {0x2005, 0}, false, true)));
+  (void)r.dev.start(0);
+  const auto fits = pattern(889, 3);
+  CHECK(r.download({0x2005, 0}, fits) == abort_code::none);
+  CHECK(a.written.size() == 1U);
+  CHECK(bytes_of(r.dev.value({0x2005, 0}).value()) == fits);
+  CHECK(r.download({0x2005, 0}, pattern(890, 4)) == abort_code::out_of_memory);
+  CHECK(r.download({0x2005, 0}, pattern(2000, 4), true) == abort_code::out_of_memory);
+  CHECK(a.written.size() == 1U);
+  CHECK(bytes_of(r.dev.value({0x2005, 0}).value()) == fits);
+}
+
 TEST_CASE("DOMAIN stream: one direction, access and unknown sub-indices keep their codes") {
   hook_rig r;
   app a;
