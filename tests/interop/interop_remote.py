@@ -17,6 +17,9 @@ TPDO 1), here also taking RPDO 2 (6040h, 607Ah: the XENAX default mapping) as a 
 2. "!events 200": the remote node's events from frames python sends: a boot-up, heartbeats
    (pre-operational, operational), an EMCY from python's own EmcyProducer, a malformed EMCY of
    3 bytes (reported, not taken), then no more heartbeats: heartbeat lost.
+3. "!domain 3000": streamed SDO (host::sdo_session::write_parts / read_parts, one buffer of 64
+   bytes) of a DOMAIN python adds to the LocalNode (2FF0h): python's store holds the 3000 bytes
+   written, and the bytes read back are the same (checked by the host program).
 Exit 0 / 1, or 77 (skipped) without the peer or python-can.
 
 usage: interop_remote.py --bridge EXE --root REPO
@@ -127,6 +130,20 @@ def main():
                 "EMCY 2310 0003", "bad frame bad length", "heartbeat lost operational"]
         check(lines == want, "events", f"got {lines}, expected {want}")
         ok("events", "; ".join(lines))
+
+        # 3. streamed SDO of a DOMAIN
+        var = canopen.objectdictionary.ODVariable("Large domain", 0x2FF0, 0)
+        var.data_type = canopen.objectdictionary.DOMAIN
+        var.access_type = "rw"
+        local.object_dictionary.add_object(var)
+        bridge.write("!domain 3000")
+        a = answer(bridge, "domain")
+        check(a.startswith("ok 3000 "), "domain", a)
+        stored = local.data_store.get(0x2FF0, {}).get(0)
+        want = bytes((i * 7 + 3) & 0xFF for i in range(3000))
+        check(stored == want, "domain", "the LocalNode does not hold the 3000 bytes written "
+              f"({len(stored or b'')} bytes)")
+        ok("domain", f"3000 bytes written and read back in parts of 64 bytes ({a.split()[2]} parts)")
         bridge.write("!quit")
     finally:
         network.disconnect()

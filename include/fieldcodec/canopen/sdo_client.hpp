@@ -77,7 +77,7 @@ public:
       expect(&basic_client::download_expedited);
       return send(expedited_download(a, data).value());
     }
-    expect(&basic_client::download_initiate);
+    expect(&basic_client::download_initiate<>);
     return send(initiate_download(a, static_cast<std::uint32_t>(data.size())));
   }
 
@@ -87,8 +87,68 @@ public:
     FIELDCODEC_TRY_STATUS(can_start(0));
     begin(a, now);
     rx_ = buffer;
-    expect(&basic_client::upload_initiate);
+    expect(&basic_client::upload_initiate<>);
     return send(initiate_upload(a));
+  }
+
+  /// Start reading `a` in parts (segmented, or expedited): the bytes go into `window` (at least
+  /// 7 bytes); when the next segment would not fit, the transfer pauses with part_ready():
+  /// received() is the part, next_part() goes on (the SDO timeout does not run meanwhile).
+  /// The last part is received() once state() == done. An object of any size is read through
+  /// one window. Errors: bad_state, invalid_argument (also: window shorter than 7 bytes).
+  [[nodiscard]] constexpr result<step> upload_parts(od::address a, std::span<std::uint8_t> window,
+                                                    std::uint32_t now) noexcept {
+    if (window.size() < 7U) return errc::invalid_argument;
+    auto s = upload(a, window, now);
+    if (s) expect(&basic_client::upload_initiate<true>);
+    return s;
+  }
+  /// Start writing `size` bytes to `a` in parts (segmented with size indication; expedited
+  /// when `size` is 1..4 and `first` holds them all): `first` is the beginning of the value;
+  /// when the next segment needs bytes beyond the part given, the transfer pauses with
+  /// part_ready() and feed() gives the next part, starting at byte transferred(). Errors:
+  /// bad_state, invalid_argument (also: `first` longer than `size`, or empty when `size` is
+  /// not), too_long.
+  [[nodiscard]] constexpr result<step> download_parts(od::address a, std::uint32_t size,
+                                                      std::span<const std::uint8_t> first,
+                                                      std::uint32_t now) noexcept {
+    if (first.size() > size || (first.empty() && size != 0U)) return errc::invalid_argument;
+    if (size <= 4U) {
+      if (first.size() != size) return errc::invalid_argument;
+      return download(a, first, now);
+    }
+    FIELDCODEC_TRY_STATUS(can_start(size));
+    begin(a, now);
+    tx_ = first;
+    total_ = size;
+    expect(&basic_client::download_initiate<true>);
+    return send(initiate_download(a, size));
+  }
+  /// A part transfer is paused: an upload's part is in received(), a download needs feed().
+  [[nodiscard]] constexpr bool part_ready() const noexcept { return paused_ && core_.busy(); }
+  /// Go on with a paused upload: the window is free again. Errors: bad_state (no part ready,
+  /// or a download).
+  [[nodiscard]] constexpr result<step> next_part(std::uint32_t now) noexcept {
+    if (!part_ready() || rx_.empty()) return errc::bad_state;
+    paused_ = false;
+    base_ = count_;
+    core_.touch(now);
+    return send(upload_segment_request(seg_rx_.toggle()));
+  }
+  /// Go on with a paused download: `part` holds the bytes from transferred() on (at least the
+  /// next segment's, 7 or what is left). Errors: bad_state (no part ready, or an upload),
+  /// invalid_argument (`part` too short, or beyond the size announced).
+  [[nodiscard]] constexpr result<step> feed(std::span<const std::uint8_t> part,
+                                            std::uint32_t now) noexcept {
+    if (!part_ready() || !rx_.empty()) return errc::bad_state;
+    if (part.size() < seg_tx_.next_length() || count_ + part.size() > total_) {
+      return errc::invalid_argument;
+    }
+    paused_ = false;
+    base_ = count_;
+    tx_ = part;
+    core_.touch(now);
+    return next_download_segment<true>();
   }
 
   /// Start writing `data` to `a` with block transfer (size indicated).
@@ -191,6 +251,7 @@ public:
 
   /// Check the timeout: abort 0x05040000, error timeout.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    if (part_ready()) return {frames{}, core_.state(), std::nullopt}; // the caller's turn
     if (core_.timed_out(now)) return abort_with(errc::timeout, abort_code::timeout);
     return core_.make();
   }
@@ -208,11 +269,12 @@ public:
   [[nodiscard]] constexpr std::optional<transfer_error> error() const noexcept {
     return core_.error();
   }
-  /// The bytes uploaded so far (the value once state() == done); empty for a download (whose
-  /// bytes transferred() counts).
+  /// The bytes uploaded so far (the value once state() == done); of a part transfer, the bytes
+  /// of the current part; empty for a download (whose bytes transferred() counts).
   [[nodiscard]] constexpr std::span<const std::uint8_t> received() const noexcept {
     // an upload's count never passes its buffer; a download has none (rx_ is empty)
-    return std::span<const std::uint8_t>(rx_).first(count_ < rx_.size() ? count_ : rx_.size());
+    const std::size_t n = count_ - base_;
+    return std::span<const std::uint8_t>(rx_).first(n < rx_.size() ? n : rx_.size());
   }
   /// Bytes transferred so far (a block download counts acknowledged bytes).
   [[nodiscard]] constexpr std::size_t transferred() const noexcept { return count_; }
@@ -264,6 +326,9 @@ private:
     count_ = 0;
     tx_ = {};
     rx_ = {};
+    base_ = 0;
+    total_ = 0;
+    paused_ = false;
   }
   [[nodiscard]] constexpr step send(const payload &p) const noexcept {
     return core_.make(frames(ch_.request(p)));
@@ -319,28 +384,42 @@ private:
     count_ = tx_.size();
     return done();
   }
+  // The part transfers (Parts = true: upload_parts, download_parts) share these states with
+  // the whole ones; `if constexpr` keeps their pauses out of a program that never starts one.
+  template <bool Parts = false>
   [[nodiscard]] constexpr step download_initiate(const payload &p) noexcept {
     if (auto s = check_initiate(p, ccs_initiate_download)) return *s;
-    seg_tx_.start(static_cast<std::uint32_t>(tx_.size()));
-    return next_download_segment();
+    seg_tx_.start(Parts ? total_ : static_cast<std::uint32_t>(tx_.size()));
+    return next_download_segment<Parts>();
   }
+  template <bool Parts = false>
   [[nodiscard]] constexpr step next_download_segment() noexcept {
-    expect(&basic_client::download_segment);
-    const auto chunk = tx_.subspan(seg_tx_.offset(), seg_tx_.next_length());
+    expect(&basic_client::download_segment<Parts>);
+    const std::size_t at = seg_tx_.offset() - base_;
+    if constexpr (Parts) {
+      if (at + seg_tx_.next_length() > tx_.size()) { // the caller feeds the next part
+        paused_ = true;
+        return {frames{}, core_.state(), std::nullopt};
+      }
+    }
+    const auto chunk = tx_.subspan(at, seg_tx_.next_length());
     return send(seg_tx_.next(message_type::download_segment_request, chunk));
   }
+  template <bool Parts = false>
   [[nodiscard]] constexpr step download_segment(const payload &p) noexcept {
+    if (Parts && paused_) return unexpected(); // no segment was sent
     if (detail::specifier(p[0]) != ccs_download_segment) return unexpected();
     if (!seg_tx_.answer_matches(detail::segment_toggle(p[0]))) {
       return abort_with(errc::bad_toggle, abort_code::toggle_not_alternated);
     }
     count_ = seg_tx_.offset();
     if (seg_tx_.finished()) return done();
-    return next_download_segment();
+    return next_download_segment<Parts>();
   }
 
   // ----- expedited and segmented upload ----------------------------------------------------
 
+  template <bool Parts = false>
   [[nodiscard]] constexpr step upload_initiate(const payload &p) noexcept {
     if (auto s = check_initiate(p, ccs_initiate_upload)) return *s;
     if (detail::initiate_expedited(p[0])) {
@@ -354,16 +433,19 @@ private:
     }
     const bool indicated = detail::initiate_size_indicated(p[0]);
     const std::uint32_t size = detail::get_u32(p);
-    if (indicated && size > rx_.size()) {
+    if (!Parts && indicated && size > rx_.size()) {
       return abort_with(errc::buffer_too_small, abort_code::out_of_memory);
     }
-    seg_rx_.start(rx_.size(), indicated ? std::optional<std::uint32_t>(size) : std::nullopt);
-    expect(&basic_client::upload_segment);
+    seg_rx_.start(Parts ? std::size_t{0xFFFF'FFFFU} : rx_.size(),
+                  indicated ? std::optional<std::uint32_t>(size) : std::nullopt);
+    expect(&basic_client::upload_segment<Parts>);
     return send(upload_segment_request(seg_rx_.toggle()));
   }
+  template <bool Parts = false>
   [[nodiscard]] constexpr step upload_segment(const payload &p) noexcept {
+    if (Parts && paused_) return unexpected(); // nothing was requested: the window is the caller's
     if (detail::specifier(p[0]) != ccs_upload_segment) return unexpected();
-    const std::size_t at = seg_rx_.count();
+    const std::size_t at = seg_rx_.count() - base_;
     const std::uint8_t n = detail::segment_size(p[0]);
     const bool last = detail::segment_last(p[0]);
     if (const auto code = seg_rx_.accept(detail::segment_toggle(p[0]), n, last);
@@ -375,6 +457,12 @@ private:
     }
     count_ = seg_rx_.count();
     if (last) return done();
+    if constexpr (Parts) {
+      if (count_ - base_ + 7U > rx_.size()) { // the window is full: the caller's turn
+        paused_ = true;
+        return {frames{}, core_.state(), std::nullopt};
+      }
+    }
     return send(upload_segment_request(seg_rx_.toggle()));
   }
   /// A failure the receiving or sending core detected: the errc that goes with its code.
@@ -431,7 +519,7 @@ private:
     if (detail::specifier(p[0]) == ccs_initiate_upload) {
       // protocol switch: the server answers with a normal upload (only if we allowed it)
       if (options_.switch_threshold == 0U) return unexpected();
-      expect(&basic_client::upload_initiate);
+      expect(&basic_client::upload_initiate<>);
       return upload_initiate(p);
     }
     const message m = decoded(p);
@@ -510,6 +598,9 @@ private:
   bool runs_ = false; ///< run_ is set (on_frames calls it)
   block_options options_{};
   std::size_t count_ = 0;
+  std::size_t base_ = 0;    ///< part transfers: bytes of the parts before the current one
+  std::uint32_t total_ = 0; ///< part download: the size announced
+  bool paused_ = false;     ///< a part is ready (upload) or needed (download)
   std::span<const std::uint8_t> tx_{};
   std::span<std::uint8_t> rx_{};
   std::span<const std::uint8_t> window_{};

@@ -65,6 +65,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace fieldcodec::host {
@@ -192,6 +193,32 @@ public:
   /// until the next call. Errors: those of sdo_session::read.
   result<std::span<const std::uint8_t>, sdo_error> read_bytes(const od::descriptor &d) {
     return sdo_.read(at(d));
+  }
+
+  /// Read a byte-string object (a large DOMAIN) in parts: `sink(std::span<const std::uint8_t>)`
+  /// gets each part in order (sdo_session::read_parts: one buffer of sdo_options::part_size
+  /// bytes, kept by the session). Returns the bytes read. Errors: type_mismatch (not a byte
+  /// string: read or read_text take it; nothing sent), those of sdo_session::read_parts.
+  template <class Sink>
+  result<std::size_t, sdo_error> read_parts(const od::descriptor &d, Sink &&sink) {
+    if (!od::is_byte_string(d.type)) return not_bytes(d);
+    return sdo_.read_parts(at(d), std::forward<Sink>(sink));
+  }
+  /// Write `size` bytes to a byte-string object in parts, `source(std::span<std::uint8_t>)`
+  /// giving the next bytes (sdo_session::write_parts). Errors: type_mismatch (not a byte
+  /// string), too_long (more than the object's capacity, when the dictionary gives one; nothing
+  /// sent; value.issue capacity), those of sdo_session::write_parts.
+  template <class Source>
+  result<void, sdo_error> write_parts(const od::descriptor &d, std::uint32_t size,
+                                      Source &&source) {
+    if (!od::is_byte_string(d.type)) return not_bytes(d);
+    if (d.capacity() != 0U && size > d.capacity()) {
+      od::value_error v{errc::too_long};
+      v.issue = od::value_issue::capacity;
+      v.capacity = d.capacity();
+      return value_failed(d, v, std::to_string(size) + " bytes refused");
+    }
+    return sdo_.write_parts(at(d), size, std::forward<Source>(source));
   }
 
   /// Write the number `v`, meant in `o.unit`, to `d` (od::encode_value: the limits of this
@@ -652,6 +679,14 @@ private:
     e.address = a;
     e.what = "node " + std::to_string(node()) + ", " + pdo_name(p.dir, p.number) + ", " +
              format_address(a) + ": " + what;
+    return e;
+  }
+
+  sdo_error not_bytes(const od::descriptor &d) const {
+    sdo_error e(errc::type_mismatch);
+    e.address = at(d);
+    e.what = "node " + std::to_string(node()) + ", " + format_address(at(d)) + ": " +
+             std::string(od::name(d.type)) + " is no byte string: read or write its value";
     return e;
   }
 

@@ -10,6 +10,10 @@
 //   host::sdo_session node5(bus, 5);                      // several transfers, options, one
 //   auto w = node5.read({0x1008, 0});                      // buffer: result<span, sdo_error>
 //
+//   node5.read_parts({0x2000, 0}, [](std::span<const std::uint8_t> part) { ...; return true; });
+//   node5.write_parts({0x2000, 0}, size, [](std::span<std::uint8_t> out) { ...; return n; });
+//                                                         // a large DOMAIN in parts
+//
 // The session owns the buffer of its uploads (sdo_options::max_size bytes); frames that are not
 // its SDO responses are ignored while it waits (a busy bus is fine), error frames are ignored
 // unless the controller went bus-off.
@@ -24,6 +28,7 @@
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/engineering.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -42,6 +47,9 @@ struct sdo_options {
   bool block = false;                      ///< use block transfer (upload and download)
   canopen::sdo::block_options block_options{};
   std::size_t max_size = 1U << 20U; ///< largest value an upload takes (bytes)
+  /// read_parts / write_parts: the bytes of one part (at least 7); the session holds one buffer
+  /// of this size, made once.
+  std::size_t part_size = 4096;
 };
 
 /// Why a blocking transfer failed: an error with context (docs/contributing.md, "Errors").
@@ -83,7 +91,9 @@ public:
   /// A session with the SDO server of `node` on the predefined channel (0x600/0x580 + node).
   sdo_session(can_bus &bus, std::uint8_t node, sdo_options o = {})
       : bus_(&bus), node_(node), options_(o),
-        client_(node, static_cast<std::uint32_t>(o.timeout.count())) {}
+        client_(node, static_cast<std::uint32_t>(o.timeout.count())) {
+    if (options_.part_size < 7U) options_.part_size = 7U;
+  }
 
   /// Read `a`. The bytes stay valid until the next call. Errors (sdo_error::code): aborted,
   /// timeout, buffer_too_small, bad_toggle, unexpected_frame, …; invalid_argument for a
@@ -103,6 +113,75 @@ public:
     auto s = options_.block ? client_.block_download(a, data, t0, options_.block_options)
                             : client_.download(a, data, t0);
     if (!run(a, s)) return error_;
+    return {};
+  }
+
+  /// Read `a` in parts (a large DOMAIN): `sink(std::span<const std::uint8_t>)` gets each part
+  /// in order, at most options().part_size bytes, from one buffer the session keeps (valid
+  /// during the call); returning false stops the transfer (SDO abort 08000000h, error
+  /// aborted). Segmented (or expedited) whatever options().block says. Returns the bytes read.
+  /// Errors: those of read; nothing is kept beyond one part.
+  template <class Sink>
+  result<std::size_t, sdo_error> read_parts(od::address a, Sink &&sink) {
+    part_.resize(options_.part_size); // once: the size does not change
+    std::size_t total = 0;
+    bool stopped = false;
+    auto give = [&]() -> bool {
+      const auto p = client_.received();
+      total += p.size();
+      if (p.empty() || sink(p)) return true;
+      stopped = true;
+      return false;
+    };
+    const auto started = client_.upload_parts(a, part_, now());
+    const bool ok = run(a, started, [&]() -> result<canopen::sdo::step> {
+      if (!give()) return client_.cancel(canopen::sdo::abort_code::general_error);
+      return client_.next_part(now());
+    });
+    if (stopped) return stopped_by_caller(a);
+    if (!ok) return error_;
+    if (!give()) return stopped_by_caller(a);
+    return total;
+  }
+
+  /// Write `size` bytes to `a` in parts: `source(std::span<std::uint8_t> out)` fills `out`
+  /// (at most options().part_size bytes) with the next bytes and returns how many it wrote;
+  /// the session keeps one buffer. Segmented (expedited for 1..4 bytes). Errors: bad_length (the
+  /// source gave fewer than `size` bytes: the transfer is aborted), those of write.
+  template <class Source>
+  result<void, sdo_error> write_parts(od::address a, std::uint32_t size, Source &&source) {
+    part_.resize(options_.part_size);
+    std::size_t given = 0; // bytes the source gave
+    std::size_t held = 0;  // of them, in part_
+    auto fill = [&]() {
+      while (held < part_.size() && given < size) {
+        const std::size_t want = std::min(part_.size() - held, std::size_t{size} - given);
+        const std::size_t n = source(std::span<std::uint8_t>(part_).subspan(held, want));
+        if (n == 0U || n > want) return;
+        held += n;
+        given += n;
+      }
+    };
+    fill();
+    if (given < size && held < part_.size()) return short_source(a, given, size);
+    const auto started = client_.download_parts(a, size, std::span(part_).first(held), now());
+    bool short_part = false;
+    const bool ok = run(a, started, [&]() -> result<canopen::sdo::step> {
+      // the bytes not yet sent move to the front, the source fills the rest
+      const std::size_t sent = client_.transferred() - (given - held);
+      std::copy(part_.begin() + static_cast<std::ptrdiff_t>(sent),
+                part_.begin() + static_cast<std::ptrdiff_t>(held), part_.begin());
+      held -= sent;
+      fill();
+      auto s = client_.feed(std::span(part_).first(held), now());
+      if (!s) {
+        short_part = true;
+        return client_.cancel(canopen::sdo::abort_code::general_error);
+      }
+      return s;
+    });
+    if (short_part) return short_source(a, given, size);
+    if (!ok) return error_;
     return {};
   }
 
@@ -126,14 +205,43 @@ private:
     return true;
   }
 
+  sdo_error stopped_by_caller(od::address a) {
+    error_ = {};
+    error_.code = errc::aborted;
+    error_.abort = canopen::sdo::abort_code::general_error;
+    error_.address = a;
+    error_.what = prefix(a) + "stopped by the caller (sent " +
+                  describe_abort(canopen::sdo::abort_code::general_error) + ")";
+    return error_;
+  }
+  sdo_error short_source(od::address a, std::size_t given, std::uint32_t size) {
+    error_ = {};
+    error_.code = errc::bad_length;
+    error_.address = a;
+    error_.what = prefix(a) + "the source gave " + std::to_string(given) + " of " +
+                  std::to_string(size) + " bytes";
+    return error_;
+  }
+
   /// Runs the transfer; false when it failed (error_ says why).
   bool run(od::address a, const result<canopen::sdo::step> &started) {
+    return run(a, started, []() -> result<canopen::sdo::step> { return errc::bad_state; });
+  }
+  /// The same, with `on_part()` called whenever a part transfer pauses (its step goes on).
+  template <class OnPart>
+  bool run(od::address a, const result<canopen::sdo::step> &started, OnPart on_part) {
     error_ = {};
     if (!started) return fail_local(a, started.error(), "cannot start the transfer");
     canopen::sdo::step s = started.value();
     for (;;) {
       if (!send_all(s)) return fail_bus(a);
       if (!client_.busy()) break;
+      if (client_.part_ready()) {
+        auto n = on_part();
+        if (!n) return fail_local(a, n.error(), "cannot go on with the next part");
+        s = n.value();
+        continue;
+      }
       const std::uint32_t t = now();
       std::int64_t wait = options_.timeout.count();
       if (s.deadline) {
@@ -197,6 +305,7 @@ private:
   sdo_options options_;
   canopen::sdo::client client_;
   std::vector<std::uint8_t> buffer_;
+  std::vector<std::uint8_t> part_; ///< read_parts / write_parts: one part
   sdo_error error_{};
   steady_ms clock_;
   std::function<void(const canopen::can_frame &, std::uint32_t)> observer_{};

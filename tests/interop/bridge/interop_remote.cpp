@@ -11,6 +11,9 @@
 //                   enable, profile position, move; "= ok" or "= FAILED <why>";
 //   "!events MS"    a remote_node watching the heartbeat (MS), its events for up to 3 s, one
 //                   "= event <kind> <detail>" line each, until "heartbeat lost"; then "= ok".
+//   "!domain SIZE"  host::sdo_session::write_parts of SIZE bytes ((i * 7 + 3) & FFh) to 2FF0h
+//                   (a DOMAIN python adds), then read_parts back, parts of 64 bytes: "= ok
+//                   <bytes read> <parts>" or "= FAILED <why>".
 //   "!quit"         ends.
 #include "../../../examples/move_axis.hpp"
 
@@ -18,6 +21,7 @@
 #include <fieldcodec/host/bus.hpp>
 #include <fieldcodec/host/candump.hpp>
 #include <fieldcodec/host/remote_node.hpp>
+#include <fieldcodec/host/sdo.hpp>
 
 #include <poll.h>
 #include <unistd.h>
@@ -130,6 +134,31 @@ void events(stdio_bus &bus, std::uint8_t node, std::uint16_t watch_ms) {
   answer("FAILED events: no heartbeat loss within 3 s");
 }
 
+void domain(stdio_bus &bus, std::uint8_t node, std::uint32_t size) {
+  host::sdo_session s(bus, node, {.part_size = 64});
+  const fieldcodec::od::address at{0x2FF0, 0};
+  std::uint32_t next = 0;
+  auto w = s.write_parts(at, size, [&](std::span<std::uint8_t> out) {
+    std::size_t n = 0;
+    for (; n < out.size() && next < size; ++n, ++next) {
+      out[n] = static_cast<std::uint8_t>((next * 7U + 3U) & 0xFFU);
+    }
+    return n;
+  });
+  if (!w) return answer("FAILED write: " + w.error().what);
+  std::uint32_t i = 0;
+  std::size_t parts = 0;
+  bool same = true;
+  auto r = s.read_parts(at, [&](std::span<const std::uint8_t> p) {
+    ++parts;
+    for (const std::uint8_t b : p) same = same && b == ((i++ * 7U + 3U) & 0xFFU);
+    return true;
+  });
+  if (!r) return answer("FAILED read: " + r.error().what);
+  if (!same || i != size) return answer("FAILED read: not the bytes written");
+  answer("ok " + std::to_string(r.value()) + " " + std::to_string(parts));
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -149,6 +178,8 @@ int main(int argc, char **argv) {
     if (c.rfind("!move ", 0) == 0) {
       const int r = fieldcodec::examples::move_axis(bus, std::atoi(c.c_str() + 6));
       answer(r == 0 ? "ok" : "FAILED move (its line is above)");
+    } else if (c.rfind("!domain ", 0) == 0) {
+      domain(bus, node, static_cast<std::uint32_t>(std::atol(c.c_str() + 8)));
     } else if (c.rfind("!events ", 0) == 0) {
       events(bus, node, static_cast<std::uint16_t>(std::atoi(c.c_str() + 8)));
     } else {
