@@ -158,11 +158,11 @@ TEST_CASE("drive: switch mode by SDO, confirmed by reading 6061h") {
   CHECK(b.axis.state() == drive_state::idle);
   CHECK(b.axis.mode() == std::int8_t{1});
   REQUIRE(b.dev.requests.size() >= 2U);
-  CHECK(b.dev.requests[0] == master::sdo_write({0x6060, 0}, 1, 1));
-  CHECK(b.dev.requests[1] == master::sdo_read({0x6061, 0}));
+  CHECK(b.dev.requests[0] == master::write_request({0x6060, 0}, 1, 1));
+  CHECK(b.dev.requests[1] == master::read_request({0x6061, 0}));
   // 6061h is read again until it follows
-  CHECK(std::count(b.dev.requests.begin(), b.dev.requests.end(), master::sdo_read({0x6061, 0})) >=
-        2);
+  CHECK(std::count(b.dev.requests.begin(), b.dev.requests.end(),
+                   master::read_request({0x6061, 0})) >= 2);
 }
 
 TEST_CASE("drive: switch mode with 6061h in a PDO reads nothing by SDO") {
@@ -174,7 +174,7 @@ TEST_CASE("drive: switch mode with 6061h in a PDO reads nothing by SDO") {
   CHECK(b.axis.state() == drive_state::idle);
   CHECK(b.axis.mode() == std::int8_t{6});
   REQUIRE(b.dev.requests.size() == 1U);
-  CHECK(b.dev.requests[0] == master::sdo_write({0x6060, 0}, 6, 1));
+  CHECK(b.dev.requests[0] == master::write_request({0x6060, 0}, 6, 1));
 }
 
 TEST_CASE("drive: a mode the drive never confirms") {
@@ -266,7 +266,7 @@ TEST_CASE("drive: profile position target written by SDO") {
   REQUIRE(b.axis.move_to(-1234, b.now));
   auto s = b.cycle();
   REQUIRE(s.sdo);
-  CHECK(*s.sdo == master::sdo_write({0x607A, 0}, static_cast<std::uint32_t>(-1234), 4));
+  CHECK(*s.sdo == master::write_request({0x607A, 0}, static_cast<std::uint32_t>(-1234), 4));
   CHECK((s.controlword & 0x10U) == 0U); // bit 4 only after the write completed
   b.run();
   CHECK(b.dev.position == -1234);
@@ -323,7 +323,7 @@ TEST_CASE("drive: a fault in the middle of a move reports 603Fh and the EMCY (XE
   CHECK(s.state == drive_state::fault);
   CHECK(s.controlword == 0x0000);
   REQUIRE(b.dev.requests.size() == 1U);
-  CHECK(b.dev.requests[0] == master::sdo_read({0x603F, 0}));
+  CHECK(b.dev.requests[0] == master::read_request({0x603F, 0}));
   const auto e = b.axis.error();
   REQUIRE(e);
   CHECK(e->failure == drive_failure::fault);
@@ -403,7 +403,7 @@ TEST_CASE("drive: homing with a XENAX reference method") {
   REQUIRE(b.axis.home(b.now, xenax::reference_method::linear_negative));
   auto s = b.cycle();
   REQUIRE(s.sdo);
-  CHECK(*s.sdo == master::sdo_write({0x6098, 0}, 2, 1));
+  CHECK(*s.sdo == master::write_request({0x6098, 0}, 2, 1));
   // the attained bit left over from an earlier run does not end this one
   s = b.cycle();
   CHECK(s.controlword == 0x001F);

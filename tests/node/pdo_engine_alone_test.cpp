@@ -18,10 +18,12 @@ TEST_CASE("pdo engine alone: reload, parameter rules, RPDO in, TPDO out") {
   CHECK(pdo.on_frame(F(0x205, {1, 0, 0, 0, 2, 0}), 0).send.empty());
   CHECK(pdo.events().empty());
   CHECK_FALSE(pdo.deadline(0));
+  CHECK(pdo.poll(0).state == node::pdo_state::not_operational);
+  CHECK(to_string(pdo.poll(0).state) == "PDOs not exchanged");
   pdo.set_operational(true, 0);
   // the event-driven TPDO 1 is due at once
   auto s = pdo.poll(0);
-  CHECK(s.state);
+  CHECK(s.state == node::pdo_state::operational);
   REQUIRE(s.send.size() == 1);
   CHECK(s.send[0] == F(0x185, {0, 0, 0, 0, 0, 0}));
   // an RPDO is written into the store

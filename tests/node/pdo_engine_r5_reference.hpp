@@ -4,7 +4,8 @@
 // parameters (reindex()), and built TPDO frames in place; this copy has neither, so a derived
 // byte that went stale shows as a different frame, event, deadline or stored byte. Only the
 // namespace changed (node::r5), and the types the two engines share (pdo_event, pdo_config,
-// mapping_abort, pdo_index) are node's. Not to be edited: it is what the engine did.
+// mapping_abort, pdo_index, and pdo_state, which later replaced the bool of its steps) are
+// node's. Not to be edited otherwise: it is what the engine did.
 #pragma once
 
 #include <fieldcodec/canopen/node/pdo_engine.hpp>
@@ -19,7 +20,7 @@ class pdo_engine {
 public:
   using config = pdo_config<MaxEntries>;
   /// State in the steps: whether PDOs are exchanged (NMT operational).
-  using step = canopen::step<bool>;
+  using step = canopen::step<pdo_state>;
   /// Whether the engine reaches the mapped objects by position (the store models
   /// canopen::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
   /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
@@ -885,7 +886,8 @@ private:
   /// The step: the frames to send, the state, and deadline(now) — which is nullopt without a
   /// scan when no PDO has timing (timed_).
   [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
-    return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
+    return {out_.view(), static_cast<pdo_state>(operational_),
+            timed_ ? deadline(now) : std::nullopt};
   }
   /// Set timed_: whether any PDO can have a deadline — a valid TPDO of type 254/255 (pending,
   /// event timer), a valid RPDO with an event timer (deadline monitoring starts only with one,

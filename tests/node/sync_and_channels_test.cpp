@@ -148,9 +148,12 @@ TEST_CASE("sdo channels: the default channel without 1200h, one more server, a c
   REQUIRE(s);
   CHECK(s.value().send[0].id == 0x603);
   CHECK(ch.busy());
+  CHECK(ch.poll(0).state == node::channels_state::transferring);
   CHECK(ch.deadline(0) == 1000U);
   auto t = ch.poll(1000);
   REQUIRE(t.send.size() == 1);
+  CHECK(t.state == node::channels_state::idle); // the timeout ended it
+  CHECK(to_string(t.state) == "no SDO transfer");
   CHECK(t.send[0].id == 0x603); // abort: timeout
   CHECK(ch.client(0).error()->abort == abort_code::timeout);
   // COB-ID rules for 1201h / 1280h

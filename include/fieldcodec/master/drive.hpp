@@ -51,14 +51,16 @@ struct sdo_request {
   friend constexpr bool operator==(const sdo_request &, const sdo_request &) = default;
 };
 
-/// A download of `size` bytes of `value` (little-endian) to `a`.
-[[nodiscard]] constexpr sdo_request sdo_write(od::address a, std::uint32_t value,
-                                              std::uint8_t size) noexcept {
+/// The request for a download of `size` bytes of `value` (little-endian) to `a` (a request the
+/// caller's SDO client carries out; host::sdo_write is a transfer itself).
+[[nodiscard]] constexpr sdo_request write_request(od::address a, std::uint32_t value,
+                                                  std::uint8_t size) noexcept {
   sdo_request r{sdo_request::kind::download, a, {}, size};
   for (std::size_t i = 0; i < 4U; ++i) r.data[i] = static_cast<std::uint8_t>(value >> (8U * i));
   return r;
 }
-[[nodiscard]] constexpr sdo_request sdo_read(od::address a) noexcept {
+/// The request for an upload of `a`.
+[[nodiscard]] constexpr sdo_request read_request(od::address a) noexcept {
   return {sdo_request::kind::upload, a, {}, 0};
 }
 
@@ -251,7 +253,7 @@ public:
     requested_mode_ = m;
     mode_bits_ = 0;
     start(drive_state::switching_mode, now, opt_.mode_timeout_ms);
-    request(sdo_write(obj::modes_of_operation, static_cast<std::uint8_t>(m), 1),
+    request(write_request(obj::modes_of_operation, static_cast<std::uint8_t>(m), 1),
             purpose::write_mode);
     return {};
   }
@@ -277,7 +279,7 @@ public:
     mode_bits_ = 0;
     start(drive_state::moving, now, opt_.set_point_timeout_ms);
     if (opt_.target_over_sdo) {
-      request(sdo_write(obj::target_position, static_cast<std::uint32_t>(target), 4),
+      request(write_request(obj::target_position, static_cast<std::uint32_t>(target), 4),
               purpose::write_target);
     }
     return {};
@@ -292,7 +294,7 @@ public:
     mode_bits_ = 0;
     start(drive_state::running, now, 0);
     if (opt_.target_over_sdo) {
-      request(sdo_write(obj::target_velocity, static_cast<std::uint32_t>(velocity), 4),
+      request(write_request(obj::target_velocity, static_cast<std::uint32_t>(velocity), 4),
               purpose::write_target);
     }
     return {};
@@ -308,7 +310,7 @@ public:
     mode_bits_ = 0;
     start(drive_state::homing, now, opt_.homing_timeout_ms);
     if (method) {
-      request(sdo_write(obj::homing_method, static_cast<std::uint8_t>(*method), 1),
+      request(write_request(obj::homing_method, static_cast<std::uint8_t>(*method), 1),
               purpose::write_method);
     }
     return {};
@@ -429,7 +431,7 @@ public:
     }
     if (error_read_queued_) {
       error_read_queued_ = false;
-      request(sdo_read(obj::error_code), purpose::read_error_code);
+      request(read_request(obj::error_code), purpose::read_error_code);
     }
   }
   /// The SDO transfer this machine asked for failed.
@@ -539,7 +541,7 @@ private:
       if (outstanding_) {
         error_read_queued_ = true;
       } else {
-        request(sdo_read(obj::error_code), purpose::read_error_code);
+        request(read_request(obj::error_code), purpose::read_error_code);
       }
     }
   }
@@ -658,7 +660,7 @@ private:
       state_ = seen_ == ds402::state::operation_enabled ? drive_state::enabled : drive_state::idle;
       deadline_.reset();
     } else if (!outstanding_ && !pending_ && !mode_from_pdo_) {
-      request(sdo_read(obj::modes_of_operation_display), purpose::read_mode);
+      request(read_request(obj::modes_of_operation_display), purpose::read_mode);
     }
   }
   constexpr void moving(std::uint32_t now) noexcept {

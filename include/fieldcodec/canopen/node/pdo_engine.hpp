@@ -126,6 +126,14 @@ struct pdo_event {
   return "?";
 }
 
+/// The state in a pdo_engine's steps: whether PDOs are exchanged (NMT operational).
+/// (0 and 1, the bool it replaced: the engine converts its flag without code.)
+enum class pdo_state : std::uint8_t { not_operational = 0, operational = 1 };
+
+[[nodiscard]] constexpr std::string_view to_string(pdo_state s) noexcept {
+  return s == pdo_state::operational ? "PDOs exchanged" : "PDOs not exchanged";
+}
+
 /// A PDO's parameters as the engine holds them. (Every member is 0 until the engine loads them:
 /// an engine's tables start as zeros, which cost a firmware image no initialising code.)
 template <std::size_t MaxEntries>
@@ -168,7 +176,7 @@ class pdo_engine {
 public:
   using config = pdo_config<MaxEntries>;
   /// State in the steps: whether PDOs are exchanged (NMT operational).
-  using step = canopen::step<bool>;
+  using step = canopen::step<pdo_state>;
   /// Whether the engine reaches the mapped objects by position (the store models
   /// canopen::positioned_store): each mapping entry is looked up once, when the mapping is loaded,
   /// instead of at every SYNC and RPDO. Otherwise by address, through read / write.
@@ -1082,7 +1090,8 @@ private:
   /// The step: the frames to send, the state, and deadline(now) — which is nullopt without a
   /// scan when no PDO has timing (timed_).
   [[nodiscard]] constexpr step make(std::uint32_t now) const noexcept {
-    return {out_.view(), operational_, timed_ ? deadline(now) : std::nullopt};
+    return {out_.view(), static_cast<pdo_state>(operational_),
+            timed_ ? deadline(now) : std::nullopt};
   }
   /// Rebuild what the engine derives from the PDOs' parameters, for the paths every SYNC and
   /// every frame take: per PDO one byte or two, tested there instead of the parameters

@@ -39,6 +39,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <utility>
 
 namespace fieldcodec::canopen::node {
@@ -51,6 +52,14 @@ inline constexpr std::uint16_t count = 0x80U;
 
 /// `Crc`: how the servers compute the CRC of block transfers (core/crc.hpp; the clients always
 /// compute it without a table, so that they stay `sdo::client`).
+/// The state in an sdo_channels' steps: whether a transfer runs on any of its channels.
+/// (0 and 1, the bool it replaced: converted without code.)
+enum class channels_state : std::uint8_t { idle = 0, transferring = 1 };
+
+[[nodiscard]] constexpr std::string_view to_string(channels_state s) noexcept {
+  return s == channels_state::transferring ? "SDO transfer running" : "no SDO transfer";
+}
+
 template <canopen::object_store Store, std::size_t Servers, std::size_t Clients, std::size_t Buffer,
           class Crc = crc::ccitt16_no_table>
 class sdo_channels {
@@ -59,7 +68,7 @@ class sdo_channels {
 
 public:
   /// State in the steps: is any transfer running?
-  using step = canopen::step<bool>;
+  using step = canopen::step<channels_state>;
 
   /// Channels of node `node` over `store` (borrowed). Until reload() only server 0 exists, on
   /// the predefined connection.
@@ -186,7 +195,7 @@ public:
     for (std::size_t i = 0; i < used_clients(); ++i) {
       for (const can_frame &f : clients_[i].poll(now).send) out_.push(f);
     }
-    return {out_.view(), busy(), deadline(now)};
+    return {out_.view(), static_cast<channels_state>(busy()), deadline(now)};
   }
 
   /// End every server transfer silently (NMT stopped or a reset; a client's transfer belongs to
