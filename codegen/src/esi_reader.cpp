@@ -7,6 +7,8 @@
 #include "xml.hpp"
 #include "xml_values.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -876,17 +878,10 @@ private:
   static bool hex_bytes(std::string_view t, std::string &out) {
     if (t.size() % 2U != 0U) return false;
     for (std::size_t i = 0; i < t.size(); i += 2U) {
-      int v = 0;
-      for (std::size_t k = 0; k < 2U; ++k) {
-        const char c = t[i + k];
-        int d = -1;
-        if (c >= '0' && c <= '9') d = c - '0';
-        if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
-        if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
-        if (d < 0) return false;
-        v = v * 16 + d;
-      }
-      out += static_cast<char>(v);
+      const int hi = ascii::hex_value(t[i]);
+      const int lo = ascii::hex_value(t[i + 1U]);
+      if (hi < 0 || lo < 0) return false;
+      out += static_cast<char>(hi * 16 + lo);
     }
     return true;
   }

@@ -7,6 +7,8 @@
 #include "xml.hpp"
 #include "xml_values.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -28,19 +30,13 @@ using xdd::iec_types;
 using xdd::mapped_key;
 
 bool is_hex(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
-    return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
-  });
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](char c) { return ascii::hex_value(c) >= 0; });
 }
 
+/// The value of at most 8 hex digits (is_hex(s) holds).
 std::uint32_t hex_value(std::string_view s) {
-  std::uint32_t v = 0;
-  for (const char c : s) {
-    const unsigned d =
-        c <= '9' ? static_cast<unsigned>(c - '0') : static_cast<unsigned>((c | 0x20) - 'a' + 10);
-    v = v * 16U + d;
-  }
-  return v;
+  return static_cast<std::uint32_t>(ascii::parse_hex(s).value_or(0));
 }
 
 // "2016-11-16" (xs:date) → "11-16-2016" (CiA 306); anything else as it is.
@@ -865,13 +861,9 @@ private:
       unsigned v = 0;
       if (part.empty() || part.size() > (mac ? 2U : 3U)) return false;
       for (const char c : part) {
-        unsigned d = 99;
-        if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
-        if (mac && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'))) {
-          d = static_cast<unsigned>((c | 0x20) - 'a' + 10);
-        }
-        if (d >= (mac ? 16U : 10U)) return false;
-        v = v * (mac ? 16U : 10U) + d;
+        const int d = mac ? ascii::hex_value(c) : (ascii::is_digit(c) ? c - '0' : -1);
+        if (d < 0) return false;
+        v = v * (mac ? 16U : 10U) + static_cast<unsigned>(d);
       }
       if (v > 255U) return false;
       out += static_cast<char>(v);

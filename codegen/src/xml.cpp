@@ -3,6 +3,8 @@
 
 #include "text.hpp"
 
+#include <fieldcodec/core/ascii.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <utility>
@@ -394,17 +396,14 @@ private:
       const std::size_t digits = p_;
       while (p_ < t_.size() && t_[p_] != ';') {
         const char c = t_[p_];
-        unsigned d = 99;
-        if (c >= '0' && c <= '9') d = static_cast<unsigned>(c - '0');
-        if (base == 16 && c >= 'a' && c <= 'f') d = static_cast<unsigned>(c - 'a' + 10);
-        if (base == 16 && c >= 'A' && c <= 'F') d = static_cast<unsigned>(c - 'A' + 10);
-        if (d >= base) {
+        const int digit = base == 16 ? ascii::hex_value(c) : (ascii::is_digit(c) ? c - '0' : -1);
+        if (digit < 0) {
           return fail(p_, std::string("expected ") +
                               (base == 16 ? "a hexadecimal digit" : "a digit") +
                               " or ';' in a character reference, got " + quoted(p_));
         }
         if (cp > 0x10FFFFU) cp = 0x110000U; // stays out of range, no overflow
-        cp = cp * base + d;
+        cp = cp * base + static_cast<std::uint32_t>(digit);
         ++p_;
       }
       if (at_end()) return fail(amp, "character reference without ';'");

@@ -1,5 +1,7 @@
-// host::steady_ms, the one steady-clock-to-milliseconds conversion of the host side.
+// host::steady_ms, the one steady-clock-to-milliseconds conversion of the host side, and
+// host::time_left, the one "milliseconds until a deadline" of the adapters.
 #include <fieldcodec/host/clock.hpp>
+#include <fieldcodec/host/deadline.hpp>
 
 #include <doctest/doctest.h>
 
@@ -21,6 +23,16 @@ TEST_CASE("host::steady_ms counts milliseconds since construction, modulo 2^32")
   const std::uint32_t b = clock.now();
   CHECK(b >= a);
   CHECK(a < 60000U); // a fresh clock starts near 0
+}
+
+TEST_CASE("host::time_left: whole milliseconds until a deadline, never negative") {
+  const auto now = std::chrono::steady_clock::now();
+  CHECK(host::time_left(now - 5s) == 0ms);      // passed long ago
+  CHECK(host::time_left(now - 1ms) == 0ms);     // just passed
+  CHECK(host::time_left(now + 500us) == 0ms);   // less than one whole millisecond left
+  const auto left = host::time_left(now + 10s); // rounded down, measured a moment later
+  CHECK(left <= 10s);
+  CHECK(left > 9s);
 }
 
 TEST_CASE("host::time_of_day: the system clock as CiA 301's TIME_OF_DAY") {

@@ -13,6 +13,7 @@
 
 #include <fieldcodec/canopen/can_frame.hpp>
 #include <fieldcodec/core/result.hpp>
+#include <fieldcodec/host/deadline.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 
 #include <chrono>
@@ -61,9 +62,7 @@ public:
   result<timed_frame> receive(std::chrono::milliseconds timeout) {
     const auto end = std::chrono::steady_clock::now() + timeout;
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      auto r = receive_record(left.count() > 0 ? left : std::chrono::milliseconds(0));
+      auto r = receive_record(time_left(end));
       if (!r) return r.error();
       const frame_record &rec = r.value();
       if (rec.error) {

@@ -30,6 +30,7 @@
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
 #include <fieldcodec/host/clock.hpp>
+#include <fieldcodec/host/deadline.hpp>
 
 #include <chrono>
 #include <cstddef>
@@ -158,9 +159,8 @@ public:
   result<void, network_error> run_for(std::chrono::milliseconds ms) {
     const auto end = std::chrono::steady_clock::now() + ms;
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      if (left.count() <= 0) return {};
+      const auto left = time_left(end);
+      if (left.count() == 0) return {};
       if (auto r = run_once(left); !r) return r;
     }
   }
@@ -172,9 +172,8 @@ public:
     const auto end = std::chrono::steady_clock::now() + ms;
     for (;;) {
       if (done()) return {};
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      if (left.count() <= 0) {
+      const auto left = time_left(end);
+      if (left.count() == 0) {
         network_error e;
         e.code = errc::timeout;
         e.what = "not done within " + std::to_string(ms.count()) + " ms";

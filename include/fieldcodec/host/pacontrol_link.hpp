@@ -14,6 +14,7 @@
 
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/deadline.hpp>
 #include <fieldcodec/host/quoted_bytes.hpp>
 #include <fieldcodec/pacontrol/serial_decoder.hpp>
 #include <fieldcodec/pacontrol/serial_frame.hpp>
@@ -97,9 +98,7 @@ private:
     std::array<std::uint8_t, 64> buf{};
     bool in_frame = false; ///< an SOH arrived: errors from here on are a broken answer
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      auto got = port_.read(buf, left.count() > 0 ? left : std::chrono::milliseconds(0));
+      auto got = port_.read(buf, time_left(end));
       if (!got) {
         if (got.error() == errc::timeout) {
           return fail(errc::timeout,

@@ -19,6 +19,7 @@
 
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/deadline.hpp>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -179,8 +180,8 @@ public:
       }
       if (n < 0 && errno == EINTR) continue;
       if (n < 0 && errno != EAGAIN) return fail(errc::bad_state, errno, "write");
-      const auto left = remaining(end);
-      if (left < 0) return fail(errc::timeout, 0, "write: the line does not take more bytes");
+      const int left = poll_ms(end);
+      if (left == 0) return fail(errc::timeout, 0, "write: the line does not take more bytes");
       pollfd p{fd_, POLLOUT, 0};
       ::poll(&p, 1, left);
     }
@@ -203,13 +204,13 @@ public:
     for (;;) {
       // poll first: in raw mode (VMIN = VTIME = 0) read() returns 0 both for "nothing yet"
       // and for a line that is gone, poll() tells them apart.
-      const int left = remaining(end);
+      const int left = poll_ms(end);
       pollfd p{fd_, POLLIN, 0};
-      const int ready = ::poll(&p, 1, left < 0 ? 0 : left);
+      const int ready = ::poll(&p, 1, left);
       if (ready < 0 && errno == EINTR) continue;
       if (ready < 0) return fail(errc::bad_state, errno, "poll");
       if (ready == 0) {
-        if (left <= 0) return fail(errc::timeout, 0, "no answer in time");
+        if (left == 0) return fail(errc::timeout, 0, "no answer in time");
         continue;
       }
       if ((p.revents & POLLIN) == 0) {
@@ -239,12 +240,10 @@ public:
   [[nodiscard]] const bus_error &last_error() const noexcept { return error_; }
 
 private:
-  /// Milliseconds until `end`, -1 when it has passed.
-  static int remaining(std::chrono::steady_clock::time_point end) noexcept {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                          end - std::chrono::steady_clock::now())
-                          .count();
-    if (left < 0) return -1;
+  /// poll()'s timeout for a wait until `end`: time_left (0 once less than a millisecond is
+  /// left), at most 60 s per call (poll takes an int; the loops call again).
+  static int poll_ms(std::chrono::steady_clock::time_point end) noexcept {
+    const auto left = time_left(end).count();
     return static_cast<int>(left > 60'000 ? 60'000 : left);
   }
 

@@ -22,6 +22,7 @@
 #include <fieldcodec/core/ascii.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/deadline.hpp>
 #include <fieldcodec/host/frame_record.hpp>
 
 #include <array>
@@ -279,10 +280,7 @@ private:
     const auto end = std::chrono::steady_clock::now() + timeout;
     std::uint8_t b = 0;
     for (;;) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      auto n = port_.read(std::span<std::uint8_t>(&b, 1),
-                          left.count() > 0 ? left : std::chrono::milliseconds(0));
+      auto n = port_.read(std::span<std::uint8_t>(&b, 1), time_left(end));
       if (!n) {
         if (n.error() == errc::timeout) {
           return fail(errc::timeout, 0, "no answer to '" + command + "' (is it an slcan adapter?)");
@@ -326,10 +324,8 @@ private:
         buffer_.clear();
         return fail(errc::too_long, 0, "line too long from the adapter: " + printable(junk));
       }
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
       std::array<std::uint8_t, 256> tmp{};
-      auto n = port_.read(tmp, left.count() > 0 ? left : std::chrono::milliseconds(0));
+      auto n = port_.read(tmp, time_left(end));
       if (!n) {
         if (n.error() == errc::timeout) return fail(errc::timeout, 0, "no frame in time");
         return fail_port();
