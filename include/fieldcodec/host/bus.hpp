@@ -62,7 +62,8 @@ public:
   result<timed_frame> receive(std::chrono::milliseconds timeout) {
     const auto end = std::chrono::steady_clock::now() + timeout;
     for (;;) {
-      auto r = receive_record(time_left(end));
+      const auto left = time_left(end);
+      auto r = receive_record(left);
       if (!r) return r.error();
       const frame_record &rec = r.value();
       if (rec.error) {
@@ -76,7 +77,7 @@ public:
       }
       auto f = to_canopen(rec);
       if (f) return timed_frame{f.value(), rec.time};
-      if (left.count() <= 0) return fail(errc::timeout, 0, "no frame in time");
+      if (left.count() == 0) return fail(errc::timeout, 0, "no frame in time");
     }
   }
 

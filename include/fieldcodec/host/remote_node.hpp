@@ -49,6 +49,7 @@
 #include <fieldcodec/canopen/step.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/host/bus.hpp>
+#include <fieldcodec/host/deadline.hpp>
 #include <fieldcodec/host/sdo.hpp>
 #include <fieldcodec/host/value_text.hpp>
 #include <fieldcodec/master/pdo_config.hpp>
@@ -296,9 +297,8 @@ public:
     const auto end = std::chrono::steady_clock::now() + ms;
     for (;;) {
       poll_now();
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      if (left.count() <= 0) return {};
+      const auto left = time_left(end);
+      if (left.count() == 0) return {};
       auto r = bus_->receive(left);
       if (r) {
         take(r.value().frame, now());
@@ -314,9 +314,8 @@ public:
   std::optional<node_event> wait_event(std::chrono::milliseconds ms) {
     const auto end = std::chrono::steady_clock::now() + ms;
     while (events_.empty()) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
-      if (left.count() <= 0) break;
+      const auto left = time_left(end);
+      if (left.count() == 0) break;
       if (auto r = listen_once(left); !r) break; // the bus failed: listen() says why
     }
     return next_event();
