@@ -88,6 +88,7 @@
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <cstddef>
@@ -1005,7 +1006,10 @@ private:
     const od::entry *e = store_->dictionary().find(a);
     if (e == nullptr || !od::readable(e->access_type)) return abort_code::none; // the store's
     std::array<std::uint8_t, 8> buf{};
-    const auto value = std::span<std::uint8_t>(buf).first(od::fixed_size(e->type));
+    // at most 8 bytes (a fixed-size type): said to the compiler too, whose -Wstringop-overflow
+    // at -O3 in a user's build cannot see it through fixed_size's table
+    const std::size_t n = std::min<std::size_t>(od::fixed_size(e->type), buf.size());
+    const auto value = std::span<std::uint8_t>(buf).first(n);
     if (const auto v = store_->value(a); v && v.value().size() == value.size()) {
       for (std::size_t i = 0; i < value.size(); ++i) value[i] = v.value()[i];
     }
