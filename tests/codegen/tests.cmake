@@ -67,7 +67,7 @@ if(EXISTS "${fieldcodec_xml_corpus}")
     COMMAND sh ${PROJECT_SOURCE_DIR}/tests/run_test.sh python python3
       ${PROJECT_SOURCE_DIR}/tests/codegen/xml_corpus.py $<TARGET_FILE:fieldcodec-gen>
       ${fieldcodec_xml_corpus} ${CMAKE_CURRENT_BINARY_DIR}/codegen_xml_corpus)
-  set_tests_properties(codegen_xml_corpus PROPERTIES SKIP_RETURN_CODE 77 COST 30) # ~30 s: early
+  set_tests_properties(codegen_xml_corpus PROPERTIES SKIP_RETURN_CODE 77)
 else()
   foreach(name codegen_xml_corpus_headers codegen_xml_corpus)
     add_test(NAME ${name}
@@ -91,8 +91,7 @@ add_test(NAME codegen_cmake_function
     --build-options -DFIELDCODEC_SOURCE_DIR=${PROJECT_SOURCE_DIR}
       -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
     --test-command user)
-set_tests_properties(codegen_cmake_function PROPERTIES FIXTURES_REQUIRED codegen_cmake_function
-  COST 30) # ~30 s: started early (tests/CMakeLists.txt, install_and_consume)
+set_tests_properties(codegen_cmake_function PROPERTIES FIXTURES_REQUIRED codegen_cmake_function)
 
 # The DPQ EDS export (dictionaries/export/) is a clean CiA 306 file: read back with --strict.
 add_test(NAME codegen_export_strict
