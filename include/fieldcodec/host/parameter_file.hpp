@@ -29,11 +29,13 @@
 #include <fieldcodec/canopen/abort_code.hpp>
 #include <fieldcodec/canopen/node/parameter_storage.hpp>
 #include <fieldcodec/core/ascii.hpp>
+#include <fieldcodec/core/bytes.hpp>
 #include <fieldcodec/core/result.hpp>
 #include <fieldcodec/od/address.hpp>
 #include <fieldcodec/od/data_type.hpp>
 #include <fieldcodec/od/dictionary.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -165,9 +167,9 @@ public:
                                          std::uint8_t group = canopen::node::parameter_group::all) {
     auto saved = read();
     if (!saved) return saved.error();
-    values todo;
+    values pending;
     for (auto &[key, bytes] : saved.value()) {
-      if (in_group(group, key.first)) todo.emplace(key, bytes);
+      if (in_group(group, key.first)) pending.emplace(key, bytes);
     }
     std::string problems;
     std::size_t set = 0;
@@ -179,24 +181,20 @@ public:
       return false;
     };
     auto take = [&](std::uint16_t index, std::uint8_t sub) {
-      auto it = todo.find({index, sub});
-      if (it == todo.end()) return;
+      auto it = pending.find({index, sub});
+      if (it == pending.end()) return;
       if (dict_.find(od::address{index, sub}) == nullptr) {
         problems += path_ + ": " + address_text(index, sub) + ": not in the dictionary\n";
       } else if (put(index, sub, it->second)) {
         ++set;
       }
-      todo.erase(it);
+      pending.erase(it);
     };
     auto current_u32 = [&](std::uint16_t index, std::uint8_t sub) -> std::uint32_t {
       auto b = current_({index, sub});
-      std::uint32_t v = 0;
-      if (b) {
-        for (std::size_t i = 0; i < b.value().size() && i < 4U; ++i) {
-          v |= static_cast<std::uint32_t>(b.value()[i]) << (8U * i);
-        }
-      }
-      return v;
+      if (!b) return 0;
+      return static_cast<std::uint32_t>(
+          load_le(b.value().data(), std::min<std::size_t>(b.value().size(), 4U)));
     };
     // PDOs in CiA 301's order: COB-ID invalid, mapping count 0, the communication parameters,
     // the mapping entries, the count, the COB-ID last
@@ -204,19 +202,20 @@ public:
       for (std::uint16_t p = 0; p < 512U; ++p) {
         const auto comm = static_cast<std::uint16_t>(comm_base + p);
         const auto map = static_cast<std::uint16_t>(comm + 0x200U);
-        const bool any = has_index(todo, comm) || has_index(todo, map);
+        const bool any = has_index(pending, comm) || has_index(pending, map);
         if (!any) continue;
         const std::uint32_t cob = current_u32(comm, 1);
         if ((cob & 0x8000'0000U) == 0U && dict_.find(od::address{comm, 1}) != nullptr) {
           (void)put(comm, 1, le4(cob | 0x8000'0000U));
         }
-        const bool remap = has_index(todo, map);
-        if (remap && todo.count({map, 0}) != 0U) (void)put(map, 0, std::array<std::uint8_t, 1>{0});
+        const bool remap = has_index(pending, map);
+        if (remap && pending.count({map, 0}) != 0U)
+          (void)put(map, 0, std::array<std::uint8_t, 1>{0});
         for (std::uint16_t s = 2; s < 256U; ++s) take(comm, static_cast<std::uint8_t>(s));
         for (std::uint16_t s = 1; s < 256U; ++s) take(map, static_cast<std::uint8_t>(s));
         take(map, 0);
         take(comm, 0);
-        if (todo.count({comm, 1}) != 0U) {
+        if (pending.count({comm, 1}) != 0U) {
           take(comm, 1);
         } else if ((cob & 0x8000'0000U) == 0U && dict_.find(od::address{comm, 1}) != nullptr) {
           (void)put(comm, 1, le4(cob)); // valid again, as it was
@@ -224,13 +223,13 @@ public:
       }
     }
     // 1019h (SYNC counter overflow) only while 1006h (communication cycle period) is 0
-    if (todo.count({0x1019, 0}) != 0U) {
+    if (pending.count({0x1019, 0}) != 0U) {
       const std::uint32_t period = current_u32(0x1006, 0);
       if (period != 0U) (void)put(0x1006, 0, le4(0));
       take(0x1019, 0);
-      if (todo.count({0x1006, 0}) == 0U && period != 0U) (void)put(0x1006, 0, le4(period));
+      if (pending.count({0x1006, 0}) == 0U && period != 0U) (void)put(0x1006, 0, le4(period));
     }
-    while (!todo.empty()) take(todo.begin()->first.first, todo.begin()->first.second);
+    while (!pending.empty()) take(pending.begin()->first.first, pending.begin()->first.second);
     if (!problems.empty()) {
       problems.pop_back();
       return problems;
@@ -278,8 +277,9 @@ private:
     return hex(index, 4) + " " + hex(sub, 2);
   }
   static std::array<std::uint8_t, 4> le4(std::uint32_t v) noexcept {
-    return {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8U),
-            static_cast<std::uint8_t>(v >> 16U), static_cast<std::uint8_t>(v >> 24U)};
+    std::array<std::uint8_t, 4> b{};
+    store_le(b.data(), v, b.size());
+    return b;
   }
   static bool has_index(const values &v, std::uint16_t index) {
     auto it = v.lower_bound({index, 0});
