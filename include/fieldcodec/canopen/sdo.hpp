@@ -279,17 +279,27 @@ constexpr void read_expedited_data(const payload &p, message &m) noexcept {
   put_address(p, a);
   return p;
 }
+// Each writer below that can refuse its arguments checks them and calls the one that writes
+// the bytes (put_…), which a machine whose arguments hold by construction calls directly (no
+// result to build and unwrap on every segment).
+
 /// layout::segment: `bytes` (at most 7; exactly 7 unless `last`) and their count in byte 0.
-[[nodiscard]] constexpr result<payload>
-write_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+/// Requires at most 7 bytes.
+[[nodiscard]] constexpr payload
+put_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
   const std::size_t n = bytes.size();
-  if (n > 7U) return errc::too_long;
-  if (!last && n != 7U) return errc::bad_length;
   payload p{};
   p[0] = static_cast<std::uint8_t>(bits | (toggle ? toggle_bit : 0U) | ((7U - n) << 1U) |
                                    (last ? 1U : 0U));
   for (std::size_t i = 0; i < n; ++i) p[1U + i] = bytes[i];
   return p;
+}
+[[nodiscard]] constexpr result<payload>
+write_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, bool last) noexcept {
+  const std::size_t n = bytes.size();
+  if (n > 7U) return errc::too_long;
+  if (!last && n != 7U) return errc::bad_length;
+  return put_segment(bits, toggle, bytes, last);
 }
 /// layout::toggle, and layout::command_only (toggle false).
 [[nodiscard]] constexpr payload write_toggle(unsigned bits, bool toggle) noexcept {
@@ -315,34 +325,47 @@ write_segment(unsigned bits, bool toggle, std::span<const std::uint8_t> bytes, b
 }
 /// layout::block_response and layout::block_upload (`bits` with the CRC flag): the address,
 /// the block size (1..127) and the protocol switch threshold (block_upload only: 0 otherwise).
-[[nodiscard]] constexpr result<payload> write_block_size(unsigned bits, od::address a,
-                                                         std::uint8_t block_size,
-                                                         std::uint8_t threshold) noexcept {
-  if (!valid_block_size(block_size)) return errc::out_of_range;
+[[nodiscard]] constexpr payload put_block_size(unsigned bits, od::address a,
+                                               std::uint8_t block_size,
+                                               std::uint8_t threshold) noexcept {
   payload p = write_address(bits, a);
   p[4] = block_size;
   p[5] = threshold;
   return p;
 }
+[[nodiscard]] constexpr result<payload> write_block_size(unsigned bits, od::address a,
+                                                         std::uint8_t block_size,
+                                                         std::uint8_t threshold) noexcept {
+  if (!valid_block_size(block_size)) return errc::out_of_range;
+  return put_block_size(bits, a, block_size, threshold);
+}
 /// layout::block_ack: the last good sequence number (0..127) and the next block size (1..127).
-[[nodiscard]] constexpr result<payload> write_block_ack(unsigned bits, std::uint8_t sequence,
-                                                        std::uint8_t block_size) noexcept {
-  if (sequence > max_block_size || !valid_block_size(block_size)) return errc::out_of_range;
+[[nodiscard]] constexpr payload put_block_ack(unsigned bits, std::uint8_t sequence,
+                                              std::uint8_t block_size) noexcept {
   payload p{};
   p[0] = static_cast<std::uint8_t>(bits);
   p[1] = sequence;
   p[2] = block_size;
   return p;
 }
+[[nodiscard]] constexpr result<payload> write_block_ack(unsigned bits, std::uint8_t sequence,
+                                                        std::uint8_t block_size) noexcept {
+  if (sequence > max_block_size || !valid_block_size(block_size)) return errc::out_of_range;
+  return put_block_ack(bits, sequence, block_size);
+}
 /// layout::block_end: the unused bytes of the last segment (0..7) and the CRC.
-[[nodiscard]] constexpr result<payload> write_block_end(unsigned bits, std::uint8_t unused,
-                                                        std::uint16_t checksum) noexcept {
-  if (unused > 7U) return errc::out_of_range;
+[[nodiscard]] constexpr payload put_block_end(unsigned bits, std::uint8_t unused,
+                                              std::uint16_t checksum) noexcept {
   payload p{};
   p[0] = static_cast<std::uint8_t>(bits | (static_cast<unsigned>(unused) << 2U));
   p[1] = static_cast<std::uint8_t>(checksum & 0xFFU);
   p[2] = static_cast<std::uint8_t>(checksum >> 8U);
   return p;
+}
+[[nodiscard]] constexpr result<payload> write_block_end(unsigned bits, std::uint8_t unused,
+                                                        std::uint16_t checksum) noexcept {
+  if (unused > 7U) return errc::out_of_range;
+  return put_block_end(bits, unused, checksum);
 }
 } // namespace detail
 
@@ -446,6 +469,48 @@ namespace detail {
 [[nodiscard]] constexpr std::uint8_t expedited_size(std::uint8_t b0) noexcept {
   return static_cast<std::uint8_t>(initiate_size_indicated(b0) ? 4U - ((b0 >> 2U) & 3U) : 4U);
 }
+/// A block initiate (layout::block_initiate, block_response, block_upload): CRC supported
+/// (bit 2); size indicated (bit 1, block_initiate only).
+[[nodiscard]] constexpr bool block_crc(std::uint8_t b0) noexcept { return (b0 & 0x04U) != 0U; }
+[[nodiscard]] constexpr bool block_size_indicated(std::uint8_t b0) noexcept {
+  return (b0 & 0x02U) != 0U;
+}
+/// layout::block_response / block_upload: the block size (byte 4); block_upload: the protocol
+/// switch threshold (byte 5).
+[[nodiscard]] constexpr std::uint8_t initiate_block_size(const payload &p) noexcept { return p[4]; }
+[[nodiscard]] constexpr std::uint8_t switch_threshold(const payload &p) noexcept { return p[5]; }
+/// layout::block_ack: the last good sequence number (byte 1), the next block size (byte 2).
+[[nodiscard]] constexpr std::uint8_t ack_sequence(const payload &p) noexcept { return p[1]; }
+[[nodiscard]] constexpr std::uint8_t ack_block_size(const payload &p) noexcept { return p[2]; }
+/// layout::block_end: bytes of the last segment without data (bits 4..2), the CRC (bytes 1..2).
+[[nodiscard]] constexpr std::uint8_t end_unused(std::uint8_t b0) noexcept {
+  return static_cast<std::uint8_t>((b0 >> 2U) & 7U);
+}
+[[nodiscard]] constexpr std::uint16_t end_checksum(const payload &p) noexcept {
+  return from_bytes<std::uint16_t>({p[1], p[2]}, byte_order::little);
+}
+/// layout::abort: the abort code (bytes 4..7).
+[[nodiscard]] constexpr abort_code abort_of(const payload &p) noexcept {
+  return static_cast<abort_code>(get_u32(p));
+}
+
+/// The type of the command `b0` stands for in direction `D`, or no_type: one byte of a
+/// 32-byte table computed from `commands` (the table itself stays out of the image), for a
+/// machine that reads the rest of a message in place through the readers here (the server).
+inline constexpr auto no_type = static_cast<message_type>(0xFFU);
+template <direction D>
+inline constexpr std::array<message_type, 32> command_types = [] {
+  std::array<message_type, 32> t{};
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const std::uint8_t i = command_index[static_cast<std::size_t>(D)][k];
+    t[k] = i == no_command ? no_type : commands[i].type;
+  }
+  return t;
+}();
+template <direction D>
+[[nodiscard]] constexpr message_type type_of(std::uint8_t b0) noexcept {
+  return command_types<D>[(specifier(b0) << 2U) | (b0 & 3U)];
+}
 
 // The readers of the layouts: each fills the members of its layout from the 8 bytes (`type` is
 // the caller's). decode_by_table reads through them.
@@ -472,14 +537,13 @@ constexpr void read_initiate(const payload &p, message &m) noexcept {
 }
 constexpr void read_abort(const payload &p, message &m) noexcept {
   m.address = get_address(p);
-  m.abort = static_cast<abort_code>(get_u32(p));
+  m.abort = abort_of(p);
 }
 
 /// decode through the command table: every command (decode takes expedited initiates first, by
 /// straight code that gives the same message).
 FIELDCODEC_SDO_OUT_OF_LINE [[nodiscard]] constexpr result<message>
 decode_by_table(const payload &p, direction d) noexcept {
-  const unsigned b0 = p[0];
   const std::size_t ci = detail::command_for(d, p[0]);
   if (ci == std::size(detail::commands)) return errc::unknown_command;
   const detail::command *c = &detail::commands[ci];
@@ -495,24 +559,24 @@ decode_by_table(const payload &p, direction d) noexcept {
   case detail::layout::abort: read_abort(p, m); break;
   case detail::layout::block_initiate:
     m.address = detail::get_address(p);
-    m.crc = (b0 & 0x04U) != 0U;
-    m.size_indicated = (b0 & 0x02U) != 0U;
+    m.crc = block_crc(p[0]);
+    m.size_indicated = block_size_indicated(p[0]);
     if (m.size_indicated) m.size = detail::get_u32(p);
     break;
   case detail::layout::block_response:
   case detail::layout::block_upload:
     m.address = detail::get_address(p);
-    m.crc = (b0 & 0x04U) != 0U;
-    m.block_size = p[4];
-    if (c->lay == detail::layout::block_upload) m.switch_threshold = p[5];
+    m.crc = block_crc(p[0]);
+    m.block_size = initiate_block_size(p);
+    if (c->lay == detail::layout::block_upload) m.switch_threshold = switch_threshold(p);
     break;
   case detail::layout::block_ack:
-    m.sequence = p[1];
-    m.block_size = p[2];
+    m.sequence = ack_sequence(p);
+    m.block_size = ack_block_size(p);
     break;
   case detail::layout::block_end:
-    m.unused = static_cast<std::uint8_t>((b0 >> 2U) & 7U);
-    m.checksum = from_bytes<std::uint16_t>({p[1], p[2]}, byte_order::little);
+    m.unused = end_unused(p[0]);
+    m.checksum = end_checksum(p);
     break;
   case detail::layout::command_only: break;
   }
@@ -597,11 +661,10 @@ static_assert(commands[command_for(message_type::initiate_download_request)].bit
 /// The payload encode() makes of an expedited initiate message (written directly: the bytes
 /// and errors are encode's, in its order). `t` is initiate_download_request or
 /// initiate_upload_response.
-[[nodiscard]] constexpr result<payload> expedited(message_type t, od::address a,
-                                                  std::span<const std::uint8_t> bytes,
-                                                  bool size_indicated) noexcept {
-  if (bytes.size() > 4U) return errc::too_long;
-  if (bytes.empty() || (!size_indicated && bytes.size() != 4U)) return errc::bad_length;
+/// put_expedited writes it (requires 1..4 bytes, exactly 4 when the size is not indicated).
+[[nodiscard]] constexpr payload put_expedited(message_type t, od::address a,
+                                              std::span<const std::uint8_t> bytes,
+                                              bool size_indicated) noexcept {
   const unsigned bits = t == message_type::initiate_download_request ? 0x20U : 0x40U;
   payload p{};
   p[0] = static_cast<std::uint8_t>(bits |
@@ -609,6 +672,13 @@ static_assert(commands[command_for(message_type::initiate_download_request)].bit
   put_address(p, a);
   for (std::size_t i = 0; i < bytes.size(); ++i) p[4U + i] = bytes[i];
   return p;
+}
+[[nodiscard]] constexpr result<payload> expedited(message_type t, od::address a,
+                                                  std::span<const std::uint8_t> bytes,
+                                                  bool size_indicated) noexcept {
+  if (bytes.size() > 4U) return errc::too_long;
+  if (bytes.empty() || (!size_indicated && bytes.size() != 4U)) return errc::bad_length;
+  return put_expedited(t, a, bytes, size_indicated);
 }
 /// The bits of command `T` as a constant (what a named constructor writes).
 template <message_type T>

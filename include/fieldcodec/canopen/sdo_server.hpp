@@ -205,34 +205,40 @@ private:
     if (phase_ == phase::block_download_end && block_rx_.is_repeat(p)) {
       return core_.make(); // the last segment once more
     }
-    auto r = decode(p, direction::to_server);
-    if (!r) {
-      const od::address a = detail::get_address(p);
-      core_.refuse(r.error(), a);
-      return reply_abort(a, abort_code::unknown_command, r.error());
+    // The request is read in place (no `message` is built): its type from the codec's table
+    // (the client → server half), its fields through the codec's layout readers (sdo.hpp).
+    const message_type t = detail::type_of<direction::to_server>(p[0]);
+    if (t == detail::no_type) {
+      return reply_abort(detail::get_address(p), abort_code::unknown_command,
+                         errc::unknown_command);
     }
-    const message &m = r.value();
-    switch (m.type) {
-    case message_type::initiate_download_request: return initiate_download(m, now);
-    case message_type::initiate_upload_request: return initiate_upload(m, now);
-    case message_type::block_download_initiate: return block_download_initiate(m, now);
-    case message_type::block_upload_initiate: return block_upload_initiate(m, now);
+    switch (t) {
+    case message_type::initiate_download_request:
+    case message_type::initiate_upload_request:
+    case message_type::block_download_initiate:
+    case message_type::block_upload_initiate: return initiate(t, p, now);
     case message_type::abort:
       if (core_.busy()) {
-        abandon(m.abort);
-        core_.fail(errc::aborted, m.abort);
+        const abort_code code = detail::abort_of(p);
+        abandon(code);
+        core_.fail(errc::aborted, code);
       }
       phase_ = phase::idle;
       return core_.make();
     default: break;
     }
+    // every other request continues a transfer: the one its phase awaits, or none (idle)
+    if (t != awaited[static_cast<std::size_t>(phase_)]) return unexpected();
     switch (phase_) {
-    case phase::download_segments: return download_segment(m);
-    case phase::upload_segments: return upload_segment(m);
-    case phase::block_download_end: return block_download_end(m);
-    case phase::block_upload_start: return block_upload_start(m);
-    case phase::block_upload_ack: return block_upload_ack(m);
-    case phase::block_upload_end: return block_upload_end(m);
+    case phase::download_segments: return download_segment(p);
+    case phase::upload_segments: return upload_segment(p);
+    case phase::block_download_end: return block_download_end(p);
+    case phase::block_upload_start: return next_burst();
+    case phase::block_upload_ack: return block_upload_ack(p);
+    case phase::block_upload_end:
+      core_.finish();
+      phase_ = phase::idle;
+      return core_.make();
     case phase::idle:
     case phase::block_download_segments: break;
     }
@@ -249,6 +255,17 @@ private:
     block_upload_ack,
     block_upload_end,
   };
+  /// The request each phase takes (no_type: none but the initiates and abort).
+  static constexpr message_type awaited[] = {
+      detail::no_type,                        // idle
+      message_type::download_segment_request, // download_segments
+      message_type::upload_segment_request,   // upload_segments
+      detail::no_type,                        // block_download_segments (segments: on_frame)
+      message_type::block_end,                // block_download_end
+      message_type::block_upload_start,       // block_upload_start
+      message_type::block_ack,                // block_upload_ack
+      message_type::block_end_response,       // block_upload_end
+  };
 
   // ----- answers and failures ------------------------------------------------------------
 
@@ -264,7 +281,7 @@ private:
       core_.refuse(e, a);
     }
     phase_ = phase::idle;
-    return core_.make(frames(ch_.response(abort(a, code))));
+    return send(abort(a, code));
   }
   [[nodiscard]] constexpr step fail(errc e, abort_code code) noexcept {
     return reply_abort(core_.address(), code, e);
@@ -287,9 +304,13 @@ private:
     default: return fail(errc::unexpected_frame, code);
     }
   }
-  [[nodiscard]] constexpr step finish(const payload &p) noexcept {
+  /// The transfer is complete.
+  constexpr void done() noexcept {
     core_.finish();
     phase_ = phase::idle;
+  }
+  [[nodiscard]] constexpr step finish(const payload &p) noexcept {
+    done();
     return send(p);
   }
   constexpr void start(od::address a, std::uint32_t now, phase ph) noexcept {
@@ -309,6 +330,22 @@ private:
     }
   }
 
+  /// A request that starts a transfer (`t`: one of the four initiates) on the object its bytes
+  /// 1..3 name; it ends any running transfer.
+  [[nodiscard]] constexpr step initiate(message_type t, const payload &p,
+                                        std::uint32_t now) noexcept {
+    const od::address a = detail::get_address(p);
+    start(a, now, phase::idle);
+    if (t == message_type::initiate_download_request) return initiate_download(p, a);
+    if (t == message_type::initiate_upload_request) {
+      if (const auto c = open_upload(a); c != abort_code::none) return store_refused(c);
+      return normal_upload_response();
+    }
+    if (!options_.block) return reply_abort(a, abort_code::unknown_command, errc::unknown_command);
+    if (t == message_type::block_download_initiate) return block_download_initiate(p, a);
+    return block_upload_initiate(p, a);
+  }
+
   // ----- the download side: the buffer fills, full buffers go to the store ----------------
 
   /// Append received bytes; a full buffer goes to the store as a part.
@@ -325,35 +362,44 @@ private:
                          std::span<const std::uint8_t>(buf_).first(used_), true);
   }
 
-  [[nodiscard]] constexpr step initiate_download(const message &m, std::uint32_t now) noexcept {
-    start(m.address, now, phase::idle); // a new initiate ends any running transfer
-    const std::optional<std::uint32_t> size =
-        m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt;
-    if (const auto c = store_->begin_write(m.address, size); c != abort_code::none) {
+  /// An initiate download request (layout::initiate): expedited data (bytes 4.., 1..4 of
+  /// them) or the announced size of the segments to come.
+  [[nodiscard]] constexpr step initiate_download(const payload &p, od::address a) noexcept {
+    const bool expedited = detail::initiate_expedited(p[0]);
+    const std::uint8_t n = detail::expedited_size(p[0]);
+    std::optional<std::uint32_t> size;
+    if (detail::initiate_size_indicated(p[0])) size = expedited ? n : detail::get_u32(p);
+    if (const auto c = store_->begin_write(a, size); c != abort_code::none) {
       return store_refused(c);
     }
-    if (m.expedited) {
-      const auto bytes = m.value_bytes();
-      if (const auto c =
-              store_->write(m.address, 0, std::span<const std::uint8_t>(bytes).first(m.size), true);
-          c != abort_code::none) {
-        return store_refused(c);
-      }
-      return finish(download_response(m.address));
+    if (expedited) { // the value in bytes 4.., done
+      const auto c = store_->write(a, 0, std::span<const std::uint8_t>(p).subspan(4, n), true);
+      if (c != abort_code::none) return store_refused(c);
+      done();
+    } else {
+      seg_rx_.start(~std::size_t{0}, size);
+      phase_ = phase::download_segments;
     }
-    seg_rx_.start(~std::size_t{0}, size);
-    phase_ = phase::download_segments;
-    return send(download_response(m.address));
+    return send(download_response(a));
   }
 
-  [[nodiscard]] constexpr step download_segment(const message &m) noexcept {
-    if (m.type != message_type::download_segment_request) return unexpected();
-    const bool toggle = m.toggle;
-    if (const auto c = seg_rx_.accept(m); c != abort_code::none) return local_abort(c);
-    if (const auto c = append(m.bytes()); c != abort_code::none) return store_refused(c);
-    if (!m.last) return send(download_segment_response(toggle));
-    if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
-    return finish(download_segment_response(toggle));
+  /// A download segment request (layout::segment).
+  [[nodiscard]] constexpr step download_segment(const payload &p) noexcept {
+    const bool toggle = detail::segment_toggle(p[0]);
+    const bool last = detail::segment_last(p[0]);
+    const std::uint8_t n = detail::segment_size(p[0]);
+    if (const auto c = seg_rx_.accept(toggle, n, last); c != abort_code::none) {
+      return local_abort(c);
+    }
+    if (const auto c = append(std::span<const std::uint8_t>(p).subspan(1, n));
+        c != abort_code::none) {
+      return store_refused(c);
+    }
+    if (last) {
+      if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
+      done();
+    }
+    return send(download_segment_response(toggle));
   }
 
   [[nodiscard]] constexpr std::uint8_t download_block_size() const noexcept {
@@ -361,23 +407,23 @@ private:
     return static_cast<std::uint8_t>(n > max_block_size ? max_block_size : n);
   }
 
-  [[nodiscard]] constexpr step block_download_initiate(const message &m,
-                                                       std::uint32_t now) noexcept {
-    start(m.address, now, phase::idle);
-    if (!options_.block) {
-      return reply_abort(m.address, abort_code::unknown_command, errc::unknown_command);
-    }
-    const std::optional<std::uint32_t> size =
-        m.size_indicated ? std::optional<std::uint32_t>(m.size) : std::nullopt;
-    if (const auto c = store_->begin_write(m.address, size); c != abort_code::none) {
+  /// A block download initiate (layout::block_initiate).
+  [[nodiscard]] constexpr step block_download_initiate(const payload &p, od::address a) noexcept {
+    const std::optional<std::uint32_t> size = detail::block_size_indicated(p[0])
+                                                  ? std::optional<std::uint32_t>(detail::get_u32(p))
+                                                  : std::nullopt;
+    if (const auto c = store_->begin_write(a, size); c != abort_code::none) {
       return store_refused(c);
     }
     const std::uint8_t n = download_block_size();
     if (n == 0U) return fail(errc::buffer_too_small, abort_code::out_of_memory);
-    const bool crc = options_.crc && m.crc;
+    const bool crc = options_.crc && detail::block_crc(p[0]);
     block_rx_.start(~std::size_t{0}, size, crc, n);
     phase_ = phase::block_download_segments;
-    return send(block_download_initiate_response(m.address, n, crc).value_or(payload{}));
+    // n is 1..127: the writer without the check
+    return send(detail::put_block_size(
+        detail::bits_of<message_type::block_download_initiate_response> | (crc ? 0x04U : 0U), a, n,
+        0));
   }
 
   /// A segment of a block download (on_frame's short path). The common case — with room for 7
@@ -412,9 +458,9 @@ private:
     return send(block_rx_.acknowledge(n == 0U ? 1U : n));
   }
 
-  [[nodiscard]] constexpr step block_download_end(const message &m) noexcept {
-    if (m.type != message_type::block_end) return unexpected();
-    const auto r = block_rx_.on_end(m);
+  /// A block download end (layout::block_end).
+  [[nodiscard]] constexpr step block_download_end(const payload &p) noexcept {
+    const auto r = block_rx_.on_end(detail::end_unused(p[0]), detail::end_checksum(p));
     if (r.abort != abort_code::none) return local_abort(r.abort);
     if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
     if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
@@ -451,50 +497,45 @@ private:
     return abort_code::none;
   }
 
-  [[nodiscard]] constexpr step initiate_upload(const message &m, std::uint32_t now) noexcept {
-    start(m.address, now, phase::idle);
-    if (const auto c = open_upload(m.address); c != abort_code::none) return store_refused(c);
-    return normal_upload_response();
-  }
   /// The answer to an initiate upload (also after a protocol switch).
   [[nodiscard]] constexpr step normal_upload_response() noexcept {
     if (size_ >= 1U && size_ <= 4U) {
       if (used_ < size_) return fail(errc::buffer_too_small, abort_code::out_of_memory);
-      return finish(expedited_upload_response(core_.address(), view(0, size_)).value_or(payload{}));
+      // 1..4 bytes, size indicated: the writer without the checks
+      return finish(detail::put_expedited(message_type::initiate_upload_response, core_.address(),
+                                          view(0, size_), true));
     }
     seg_tx_.start(static_cast<std::uint32_t>(size_));
     phase_ = phase::upload_segments;
     return send(upload_response(core_.address(), static_cast<std::uint32_t>(size_)));
   }
 
-  [[nodiscard]] constexpr step upload_segment(const message &m) noexcept {
-    if (m.type != message_type::upload_segment_request) return unexpected();
-    if (m.toggle != seg_tx_.toggle()) {
+  /// An upload segment request (layout::toggle).
+  [[nodiscard]] constexpr step upload_segment(const payload &p) noexcept {
+    if (detail::segment_toggle(p[0]) != seg_tx_.toggle()) {
       return fail(errc::bad_toggle, abort_code::toggle_not_alternated);
     }
     const std::size_t at = seg_tx_.offset();
     const std::size_t n = seg_tx_.next_length();
     if (const auto c = window(at, n); c != abort_code::none) return store_refused(c);
-    const payload p = seg_tx_.next(message_type::upload_segment_response, view(at, n));
-    if (seg_tx_.finished()) return finish(p);
-    return send(p);
+    const payload seg = seg_tx_.next(message_type::upload_segment_response, view(at, n));
+    if (seg_tx_.finished()) done();
+    return send(seg);
   }
 
-  [[nodiscard]] constexpr step block_upload_initiate(const message &m, std::uint32_t now) noexcept {
-    start(m.address, now, phase::idle);
-    if (!options_.block) {
-      return reply_abort(m.address, abort_code::unknown_command, errc::unknown_command);
-    }
-    if (m.block_size < 1U || m.block_size > max_block_size) {
+  /// A block upload initiate (layout::block_upload).
+  [[nodiscard]] constexpr step block_upload_initiate(const payload &p, od::address a) noexcept {
+    const std::uint8_t block_size = detail::initiate_block_size(p);
+    if (!detail::valid_block_size(block_size)) {
       return fail(errc::out_of_range, abort_code::invalid_block_size);
     }
-    if (const auto c = open_upload(m.address); c != abort_code::none) return store_refused(c);
-    if (m.switch_threshold != 0U && size_ <= m.switch_threshold) return normal_upload_response();
-    const bool crc = options_.crc && m.crc;
-    block_tx_.start(static_cast<std::uint32_t>(size_), crc, m.block_size);
+    if (const auto c = open_upload(a); c != abort_code::none) return store_refused(c);
+    const std::uint8_t threshold = detail::switch_threshold(p);
+    if (threshold != 0U && size_ <= threshold) return normal_upload_response();
+    const bool crc = options_.crc && detail::block_crc(p[0]);
+    block_tx_.start(static_cast<std::uint32_t>(size_), crc, block_size);
     phase_ = phase::block_upload_start;
-    return send(
-        block_upload_initiate_response(m.address, static_cast<std::uint32_t>(size_), true, crc));
+    return send(block_upload_initiate_response(a, static_cast<std::uint32_t>(size_), true, crc));
   }
 
   [[nodiscard]] constexpr step next_burst() noexcept {
@@ -509,25 +550,13 @@ private:
     return core_.make(block_tx_.burst(ch_.response_id, burst_));
   }
 
-  [[nodiscard]] constexpr step block_upload_start(const message &m) noexcept {
-    if (m.type != message_type::block_upload_start) return unexpected();
-    return next_burst();
-  }
-
-  [[nodiscard]] constexpr step block_upload_ack(const message &m) noexcept {
-    if (m.type != message_type::block_ack) return unexpected();
-    const auto r = block_tx_.on_ack(m, burst_);
+  /// A block acknowledgement (layout::block_ack).
+  [[nodiscard]] constexpr step block_upload_ack(const payload &p) noexcept {
+    const auto r = block_tx_.on_ack(detail::ack_sequence(p), detail::ack_block_size(p), burst_);
     if (r.abort != abort_code::none) return local_abort(r.abort);
     if (r.what == basic_block_sender<Crc>::next::burst) return next_burst();
     phase_ = phase::block_upload_end;
     return send(block_tx_.end());
-  }
-
-  [[nodiscard]] constexpr step block_upload_end(const message &m) noexcept {
-    if (m.type != message_type::block_end_response) return unexpected();
-    core_.finish();
-    phase_ = phase::idle;
-    return core_.make();
   }
 
   channel ch_;

@@ -94,11 +94,15 @@ public:
   [[nodiscard]] constexpr payload next(message_type type,
                                        std::span<const std::uint8_t> bytes) noexcept {
     const bool last = next_is_last();
-    const auto p = detail::write_segment(detail::command_bits(type), toggle_, bytes, last);
+    // the bits of the two segment commands as constants (no look-up in the command table)
+    const unsigned bits = type == message_type::download_segment_request
+                              ? detail::bits_of<message_type::download_segment_request>
+                              : detail::bits_of<message_type::upload_segment_response>;
+    const payload p = detail::put_segment(bits, toggle_, bytes, last); // 7 bytes, or fewer last
     offset_ += static_cast<std::uint32_t>(bytes.size());
     sent_last_ = last;
     toggle_ = !toggle_;
-    return p.value_or(payload{}); // 7 bytes, or fewer in the last: cannot fail
+    return p;
   }
   /// Does the toggle the peer answered with belong to the segment just sent?
   [[nodiscard]] constexpr bool answer_matches(bool peer_toggle) const noexcept {
@@ -247,24 +251,30 @@ public:
   };
   [[nodiscard]] constexpr ack_result on_ack(const message &m,
                                             std::span<const std::uint8_t> window) noexcept {
-    if (m.sequence > in_flight_) return {abort_code::invalid_sequence_number, next::burst};
-    const bool ended = burst_ends_transfer() && m.sequence == in_flight_;
-    std::uint32_t n = 7U * m.sequence;
+    return on_ack(m.sequence, m.block_size, window);
+  }
+  /// The same for an acknowledgement read in place: its sequence number and block size.
+  [[nodiscard]] constexpr ack_result on_ack(std::uint8_t sequence, std::uint8_t block_size,
+                                            std::span<const std::uint8_t> window) noexcept {
+    if (sequence > in_flight_) return {abort_code::invalid_sequence_number, next::burst};
+    const bool ended = burst_ends_transfer() && sequence == in_flight_;
+    std::uint32_t n = 7U * sequence;
     if (n > window.size()) n = static_cast<std::uint32_t>(window.size());
     if (crc_enabled_) crc_ = Crc::update(window.first(n), crc_);
     acked_ += n;
     in_flight_ = 0;
     if (ended) return {abort_code::none, next::end};
-    if (m.block_size < 1U || m.block_size > max_block_size) {
+    if (block_size < 1U || block_size > max_block_size) {
       return {abort_code::invalid_block_size, next::burst};
     }
-    block_size_ = m.block_size;
+    block_size_ = block_size;
     return {abort_code::none, next::burst};
   }
   /// The end message once every segment is acknowledged.
   [[nodiscard]] constexpr payload end() const noexcept {
     const auto unused = static_cast<std::uint8_t>(7U * segments_for(size_) - size_);
-    return block_end(unused, crc_enabled_ ? crc_ : std::uint16_t{0}).value_or(payload{});
+    return detail::put_block_end(detail::bits_of<message_type::block_end>, unused, // 0..6
+                                 crc_enabled_ ? crc_ : std::uint16_t{0});
   }
 
 private:
@@ -442,7 +452,8 @@ public:
     const std::uint8_t seq = sequence_;
     sequence_ = 0;
     block_size_ = next_block_size;
-    return block_ack(seq, next_block_size).value_or(payload{});
+    // sequence_ never passes block_size_ (≤ 127); the size is clamped above
+    return detail::put_block_ack(detail::bits_of<message_type::block_ack>, seq, next_block_size);
   }
 
   /// Check the end message; on success the caller stores `bytes` (the data of the last
@@ -455,12 +466,16 @@ public:
     std::size_t offset = 0;
   };
   [[nodiscard]] constexpr end_result on_end(const message &m) noexcept {
+    return on_end(m.unused, m.checksum);
+  }
+  /// The same for an end message read in place: its unused bytes (0..7) and CRC.
+  [[nodiscard]] constexpr end_result on_end(std::uint8_t unused, std::uint16_t checksum) noexcept {
     end_result r;
     if (!final_) {
       r.abort = abort_code::unknown_command;
       return r;
     }
-    const std::size_t n = 7U - m.unused;
+    const std::size_t n = 7U - unused;
     const std::size_t total = count_ + n;
     if (announced_ && total > *announced_) r.abort = abort_code::length_too_high;
     if (announced_ && total < *announced_) r.abort = abort_code::length_too_low;
@@ -468,7 +483,7 @@ public:
     if (r.abort != abort_code::none) return r;
     r.bytes = std::span<const std::uint8_t>(last_).first(n);
     r.offset = count_;
-    if (crc_enabled_ && Crc::update(r.bytes, crc_) != m.checksum) {
+    if (crc_enabled_ && Crc::update(r.bytes, crc_) != checksum) {
       r.abort = abort_code::crc_error;
       return r;
     }

@@ -74,11 +74,7 @@ public:
   /// the predefined connection.
   constexpr sdo_channels(Store &store, std::uint8_t node, std::uint32_t timeout_ms = 1000,
                          sdo::server_options o = {}) noexcept
-      : store_(&store), node_(node), servers_(make_servers(store, node, timeout_ms, o, buffers_,
-                                                           std::make_index_sequence<Servers>{})),
-        clients_(make_clients(timeout_ms, std::make_index_sequence<Clients>{})) {
-    server_ok_[0] = sdo::channel::default_for(node).has_value();
-  }
+      : sdo_channels(store, node, sdo::channel::default_for(node), timeout_ms, o) {}
 
   sdo_channels(const sdo_channels &) = delete;
   sdo_channels &operator=(const sdo_channels &) = delete;
@@ -189,11 +185,12 @@ public:
   /// Timeouts of every channel (each sends at most one abort).
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
     out_.clear();
+    // a timeout sends one abort frame, nothing else does
     for (std::size_t i = 0; i < Servers; ++i) {
-      for (const can_frame &f : servers_[i].poll(now).send) out_.push(f);
+      if (const auto s = servers_[i].poll(now); !s.send.empty()) out_.push(s.send[0]);
     }
     for (std::size_t i = 0; i < used_clients(); ++i) {
-      for (const can_frame &f : clients_[i].poll(now).send) out_.push(f);
+      if (const auto s = clients_[i].poll(now); !s.send.empty()) out_.push(s.send[0]);
     }
     return {out_.view(), static_cast<channels_state>(busy()), deadline(now)};
   }
@@ -244,15 +241,25 @@ public:
   static constexpr std::size_t client_capacity() noexcept { return Clients; }
 
 private:
+  /// `predefined`: the predefined connection of `node`, when it has one.
+  constexpr sdo_channels(Store &store, std::uint8_t node, result<sdo::channel> predefined,
+                         std::uint32_t timeout_ms, sdo::server_options o) noexcept
+      : store_(&store), node_(node),
+        servers_(make_servers(store, predefined.value_or(sdo::channel{}), timeout_ms, o, buffers_,
+                              std::make_index_sequence<Servers>{})),
+        clients_(make_clients(timeout_ms, std::make_index_sequence<Clients>{})) {
+    server_ok_[0] = predefined.has_value();
+  }
+
   template <std::size_t... S>
   [[nodiscard]] static constexpr std::array<sdo::server<Store, Crc>, Servers>
-  make_servers(Store &store, std::uint8_t node, std::uint32_t timeout_ms, sdo::server_options o,
+  make_servers(Store &store, sdo::channel predefined, std::uint32_t timeout_ms,
+               sdo::server_options o,
                std::array<std::array<std::uint8_t, Buffer>, Servers> &buffers,
                std::index_sequence<S...>) noexcept {
     // server 0 starts on the predefined connection, the others without one (until reload)
-    return {{sdo::server<Store, Crc>(
-        S == 0U ? sdo::channel::default_for(node).value_or(sdo::channel{}) : sdo::channel{}, store,
-        std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
+    return {{sdo::server<Store, Crc>(S == 0U ? predefined : sdo::channel{}, store,
+                                     std::span<std::uint8_t>(buffers[S]), timeout_ms, o)...}};
   }
   template <std::size_t... C>
   [[nodiscard]] static constexpr std::array<sdo::client, Clients>
