@@ -304,6 +304,7 @@ private:
     default: return fail(errc::unexpected_frame, code);
     }
   }
+
   /// The transfer is complete.
   constexpr void done() noexcept {
     core_.finish();
@@ -350,11 +351,18 @@ private:
 
   /// Append received bytes; a full buffer goes to the store as a part.
   [[nodiscard]] constexpr abort_code append(std::span<const std::uint8_t> bytes) noexcept {
-    return detail::append_parts(buf_, used_, bytes, [this]() noexcept {
-      const auto c = store_->write(core_.address(), flushed_, buf_, false);
-      if (c == abort_code::none) flushed_ += used_;
-      return c;
-    });
+    return detail::append_parts(buf_, used_, bytes, [this]() noexcept { return flush(); });
+  }
+  /// Pass the bytes in the buffer to the store as a part (not the last); the buffer is then
+  /// empty.
+  [[nodiscard]] constexpr abort_code flush() noexcept {
+    const auto c = store_->write(core_.address(), flushed_,
+                                 std::span<const std::uint8_t>(buf_).first(used_), false);
+    if (c == abort_code::none) {
+      flushed_ += used_;
+      used_ = 0;
+    }
+    return c;
   }
   /// The last part: the value becomes visible (or is refused).
   [[nodiscard]] constexpr abort_code complete_download() noexcept {
@@ -391,15 +399,19 @@ private:
     if (const auto c = seg_rx_.accept(toggle, n, last); c != abort_code::none) {
       return local_abort(c);
     }
-    if (const auto c = append(std::span<const std::uint8_t>(p).subspan(1, n));
-        c != abort_code::none) {
-      return store_refused(c);
-    }
+    return take(std::span<const std::uint8_t>(p).subspan(1, n), last,
+                download_segment_response(toggle));
+  }
+  /// Received bytes into the buffer (a full buffer goes to the store as a part); when they are
+  /// the `last`, the value goes to the store and the transfer is done. Then `answer`.
+  [[nodiscard]] constexpr step take(std::span<const std::uint8_t> bytes, bool last,
+                                    const payload &answer) noexcept {
+    if (const auto c = append(bytes); c != abort_code::none) return store_refused(c);
     if (last) {
       if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
       done();
     }
-    return send(download_segment_response(toggle));
+    return send(answer);
   }
 
   [[nodiscard]] constexpr std::uint8_t download_block_size() const noexcept {
@@ -417,7 +429,7 @@ private:
     }
     const std::uint8_t n = download_block_size();
     if (n == 0U) return fail(errc::buffer_too_small, abort_code::out_of_memory);
-    const bool crc = options_.crc && detail::block_crc(p[0]);
+    const bool crc = options_.crc & detail::block_crc(p[0]); // both (`&`: no branch)
     block_rx_.start(~std::size_t{0}, size, crc, n);
     phase_ = phase::block_download_segments;
     // n is 1..127: the writer without the check
@@ -448,11 +460,7 @@ private:
     if (block_rx_.final_received()) phase_ = phase::block_download_end;
     // room for the next sub-block: send the collected bytes to the store when it is short
     if (download_block_size() == 0U && used_ > 0U) {
-      const auto c = store_->write(core_.address(), flushed_,
-                                   std::span<const std::uint8_t>(buf_).first(used_), false);
-      if (c != abort_code::none) return store_refused(c);
-      flushed_ += used_;
-      used_ = 0;
+      if (const auto c = flush(); c != abort_code::none) return store_refused(c);
     }
     const std::uint8_t n = download_block_size();
     return send(block_rx_.acknowledge(n == 0U ? 1U : n));
@@ -462,9 +470,7 @@ private:
   [[nodiscard]] constexpr step block_download_end(const payload &p) noexcept {
     const auto r = block_rx_.on_end(detail::end_unused(p[0]), detail::end_checksum(p));
     if (r.abort != abort_code::none) return local_abort(r.abort);
-    if (const auto c = append(r.bytes); c != abort_code::none) return store_refused(c);
-    if (const auto c = complete_download(); c != abort_code::none) return store_refused(c);
-    return finish(block_end_response());
+    return take(r.bytes, true, block_end_response());
   }
 
   // ----- the upload side: the buffer is a window over the value --------------------------
@@ -532,7 +538,7 @@ private:
     if (const auto c = open_upload(a); c != abort_code::none) return store_refused(c);
     const std::uint8_t threshold = detail::switch_threshold(p);
     if (threshold != 0U && size_ <= threshold) return normal_upload_response();
-    const bool crc = options_.crc && detail::block_crc(p[0]);
+    const bool crc = options_.crc & detail::block_crc(p[0]); // both (`&`: no branch)
     block_tx_.start(static_cast<std::uint32_t>(size_), crc, block_size);
     phase_ = phase::block_upload_start;
     return send(block_upload_initiate_response(a, static_cast<std::uint32_t>(size_), true, crc));
