@@ -301,6 +301,9 @@ public:
       }
       return c;
     }
+    [[nodiscard]] constexpr od::dictionary dictionary() const noexcept {
+      return d_->store_->dictionary();
+    }
     [[nodiscard]] constexpr abort_code begin_write(od::address a,
                                                    std::optional<std::uint32_t> size) noexcept {
       if constexpr (C.hooks > 0U) {
@@ -495,7 +498,7 @@ public:
     begin(now);
     const nmt::state s = nmt_.state();
     if (!started_ || s == nmt::state::boot_up) return finish(now);
-    take(producer_.poll(now, s));
+    if (const auto f = producer_.due(now, s)) out_.push(*f);
     if constexpr (C.sync_producer) {
       if (allowed(s, service::sync)) {
         if (const auto f = sync_out_.poll(now)) {
@@ -504,7 +507,7 @@ public:
         }
       }
     }
-    (void)consumer_.poll(now);
+    consumer_.check_times(now);
     bool lost = consumer_events();
     const auto before = life_.state();
     if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
@@ -516,7 +519,7 @@ public:
     if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
     take(pdo_.poll(now));
     pdo_events();
-    take(emcy_.poll(now));
+    take_frames(emcy_.send_due(now));
     return finish(now);
   }
 
@@ -569,14 +572,14 @@ public:
     if (const status r = emcy_.raise_error(code, now, register_bits, manufacturer); !r) {
       return r.error();
     }
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     return finish(now);
   }
   /// An application error is gone (see emcy_producer::clear).
   [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
     begin(now);
     if (const status r = emcy_.clear_error(code, now); !r) return r.error();
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     return finish(now);
   }
   /// An error of class `sub` of 1029h was found (1 = communication error: e.g. the CAN driver
@@ -696,6 +699,9 @@ private:
   [[gnu::noinline]] constexpr void take_frames(const frames &send) noexcept {
     for (const can_frame &f : send) out_.push(f);
   }
+  [[gnu::noinline]] constexpr void take_frames(std::span<const can_frame> send) noexcept {
+    for (const can_frame &f : send) out_.push(f);
+  }
   // the events and their loops: one function each, called from several places
   [[gnu::noinline]] constexpr void push_event(const event &e) noexcept { events_.push(e); }
   [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { events_.push(event{k}); }
@@ -734,12 +740,12 @@ private:
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!started_ || nmt_.state() == nmt::state::boot_up) return std::nullopt;
-    auto d = producer_.deadline();
-    d = earliest(d, consumer_.deadline(now), now);
-    d = earliest(d, life_.deadline(), now);
-    d = earliest(d, emcy_.deadline(), now);
-    d = earliest(d, pdo_.deadline(now), now);
-    d = earliest(d, sdo_.deadline(now), now);
+    // the services' deadlines in one loop (one call of earliest, not one per service)
+    const std::optional<std::uint32_t> due[] = {producer_.deadline(), consumer_.deadline(now),
+                                                life_.deadline(),     emcy_.deadline(),
+                                                pdo_.deadline(now),   sdo_.deadline(now)};
+    std::optional<std::uint32_t> d;
+    for (const auto &x : due) d = earliest(d, x, now);
     if constexpr (C.sync_producer) {
       if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
     }
@@ -792,7 +798,7 @@ private:
       }
     }
     if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
-      (void)consumer_.on_frame(f, now);
+      consumer_.receive(f, now);
       (void)consumer_events();
       return;
     }
@@ -815,12 +821,11 @@ private:
 
   /// A SYNC, received or the node's own: the consumer takes it, the PDOs follow.
   constexpr void sync_frame(const can_frame &f, std::uint32_t now) noexcept {
-    const auto r = sync_.on_frame(f, now);
-    if (!r.state.received) return;
+    if (!sync_.receive(f, now)) return;
     event e{event::kind::sync};
-    e.counter = r.state.counter;
+    e.counter = sync_.counter();
     push_event(e);
-    take(pdo_.on_sync(r.state.counter, now));
+    take(pdo_.on_sync(e.counter, now));
     pdo_events();
   }
 
@@ -828,7 +833,7 @@ private:
 
   constexpr void nmt_frame(const can_frame &f, std::uint32_t now) noexcept {
     const nmt::state before = nmt_.state();
-    (void)nmt_.on_frame(f, now);
+    nmt_.receive(f);
     if (nmt_.pending_reset() != reset::none) {
       carry_out(nmt_.pending_reset(), now);
     } else if (nmt_.state() != before) {
@@ -845,12 +850,9 @@ private:
       const std::uint8_t to = lss_.activate();
       if (to != node_) st = renumber(to);
     }
-    if (r == reset::application) {
-      const auto range = restored(reset::application);
-      if (auto s1 = store_->restore_defaults(range.first, range.last); !s1 && st) st = s1;
-    }
-    const auto comm = restored(reset::communication);
-    if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
+    // reset node: 2000h–FFFFh and 1000h–1FFFh, in one pass (the ranges are adjacent)
+    const std::uint16_t first = restored(reset::communication).first;
+    if (auto s1 = store_->restore_defaults(first, restored(r).last); !s1 && st) st = s1;
     guard_.reset();
     configure(now);
     if (!st && config_) config_ = st;
@@ -862,7 +864,7 @@ private:
   }
   /// Send the boot-up message and enter pre-operational (or operational).
   constexpr void boot(std::uint32_t now) noexcept {
-    take(nmt_.boot(options_.self_start));
+    if (const auto f = nmt_.boot_up(options_.self_start)) out_.push(*f);
     state_changed(now);
   }
   constexpr void state_changed(std::uint32_t now) noexcept {
@@ -907,7 +909,7 @@ private:
     config_ = status{};
     own_errors_ = 0;
     each_service(*this, [&](auto &service) {
-      if (const status st = service.load(*store_, now); !st && config_) config_ = st;
+      if (const status st = service.load(access_, now); !st && config_) config_ = st;
     });
   }
 
@@ -1136,7 +1138,7 @@ private:
                         : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     if (on) own_errors_ = static_cast<std::uint8_t>(own_errors_ | bit);
   }
   // ----- members ---------------------------------------------------------------------------

@@ -174,6 +174,12 @@ public:
 
   /// Send what the inhibit time held back.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept { return flush(now); }
+  /// poll() without the step (what node::device calls): the frames it sends.
+  [[nodiscard]] constexpr std::span<const can_frame> send_due(std::uint32_t now) noexcept {
+    out_.clear();
+    send_queued(now);
+    return sent();
+  }
 
   /// Forget everything (NMT reset): no active errors, empty history, nothing queued. Sends
   /// nothing.
