@@ -389,9 +389,9 @@ public:
   /// without LSS keeps nothing of it).
   constexpr device(Store &store, std::uint8_t node, options o = {},
                    [[maybe_unused]] lss_options l = {}) noexcept
-      : store_(&store), options_(o), node_(node), nmt_(node), producer_(node), guard_(node),
-        emcy_(node), lss_(make_lss(node, l)), access_(*this), pdo_(access_, store.dictionary()),
-        sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
+      : store_(&store), self_start_(o.self_start), node_(node), nmt_(node), producer_(node),
+        guard_(node), emcy_(node), lss_(make_lss(node, l)), access_(*this),
+        pdo_(access_, store.dictionary()), sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
     pdo_.report_long_rpdo(o.report_long_rpdo);
     sync_.allow_producer(C.sync_producer);
     emcy_.report_each_reset(o.report_each_reset);
@@ -686,7 +686,7 @@ private:
       carry_ = !out_.empty(); // the node's own frames go out with the next call
       if (carry_) s.deadline = now;
     } else {
-      s.send = out_.view();
+      s.send = frames(out_.span());
     }
     return s;
   }
@@ -771,7 +771,7 @@ private:
     const nmt::state s = nmt_.state();
     if (s == nmt::state::boot_up) return;
     if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
-      if (auto r = guard_.respond(f, s)) out_.push(r.value());
+      if (const auto r = guard_.answer(s)) out_.push(*r); // route's checks: this node's request
       const auto before = life_.state();
       (void)life_.on_request(now);
       if (before == guard_state::lost) push_event(event::kind::life_guard_resumed);
@@ -864,7 +864,7 @@ private:
   }
   /// Send the boot-up message and enter pre-operational (or operational).
   constexpr void boot(std::uint32_t now) noexcept {
-    if (const auto f = nmt_.boot_up(options_.self_start)) out_.push(*f);
+    if (const auto f = nmt_.boot_up(self_start_)) out_.push(*f);
     state_changed(now);
   }
   constexpr void state_changed(std::uint32_t now) noexcept {
@@ -973,14 +973,13 @@ private:
         }
       }
     }
-    if (whole) {
-      if (const auto c = check(a, part); c != abort_code::none) return c;
-      if (const auto c = storage_command(a, part)) return *c;
-    } else if (a.index >= 0x1000U && a.index <= 0x1FFFU && u32_of(part).has_value() &&
-               check(a, part) != abort_code::none) {
+    if (const auto c = check(a, part); c != abort_code::none) {
       // a communication value in parts would pass unchecked: the servers' buffers (≥ 8 bytes)
-      // always hold the ≤ 4 bytes of one, so this is a value of the wrong length anyway
-      return abort_code::length_too_high;
+      // always hold the ≤ 4 bytes of one, so a part refused is a value of the wrong length
+      return whole ? c : abort_code::length_too_high;
+    }
+    if (whole) {
+      if (const auto c = storage_command(a, part)) return *c;
     }
     abort_code c = abort_code::none;
     if constexpr (canopen::positioned_store<Store>) {
@@ -1153,7 +1152,7 @@ private:
       4U + (C.lss ? 1U : 0U) + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
   Store *store_;
-  options options_;
+  bool self_start_; ///< options::self_start (the other options are taken by the services)
   std::uint8_t node_;
   nmt_slave nmt_;
   heartbeat_producer producer_;

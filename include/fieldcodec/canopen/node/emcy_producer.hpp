@@ -225,12 +225,12 @@ public:
     reset();
     if (const auto v = read_u32(store, {0x1014, 0})) load_cob_id(*v);
     if (const auto v = read_u32(store, {0x1015, 0})) set_inhibit(static_cast<std::uint16_t>(*v));
-    const auto dict = store.dictionary();
+    const auto entries = store.dictionary().object(0x1003);
     history_subs_ = 0;
-    for (const auto &e : dict.object(0x1003)) {
+    for (const auto &e : entries) {
       if (e.sub > history_subs_) history_subs_ = e.sub;
     }
-    has_history_ = history_subs_ != 0U || dict.contains(0x1003, 0);
+    has_history_ = !entries.empty();
     return {};
   }
   /// After a change (take_changed()): write the error register to 1001h and the history to
