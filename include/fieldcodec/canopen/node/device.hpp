@@ -740,19 +740,24 @@ private:
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!started_ || nmt_.state() == nmt::state::boot_up) return std::nullopt;
-    // the services' deadlines in one loop (one call of earliest, not one per service)
-    const std::optional<std::uint32_t> due[] = {producer_.deadline(), consumer_.deadline(now),
-                                                life_.deadline(),     emcy_.deadline(),
-                                                pdo_.deadline(now),   sdo_.deadline(now)};
-    std::optional<std::uint32_t> d;
-    for (const auto &x : due) d = earliest(d, x, now);
+    std::optional<std::uint32_t> sync_due;
     if constexpr (C.sync_producer) {
-      if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
+      if (allowed(nmt_.state(), service::sync)) sync_due = sync_out_.deadline();
     }
-    // a deadline the caller let pass (a frame handled after it, before the poll) is now: poll
-    // at once; never a time in the past, which a wrapping counter would read as 2^32 ms ahead
-    if (d && reached(*d, now)) d = now;
-    return d;
+    const std::optional<std::uint32_t> due[] = {
+        producer_.deadline(), consumer_.deadline(now), life_.deadline(), emcy_.deadline(),
+        pdo_.deadline(now),   sdo_.deadline(now),      sync_due};
+    // the earliest, as a distance from now; a deadline the caller let pass (a frame handled
+    // after it, before the poll) is now: poll at once; never a time in the past, which a
+    // wrapping counter would read as 2^32 ms ahead
+    std::optional<std::uint32_t> wait;
+    for (const auto &d : due) {
+      if (!d) continue;
+      const std::uint32_t w = reached(*d, now) ? 0U : *d - now;
+      if (!wait || w < *wait) wait = w;
+    }
+    if (!wait) return std::nullopt;
+    return now + *wait;
   }
 
   /// on_frame's routing (the step is built once, after it).

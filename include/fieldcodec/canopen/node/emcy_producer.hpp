@@ -45,14 +45,16 @@
 
 namespace fieldcodec::canopen::node {
 
-/// The error register bit CiA 301 gives an error code's class (0 for none).
+/// The error register bit CiA 301 gives an error code's class (0 for none). The classes with
+/// a bit are whole first digits (emcy::classify: current 2xxxh, voltage 3xxxh, temperature
+/// 4xxxh, monitoring 8xxxh, of which communication 81xxh/82xxh), so the first digit is enough
+/// (tests/node/emcy_producer_test.cpp checks every code against classify).
 [[nodiscard]] constexpr std::uint8_t register_bit(std::uint16_t code) noexcept {
-  switch (emcy::classify(code)) {
-  case emcy::error_class::current: return emcy::reg::current;
-  case emcy::error_class::voltage: return emcy::reg::voltage;
-  case emcy::error_class::temperature: return emcy::reg::temperature;
-  case emcy::error_class::monitoring:
-    return (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? emcy::reg::communication : 0U;
+  switch (code >> 12U) {
+  case 0x2: return emcy::reg::current;
+  case 0x3: return emcy::reg::voltage;
+  case 0x4: return emcy::reg::temperature;
+  case 0x8: return (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? emcy::reg::communication : 0U;
   default: return 0U;
   }
 }
