@@ -704,7 +704,7 @@ private:
   }
   // the events and their loops: one function each, called from several places
   [[gnu::noinline]] constexpr void push_event(const event &e) noexcept { events_.push(e); }
-  [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { events_.push(event{k}); }
+  [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { push_event(event{k}); }
   /// The heartbeat consumer's events; true when a monitor lost its node.
   [[gnu::noinline]] constexpr bool consumer_events() noexcept {
     bool lost = false;

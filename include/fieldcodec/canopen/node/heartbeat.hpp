@@ -265,27 +265,28 @@ public:
       monitor &m = m_[i];
       if (m.state == monitor_state::off || m.entry.node != hb.value().node) continue;
       const nmt::state s = hb.value().s;
-      const auto idx = static_cast<std::uint8_t>(i);
-      if (hb.value().is_boot_up()) {
-        m.state = monitor_state::waiting;
-        m.last = s;
-        events_.push({heartbeat_event::kind::boot_up, idx, m.entry.node, s});
+      const bool boot_up = hb.value().is_boot_up();
+      // the event this heartbeat makes (one push for all of them)
+      auto what = heartbeat_event::kind::boot_up;
+      if (!boot_up) {
+        switch (m.state) {
+        case monitor_state::waiting: what = heartbeat_event::kind::started; break;
+        case monitor_state::lost: what = heartbeat_event::kind::resumed; break;
+        case monitor_state::active:
+        case monitor_state::off: // not reached: skipped above
+          what = heartbeat_event::kind::state_changed;
+          break;
+        }
+      }
+      if (what != heartbeat_event::kind::state_changed || s != m.last) {
+        events_.push({what, static_cast<std::uint8_t>(i), m.entry.node, s});
+      }
+      m.last = s;
+      if (boot_up) {
+        m.state = monitor_state::waiting; // a boot-up: the node was reset, wait for it again
         continue;
       }
-      switch (m.state) {
-      case monitor_state::waiting:
-        events_.push({heartbeat_event::kind::started, idx, m.entry.node, s});
-        break;
-      case monitor_state::lost:
-        events_.push({heartbeat_event::kind::resumed, idx, m.entry.node, s});
-        break;
-      case monitor_state::active:
-        if (s != m.last) events_.push({heartbeat_event::kind::state_changed, idx, m.entry.node, s});
-        break;
-      case monitor_state::off: break;
-      }
       m.state = monitor_state::active;
-      m.last = s;
       m.due = now + m.entry.time_ms;
     }
   }
