@@ -14,9 +14,9 @@ namespace node = fieldcodec::canopen::node;
 namespace sdo = fieldcodec::canopen::sdo;
 namespace io = fieldcodec::dictionaries::io_node;
 
-// The lean entry: 12 bytes of columns and a pointer to the packed ones (od/entry.hpp), 16 bytes
+// The lean entry: 8 bytes of columns and a pointer to the packed ones (od/entry.hpp), 12 bytes
 // on this target. Checked here, where a 32-bit target compiles it.
-static_assert(sizeof(fieldcodec::od::entry) == 16);
+static_assert(sizeof(fieldcodec::od::entry) == 12);
 // An integer-only dictionary: the store links no floating point and no 64-bit division.
 static_assert(!io::kinds.real && !io::kinds.wide && !io::kinds.scaled && !io::kinds.numbers);
 
@@ -24,7 +24,8 @@ namespace {
 // The node reads no names: a dictionary of the lean entries alone keeps the descriptive table
 // (io::infos, 14 kB here) out of the image.
 constexpr fieldcodec::od::dictionary dict{io::entries};
-constexpr auto layout = co::make_layout<io::entries.size()>(dict);
+// offsets of 16 bits: the node's values take less than 64 kB
+constexpr auto layout = co::make_layout<io::entries.size(), std::uint16_t>(dict);
 constexpr node::capacity caps = [] {
   node::capacity c = node::capacity_for(dict);
   c.sdo_buffer = 64;    // expedited and segmented of any size; block sub-blocks of 9 segments
@@ -36,7 +37,7 @@ constexpr node::capacity caps = [] {
 }();
 static_assert(caps.rpdos == 4 && caps.tpdos == 4 && caps.mapped == 8);
 
-using store_type = co::dictionary_store<co::accept_writes, io::kinds>;
+using store_type = co::dictionary_store<co::accept_writes, io::kinds, std::uint16_t>;
 std::array<std::uint8_t, layout.storage_size()> storage{};
 constinit store_type store{dict, layout, storage};
 node::device<store_type, caps> dev(store, 0x22);

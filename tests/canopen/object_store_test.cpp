@@ -350,12 +350,19 @@ template <const od::dictionary &Dictionary, od::value_kinds Kinds>
 void check_same_as_all_kinds(std::uint64_t seed) {
   static_assert(od::covers(Kinds, od::kinds_of(Dictionary.entries())));
   constexpr auto layout_k = co::make_layout<Dictionary.size()>(Dictionary);
-  std::vector<std::uint8_t> a(layout_k.storage_size()), b(layout_k.storage_size());
+  // and the same with offsets of 16 bits (every dictionary here takes less than 64 kB)
+  constexpr auto layout_16 = co::make_layout<Dictionary.size(), std::uint16_t>(Dictionary);
+  static_assert(layout_16.storage_size() == layout_k.storage_size());
+  std::vector<std::uint8_t> a(layout_k.storage_size()), b(layout_k.storage_size()),
+      c(layout_k.storage_size());
   co::dictionary_store<co::accept_writes, Kinds> lean{Dictionary, layout_k, a};
   co::dictionary_store<> full{Dictionary, layout_k, b};
+  co::dictionary_store<co::accept_writes, Kinds, std::uint16_t> narrow{Dictionary, layout_16, c};
   for (const std::uint8_t node : {std::uint8_t{1}, std::uint8_t{0x22}, std::uint8_t{127}}) {
     REQUIRE(lean.init_defaults(node) == full.init_defaults(node));
+    REQUIRE(narrow.init_defaults(node) == full.init_defaults(node));
     CHECK(a == b);
+    CHECK(c == b);
   }
   fieldcodec::test::xorshift r{seed};
   std::array<std::uint8_t, 16> v{};
@@ -370,8 +377,11 @@ void check_same_as_all_kinds(std::uint64_t seed) {
     CAPTURE(e.sub);
     CHECK(lean.write(at, 0, value, true) == full.write(at, 0, value, true));
     CHECK(lean.set(at, value) == full.set(at, value));
+    CHECK(narrow.write(at, 0, value, true) == lean.write(at, 0, value, true));
+    CHECK(narrow.set(at, value) == lean.set(at, value));
   }
   CHECK(a == b);
+  CHECK(c == b);
 }
 } // namespace
 
@@ -446,6 +456,48 @@ TEST_CASE("store: node-ID-relative limits and defaults in 32-bit comparisons, as
         abort_code::value_too_low);
   CHECK(s.set({0x2003, 0}, std::array<std::uint8_t, 4>{0x75, 0x00, 0x00, 0x00}) ==
         abort_code::none);
+}
+
+namespace {
+// values of 64 kB and more (1 + 4 + 0xFFFB bytes = 0x10000): no layout of 16-bit offsets; one
+// byte less fits
+constexpr od::entry_spec large_specs[] = {
+    {.index = 0x2000, .type = od::data_type::unsigned8},
+    {.index = 0x2001, .type = od::data_type::domain, .size = 0xFFFB},
+};
+constexpr od::dictionary large_dict{od::entries_of<large_specs>};
+constexpr od::entry_spec fits_specs[] = {
+    {.index = 0x2000, .type = od::data_type::unsigned8},
+    {.index = 0x2001, .type = od::data_type::domain, .size = 0xFFFA},
+};
+constexpr od::dictionary fits_dict{od::entries_of<fits_specs>};
+} // namespace
+
+TEST_CASE("store: 16-bit offsets only for values of less than 64 kB") {
+  constexpr auto wide = co::make_layout<2>(large_dict);
+  static_assert(wide.storage_size() == 0x10000U);
+  constexpr auto narrow = co::make_layout<2, std::uint16_t>(large_dict);
+  static_assert(narrow.storage_size() == 0U); // left empty
+  std::vector<std::uint8_t> storage(wide.storage_size());
+  co::dictionary_store<co::accept_writes, od::all_kinds, std::uint16_t> s{large_dict, narrow,
+                                                                          storage};
+  CHECK(s.init_defaults(1) == errc::buffer_too_small);
+  std::array<std::uint8_t, 1> out{};
+  std::size_t total = 0;
+  CHECK(s.read({0x2000, 0}, 0, out, total) == abort_code::general_error);
+  // at run time: false, every offset zero
+  std::array<std::uint16_t, 3> offsets{1, 2, 3};
+  CHECK_FALSE(co::make_layout(large_dict, std::span<std::uint16_t>(offsets)));
+  CHECK(offsets == std::array<std::uint16_t, 3>{});
+  // one byte less fits
+  constexpr auto last = co::make_layout<2, std::uint16_t>(fits_dict);
+  static_assert(last.storage_size() == 0xFFFFU);
+  std::vector<std::uint8_t> storage2(last.storage_size());
+  co::dictionary_store<co::accept_writes, od::all_kinds, std::uint16_t> t{fits_dict, last,
+                                                                          storage2};
+  REQUIRE(t.init_defaults(1).has_value());
+  REQUIRE(t.set({0x2000, 0}, std::array<std::uint8_t, 1>{7}) == abort_code::none);
+  CHECK(t.value({0x2000, 0}).value()[0] == 7);
 }
 
 TEST_CASE("store: a layout made at run time (a dictionary loaded at run time)") {

@@ -111,6 +111,36 @@ TEST_CASE("pack/unpack round trip for every offset and length") {
   }
 }
 
+TEST_CASE("copy_bits moves the bits pack and unpack move, and no others") {
+  // from bit `from` of a source to bit `to` of a destination: the destination's field holds what
+  // unpack reads at the source, every other destination bit is untouched
+  std::array<std::uint8_t, 9> src{};
+  for (std::size_t k = 0; k < src.size(); ++k)
+    src[k] = static_cast<std::uint8_t>(0x3C ^ (k * 0x47));
+  for (std::size_t len = 1; len <= 64; ++len) {
+    for (std::size_t from = 0; from + len <= 72; from += 3) {
+      for (std::size_t to = 0; to + len <= 72; to += 7) {
+        std::array<std::uint8_t, 9> dst{};
+        dst.fill(0x5A);
+        const auto before = dst;
+        REQUIRE(pdo::copy_bits(src, from, dst, to, len));
+        REQUIRE(pdo::unpack(dst, to, len).value() == pdo::unpack(src, from, len).value());
+        for (std::size_t k = 0; k < 72; ++k) {
+          if (k >= to && k < to + len) continue;
+          REQUIRE(((dst[k / 8] >> (k % 8)) & 1) == ((before[k / 8] >> (k % 8)) & 1));
+        }
+      }
+    }
+  }
+  // a range beyond either buffer: false, nothing written
+  std::array<std::uint8_t, 2> small{0x11, 0x22};
+  CHECK_FALSE(pdo::copy_bits(src, 70, small, 0, 3));
+  CHECK_FALSE(pdo::copy_bits(src, 0, small, 10, 7));
+  CHECK(small == std::array<std::uint8_t, 2>{0x11, 0x22});
+  CHECK(pdo::copy_bits(src, 0, small, 9, 7));
+  CHECK(pdo::copy_bits(src, 0, small, 0, 0));
+}
+
 TEST_CASE("XENAX CAN RxPDO 2 and TxPDO 2 byte layout") {
   // derived from 9.2.1 (l. 2558-2596): RPDO2 (0x301 on node 1) controlword 0x1F, target 1000
   std::array<std::uint8_t, 8> p{};

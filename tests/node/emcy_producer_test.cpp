@@ -31,6 +31,27 @@ static_assert(node::register_bit(0x8611) == 0); // monitoring, not communication
 static_assert(node::register_bit(0x1000) == 0); // generic: bit 0 comes with every error
 } // namespace
 
+TEST_CASE("emcy producer: register_bit by the first digit agrees with emcy::classify") {
+  // register_bit reads the first digit only; the classes of CiA 301 (emcy::classify) decide
+  using cls = co::emcy::error_class;
+  int differ = 0;
+  for (std::uint32_t c = 0; c <= 0xFFFFU; ++c) {
+    const auto code = static_cast<std::uint16_t>(c);
+    std::uint8_t expected = 0;
+    switch (co::emcy::classify(code)) {
+    case cls::current: expected = reg::current; break;
+    case cls::voltage: expected = reg::voltage; break;
+    case cls::temperature: expected = reg::temperature; break;
+    case cls::monitoring:
+      expected = (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? reg::communication : 0U;
+      break;
+    default: break;
+    }
+    if (node::register_bit(code) != expected) ++differ;
+  }
+  CHECK(differ == 0);
+}
+
 TEST_CASE("emcy producer: register, history newest first, manufacturer bytes") {
   node::emcy_producer<3, 2, 4> e(9);
   auto s = e.raise(0x4210, 0, reg::device_profile, {0xAA, 0xBB, 1, 2, 3});

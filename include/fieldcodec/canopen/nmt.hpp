@@ -6,6 +6,7 @@
 #include <fieldcodec/core/result.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace fieldcodec::canopen::nmt {
@@ -195,9 +196,17 @@ public:
     auto n = decode_guard_request(request);
     if (!n) return n.error();
     if (n.value() != node_) return errc::unexpected_frame;
-    auto r = encode_guard_response(node_, s, toggle_);
-    if (r) toggle_ = !toggle_;
-    return r;
+    if (const auto f = answer(s)) return *f;
+    return errc::invalid_argument;
+  }
+  /// The response to a request the caller has recognised as this node's already (a remote
+  /// frame on 0x700 + node, DLC ≤ 8): respond() without decoding it again; nullopt where
+  /// respond() fails with invalid_argument (state boot_up, node-ID not 1..127).
+  [[nodiscard]] constexpr std::optional<can_frame> answer(state s) noexcept {
+    const auto r = encode_guard_response(node_, s, toggle_);
+    if (!r) return std::nullopt;
+    toggle_ = !toggle_;
+    return r.value();
   }
   constexpr void reset() noexcept { toggle_ = false; }
 

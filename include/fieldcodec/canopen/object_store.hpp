@@ -67,6 +67,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -156,33 +157,43 @@ inline constexpr std::uint8_t any_bits = 0x08U;
 /// Where each entry's value starts in storage: offsets[i] for entry i in dictionary order,
 /// offsets[N] the total size. Computed once (at compile time for a generated dictionary), so a
 /// store finds a slot in O(1) after the dictionary's binary search (none by position).
-template <std::size_t N>
+/// `Offset`: the offsets' type; std::uint16_t halves the table of a dictionary whose values
+/// take less than 64 kB (make_layout leaves a layout whose total does not fit empty).
+template <std::size_t N, class Offset = std::uint32_t>
 struct store_layout {
-  std::array<std::uint32_t, N + 1> offsets{};
+  static_assert(std::is_same_v<Offset, std::uint32_t> || std::is_same_v<Offset, std::uint16_t>);
+  std::array<Offset, N + 1> offsets{};
   [[nodiscard]] constexpr std::size_t storage_size() const noexcept { return offsets[N]; }
 };
 
 /// The layout of `dict` written into `offsets` (dict.size() + 1 of them: where each entry's value
-/// starts, then the total size), for a dictionary loaded at run time. False (nothing written)
-/// when `offsets` has another size.
+/// starts, then the total size), for a dictionary loaded at run time. False when `offsets` has
+/// another size (nothing written) or the total does not fit an offset (all zero).
+template <class Offset>
+[[nodiscard]] constexpr bool make_layout(od::dictionary dict, std::span<Offset> offsets) noexcept {
+  if (offsets.size() != dict.size() + 1U) return false;
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < dict.size(); ++i) {
+    offsets[i] = static_cast<Offset>(at);
+    at += slot_size(dict.entries()[i]);
+  }
+  offsets[dict.size()] = static_cast<Offset>(at);
+  if (at <= std::numeric_limits<Offset>::max()) return true;
+  std::fill(offsets.begin(), offsets.end(), Offset{0});
+  return false;
+}
 [[nodiscard]] constexpr bool make_layout(od::dictionary dict,
                                          std::span<std::uint32_t> offsets) noexcept {
-  if (offsets.size() != dict.size() + 1U) return false;
-  std::uint32_t at = 0;
-  for (std::size_t i = 0; i < dict.size(); ++i) {
-    offsets[i] = at;
-    at += static_cast<std::uint32_t>(slot_size(dict.entries()[i]));
-  }
-  offsets[dict.size()] = at;
-  return true;
+  return make_layout<std::uint32_t>(dict, offsets);
 }
 
-/// The layout of `dict`, which must have exactly N entries (a mismatch leaves the layout empty:
-/// every access then answers general_error).
-template <std::size_t N>
-[[nodiscard]] constexpr store_layout<N> make_layout(od::dictionary dict) noexcept {
-  store_layout<N> l;
-  (void)make_layout(dict, std::span<std::uint32_t>(l.offsets));
+/// The layout of `dict`, which must have exactly N entries and, with Offset std::uint16_t,
+/// values of less than 64 kB (a mismatch leaves the layout empty: every access then answers
+/// general_error).
+template <std::size_t N, class Offset = std::uint32_t>
+[[nodiscard]] constexpr store_layout<N, Offset> make_layout(od::dictionary dict) noexcept {
+  store_layout<N, Offset> l;
+  (void)make_layout(dict, std::span<Offset>(l.offsets));
   return l;
 }
 
@@ -216,11 +227,14 @@ struct accept_writes {
 /// dictionary links no floating point and no 64-bit division. A dictionary with a kind `Kinds`
 /// lacks does not fit (as a layout of another dictionary does not): every access answers
 /// general_error, init_defaults buffer_too_small.
-template <class OnWrite = accept_writes, od::value_kinds Kinds = od::all_kinds>
+///
+/// `Offset`: the type of the layout's offsets (store_layout).
+template <class OnWrite = accept_writes, od::value_kinds Kinds = od::all_kinds,
+          class Offset = std::uint32_t>
 class dictionary_store {
 public:
   template <std::size_t N>
-  constexpr dictionary_store(od::dictionary dict, const store_layout<N> &layout,
+  constexpr dictionary_store(od::dictionary dict, const store_layout<N, Offset> &layout,
                              std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
                              OnWrite on_write = {}) noexcept
       : dict_(dict), offsets_(layout.offsets), storage_(storage), staging_(staging),
@@ -230,7 +244,7 @@ public:
               od::covers(Kinds, od::kinds_of(dict.entries()))) {}
   /// The same with a layout made at run time (make_layout(dict, offsets), for a dictionary
   /// loaded at run time); `offsets` is borrowed and must outlive the store.
-  constexpr dictionary_store(od::dictionary dict, std::span<const std::uint32_t> offsets,
+  constexpr dictionary_store(od::dictionary dict, std::span<const Offset> offsets,
                              std::span<std::uint8_t> storage, std::span<std::uint8_t> staging = {},
                              OnWrite on_write = {}) noexcept
       : dict_(dict), offsets_(offsets), storage_(storage), staging_(staging), on_write_(on_write),
@@ -308,15 +322,15 @@ public:
                                                       std::optional<std::uint32_t> size) noexcept {
     const located l = locate(a);
     if (l.code != sdo::abort_code::none) return l.code;
-    if (!od::writable(l.e->access_type)) return sdo::abort_code::write_read_only;
+    if ((l.flags & slot_flag::writable) == 0U) return sdo::abort_code::write_read_only;
     staged_ = 0;
     staged_address_ = a;
     if (!size) return sdo::abort_code::none;
-    if (od::is_byte_string(l.e->type)) {
-      return *size > l.e->capacity() ? sdo::abort_code::length_too_high : sdo::abort_code::none;
-    }
+    // width(): a byte string's capacity, which it may fill up to
     if (*size > l.e->width()) return sdo::abort_code::length_too_high;
-    if (*size < l.e->width()) return sdo::abort_code::length_too_low;
+    if (*size < l.e->width() && (l.flags & slot_flag::byte_string) == 0U) {
+      return sdo::abort_code::length_too_low;
+    }
     return sdo::abort_code::none;
   }
 
@@ -372,7 +386,7 @@ public:
     const std::uint8_t f = slot_flags(dict_.entries()[at]);
     if ((f & slot_flag::byte_string) != 0U) return p;
     p.offset = offsets_[at];
-    p.size = static_cast<std::uint8_t>(offsets_[at + 1U] - offsets_[at]); // width(): 1..8
+    p.size = static_cast<std::uint8_t>(slot_at(at).size()); // width(): 1..8
     p.readable = (f & slot_flag::readable) != 0U;
     p.writable = std::is_same_v<OnWrite, accept_writes> && (f & slot_flag::writable) != 0U &&
                  (f & slot_flag::any_bits) != 0U;
@@ -459,22 +473,27 @@ private:
   }
 
   [[nodiscard]] constexpr bool layout_fits() const noexcept { return fits_; }
+  /// Entry i's slot in storage (the layout fits).
+  [[nodiscard]] constexpr std::span<std::uint8_t> slot_at(std::size_t i) const noexcept {
+    const std::size_t at = offsets_[i];
+    return storage_.subspan(at, std::size_t{offsets_[i + 1U]} - at);
+  }
 
   /// The layout's slots are the entries' (make_layout's): a layout of another dictionary, or
   /// one built by hand with other sizes, does not fit — every access answers general_error and
   /// init_defaults buffer_too_small, rather than a slot too small for its value.
   template <std::size_t N>
-  [[nodiscard]] static constexpr bool
-  slots_agree(od::dictionary dict, const std::array<std::uint32_t, N> &offsets) noexcept {
-    return slots_agree(dict, std::span<const std::uint32_t>(offsets));
+  [[nodiscard]] static constexpr bool slots_agree(od::dictionary dict,
+                                                  const std::array<Offset, N> &offsets) noexcept {
+    return slots_agree(dict, std::span<const Offset>(offsets));
   }
   [[nodiscard]] static constexpr bool slots_agree(od::dictionary dict,
-                                                  std::span<const std::uint32_t> offsets) noexcept {
+                                                  std::span<const Offset> offsets) noexcept {
     const std::size_t n = offsets.size();
     if (dict.size() + 1U != n) return false;
     for (std::size_t i = 0; i + 1U < n; ++i) {
       if (offsets[i + 1U] < offsets[i] ||
-          offsets[i + 1U] - offsets[i] != slot_size(dict.entries()[i])) {
+          std::size_t{offsets[i + 1U]} - offsets[i] != slot_size(dict.entries()[i])) {
         return false;
       }
     }
@@ -490,7 +509,7 @@ private:
   /// Entry i's default for node_ into its slot; false when a default text had to be cut.
   constexpr bool fill_default(std::size_t i) noexcept {
     const od::entry &e = dict_.entries()[i];
-    auto slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
+    const auto slot = slot_at(i);
     std::fill(slot.begin(), slot.end(), std::uint8_t{0});
     if (od::is_byte_string(e.type)) {
       if (slot.empty()) return true;
@@ -516,9 +535,10 @@ private:
         }
       } else if (slot.size() == od::fixed_size(e.type)) {
         // in the entry's own width: the value's bytes as CANopen sends them
-        const std::size_t w = slot.size();
-        std::uint64_t v = load_le(e.extra + e.default_at(), w);
-        if (!e.has(od::flag::default_nodeid) || plus_node(e, w, v)) store_le(slot.data(), v, w);
+        copy_packed(e.extra + e.default_at(), slot);
+        if (e.has(od::flag::default_nodeid) && !plus_node(e, slot)) {
+          std::fill(slot.begin(), slot.end(), std::uint8_t{0});
+        }
       }
     }
     within_limits(i, slot);
@@ -560,15 +580,13 @@ private:
             continue;
           }
         } else {
-          const std::size_t w = slot.size();
-          if (w != od::fixed_size(e.type)) continue;
+          if (slot.size() != od::fixed_size(e.type)) continue;
           const std::size_t at =
               e.limits_at() + (high && e.has(od::flag::has_low) ? e.limit_size() : 0U);
-          std::uint64_t v = load_le(e.extra + at, w);
-          if (e.has(high ? od::flag::high_nodeid : od::flag::low_nodeid) && !plus_node(e, w, v)) {
-            continue;
+          copy_packed(e.extra + at, slot);
+          if (e.has(high ? od::flag::high_nodeid : od::flag::low_nodeid) && !plus_node(e, slot)) {
+            continue; // (the slot is written again below)
           }
-          store_le(slot.data(), v, w);
         }
         if (accepted(i, slot)) return;
       }
@@ -576,18 +594,28 @@ private:
     }
   }
 
-  /// A node-ID-relative default: node_ added to the `w`-byte integer `v`. False when the entry
-  /// is no integer or the sum does not fit its field.
-  [[nodiscard]] constexpr bool plus_node(const od::entry &e, std::size_t w,
-                                         std::uint64_t &v) const noexcept {
-    if (od::is_signed_integer(e.type)) {
-      const std::uint64_t sign = std::uint64_t{1} << (8U * w - 1U);
-      if (static_cast<std::int64_t>((v ^ sign) - sign) > signed_max(w) - node_) return false;
-    } else if (!od::is_unsigned_integer(e.type) || v > unsigned_max(w) - node_) {
-      return false;
+  /// A packed value in its entry's own width (slot.size() bytes at `p`, little-endian) into
+  /// `slot` as it is.
+  static constexpr void copy_packed(const char *p, std::span<std::uint8_t> slot) noexcept {
+    for (std::size_t k = 0; k < slot.size(); ++k) slot[k] = static_cast<std::uint8_t>(p[k]);
+  }
+
+  /// A node-ID-relative value: node_ added to the little-endian integer in `slot`, byte by
+  /// byte (no arithmetic wider than the bytes). False when the entry is no integer or the sum
+  /// does not fit its field (the slot then holds no value: the caller writes it again).
+  [[nodiscard]] constexpr bool plus_node(const od::entry &e,
+                                         std::span<std::uint8_t> slot) const noexcept {
+    const bool is_signed = od::is_signed_integer(e.type);
+    if (!is_signed && !od::is_unsigned_integer(e.type)) return false;
+    const bool was_negative = (slot.back() & 0x80U) != 0U;
+    unsigned carry = node_;
+    for (std::uint8_t &b : slot) {
+      carry += b;
+      b = static_cast<std::uint8_t>(carry);
+      carry >>= 8U;
     }
-    v += node_; // two's complement: the low w bytes are the sum
-    return true;
+    // unsigned: no carry out of the top byte; signed (node_ >= 0): no turn from >= 0 to < 0
+    return is_signed ? was_negative || (slot.back() & 0x80U) == 0U : carry == 0U;
   }
 
   [[nodiscard]] constexpr located locate(od::address a) const noexcept {
@@ -612,7 +640,7 @@ private:
       l.code = sdo::abort_code::general_error;
       return l;
     }
-    l.slot = storage_.subspan(offsets_[i], offsets_[i + 1U] - offsets_[i]);
+    l.slot = slot_at(i);
     l.flags = slot_flags(*l.e);
     l.at = i;
     if (l.slot.empty()) l.code = sdo::abort_code::unsupported_access; // a byte string without size
@@ -680,7 +708,7 @@ private:
   }
 
   od::dictionary dict_;
-  std::span<const std::uint32_t> offsets_;
+  std::span<const Offset> offsets_;
   std::span<std::uint8_t> storage_;
   std::span<std::uint8_t> staging_;
   OnWrite on_write_;

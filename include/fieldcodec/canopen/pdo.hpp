@@ -170,6 +170,25 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
   return v;
 }
 
+/// Copy `length` bits from bit `from_bit` of `from` to bit `to_bit` of `to`, in the PDO's bit
+/// order (bit 0 is the low bit of byte 0); the other bits of `to` are untouched. One bit per
+/// step and no arithmetic wider than a byte: the PDO engine's path for values off byte
+/// boundaries (1-bit BOOLEANs and what follows them), where size counts more than speed.
+/// False, nothing copied, when either range lies beyond its bytes.
+[[nodiscard]] constexpr bool copy_bits(std::span<const std::uint8_t> from, std::size_t from_bit,
+                                       std::span<std::uint8_t> to, std::size_t to_bit,
+                                       std::size_t length) noexcept {
+  if (from_bit + length > from.size() * 8U || to_bit + length > to.size() * 8U) return false;
+  for (std::size_t i = 0; i < length; ++i) {
+    const std::size_t f = from_bit + i;
+    const std::size_t t = to_bit + i;
+    const auto mask = static_cast<std::uint8_t>(1U << (t % 8U));
+    const bool set = ((from[f / 8U] >> (f % 8U)) & 1U) != 0U;
+    to[t / 8U] = static_cast<std::uint8_t>(set ? to[t / 8U] | mask : to[t / 8U] & ~mask);
+  }
+  return true;
+}
+
 namespace detail {
 /// The low `length` bits (1..64) of `raw` as a two's complement number: shifted up to bit 63
 /// and arithmetically back, without a test of the sign bit (issue 18: for a length known after
@@ -364,10 +383,9 @@ namespace detail {
     return bits == 8U * od::fixed_size(type) ? mapping_problem::none
                                              : mapping_problem::length_mismatch;
   }
-  const std::span<const od::entry> object = dict.object(index);
-  const std::size_t at = sub_position(object, sub);
-  if (at == object.size()) return mapping_problem::no_object;
-  const od::entry &e = object[at];
+  const std::size_t at = dict.position(od::address{index, sub});
+  if (at == dict.size()) return mapping_problem::no_object;
+  const od::entry &e = dict.entries()[at];
   if (d == direction::rpdo) {
     if (!od::mappable_rx(e.pdo)) return mapping_problem::not_mappable;
     if (!od::writable(e.access_type)) return mapping_problem::no_access;

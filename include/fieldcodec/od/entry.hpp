@@ -2,9 +2,11 @@
 // and od::entry_info, its descriptive columns.
 //
 // An entry holds what code needs to move and check a value: address, object code, type, access,
-// PDO mapping and flags in its own 12 bytes, and a pointer (`extra`) to the columns that only some
-// entries have — default, limits, the capacity of a byte string, its default text — packed in as
-// few bytes as they need (16 bytes an entry on a 32-bit target, 24 on a 64-bit host). A number
+// PDO mapping and flags in its own 8 bytes (object code, access and PDO mapping as bit-fields of 4
+// bits, the type in one byte: every data_type is below 0x100), and a pointer (`extra`) to the
+// columns that only some entries have — default, limits, the capacity of a byte string, its
+// default text — packed in as few bytes as they need (12 bytes an entry on a 32-bit target, 16
+// on a 64-bit host). A number
 // travels in the entry's own width there (a UNSIGNED8 default is one byte); only what the width
 // cannot hold exactly (a scaled entry's limits in engineering units, a fraction, a value beyond
 // the field, a REAL that is no float of the entry's type) is a 10-byte od::number. The accessors
@@ -121,10 +123,10 @@ namespace detail {
 struct entry {
   std::uint16_t index = 0;
   std::uint8_t sub = 0;
-  object_code object = object_code::var; ///< code of the object this sub-object belongs to
-  data_type type = data_type::unsigned8;
-  access access_type = access::rw;
-  pdo_mapping pdo = pdo_mapping::no;
+  object_code object : 4 = object_code::var; ///< code of the object this sub-object belongs to
+  data_type type : 8 = data_type::unsigned8; ///< (every data_type is below 0x100)
+  access access_type : 4 = access::rw;
+  pdo_mapping pdo : 4 = pdo_mapping::no;
   std::uint16_t flags = 0; ///< od::flag bits
   /// The packed columns (see the top of this file); read only through the accessors, and only
   /// where `flags` says a column is there.

@@ -9,9 +9,10 @@
 
 namespace fieldcodec::canopen::node {
 
-/// The earlier of two optional deadlines (wrap-around safe, relative to `now`).
-[[nodiscard]] constexpr std::optional<std::uint32_t> earliest(std::optional<std::uint32_t> a,
-                                                              std::optional<std::uint32_t> b,
+/// The earlier of two optional deadlines (wrap-around safe, relative to `now`). By reference:
+/// an optional passed by value costs every caller a copy on the stack (Cortex-M).
+[[nodiscard]] constexpr std::optional<std::uint32_t> earliest(const std::optional<std::uint32_t> &a,
+                                                              const std::optional<std::uint32_t> &b,
                                                               std::uint32_t now) noexcept {
   if (!a) return b;
   if (!b) return a;

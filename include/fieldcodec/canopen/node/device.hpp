@@ -301,6 +301,9 @@ public:
       }
       return c;
     }
+    [[nodiscard]] constexpr od::dictionary dictionary() const noexcept {
+      return d_->store_->dictionary();
+    }
     [[nodiscard]] constexpr abort_code begin_write(od::address a,
                                                    std::optional<std::uint32_t> size) noexcept {
       if constexpr (C.hooks > 0U) {
@@ -386,9 +389,9 @@ public:
   /// without LSS keeps nothing of it).
   constexpr device(Store &store, std::uint8_t node, options o = {},
                    [[maybe_unused]] lss_options l = {}) noexcept
-      : store_(&store), options_(o), node_(node), nmt_(node), producer_(node), guard_(node),
-        emcy_(node), lss_(make_lss(node, l)), access_(*this), pdo_(access_, store.dictionary()),
-        sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
+      : store_(&store), self_start_(o.self_start), node_(node), nmt_(node), producer_(node),
+        guard_(node), emcy_(node), lss_(make_lss(node, l)), access_(*this),
+        pdo_(access_, store.dictionary()), sdo_(access_, node, o.sdo_timeout_ms, o.sdo) {
     pdo_.report_long_rpdo(o.report_long_rpdo);
     sync_.allow_producer(C.sync_producer);
     emcy_.report_each_reset(o.report_each_reset);
@@ -495,7 +498,7 @@ public:
     begin(now);
     const nmt::state s = nmt_.state();
     if (!started_ || s == nmt::state::boot_up) return finish(now);
-    take(producer_.poll(now, s));
+    if (const auto f = producer_.due(now, s)) out_.push(*f);
     if constexpr (C.sync_producer) {
       if (allowed(s, service::sync)) {
         if (const auto f = sync_out_.poll(now)) {
@@ -504,7 +507,7 @@ public:
         }
       }
     }
-    (void)consumer_.poll(now);
+    consumer_.check_times(now);
     bool lost = consumer_events();
     const auto before = life_.state();
     if (life_.poll(now).state == guard_state::lost && before != guard_state::lost) {
@@ -516,7 +519,7 @@ public:
     if (allowed(s, service::sdo)) take(sdo); // in stopped the timeouts end silently
     take(pdo_.poll(now));
     pdo_events();
-    take(emcy_.poll(now));
+    take_frames(emcy_.send_due(now));
     return finish(now);
   }
 
@@ -569,14 +572,14 @@ public:
     if (const status r = emcy_.raise_error(code, now, register_bits, manufacturer); !r) {
       return r.error();
     }
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     return finish(now);
   }
   /// An application error is gone (see emcy_producer::clear).
   [[nodiscard]] constexpr result<step> clear(std::uint16_t code, std::uint32_t now) noexcept {
     begin(now);
     if (const status r = emcy_.clear_error(code, now); !r) return r.error();
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     return finish(now);
   }
   /// An error of class `sub` of 1029h was found (1 = communication error: e.g. the CAN driver
@@ -683,7 +686,7 @@ private:
       carry_ = !out_.empty(); // the node's own frames go out with the next call
       if (carry_) s.deadline = now;
     } else {
-      s.send = out_.view();
+      s.send = frames(out_.span());
     }
     return s;
   }
@@ -696,9 +699,12 @@ private:
   [[gnu::noinline]] constexpr void take_frames(const frames &send) noexcept {
     for (const can_frame &f : send) out_.push(f);
   }
+  [[gnu::noinline]] constexpr void take_frames(std::span<const can_frame> send) noexcept {
+    for (const can_frame &f : send) out_.push(f);
+  }
   // the events and their loops: one function each, called from several places
   [[gnu::noinline]] constexpr void push_event(const event &e) noexcept { events_.push(e); }
-  [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { events_.push(event{k}); }
+  [[gnu::noinline]] constexpr void push_event(event::kind k) noexcept { push_event(event{k}); }
   /// The heartbeat consumer's events; true when a monitor lost its node.
   [[gnu::noinline]] constexpr bool consumer_events() noexcept {
     bool lost = false;
@@ -734,19 +740,24 @@ private:
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!started_ || nmt_.state() == nmt::state::boot_up) return std::nullopt;
-    auto d = producer_.deadline();
-    d = earliest(d, consumer_.deadline(now), now);
-    d = earliest(d, life_.deadline(), now);
-    d = earliest(d, emcy_.deadline(), now);
-    d = earliest(d, pdo_.deadline(now), now);
-    d = earliest(d, sdo_.deadline(now), now);
+    std::optional<std::uint32_t> sync_due;
     if constexpr (C.sync_producer) {
-      if (allowed(nmt_.state(), service::sync)) d = earliest(d, sync_out_.deadline(), now);
+      if (allowed(nmt_.state(), service::sync)) sync_due = sync_out_.deadline();
     }
-    // a deadline the caller let pass (a frame handled after it, before the poll) is now: poll
-    // at once; never a time in the past, which a wrapping counter would read as 2^32 ms ahead
-    if (d && reached(*d, now)) d = now;
-    return d;
+    const std::optional<std::uint32_t> due[] = {
+        producer_.deadline(), consumer_.deadline(now), life_.deadline(), emcy_.deadline(),
+        pdo_.deadline(now),   sdo_.deadline(now),      sync_due};
+    // the earliest, as a distance from now; a deadline the caller let pass (a frame handled
+    // after it, before the poll) is now: poll at once; never a time in the past, which a
+    // wrapping counter would read as 2^32 ms ahead
+    std::optional<std::uint32_t> wait;
+    for (const auto &d : due) {
+      if (!d) continue;
+      const std::uint32_t w = reached(*d, now) ? 0U : *d - now;
+      if (!wait || w < *wait) wait = w;
+    }
+    if (!wait) return std::nullopt;
+    return now + *wait;
   }
 
   /// on_frame's routing (the step is built once, after it).
@@ -765,7 +776,7 @@ private:
     const nmt::state s = nmt_.state();
     if (s == nmt::state::boot_up) return;
     if (f.rtr && f.id == cob_id::nmt_error_base + node_) {
-      if (auto r = guard_.respond(f, s)) out_.push(r.value());
+      if (const auto r = guard_.answer(s)) out_.push(*r); // route's checks: this node's request
       const auto before = life_.state();
       (void)life_.on_request(now);
       if (before == guard_state::lost) push_event(event::kind::life_guard_resumed);
@@ -792,7 +803,7 @@ private:
       }
     }
     if (!f.rtr && f.id > cob_id::nmt_error_base && f.id <= cob_id::nmt_error_base + max_node_id) {
-      (void)consumer_.on_frame(f, now);
+      consumer_.receive(f, now);
       (void)consumer_events();
       return;
     }
@@ -815,12 +826,11 @@ private:
 
   /// A SYNC, received or the node's own: the consumer takes it, the PDOs follow.
   constexpr void sync_frame(const can_frame &f, std::uint32_t now) noexcept {
-    const auto r = sync_.on_frame(f, now);
-    if (!r.state.received) return;
+    if (!sync_.receive(f, now)) return;
     event e{event::kind::sync};
-    e.counter = r.state.counter;
+    e.counter = sync_.counter();
     push_event(e);
-    take(pdo_.on_sync(r.state.counter, now));
+    take(pdo_.on_sync(e.counter, now));
     pdo_events();
   }
 
@@ -828,7 +838,7 @@ private:
 
   constexpr void nmt_frame(const can_frame &f, std::uint32_t now) noexcept {
     const nmt::state before = nmt_.state();
-    (void)nmt_.on_frame(f, now);
+    nmt_.receive(f);
     if (nmt_.pending_reset() != reset::none) {
       carry_out(nmt_.pending_reset(), now);
     } else if (nmt_.state() != before) {
@@ -845,12 +855,9 @@ private:
       const std::uint8_t to = lss_.activate();
       if (to != node_) st = renumber(to);
     }
-    if (r == reset::application) {
-      const auto range = restored(reset::application);
-      if (auto s1 = store_->restore_defaults(range.first, range.last); !s1 && st) st = s1;
-    }
-    const auto comm = restored(reset::communication);
-    if (auto s2 = store_->restore_defaults(comm.first, comm.last); !s2 && st) st = s2;
+    // reset node: 2000h–FFFFh and 1000h–1FFFh, in one pass (the ranges are adjacent)
+    const std::uint16_t first = restored(reset::communication).first;
+    if (auto s1 = store_->restore_defaults(first, restored(r).last); !s1 && st) st = s1;
     guard_.reset();
     configure(now);
     if (!st && config_) config_ = st;
@@ -862,7 +869,7 @@ private:
   }
   /// Send the boot-up message and enter pre-operational (or operational).
   constexpr void boot(std::uint32_t now) noexcept {
-    take(nmt_.boot(options_.self_start));
+    if (const auto f = nmt_.boot_up(self_start_)) out_.push(*f);
     state_changed(now);
   }
   constexpr void state_changed(std::uint32_t now) noexcept {
@@ -907,7 +914,7 @@ private:
     config_ = status{};
     own_errors_ = 0;
     each_service(*this, [&](auto &service) {
-      if (const status st = service.load(*store_, now); !st && config_) config_ = st;
+      if (const status st = service.load(access_, now); !st && config_) config_ = st;
     });
   }
 
@@ -971,14 +978,13 @@ private:
         }
       }
     }
-    if (whole) {
-      if (const auto c = check(a, part); c != abort_code::none) return c;
-      if (const auto c = storage_command(a, part)) return *c;
-    } else if (a.index >= 0x1000U && a.index <= 0x1FFFU && u32_of(part).has_value() &&
-               check(a, part) != abort_code::none) {
+    if (const auto c = check(a, part); c != abort_code::none) {
       // a communication value in parts would pass unchecked: the servers' buffers (≥ 8 bytes)
-      // always hold the ≤ 4 bytes of one, so this is a value of the wrong length anyway
-      return abort_code::length_too_high;
+      // always hold the ≤ 4 bytes of one, so a part refused is a value of the wrong length
+      return whole ? c : abort_code::length_too_high;
+    }
+    if (whole) {
+      if (const auto c = storage_command(a, part)) return *c;
     }
     abort_code c = abort_code::none;
     if constexpr (canopen::positioned_store<Store>) {
@@ -1136,7 +1142,7 @@ private:
                         : emcy_.clear_error(managed_codes[i], now);
     if (!on) own_errors_ = static_cast<std::uint8_t>(own_errors_ & ~bit);
     if (!r) return;
-    take_frames(frames(emcy_.sent()));
+    take_frames(emcy_.sent());
     if (on) own_errors_ = static_cast<std::uint8_t>(own_errors_ | bit);
   }
   // ----- members ---------------------------------------------------------------------------
@@ -1151,7 +1157,7 @@ private:
       4U + (C.lss ? 1U : 0U) + C.heartbeat_consumers + 2U * C.rpdos + C.tpdos + 1U;
 
   Store *store_;
-  options options_;
+  bool self_start_; ///< options::self_start (the other options are taken by the services)
   std::uint8_t node_;
   nmt_slave nmt_;
   heartbeat_producer producer_;

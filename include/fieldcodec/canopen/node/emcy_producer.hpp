@@ -45,14 +45,16 @@
 
 namespace fieldcodec::canopen::node {
 
-/// The error register bit CiA 301 gives an error code's class (0 for none).
+/// The error register bit CiA 301 gives an error code's class (0 for none). The classes with
+/// a bit are whole first digits (emcy::classify: current 2xxxh, voltage 3xxxh, temperature
+/// 4xxxh, monitoring 8xxxh, of which communication 81xxh/82xxh), so the first digit is enough
+/// (tests/node/emcy_producer_test.cpp checks every code against classify).
 [[nodiscard]] constexpr std::uint8_t register_bit(std::uint16_t code) noexcept {
-  switch (emcy::classify(code)) {
-  case emcy::error_class::current: return emcy::reg::current;
-  case emcy::error_class::voltage: return emcy::reg::voltage;
-  case emcy::error_class::temperature: return emcy::reg::temperature;
-  case emcy::error_class::monitoring:
-    return (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? emcy::reg::communication : 0U;
+  switch (code >> 12U) {
+  case 0x2: return emcy::reg::current;
+  case 0x3: return emcy::reg::voltage;
+  case 0x4: return emcy::reg::temperature;
+  case 0x8: return (code >> 8U) == 0x81U || (code >> 8U) == 0x82U ? emcy::reg::communication : 0U;
   default: return 0U;
   }
 }
@@ -174,6 +176,12 @@ public:
 
   /// Send what the inhibit time held back.
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept { return flush(now); }
+  /// poll() without the step (what node::device calls): the frames it sends.
+  [[nodiscard]] constexpr std::span<const can_frame> send_due(std::uint32_t now) noexcept {
+    out_.clear();
+    send_queued(now);
+    return sent();
+  }
 
   /// Forget everything (NMT reset): no active errors, empty history, nothing queued. Sends
   /// nothing.
@@ -219,12 +227,12 @@ public:
     reset();
     if (const auto v = read_u32(store, {0x1014, 0})) load_cob_id(*v);
     if (const auto v = read_u32(store, {0x1015, 0})) set_inhibit(static_cast<std::uint16_t>(*v));
-    const auto dict = store.dictionary();
+    const auto entries = store.dictionary().object(0x1003);
     history_subs_ = 0;
-    for (const auto &e : dict.object(0x1003)) {
+    for (const auto &e : entries) {
       if (e.sub > history_subs_) history_subs_ = e.sub;
     }
-    has_history_ = history_subs_ != 0U || dict.contains(0x1003, 0);
+    has_history_ = !entries.empty();
     return {};
   }
   /// After a change (take_changed()): write the error register to 1001h and the history to

@@ -75,12 +75,16 @@ public:
   /// heartbeat (not one per missed period) and schedules the next a period after `now`.
   [[nodiscard]] constexpr step poll(std::uint32_t now, nmt::state s) noexcept {
     frames out;
-    if (period_ != 0U && reached(due_, now)) {
-      due_ += period_;
-      if (reached(due_, now)) due_ = now + period_;
-      if (const auto f = nmt::encode_heartbeat(node_, s)) out = frames(f.value());
-    }
+    if (const auto f = due(now, s)) out = frames(*f);
     return {out, s, deadline()};
+  }
+  /// poll() without the step (what node::device calls): the heartbeat when it is due.
+  [[nodiscard]] constexpr std::optional<can_frame> due(std::uint32_t now, nmt::state s) noexcept {
+    if (period_ == 0U || !reached(due_, now)) return std::nullopt;
+    due_ += period_;
+    if (reached(due_, now)) due_ = now + period_;
+    if (const auto f = nmt::encode_heartbeat(node_, s)) return f.value();
+    return std::nullopt;
   }
 
   [[nodiscard]] constexpr std::uint16_t period() const noexcept { return period_; }
@@ -241,49 +245,59 @@ public:
   /// monitor watches and guarding responses (bit 7 set) are ignored; error() says why a frame
   /// on 0x701..0x77F was not taken.
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
+    receive(f, now);
+    return make(now);
+  }
+  /// on_frame() without the step (what node::device calls): its events() and error().
+  constexpr void receive(const can_frame &f, std::uint32_t now) noexcept {
     events_.clear();
     if (f.rtr || f.id <= cob_id::nmt_error_base || f.id > cob_id::nmt_error_base + max_node_id) {
-      return make(now);
+      return;
     }
     auto hb = nmt::decode_heartbeat(f);
     if (!hb) {
       error_ = hb.error();
-      return make(now);
+      return;
     }
     error_ = errc{};
-    if (!enabled_) return make(now);
+    if (!enabled_) return;
     for (std::size_t i = 0; i < N; ++i) {
       monitor &m = m_[i];
       if (m.state == monitor_state::off || m.entry.node != hb.value().node) continue;
       const nmt::state s = hb.value().s;
-      const auto idx = static_cast<std::uint8_t>(i);
-      if (hb.value().is_boot_up()) {
-        m.state = monitor_state::waiting;
-        m.last = s;
-        events_.push({heartbeat_event::kind::boot_up, idx, m.entry.node, s});
+      const bool boot_up = hb.value().is_boot_up();
+      // the event this heartbeat makes (one push for all of them)
+      auto what = heartbeat_event::kind::boot_up;
+      if (!boot_up) {
+        switch (m.state) {
+        case monitor_state::waiting: what = heartbeat_event::kind::started; break;
+        case monitor_state::lost: what = heartbeat_event::kind::resumed; break;
+        case monitor_state::active:
+        case monitor_state::off: // not reached: skipped above
+          what = heartbeat_event::kind::state_changed;
+          break;
+        }
+      }
+      if (what != heartbeat_event::kind::state_changed || s != m.last) {
+        events_.push({what, static_cast<std::uint8_t>(i), m.entry.node, s});
+      }
+      m.last = s;
+      if (boot_up) {
+        m.state = monitor_state::waiting; // a boot-up: the node was reset, wait for it again
         continue;
       }
-      switch (m.state) {
-      case monitor_state::waiting:
-        events_.push({heartbeat_event::kind::started, idx, m.entry.node, s});
-        break;
-      case monitor_state::lost:
-        events_.push({heartbeat_event::kind::resumed, idx, m.entry.node, s});
-        break;
-      case monitor_state::active:
-        if (s != m.last) events_.push({heartbeat_event::kind::state_changed, idx, m.entry.node, s});
-        break;
-      case monitor_state::off: break;
-      }
       m.state = monitor_state::active;
-      m.last = s;
       m.due = now + m.entry.time_ms;
     }
-    return make(now);
   }
 
   /// Check the times: a monitor whose heartbeat is overdue becomes lost (one event).
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept {
+    check_times(now);
+    return make(now);
+  }
+  /// poll() without the step (what node::device calls): its events().
+  constexpr void check_times(std::uint32_t now) noexcept {
     events_.clear();
     for (std::size_t i = 0; i < N; ++i) {
       monitor &m = m_[i];
@@ -293,7 +307,6 @@ public:
             {heartbeat_event::kind::lost, static_cast<std::uint8_t>(i), m.entry.node, m.last});
       }
     }
-    return make(now);
   }
 
   /// Every monitor back to its configuration's start (off or waiting), e.g. after a reset.

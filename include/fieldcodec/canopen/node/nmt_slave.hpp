@@ -89,15 +89,19 @@ public:
   /// pre-operational, or operational when `self_start` (the "NMT start-up" behaviour of 1F80h
   /// bit 2 that a device without an NMT master needs). Clears pending_reset().
   [[nodiscard]] constexpr step boot(bool self_start = false) noexcept {
+    const auto f = boot_up(self_start);
+    return make(f ? frames(*f) : frames{});
+  }
+  /// boot() without the step (what node::device calls): the boot-up message to send.
+  [[nodiscard]] constexpr std::optional<can_frame> boot_up(bool self_start = false) noexcept {
     pending_ = reset::none;
-    frames out;
-    if (const auto f = nmt::encode_boot_up(node_)) {
-      state_ = self_start ? nmt::state::operational : nmt::state::pre_operational;
-      out = frames(f.value());
-    } else {
+    const auto f = nmt::encode_boot_up(node_);
+    if (!f) {
       error_ = f.error();
+      return std::nullopt;
     }
-    return make(out);
+    state_ = self_start ? nmt::state::operational : nmt::state::pre_operational;
+    return f.value();
   }
 
   /// An NMT command frame (COB-ID 0). Frames on other identifiers are not for the slave and are
@@ -106,13 +110,11 @@ public:
   /// initialising every command is ignored (error(): bad_state).
   [[nodiscard]] constexpr step on_frame(const can_frame &f,
                                         [[maybe_unused]] std::uint32_t now) noexcept {
-    take(f);
+    receive(f);
     return make({});
   }
-
-private:
-  /// on_frame's work (one step is built, at its end).
-  constexpr void take(const can_frame &f) noexcept {
+  /// on_frame() without the step (what node::device calls): state(), pending_reset(), error().
+  constexpr void receive(const can_frame &f) noexcept {
     if (f.id != cob_id::nmt) return;
     auto m = nmt::decode(f);
     if (!m) {
@@ -141,7 +143,6 @@ private:
     }
   }
 
-public:
   /// A state change the device decides itself (its error behaviour, e.g. 1029h, or an
   /// application without NMT master). Errors: invalid_argument (boot_up: use a reset),
   /// bad_state (initialising: boot() first).

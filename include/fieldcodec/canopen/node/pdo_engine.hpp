@@ -302,14 +302,7 @@ public:
       return;
     }
     const bool was_valid = c.valid();
-    switch (a.sub) {
-    case 1: c.cob = v; break;
-    case 2: c.type = static_cast<std::uint8_t>(v); break;
-    case 3: c.inhibit = static_cast<std::uint16_t>(v); break;
-    case 5: c.event_timer = static_cast<std::uint16_t>(v); break;
-    case 6: c.sync_start = static_cast<std::uint8_t>(v); break;
-    default: return;
-    }
+    if (!set_comm(c, a.sub, v)) return;
     // a new COB-ID, type or timer: the PDO starts afresh (a TPDO that became valid is due)
     if (where.dir == pdo::direction::tpdo) {
       if (a.sub != 1U || !was_valid) tpdo_[where.slot].restart(now, operational_);
@@ -388,13 +381,13 @@ public:
       rx_slot &r = rpdo_[i];
       if (f.dlc < r.c.bytes) {
         r.short_error = true;
-        events_.push({pdo_event::kind::too_short, pdo::direction::rpdo, r.c.number, 0});
+        rpdo_event(pdo_event::kind::too_short, r);
         continue;
       }
       r.short_error = false;
       r.long_error = report_long_ && f.dlc > r.c.bytes;
       if (r.long_error) {
-        events_.push({pdo_event::kind::too_long, pdo::direction::rpdo, r.c.number, 0});
+        rpdo_event(pdo_event::kind::too_long, r);
       }
       if (r.c.event_timer != 0U) {
         r.monitored = true;
@@ -404,7 +397,7 @@ public:
       const auto data = f.payload().first(r.c.bytes);
       if (r.c.synchronous()) {
         if (!sync_window_open) {
-          events_.push({pdo_event::kind::outside_window, pdo::direction::rpdo, r.c.number, 0});
+          rpdo_event(pdo_event::kind::outside_window, r);
           continue;
         }
         r.buffered = true;
@@ -437,7 +430,7 @@ public:
       rx_slot &r = rpdo_[i];
       if (!r.c.valid() || !r.monitored || r.timed_out || !reached(r.due, now)) continue;
       r.timed_out = true;
-      events_.push({pdo_event::kind::timeout, pdo::direction::rpdo, r.c.number, 0});
+      rpdo_event(pdo_event::kind::timeout, r);
     }
     return make(now);
   }
@@ -514,16 +507,26 @@ public:
   }
   [[nodiscard]] constexpr std::optional<std::uint32_t> deadline(std::uint32_t now) const noexcept {
     if (!operational_) return std::nullopt;
+    // earliest() over every time below, as a running minimum of distances from now (a time
+    // already passed is at distance 0; the first of equal ones stays)
     std::optional<std::uint32_t> d;
+    std::uint32_t nearest = 0;
+    const auto consider = [&](std::uint32_t at) {
+      const std::uint32_t distance = reached(at, now) ? 0U : at - now;
+      if (!d || distance < nearest) {
+        d = at;
+        nearest = distance;
+      }
+    };
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
       const tx_slot &t = tpdo_[i];
       if (!t.c.valid() || t.c.type < 254U) continue;
-      if (t.pending) d = earliest(d, t.inhibited ? t.inhibit_until : now, now);
-      if (t.c.event_timer != 0U) d = earliest(d, t.event_due, now);
+      if (t.pending) consider(t.inhibited ? t.inhibit_until : now);
+      if (t.c.event_timer != 0U) consider(t.event_due);
     }
     for (std::size_t i = 0; i < rpdo_count_; ++i) {
       const rx_slot &r = rpdo_[i];
-      if (r.c.valid() && r.monitored && !r.timed_out) d = earliest(d, r.due, now);
+      if (r.c.valid() && r.monitored && !r.timed_out) consider(r.due);
     }
     return d;
   }
@@ -574,7 +577,6 @@ private:
   /// so it never goes stale.
   struct resolved : std::conditional_t<by_copy, compiled, no_steps> {
     std::array<std::size_t, MaxEntries> at{};
-    bool whole_bytes = false; ///< every entry starts and ends on a byte boundary
   };
   struct no_positions {};
   using positions = std::conditional_t<by_position, resolved, no_positions>;
@@ -632,23 +634,14 @@ private:
 
   [[nodiscard]] constexpr place locate(std::uint16_t index) const noexcept {
     place l;
-    std::uint16_t base = 0;
-    if (index >= pdo_index::rpdo_comm && index < pdo_index::tpdo_comm) {
-      l.dir = pdo::direction::rpdo;
-      base = pdo_index::rpdo_comm;
-    } else if (index >= pdo_index::tpdo_comm && index < pdo_index::tpdo_map + pdo_index::count) {
-      l.dir = pdo::direction::tpdo;
-      base = pdo_index::tpdo_comm;
-    } else {
-      return l;
-    }
-    auto offset = static_cast<std::uint16_t>(index - base);
-    if (offset >= pdo_index::count) {
-      l.mapping = true;
-      offset = static_cast<std::uint16_t>(offset - pdo_index::count);
-    }
-    const auto number = static_cast<std::uint16_t>(offset + 1U);
-    const bool is_rx = l.dir == pdo::direction::rpdo;
+    // 1400h–1BFFh: bit 10 of the offset from 1400h is the direction (1800h: TPDOs), bit 9 the
+    // mapping (1600h, 1A00h), bits 0..8 the PDO number − 1
+    if (index < pdo_index::rpdo_comm || index >= pdo_index::tpdo_map + pdo_index::count) return l;
+    const auto offset = static_cast<std::uint16_t>(index - pdo_index::rpdo_comm);
+    const bool is_rx = offset < 2U * pdo_index::count;
+    l.dir = is_rx ? pdo::direction::rpdo : pdo::direction::tpdo;
+    l.mapping = (offset & pdo_index::count) != 0U;
+    const auto number = static_cast<std::uint16_t>((offset & (pdo_index::count - 1U)) + 1U);
     const std::size_t n = is_rx ? rpdo_count_ : tpdo_count_;
     for (std::size_t i = 0; i < n; ++i) {
       if ((is_rx ? rpdo_[i].c.number : tpdo_[i].c.number) == number) {
@@ -726,11 +719,11 @@ private:
     c = config{};
     at = positions{}; // a PDO found unusable below keeps no steps of an earlier mapping
     c.number = number;
-    c.cob = read_u32(*store_, {comm, 1}).value_or(cob_bits::invalid);
-    c.type = static_cast<std::uint8_t>(read_u32(*store_, {comm, 2}).value_or(255U));
-    c.inhibit = static_cast<std::uint16_t>(read_u32(*store_, {comm, 3}).value_or(0U));
-    c.event_timer = static_cast<std::uint16_t>(read_u32(*store_, {comm, 5}).value_or(0U));
-    c.sync_start = static_cast<std::uint8_t>(read_u32(*store_, {comm, 6}).value_or(0U));
+    c.cob = cob_bits::invalid; // what a PDO without the sub-object has
+    c.type = 255U;
+    for (std::uint8_t sub = 1; sub <= 6U; ++sub) {
+      if (const auto v = read_u32(*store_, {comm, sub})) (void)set_comm(c, sub, *v);
+    }
     const auto map = static_cast<std::uint16_t>(comm + pdo_index::count);
     for (const od::entry &e : dict_.object(map)) {
       if (e.sub > c.map_subs) c.map_subs = e.sub;
@@ -739,6 +732,18 @@ private:
     c.usable = check_comm(config{}, d, 2, c.type) == abort_code::none &&
                (c.cob & 0x3FFF'F800U) == 0U && load_mapping(c, at, d);
     return c.usable;
+  }
+
+  /// Communication parameter `sub` (1, 2, 3, 5, 6) of `c` set to `v`; false for another sub.
+  static constexpr bool set_comm(config &c, std::uint8_t sub, std::uint32_t v) noexcept {
+    switch (sub) {
+    case 1: c.cob = v; return true;
+    case 2: c.type = static_cast<std::uint8_t>(v); return true;
+    case 3: c.inhibit = static_cast<std::uint16_t>(v); return true;
+    case 5: c.event_timer = static_cast<std::uint16_t>(v); return true;
+    case 6: c.sync_start = static_cast<std::uint8_t>(v); return true;
+    default: return false;
+    }
   }
 
   /// Read mapping entries 1..count from the store and check them; false (and count 0) when
@@ -771,11 +776,9 @@ private:
     }
     c.bytes = static_cast<std::uint8_t>((r.total_bits + 7U) / 8U);
     if constexpr (by_position) {
-      at.whole_bytes = true;
       for (std::size_t k = 0; k < c.count; ++k) {
         const pdo::mapping_entry &m = c.map[k];
         at.at[k] = m.is_dummy() ? canopen::no_position : store_->position({m.index, m.sub});
-        if (m.bits % 8U != 0U) at.whole_bytes = false;
       }
       if constexpr (by_copy) compile(c, at, d);
     } else {
@@ -865,29 +868,10 @@ private:
       return build_by_address(t, data);
     }
   }
-  /// build() by position: a mapping of whole bytes (every one without a BOOLEAN of 1 bit) is
-  /// read straight into the frame's bytes, value by value.
+  /// build() by position: value by value, each on whole bytes straight into the frame's bytes
+  /// (read_entry).
   [[nodiscard]] constexpr bool build_at(tx_slot &t, frame_bytes &data) noexcept {
     data = {};
-    const resolved &p = t.pos;
-    if (p.whole_bytes) { // check_mapping: at most 64 bits, so every value fits data
-      std::size_t byte = 0;
-      for (std::size_t k = 0; k < t.c.count; ++k) {
-        const pdo::mapping_entry &m = t.c.map[k];
-        const std::size_t n = m.bits / 8U;
-        if (p.at[k] != canopen::no_position) {
-          std::size_t total = 0;
-          if (store_->read_at(p.at[k], 0, std::span<std::uint8_t>(data.data() + byte, n), total) !=
-              abort_code::none) {
-            return false;
-          }
-        } else if (!m.is_dummy()) {
-          return false; // the store has no such object
-        }
-        byte += n;
-      }
-      return true;
-    }
     std::size_t offset = 0;
     for (std::size_t k = 0; k < t.c.count; ++k) {
       if (!t.c.map[k].is_dummy() && !read_entry(t, k, offset, data)) return false;
@@ -901,17 +885,14 @@ private:
     const pdo::mapping_entry &m = t.c.map[k];
     const std::size_t at = t.pos.at[k];
     if (at == canopen::no_position) return false;
-    const std::size_t n = (m.bits + 7U) / 8U;
-    std::size_t total = 0;
-    if ((offset % 8U) == 0U && (m.bits % 8U) == 0U) {
-      const auto out = std::span<std::uint8_t>(data).subspan(offset / 8U, n);
-      return store_->read_at(at, 0, out, total) == abort_code::none;
-    }
+    // on whole bytes straight into the frame, else through v (one read_at: it is inlined)
+    const bool whole = ((offset | m.bits) % 8U) == 0U;
     std::array<std::uint8_t, 8> v{};
-    if (store_->read_at(at, 0, v, total) != abort_code::none) return false;
-    std::uint64_t raw = load_unsigned(v, n, byte_order::little).value_or(0);
-    if (m.bits < 64U) raw &= (std::uint64_t{1} << m.bits) - 1U;
-    return pdo::pack(data, offset, m.bits, raw).has_value();
+    const auto out = whole ? std::span<std::uint8_t>(data).subspan(offset / 8U, m.bits / 8U)
+                           : std::span<std::uint8_t>(v);
+    std::size_t total = 0;
+    if (store_->read_at(at, 0, out, total) != abort_code::none) return false;
+    return whole || pdo::copy_bits(v, 0, data, offset, m.bits);
   }
   /// build() by the compiled mapping: the copies from the store's bytes, then the other
   /// entries by position (the first that cannot be read stops the TPDO, as above; the frame's
@@ -1012,7 +993,7 @@ private:
       }
       offset += r.c.map[k].bits;
     }
-    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+    rpdo_event(pdo_event::kind::received, r, refused);
   }
   /// Write mapping entry k (not a dummy) of an RPDO by position from bit `offset` of `data`.
   [[nodiscard, gnu::noinline]] constexpr abort_code
@@ -1023,16 +1004,15 @@ private:
     // the store has no such object: refused, as its write would refuse it
     if (at == canopen::no_position) return abort_code::general_error;
     const std::size_t n = (m.bits + 7U) / 8U;
-    if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
-      return store_->write_at(at, 0, data.subspan(offset / 8U, n), true);
-    }
+    // on whole bytes straight from the frame, else through v (one write_at: it is inlined)
     std::array<std::uint8_t, 8> v{};
-    const auto raw = pdo::unpack(data, offset, m.bits);
-    if (!raw ||
-        !store_unsigned(std::span<std::uint8_t>(v).first(n), n, raw.value(), byte_order::little)) {
+    std::span<const std::uint8_t> value = std::span<const std::uint8_t>(v).first(n);
+    if (((offset | m.bits) % 8U) == 0U && offset / 8U + n <= data.size()) {
+      value = data.subspan(offset / 8U, n);
+    } else if (!pdo::copy_bits(data, offset, v, 0, m.bits)) {
       return abort_code::general_error;
     }
-    return store_->write_at(at, 0, std::span<const std::uint8_t>(v).first(n), true);
+    return store_->write_at(at, 0, value, true);
   }
   /// apply() by the compiled mapping: the copies into the store's bytes (objects that take
   /// every value with no effect but being stored: nothing to refuse), then the other entries by
@@ -1053,7 +1033,7 @@ private:
         ++refused;
       }
     }
-    events_.push({pdo_event::kind::received, pdo::direction::rpdo, r.c.number, refused});
+    rpdo_event(pdo_event::kind::received, r, refused);
   }
   /// apply() through the store's write by address (a store without positions).
   constexpr void apply_by_address(const config &c, std::span<const std::uint8_t> data) noexcept {
@@ -1083,6 +1063,11 @@ private:
     events_.push({pdo_event::kind::received, pdo::direction::rpdo, c.number, refused});
   }
 
+  /// An event of RPDO `r` (out of line: the engine reports from six places).
+  [[gnu::noinline]] constexpr void rpdo_event(pdo_event::kind k, const rx_slot &r,
+                                              std::uint8_t refused = 0) noexcept {
+    events_.push({k, pdo::direction::rpdo, r.c.number, refused});
+  }
   constexpr void begin() noexcept {
     out_.clear();
     events_.clear();
@@ -1103,16 +1088,19 @@ private:
   /// (derived_current() checks them against the same rules); called wherever a parameter
   /// changes: at the end of reload() and of every written() that stored a PDO parameter.
   constexpr void reindex() noexcept {
-    timed_ = false;
+    bool any_timed = false;
     for (std::size_t i = 0; i < tpdo_count_; ++i) {
-      sync_tx_[i] = sync_acts(tpdo_[i].c);
-      if (timed(tpdo_[i].c, pdo::direction::tpdo)) timed_ = true;
+      const config &c = tpdo_[i].c;
+      sync_tx_[i] = sync_acts(c);
+      any_timed = any_timed || timed(c, pdo::direction::tpdo);
     }
     for (std::size_t i = 0; i < rpdo_count_; ++i) {
-      sync_rx_[i] = sync_buffers(rpdo_[i].c);
-      rx_id_[i] = match_id(rpdo_[i].c);
-      if (timed(rpdo_[i].c, pdo::direction::rpdo)) timed_ = true;
+      const config &c = rpdo_[i].c;
+      sync_rx_[i] = sync_buffers(c);
+      rx_id_[i] = match_id(c);
+      any_timed = any_timed || timed(c, pdo::direction::rpdo);
     }
+    timed_ = any_timed;
   }
   /// A SYNC acts on this TPDO: valid, type 0..240 (sent) or 252 (sampled).
   [[nodiscard]] static constexpr bool sync_acts(const config &c) noexcept {

@@ -123,8 +123,35 @@ public:
 
   /// A frame on the SYNC COB-ID (others are ignored).
   [[nodiscard]] constexpr step on_frame(const can_frame &f, std::uint32_t now) noexcept {
-    return make(now, take(f, now));
+    return make(now, receive(f, now));
   }
+  /// on_frame() without the step (what node::device calls): true when `f` is a SYNC that was
+  /// taken (its counter: counter()).
+  [[nodiscard]] constexpr bool receive(const can_frame &f, std::uint32_t now) noexcept {
+    if (f.id != id_ || f.rtr) return false;
+    const bool right_length = overflow_ ? (f.dlc == (*overflow_ >= 2U ? 1U : 0U)) : f.dlc <= 1U;
+    if (!right_length) {
+      length_error_ = true;
+      error_ = errc::bad_length;
+      return false;
+    }
+    std::optional<std::uint8_t> counter;
+    if (f.dlc == 1U) {
+      if (f.data[0] < 1U || f.data[0] > sync::max_counter) {
+        error_ = errc::out_of_range;
+        return false;
+      }
+      counter = f.data[0];
+    }
+    length_error_ = false;
+    error_ = errc{};
+    seen_ = true;
+    last_ = now;
+    counter_ = counter;
+    return true;
+  }
+  /// The counter of the last SYNC taken (nullopt: it carried none).
+  [[nodiscard]] constexpr std::optional<std::uint8_t> counter() const noexcept { return counter_; }
 
   /// The window closing is a state change (in_window becomes false).
   [[nodiscard]] constexpr step poll(std::uint32_t now) noexcept { return make(now, false); }
@@ -158,30 +185,6 @@ public:
   }
 
 private:
-  /// on_frame's work: true when `f` is a SYNC that was taken (one step is built, at the end).
-  [[nodiscard]] constexpr bool take(const can_frame &f, std::uint32_t now) noexcept {
-    if (f.id != id_ || f.rtr) return false;
-    const bool right_length = overflow_ ? (f.dlc == (*overflow_ >= 2U ? 1U : 0U)) : f.dlc <= 1U;
-    if (!right_length) {
-      length_error_ = true;
-      error_ = errc::bad_length;
-      return false;
-    }
-    std::optional<std::uint8_t> counter;
-    if (f.dlc == 1U) {
-      if (f.data[0] < 1U || f.data[0] > sync::max_counter) {
-        error_ = errc::out_of_range;
-        return false;
-      }
-      counter = f.data[0];
-    }
-    length_error_ = false;
-    error_ = errc{};
-    seen_ = true;
-    last_ = now;
-    counter_ = counter;
-    return true;
-  }
   [[nodiscard]] constexpr step make(std::uint32_t now, bool received) const noexcept {
     return {{}, {received, received ? counter_ : std::nullopt, inside_window(now)}, deadline(now)};
   }
