@@ -94,13 +94,12 @@ bool parse_hex_capture(std::string_view text, std::vector<std::uint8_t> &out, st
       return false;
     }
     for (std::size_t i = 0; i < t.size(); i += 2U) {
-      const int hi = ascii::hex_value(t[i]);
-      const int lo = ascii::hex_value(t[i + 1U]);
-      if (hi < 0 || lo < 0) {
+      const int byte = ascii::hex_byte(t[i], t[i + 1U]);
+      if (byte < 0) {
         error = "line " + std::to_string(line) + ": not hex: '" + t + "'";
         return false;
       }
-      out.push_back(static_cast<std::uint8_t>(hi * 16 + lo));
+      out.push_back(static_cast<std::uint8_t>(byte));
     }
     return true;
   };

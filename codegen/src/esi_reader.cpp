@@ -878,10 +878,9 @@ private:
   static bool hex_bytes(std::string_view t, std::string &out) {
     if (t.size() % 2U != 0U) return false;
     for (std::size_t i = 0; i < t.size(); i += 2U) {
-      const int hi = ascii::hex_value(t[i]);
-      const int lo = ascii::hex_value(t[i + 1U]);
-      if (hi < 0 || lo < 0) return false;
-      out += static_cast<char>(hi * 16 + lo);
+      const int byte = ascii::hex_byte(t[i], t[i + 1U]);
+      if (byte < 0) return false;
+      out += static_cast<char>(byte);
     }
     return true;
   }

@@ -12,6 +12,7 @@
 // reference's for that normalized argument. Decoded commands are compared member by member
 // (to_ref_exact): the decoder still gives the decimal form for a value on the grid.
 #include "nx_reference.hpp"
+#include "short_runs.hpp"
 
 #include <fieldcodec/compax/nx.hpp>
 #include <fieldcodec/compax/nx_text.hpp>
@@ -427,7 +428,7 @@ TEST_CASE("nx: arguments and commands compare as the reference's normalized ones
   rng g(0x3D3D);
   int equal = 0;
   int equal_across_kinds = 0;
-  for (int i = 0; i < 300'000; ++i) {
+  for (int i = 0; i < fieldcodec_test::runs(300'000); ++i) {
     const nx::arg a = pick_close_arg(g);
     const nx::arg b = pick_close_arg(g);
     INFO("a ", static_cast<unsigned>(a.kind), " ", static_cast<unsigned>(a.places), " ", a.number,
@@ -453,8 +454,8 @@ TEST_CASE("nx: arguments and commands compare as the reference's normalized ones
     check_encode(nx::make(nx::op::accel, a));
     check_encode(posr(a, b));
   }
-  CHECK(equal > 10'000);
-  CHECK(equal_across_kinds > 1'000); // a raw value equal to a decimal, not only to itself
+  CHECK(equal > fieldcodec_test::runs(10'000));
+  CHECK(equal_across_kinds > fieldcodec_test::runs(1'000)); // a raw value equal to a decimal, not only to itself
 }
 
 TEST_CASE("nx: every op with every argument kind, alone and as the second and third command") {

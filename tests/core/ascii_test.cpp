@@ -31,6 +31,13 @@ static_assert(ascii::parse_hex("10000000000000000").error() == errc::overflow);
 static_assert(ascii::parse_hex("0x12").error() == errc::bad_digit);
 static_assert(ascii::parse_hex("G").error() == errc::bad_digit);
 static_assert(ascii::parse_hex("").error() == errc::bad_syntax);
+static_assert(ascii::hex_byte('0', '0') == 0x00);
+static_assert(ascii::hex_byte('F', 'f') == 0xFF);
+static_assert(ascii::hex_byte('a', '5') == 0xA5);
+static_assert(ascii::hex_byte('5', 'a', ascii::hex_case::upper) == -1);
+static_assert(ascii::hex_byte('G', '0') == -1);
+static_assert(ascii::hex_byte('0', ' ') == -1);
+static_assert(ascii::hex_byte('-', '1') == -1);
 
 namespace {
 template <class F>

@@ -10,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include "short_runs.hpp"
+
 #include <array>
 #include <bit>
 #include <charconv>
@@ -169,7 +171,7 @@ TEST_CASE("decimal_from_float: 10^7 floats from 1e-12 to 2^64") {
   // with a varying low byte so that the low bits are not the same few patterns.
   int failures = 0;
   std::uint32_t low = 0x9E37'79B9U;
-  for (std::uint32_t i = 0; i < 10'000'000U; ++i) {
+  for (std::uint32_t i = 0; i < fieldcodec_test::runs(10'000'000U); ++i) {
     low = low * 1'664'525U + 1'013'904'223U; // LCG for the low byte and the sign
     const std::uint32_t bits = ((0x2B80'0000U + i * 87U) ^ (low >> 24U)) | (low & 0x8000'0000U);
     if (!agrees(bits) && ++failures > 20) break;
@@ -180,7 +182,7 @@ TEST_CASE("decimal_from_float: 10^7 floats from 1e-12 to 2^64") {
 TEST_CASE("decimal_from_float: 10^6 floats over all bit patterns") {
   // The whole range: tiny floats rounded to 18 places, subnormals, too large, NaN, infinity.
   int failures = 0;
-  for (std::uint32_t i = 0; i < 1'000'000U; ++i) {
+  for (std::uint32_t i = 0; i < fieldcodec_test::runs(1'000'000U); ++i) {
     if (!agrees(i * 4295U + (i >> 3U)) && ++failures > 20) break;
   }
   CHECK(failures == 0);

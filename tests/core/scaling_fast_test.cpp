@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include "short_runs.hpp"
 #include "xorshift.hpp"
 
 #include <array>
@@ -175,14 +176,14 @@ void compare_all(rng &g, int count, bool tricky) {
 
 TEST_CASE("to_raw(double): the fast path gives the exact path's result on every input") {
   rng g;
-  compare_all<double>(g, 400'000, false);
-  compare_all<double>(g, 400'000, true);
+  compare_all<double>(g, fieldcodec_test::runs(400'000), false);
+  compare_all<double>(g, fieldcodec_test::runs(400'000), true);
 }
 
 TEST_CASE("to_raw(float): the fast path gives the exact path's result on every input") {
   rng g;
-  compare_all<float>(g, 400'000, false);
-  compare_all<float>(g, 400'000, true);
+  compare_all<float>(g, fieldcodec_test::runs(400'000), false);
+  compare_all<float>(g, fieldcodec_test::runs(400'000), true);
 }
 
 // The cases the fast path must hand over to the exact one (each an exact decimal half or a

@@ -26,6 +26,14 @@ enum class hex_case : std::uint8_t { upper, lower, any };
   return -1;
 }
 
+/// The byte written as the two hex digits `hi` `lo` (0..255), or -1 if either is not a hex digit.
+[[nodiscard]] constexpr int hex_byte(char hi, char lo,
+                                     hex_case letters = hex_case::any) noexcept {
+  const int h = hex_value(hi, letters);
+  const int l = hex_value(lo, letters);
+  return h < 0 || l < 0 ? -1 : h * 16 + l;
+}
+
 /// Parse a non-empty string of decimal digits. No sign, no spaces.
 /// Errors: bad_syntax (empty), bad_digit, overflow (> UINT64_MAX).
 [[nodiscard]] constexpr result<std::uint64_t> parse_unsigned(std::string_view s) noexcept {

@@ -172,13 +172,12 @@ parse_long(std::string_view line, std::string_view rest) noexcept {
       if (b.empty()) {
         return line_error{errc::truncated, "fewer data bytes than the length says", line.size()};
       }
-      const int hi = b.size() == 2U ? ascii::hex_value(b[0]) : -1;
-      const int lo = b.size() == 2U ? ascii::hex_value(b[1]) : -1;
-      if (hi < 0 || lo < 0) {
+      const int byte = b.size() == 2U ? ascii::hex_byte(b[0], b[1]) : -1;
+      if (byte < 0) {
         return line_error{errc::bad_digit, "a data byte of two hex digits expected",
                           column(line, b)};
       }
-      r.data[i] = static_cast<std::uint8_t>(hi * 16 + lo);
+      r.data[i] = static_cast<std::uint8_t>(byte);
     }
   }
   // what candump writes after the data: ERRORFRAME (an error frame), 'ASCII' (-a)

@@ -300,10 +300,9 @@ private:
     if (data.size() % 2U != 0U) return "odd number of hex digits in the value";
     std::vector<std::uint8_t> bytes;
     for (std::size_t i = 0; i < data.size(); i += 2U) {
-      const int hi = ascii::hex_value(data[i]);
-      const int lo = ascii::hex_value(data[i + 1U]);
-      if (hi < 0 || lo < 0) return "bad hex digit in the value";
-      bytes.push_back(static_cast<std::uint8_t>(hi * 16 + lo));
+      const int byte = ascii::hex_byte(data[i], data[i + 1U]);
+      if (byte < 0) return "bad hex digit in the value";
+      bytes.push_back(static_cast<std::uint8_t>(byte));
     }
     return std::pair{std::pair{static_cast<std::uint16_t>(index.value()),
                                static_cast<std::uint8_t>(sub.value())},
