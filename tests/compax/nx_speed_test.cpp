@@ -455,7 +455,8 @@ TEST_CASE("nx: arguments and commands compare as the reference's normalized ones
     check_encode(posr(a, b));
   }
   CHECK(equal > fieldcodec_test::runs(10'000));
-  CHECK(equal_across_kinds > fieldcodec_test::runs(1'000)); // a raw value equal to a decimal, not only to itself
+  // a raw value equal to a decimal, not only to itself
+  CHECK(equal_across_kinds > fieldcodec_test::runs(1'000));
 }
 
 TEST_CASE("nx: every op with every argument kind, alone and as the second and third command") {

@@ -27,8 +27,7 @@ enum class hex_case : std::uint8_t { upper, lower, any };
 }
 
 /// The byte written as the two hex digits `hi` `lo` (0..255), or -1 if either is not a hex digit.
-[[nodiscard]] constexpr int hex_byte(char hi, char lo,
-                                     hex_case letters = hex_case::any) noexcept {
+[[nodiscard]] constexpr int hex_byte(char hi, char lo, hex_case letters = hex_case::any) noexcept {
   const int h = hex_value(hi, letters);
   const int l = hex_value(lo, letters);
   return h < 0 || l < 0 ? -1 : h * 16 + l;
