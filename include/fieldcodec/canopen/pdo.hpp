@@ -183,7 +183,7 @@ unpack(std::span<const std::uint8_t> pdo, std::size_t offset, std::size_t length
     const std::size_t f = from_bit + i;
     const std::size_t t = to_bit + i;
     const auto mask = static_cast<std::uint8_t>(1U << (t % 8U));
-    const bool set = ((from[f / 8U] >> (f % 8U)) & 1U) != 0U;
+    const bool set = ((static_cast<unsigned>(from[f / 8U]) >> (f % 8U)) & 1U) != 0U;
     to[t / 8U] = static_cast<std::uint8_t>(set ? to[t / 8U] | mask : to[t / 8U] & ~mask);
   }
   return true;
