@@ -45,10 +45,10 @@
 
 namespace fieldcodec::canopen::node {
 
-/// The error register bit CiA 301 gives an error code's class (0 for none). The classes with
-/// a bit are whole first digits (emcy::classify: current 2xxxh, voltage 3xxxh, temperature
-/// 4xxxh, monitoring 8xxxh, of which communication 81xxh/82xxh), so the first digit is enough
-/// (tests/node/emcy_producer_test.cpp checks every code against classify).
+/// The error register bit CiA 301 gives an error code's class (0 for none). Each class with a
+/// bit spans whole ranges of the code's high digits (emcy::classify: current 2000h-2FFFh,
+/// voltage 3000h-3FFFh, temperature 4000h-4FFFh, communication 8100h-82FFh), so the high
+/// digits are enough (tests/node/emcy_producer_test.cpp checks every code against classify).
 [[nodiscard]] constexpr std::uint8_t register_bit(std::uint16_t code) noexcept {
   switch (code >> 12U) {
   case 0x2: return emcy::reg::current;
